@@ -1,0 +1,15 @@
+#pragma once
+// The subcommands of the `stockbridge` program. Each `add_*_command` registers its
+// options on `app` and arranges for `exit_code` to be set when it runs. Commands
+// parse arguments, call the library, and write files; nothing else.
+
+#include <CLI/CLI.hpp>
+
+namespace stockbridge::cli {
+
+/// Exit statuses shared by every command.
+enum ExitStatus : int { kSuccess = 0, kBadInput = 2, kNotConverged = 3 };
+
+void add_loop_command(CLI::App& app, int& exit_code);
+
+}  // namespace stockbridge::cli

@@ -1,0 +1,52 @@
+// stockbridge: command-line front end of the stockbridge library.
+// Exit status: 0 success, 2 bad input or options (one line on stderr, nothing
+// written), 3 computed but some points did not converge (file written, flagged).
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "stockbridge/core/error.hpp"
+
+namespace {
+
+/// Collapses a message to one line, so that every failure is exactly one line on stderr.
+std::string one_line(std::string text) {
+  for (char& ch : text) {
+    if (ch == '\n' || ch == '\r') ch = ' ';
+  }
+  return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace stockbridge;
+  CLI::App app{"stockbridge: nonlinear impedance of Stockbridge dampers (Masing cable model)", "stockbridge"};
+  app.require_subcommand(1);
+  int exit_code = cli::kSuccess;
+  cli::add_loop_command(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app.help().c_str(), stdout);
+    return cli::kSuccess;
+  } catch (const CLI::CallForAllHelp&) {
+    std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
+    return cli::kSuccess;
+  } catch (const CLI::ParseError& e) {
+    std::fputs(fmt::format("stockbridge: {} (see stockbridge --help)\n", one_line(e.what())).c_str(), stderr);
+    return cli::kBadInput;
+  } catch (const Error& e) {
+    std::fputs(fmt::format("stockbridge: {}\n", one_line(e.what())).c_str(), stderr);
+    return cli::kBadInput;
+  } catch (const std::exception& e) {
+    std::fputs(fmt::format("stockbridge: internal error: {}\n", one_line(e.what())).c_str(), stderr);
+    return 1;
+  }
+  return exit_code;
+}

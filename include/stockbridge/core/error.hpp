@@ -1,0 +1,63 @@
+#pragma once
+// Typed errors of the stockbridge library.
+//
+// The library never prints and never aborts: invalid input throws one of the
+// types below, with a message that names the quantity (file, key, line), the
+// offending value and what was expected. Numerical non-convergence is *not* an
+// exception: solvers report it in their summaries.
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace stockbridge {
+
+/// Base of every error the library throws.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A parameter or option has a value outside its admissible range
+/// (negative stiffness, slip moment <= 0, cycles < 1, ...).
+class InvalidParameter : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A file could not be read, or its contents are malformed
+/// (syntax, missing or unknown key, wrong type, bad cell).
+class InputError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A file could not be written.
+class OutputError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A well-posed computation has no solution for the given data
+/// (e.g. a moment beyond what a section with ei = 0 can carry).
+class NumericalError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// Formats a number the way every message shows it (shortest round-trip form).
+std::string format_value(double value);
+
+/// Throws InvalidParameter "<name> = <value>: expected <expected>".
+[[noreturn]] void throw_invalid(std::string_view name, double value, std::string_view expected);
+
+/// Checks that `value` is finite and > 0; `name` and `unit` go into the message.
+void require_positive(std::string_view name, double value, std::string_view unit);
+/// Checks that `value` is finite and >= 0.
+void require_non_negative(std::string_view name, double value, std::string_view unit);
+/// Checks that `value` is finite.
+void require_finite(std::string_view name, double value, std::string_view unit);
+/// Checks lo <= value <= hi for an integer count.
+void require_in_range(std::string_view name, long long value, long long lo, long long hi);
+
+}  // namespace stockbridge

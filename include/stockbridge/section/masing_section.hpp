@@ -1,0 +1,36 @@
+#pragma once
+// One Masing section with the exact (piecewise linear) law and the trial/commit
+// protocol, driven by curvature or by moment.
+
+#include "stockbridge/section/committable.hpp"
+#include "stockbridge/section/masing_law.hpp"
+#include "stockbridge/section/section_law.hpp"
+
+namespace stockbridge::section {
+
+class MasingSection final : public SectionLaw {
+ public:
+  /// Validates the parameters (InvalidParameter) and starts from the virgin state.
+  explicit MasingSection(MasingParameters parameters);
+
+  void set_trial_curvature(double curvature) override;
+  /// Moment-driven trial: the exact curvature at which the section carries `moment`.
+  void set_trial_moment(double moment);
+
+  double curvature() const override { return state_.trial().curvature; }
+  double moment() const override { return state_.trial().moment; }
+  double tangent() const override { return state_.trial().tangent; }
+  double dissipated_energy() const override { return state_.trial().dissipated; }
+  void commit() override { state_.commit(); }
+  void revert_to_last_commit() override { state_.revert_to_last_commit(); }
+
+  const MasingParameters& parameters() const { return parameters_; }
+  const SectionState& committed_state() const { return state_.committed(); }
+  const SectionState& trial_state() const { return state_.trial(); }
+
+ private:
+  MasingParameters parameters_;
+  Committable<SectionState> state_;
+};
+
+}  // namespace stockbridge::section

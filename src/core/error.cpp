@@ -1,0 +1,43 @@
+#include "stockbridge/core/error.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace stockbridge {
+
+std::string format_value(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  return fmt::format("{}", value);
+}
+
+void throw_invalid(std::string_view name, double value, std::string_view expected) {
+  throw InvalidParameter(fmt::format("{} = {}: expected {}", name, format_value(value), expected));
+}
+
+namespace {
+std::string with_unit(std::string_view what, std::string_view unit) {
+  return unit.empty() ? std::string(what) : fmt::format("{} ({})", what, unit);
+}
+}  // namespace
+
+void require_positive(std::string_view name, double value, std::string_view unit) {
+  if (!(std::isfinite(value) && value > 0)) throw_invalid(name, value, with_unit("a finite value > 0", unit));
+}
+
+void require_non_negative(std::string_view name, double value, std::string_view unit) {
+  if (!(std::isfinite(value) && value >= 0)) throw_invalid(name, value, with_unit("a finite value >= 0", unit));
+}
+
+void require_finite(std::string_view name, double value, std::string_view unit) {
+  if (!std::isfinite(value)) throw_invalid(name, value, with_unit("a finite value", unit));
+}
+
+void require_in_range(std::string_view name, long long value, long long lo, long long hi) {
+  if (value < lo || value > hi) {
+    throw InvalidParameter(fmt::format("{} = {}: expected an integer from {} to {}", name, value, lo, hi));
+  }
+}
+
+}  // namespace stockbridge

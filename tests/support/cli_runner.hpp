@@ -1,0 +1,57 @@
+#pragma once
+// Runs the stockbridge program as a user would and captures what it says.
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+#include <unistd.h>
+
+namespace stockbridge::testing {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+
+  int stderr_lines() const {
+    int lines = 0;
+    for (char ch : err) lines += ch == '\n';
+    return lines;
+  }
+};
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+/// A fresh, empty directory for one test's files.
+inline std::filesystem::path scratch_directory(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() /
+             ("stockbridge-test-" + std::to_string(::getpid()) + "-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// Runs `stockbridge <arguments>` (a shell-quoted string) in `directory`.
+inline CliResult run_cli(const std::string& arguments, const std::filesystem::path& directory) {
+  const auto out = directory / "stdout.txt";
+  const auto err = directory / "stderr.txt";
+  const std::string command = "cd '" + directory.string() + "' && '" + STOCKBRIDGE_CLI + "' " + arguments +
+                              " > '" + out.string() + "' 2> '" + err.string() + "' < /dev/null";
+  const int status = std::system(command.c_str());
+  CliResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = read_text(out);
+  result.err = read_text(err);
+  return result;
+}
+
+}  // namespace stockbridge::testing
