@@ -1,0 +1,177 @@
+#include "toml_reader.hpp"
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::io {
+
+toml::table parse_toml_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    throw InputError(fmt::format("{}: no such file", path.string()));
+  }
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(fmt::format("{}: is a directory, expected a TOML file", path.string()));
+  }
+  try {
+    return toml::parse_file(path.string());
+  } catch (const toml::parse_error& e) {
+    const auto& where = e.source().begin;
+    std::string what(e.description());
+    for (char& ch : what) {
+      if (ch == '\n' || ch == '\r') ch = ' ';
+    }
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", path.string(), where.line, where.column, what));
+  }
+}
+
+std::string describe_type(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return fmt::format("the string \"{}\"", *node.value<std::string>());
+    case toml::node_type::integer: return fmt::format("the integer {}", *node.value<long long>());
+    case toml::node_type::floating_point: return fmt::format("the number {}", format_value(*node.value<double>()));
+    case toml::node_type::boolean: return *node.value<bool>() ? "true" : "false";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time";
+    case toml::node_type::date_time: return "a date-time";
+    default: return "nothing";
+  }
+}
+
+TomlTable::TomlTable(const toml::table& table, std::string file, std::string key_path)
+    : table_(&table), file_(std::move(file)), key_path_(std::move(key_path)) {}
+
+bool TomlTable::contains(std::string_view key) const {
+  asked_.insert(std::string(key));
+  return table_->contains(key);
+}
+
+std::string TomlTable::qualified(std::string_view key) const {
+  return key_path_.empty() ? std::string(key) : fmt::format("{}.{}", key_path_, key);
+}
+
+std::string TomlTable::location_of(const toml::node& node) const {
+  const auto line = node.source().begin.line;
+  return line > 0 ? fmt::format("{}:{}: ", file_, line) : fmt::format("{}: ", file_);
+}
+
+std::string TomlTable::location(std::string_view key) const {
+  const toml::node* n = table_->get(key);
+  return location_of(n ? *n : static_cast<const toml::node&>(*table_));
+}
+
+void TomlTable::fail(std::string_view key, std::string_view message) const {
+  throw InputError(fmt::format("{}{}: {}", location(key), qualified(key), message));
+}
+
+const toml::node* TomlTable::node(std::string_view key) const {
+  asked_.insert(std::string(key));
+  return table_->get(key);
+}
+
+const toml::node& TomlTable::required(std::string_view key, std::string_view expected) const {
+  const toml::node* n = node(key);
+  if (!n) {
+    const std::string where = key_path_.empty() ? "the top level" : fmt::format("[{}]", key_path_);
+    throw InputError(fmt::format("{}missing key '{}' in {}: expected {}", location_of(*table_), key, where, expected));
+  }
+  return *n;
+}
+
+namespace {
+double as_number(const TomlTable& t, const toml::node& n, std::string_view key) {
+  if (n.is_floating_point()) return *n.value<double>();
+  if (n.is_integer()) return static_cast<double>(*n.value<long long>());
+  t.fail(key, fmt::format("{}: expected a number", describe_type(n)));
+}
+}  // namespace
+
+double TomlTable::number(std::string_view key, const std::function<void(std::string_view, double)>& check) const {
+  const toml::node& n = required(key, "a number");
+  const double value = as_number(*this, n, key);
+  try {
+    check(qualified(key), value);
+  } catch (const InvalidParameter& e) {
+    throw InputError(fmt::format("{}{}", location_of(n), e.what()));
+  }
+  return value;
+}
+
+std::optional<double> TomlTable::optional_number(std::string_view key,
+                                                 const std::function<void(std::string_view, double)>& check) const {
+  if (!contains(key)) return std::nullopt;
+  return number(key, check);
+}
+
+long long TomlTable::integer(std::string_view key, long long lo, long long hi) const {
+  const toml::node& n = required(key, "an integer");
+  if (!n.is_integer()) fail(key, fmt::format("{}: expected an integer from {} to {}", describe_type(n), lo, hi));
+  const long long value = *n.value<long long>();
+  if (value < lo || value > hi) {
+    fail(key, fmt::format("{}: expected an integer from {} to {}", value, lo, hi));
+  }
+  return value;
+}
+
+std::optional<long long> TomlTable::optional_integer(std::string_view key, long long lo, long long hi) const {
+  if (!contains(key)) return std::nullopt;
+  return integer(key, lo, hi);
+}
+
+std::optional<bool> TomlTable::optional_boolean(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  if (!n->is_boolean()) fail(key, fmt::format("{}: expected true or false", describe_type(*n)));
+  return *n->value<bool>();
+}
+
+std::optional<std::string> TomlTable::optional_string(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  if (!n->is_string()) fail(key, fmt::format("{}: expected a string", describe_type(*n)));
+  return *n->value<std::string>();
+}
+
+TomlTable TomlTable::table(std::string_view key) const {
+  const toml::node& n = required(key, "a table");
+  if (!n.is_table()) fail(key, fmt::format("{}: expected a table", describe_type(n)));
+  return TomlTable(*n.as_table(), file_, qualified(key));
+}
+
+std::optional<TomlTable> TomlTable::optional_table(std::string_view key) const {
+  if (!contains(key)) return std::nullopt;
+  return table(key);
+}
+
+std::vector<TomlTable> TomlTable::table_array(std::string_view key, bool required_key) const {
+  std::vector<TomlTable> tables;
+  const toml::node* n = required_key ? &required(key, "an array of tables") : node(key);
+  if (!n) return tables;
+  const toml::array* array = n->as_array();
+  if (!array) fail(key, fmt::format("{}: expected an array of tables", describe_type(*n)));
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& element = *array->get(i);
+    const std::string path = fmt::format("{}[{}]", qualified(key), i);
+    if (!element.is_table()) {
+      throw InputError(fmt::format("{}{}: {}: expected a table", location_of(element), path, describe_type(element)));
+    }
+    tables.emplace_back(*element.as_table(), file_, path);
+  }
+  return tables;
+}
+
+void TomlTable::reject_unknown_keys() const {
+  for (const auto& [key, value] : *table_) {
+    if (!asked_.contains(std::string_view(key.str()))) {
+      std::string known;
+      for (const auto& k : asked_) known += (known.empty() ? "" : ", ") + k;
+      throw InputError(fmt::format("{}unknown key '{}': expected one of {}", location_of(value), qualified(key.str()),
+                                   known.empty() ? "(none)" : known));
+    }
+  }
+}
+
+}  // namespace stockbridge::io
