@@ -11,5 +11,7 @@ namespace stockbridge::cli {
 enum ExitStatus : int { kSuccess = 0, kBadInput = 2, kNotConverged = 3 };
 
 void add_loop_command(CLI::App& app, int& exit_code);
+void add_cycle_command(CLI::App& app, int& exit_code);
+void add_strand_command(CLI::App& app, int& exit_code);
 
 }  // namespace stockbridge::cli

@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = cli::kSuccess;
   cli::add_loop_command(app, exit_code);
+  cli::add_cycle_command(app, exit_code);
+  cli::add_strand_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

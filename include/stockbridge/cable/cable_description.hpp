@@ -1,0 +1,47 @@
+#pragma once
+// What a user says about a damper cable (MODEL.md sections 2 and 3): its length,
+// how finely to integrate along it, and the Masing parameters as profiles over
+// s, optionally mirrored from a cable of another length, optionally with the
+// modified Masing model's load-dependent slip moment.
+
+#include <optional>
+#include <vector>
+
+#include "stockbridge/cable/profile.hpp"
+
+namespace stockbridge::cable {
+
+/// One distributed Jenkin element.
+struct JenkinProfile {
+  Profile c = Profile::constant(0.0);  ///< N m^2, > 0
+  Profile h = Profile::constant(0.0);  ///< slip moment h0, N m, > 0
+  /// Modified Masing model (3.7): h = h0 + k0 |M| / |F|, k0 in N, >= 0; 0 = off.
+  double k0 = 0.0;
+};
+
+struct CableDescription {
+  double length = 0.0;   ///< l, m
+  int sections = 40;     ///< Gauss-Legendre integration points along the cable
+  Profile ei = Profile::constant(0.0);  ///< N m^2, > 0 everywhere
+  std::vector<JenkinProfile> jenkin;
+
+  /// Mirror method (3.6): the profiles were identified on a cable of this length
+  /// l_id; the cable uses p(s) for s <= l/2 and p(l - s) beyond. Needs l <= 2 l_id.
+  std::optional<double> mirror_length;
+  /// Modified Masing model: cap of the lever arm |M|/|F| (m); default: the length.
+  /// Also used where F = 0.
+  std::optional<double> lever_arm_cap;
+
+  /// Throws InvalidParameter naming the bad field ("length", "jenkin[0].h.value[2]", ...).
+  void validate() const;
+  /// The position at which the profiles are read for the cable's point s (mirror method).
+  double profile_position(double s) const;
+  /// The lever-arm cap in force (m).
+  double lever_arm_limit() const { return lever_arm_cap.value_or(length); }
+  bool uses_modified_masing() const;
+
+  /// The simplest cable: constant parameters.
+  static CableDescription uniform(double length, int sections, double ei, std::vector<std::pair<double, double>> jenkin_c_h);
+};
+
+}  // namespace stockbridge::cable

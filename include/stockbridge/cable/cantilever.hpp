@@ -1,0 +1,113 @@
+#pragma once
+// The damper cable as a quasi-static, massless cantilever (MODEL.md section 3):
+// clamped at s = 0, loaded at the tip s = l by a force F and a moment Q, so that
+//     M(s) = T - F s,  T = Q + F l   (T: moment at the clamp)
+//     phi = int_0^l kappa ds,  x = int_0^l (l - s) kappa ds.
+// Given loads (T, F) the state follows exactly (moment-driven section updates);
+// given tip kinematics it follows from Newton's method on (T, F) with the exact
+// flexibility d(phi, x)/d(T, F) and a backtracking line search. This replaces the
+// dissertation's fixed-point iteration (4.45)-(4.49).
+
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stockbridge/cable/cable.hpp"
+#include "stockbridge/section/committable.hpp"
+
+namespace stockbridge::cable {
+
+/// Everything that changes as the cable is loaded. Starts virgin (all zero).
+struct CableState {
+  double clamp_moment = 0.0;  ///< T, N m
+  double tip_force = 0.0;     ///< F, N
+  double rotation = 0.0;      ///< phi = w'(l), rad
+  double deflection = 0.0;    ///< x = w(l), m
+  /// d(phi, x)/d(T, F) for continued loading: [[rad/(N m), rad/N], [m/(N m), m/N]].
+  Eigen::Matrix2d flexibility = Eigen::Matrix2d::Zero();
+  double dissipated = 0.0;            ///< energy dissipated by all sliders since virgin, J
+  std::vector<double> curvature;      ///< kappa at each section, 1/m
+  std::vector<double> tangent;        ///< section tangent stiffness, N m^2
+  std::vector<double> hysteretic;     ///< H at each section and element (sections x elements), N m
+
+  static CableState virgin(const Cable& cable);
+  /// Q = T - F l, N m.
+  double tip_moment(double length) const { return clamp_moment - tip_force * length; }
+  /// d(F, Q)/(x, phi): the tip stiffness for the damper, from the flexibility.
+  Eigen::Matrix2d tip_stiffness(double length) const;
+};
+
+/// Scratch space of apply_loads for the modified Masing model (sized on first use).
+struct CableWorkspace {
+  std::vector<section::Jenkin> jenkin;
+  std::vector<double> hysteretic;
+};
+
+/// Loads in, state out: every section moves exactly, moment-driven, from `from`
+/// to the moment T - F s_i. Fills every field of `to` (sized like `from`).
+///
+/// Modified Masing model (3.7): the slip moments are h0 + k0 min(|M|/|F|, cap),
+/// the cap standing in for |M|/|F| where F = 0; an element whose stored moment
+/// exceeds its new slip moment is set back to it (without dissipation), and the
+/// flexibility ignores dh/dM, so Newton converges linearly rather than finitely.
+void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
+                 CableState& to, CableWorkspace& workspace);
+
+/// d(phi, x)/d(T, F) for given section tangent stiffnesses.
+Eigen::Matrix2d tip_flexibility(const Cable& cable, std::span<const double> tangent);
+
+struct CantileverOptions {
+  int max_iterations = 50;    ///< Newton iterations per state determination
+  double tolerance = 1e-11;   ///< on the kinematic residual, relative to the step's scale
+  int max_halvings = 40;      ///< line search
+  /// Throws InvalidParameter naming the bad field.
+  void validate() const;
+};
+
+/// How a state determination ended: never a number without this.
+struct StateDetermination {
+  bool converged = false;
+  int iterations = 0;     ///< Newton iterations (each one evaluation of the cable, plus line search)
+  int evaluations = 0;    ///< cable evaluations in all
+  double residual = 0.0;  ///< final kinematic residual, rad (deflection divided by l)
+};
+
+/// The cable with the trial/commit protocol.
+class Cantilever {
+ public:
+  explicit Cantilever(Cable cable, CantileverOptions options = {});
+
+  const Cable& cable() const { return cable_; }
+  const CantileverOptions& options() const { return options_; }
+
+  /// Tip deflection x and rotation phi prescribed: find T and F.
+  StateDetermination set_trial_tip(double deflection, double rotation);
+  /// Experiment (a): tip deflection prescribed, no tip moment (Q = 0, T = F l).
+  StateDetermination set_trial_deflection(double deflection);
+  /// Experiment (b): tip rotation prescribed with the tip guided (x = 0).
+  StateDetermination set_trial_rotation(double rotation) { return set_trial_tip(0.0, rotation); }
+  /// Loads prescribed: exact, no iteration.
+  void set_trial_loads(double clamp_moment, double tip_force);
+
+  const CableState& trial() const { return state_.trial(); }
+  const CableState& committed() const { return state_.committed(); }
+  void commit();
+  void revert_to_last_commit() { state_.revert_to_last_commit(); }
+
+ private:
+  template <int K>
+  StateDetermination solve(const Eigen::Matrix<double, 2, K>& loads_from_unknowns,
+                           const Eigen::Matrix<double, K, 2>& kinematics_selected,
+                           const Eigen::Matrix<double, K, 1>& target);
+
+  Cable cable_;
+  CantileverOptions options_;
+  Committable<CableState> state_;
+  Eigen::Matrix2d elastic_flexibility_;  // every element sticking: the predictor after a reversal
+  Eigen::Vector2d last_increment_ = Eigen::Vector2d::Zero();  // of (phi, x / l) in the last committed step
+  CableWorkspace workspace_;
+  CableState candidate_;  // line-search trial
+};
+
+}  // namespace stockbridge::cable

@@ -1,0 +1,66 @@
+#pragma once
+// Bounds on the bending stiffness of a helically stranded wire (MODEL.md
+// section 7, dissertation appendix A.1, (A.1)-(A.5)).
+//
+// A strand is a straight core wire of radius r_c and layers j = 1..L of N_j wires
+// of radius r_j laid on the pitch radius R_j with lay length lambda_j (the axial
+// length of one full turn of a wire). The lay angle alpha_j between a wire and
+// the strand axis is
+//     tan alpha_j = 2 pi R_j / lambda_j
+// (the dissertation's (A.3) prints alpha_j = 2 pi R_j / lambda_j; MODEL.md uses the
+// geometric tangent, which is what the helix gives).
+//
+// Two limiting cases bracket the bending stiffness of a real strand:
+//   * no friction between the wires, every wire bends about its own axis (A.4):
+//         EI_min = E (pi r_c^4 / 4 + sum_j N_j pi r_j^4 / 4)
+//   * no slip, the strand bends as one beam (Lanteigne 1985, (A.1) without the
+//     finite-length term B_ij, which vanishes over whole lay lengths):
+//         EI_max = E (pi r_c^4 / 4 + sum_j N_j / 2 pi r_j^2 (r_j^2 / 2 + R_j^2) cos^3 alpha_j)
+//
+// EI_max > EI_min whenever cos^3 alpha_j > r_j^2 / (r_j^2 + 2 R_j^2) in every layer,
+// which holds for any real strand (R_j >= r_j gives alpha_j < 46 deg; lay angles
+// are typically 5-20 deg). The function returns what the formulas give and does
+// not enforce it.
+//
+// Units: SI throughout (m, Pa, N m^2). The geometry is not checked for
+// consistency (wires of one layer overlapping each other or the core).
+
+#include <vector>
+
+namespace stockbridge::strand {
+
+/// One helical layer of identical wires.
+struct StrandLayer {
+  int count = 0;              ///< N_j, number of wires in the layer, 1..1000
+  double wire_radius = 0.0;   ///< r_j, radius of each wire, m, > 0
+  double pitch_radius = 0.0;  ///< R_j, distance of the wire axes from the strand axis, m, > 0
+  double lay_length = 0.0;    ///< lambda_j, axial length of one turn of a wire, m, > 0, finite
+};
+
+/// Constant description of a strand: a core wire and any number of layers (possibly none).
+struct Strand {
+  double core_radius = 0.0;         ///< r_c, radius of the core wire, m, > 0
+  double youngs_modulus = 210e9;    ///< E, Pa, > 0 (default: steel)
+  std::vector<StrandLayer> layers;  ///< layers from the inside out
+};
+
+/// The two limiting bending stiffnesses of a strand.
+struct StrandBounds {
+  double ei_min = 0.0;  ///< no friction between the wires (A.4), N m^2
+  double ei_max = 0.0;  ///< no slip between the wires (A.1) without B_ij, N m^2
+};
+
+/// Lay angle alpha of a layer, rad, from tan alpha = 2 pi R / lambda (in [0, pi/2)).
+double lay_angle(const StrandLayer& layer);
+
+/// Throws InvalidParameter naming the field, e.g.
+/// "layer[1].lay_length = -0.05: expected a finite value > 0 (m)".
+/// Every length and E must be finite and > 0; counts run from 1 to 1000.
+/// (Straight wires, lambda -> inf, are approximated by any very long lay length.)
+void validate(const Strand& strand);
+
+/// EI_min and EI_max of `strand` (validated first; throws InvalidParameter, or
+/// NumericalError if absurd sizes overflow a double).
+StrandBounds strand_bounds(const Strand& strand);
+
+}  // namespace stockbridge::strand

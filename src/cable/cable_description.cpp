@@ -1,0 +1,51 @@
+#include "stockbridge/cable/cable_description.hpp"
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::cable {
+
+void CableDescription::validate() const {
+  require_positive("length", length, "m");
+  require_in_range("sections", sections, 1, 5000);
+  ei.check_values("ei", [](std::string_view name, double v) { require_positive(name, v, "N m^2"); });
+  for (std::size_t j = 0; j < jenkin.size(); ++j) {
+    const std::string name = fmt::format("jenkin[{}]", j);
+    jenkin[j].c.check_values(name + ".c", [](std::string_view n, double v) { require_positive(n, v, "N m^2"); });
+    jenkin[j].h.check_values(name + ".h", [](std::string_view n, double v) { require_positive(n, v, "N m"); });
+    require_non_negative(name + ".k0", jenkin[j].k0, "N");
+  }
+  if (mirror_length) {
+    require_positive("mirror_length", *mirror_length, "m");
+    if (length > 2.0 * *mirror_length) {
+      throw_invalid("length", length,
+                    fmt::format("at most twice mirror_length = {} m for the mirror method", *mirror_length));
+    }
+  }
+  if (lever_arm_cap) require_positive("lever_arm_cap", *lever_arm_cap, "m");
+}
+
+double CableDescription::profile_position(double s) const {
+  if (!mirror_length || s <= 0.5 * length) return s;
+  return length - s;
+}
+
+bool CableDescription::uses_modified_masing() const {
+  for (const JenkinProfile& e : jenkin) {
+    if (e.k0 > 0.0) return true;
+  }
+  return false;
+}
+
+CableDescription CableDescription::uniform(double length, int sections, double ei,
+                                           std::vector<std::pair<double, double>> jenkin_c_h) {
+  CableDescription d;
+  d.length = length;
+  d.sections = sections;
+  d.ei = Profile::constant(ei);
+  for (const auto& [c, h] : jenkin_c_h) d.jenkin.push_back({Profile::constant(c), Profile::constant(h), 0.0});
+  return d;
+}
+
+}  // namespace stockbridge::cable

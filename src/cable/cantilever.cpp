@@ -1,0 +1,222 @@
+#include "stockbridge/cable/cantilever.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <Eigen/LU>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::cable {
+
+Eigen::Matrix2d tip_flexibility(const Cable& cable, std::span<const double> tangent) {
+  const double l = cable.length();
+  const auto s = cable.positions();
+  const auto w = cable.weights();
+  double a = 0.0, b = 0.0, d = 0.0, e = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double g = w[i] / tangent[i];
+    a += g;
+    b -= g * s[i];
+    d += g * (l - s[i]);
+    e -= g * (l - s[i]) * s[i];
+  }
+  Eigen::Matrix2d f;
+  f << a, b, d, e;
+  return f;
+}
+
+CableState CableState::virgin(const Cable& cable) {
+  const std::size_t n = cable.sections();
+  CableState state;
+  state.curvature.assign(n, 0.0);
+  state.hysteretic.assign(n * cable.elements(), 0.0);
+  state.tangent.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    double k = cable.ei(i);
+    for (const section::Jenkin& e : cable.jenkin(i)) k += e.c;
+    state.tangent[i] = k;
+  }
+  state.flexibility = tip_flexibility(cable, state.tangent);
+  return state;
+}
+
+Eigen::Matrix2d CableState::tip_stiffness(double length) const {
+  const Eigen::Matrix2d k = flexibility.inverse();  // d(T, F)/d(phi, x)
+  Eigen::Matrix2d out;  // d(F, Q)/d(x, phi), Q = T - F l
+  out(0, 0) = k(1, 1);
+  out(0, 1) = k(1, 0);
+  out(1, 0) = k(0, 1) - length * k(1, 1);
+  out(1, 1) = k(0, 0) - length * k(1, 0);
+  return out;
+}
+
+void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
+                 CableState& to, CableWorkspace& workspace) {
+  const std::size_t n = cable.sections();
+  const std::size_t m = cable.elements();
+  const double l = cable.length();
+  const auto s = cable.positions();
+  const auto w = cable.weights();
+  if (cable.modified_masing() && workspace.jenkin.size() < m) {
+    workspace.jenkin.resize(m);
+    workspace.hysteretic.resize(m);
+  }
+  const double lever_cap = cable.description().lever_arm_limit();
+  double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double moment = clamp_moment - tip_force * s[i];
+    std::span<const section::Jenkin> jenkin = cable.jenkin(i);
+    std::span<const double> h_from = std::span<const double>(from.hysteretic).subspan(i * m, m);
+    if (cable.modified_masing()) {
+      const double lever = tip_force != 0.0 ? std::min(std::abs(moment / tip_force), lever_cap) : lever_cap;
+      for (std::size_t j = 0; j < m; ++j) {
+        const double h = jenkin[j].h + cable.k0()[j] * lever;
+        workspace.jenkin[j] = {jenkin[j].c, h};
+        workspace.hysteretic[j] = std::clamp(h_from[j], -h, h);
+      }
+      jenkin = std::span<const section::Jenkin>(workspace.jenkin).first(m);
+      h_from = std::span<const double>(workspace.hysteretic).first(m);
+    }
+    double dk = 0.0;
+    section::solve_curvature_increment(cable.ei(i), jenkin, h_from, from.curvature[i], moment, dk);  // ei > 0
+    const section::JenkinStep step =
+        section::jenkin_step(jenkin, h_from, dk, std::span<double>(to.hysteretic).subspan(i * m, m));
+    const double kappa = from.curvature[i] + dk;
+    to.curvature[i] = kappa;
+    to.tangent[i] = cable.ei(i) + step.stick_stiffness;
+    rotation += w[i] * kappa;
+    deflection += w[i] * (l - s[i]) * kappa;
+    dissipated += w[i] * step.dissipated;
+  }
+  to.clamp_moment = clamp_moment;
+  to.tip_force = tip_force;
+  to.rotation = rotation;
+  to.deflection = deflection;
+  to.flexibility = tip_flexibility(cable, to.tangent);
+  to.dissipated = from.dissipated + dissipated;
+}
+
+void CantileverOptions::validate() const {
+  require_in_range("max_iterations", max_iterations, 1, 10000);
+  require_positive("tolerance", tolerance, "");
+  require_in_range("max_halvings", max_halvings, 0, 200);
+}
+
+namespace {
+CantileverOptions validated(CantileverOptions options) {
+  options.validate();
+  return options;
+}
+}  // namespace
+
+Cantilever::Cantilever(Cable cable, CantileverOptions options)
+    : cable_(std::move(cable)),
+      options_(validated(options)),
+      state_(CableState::virgin(cable_)),
+      elastic_flexibility_(state_.committed().flexibility),
+      candidate_(state_.committed()) {}
+
+void Cantilever::commit() {
+  const double l = cable_.length();
+  last_increment_ = {trial().rotation - committed().rotation, (trial().deflection - committed().deflection) / l};
+  state_.commit();
+}
+
+void Cantilever::set_trial_loads(double clamp_moment, double tip_force) {
+  require_finite("clamp_moment", clamp_moment, "N m");
+  require_finite("tip_force", tip_force, "N");
+  apply_loads(cable_, state_.committed(), clamp_moment, tip_force, state_.trial(), workspace_);
+}
+
+StateDetermination Cantilever::set_trial_tip(double deflection, double rotation) {
+  require_finite("deflection", deflection, "m");
+  require_finite("rotation", rotation, "rad");
+  return solve<2>(Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity(),
+                  Eigen::Vector2d(rotation, deflection / cable_.length()));
+}
+
+StateDetermination Cantilever::set_trial_deflection(double deflection) {
+  require_finite("deflection", deflection, "m");
+  // Q = 0: T = F l, i.e. scaled loads (T, F l) = (1, 1) q; only x is prescribed.
+  return solve<1>(Eigen::Vector2d(1.0, 1.0), Eigen::RowVector2d(0.0, 1.0),
+                  Eigen::Matrix<double, 1, 1>(deflection / cable_.length()));
+}
+
+// Newton's method in scaled variables: loads p = (T, F l) in N m, kinematics
+// k = (phi, x / l) in rad. The unknowns q give p = B q; the residual is C k - target.
+template <int K>
+StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const Eigen::Matrix<double, K, 2>& C,
+                                     const Eigen::Matrix<double, K, 1>& target) {
+  using VectorK = Eigen::Matrix<double, K, 1>;
+  using MatrixK = Eigen::Matrix<double, K, K>;
+  const double l = cable_.length();
+  const Eigen::Vector2d scale_loads(1.0, l);           // (T, F) -> (T, F l)
+  const Eigen::Vector2d scale_kinematics(1.0, 1.0 / l);  // (phi, x) -> (phi, x / l)
+  auto scaled_kinematics = [&](const CableState& s) {
+    return Eigen::Vector2d(s.rotation, s.deflection).cwiseProduct(scale_kinematics).eval();
+  };
+  auto scaled_jacobian = [&](const Eigen::Matrix2d& f) -> MatrixK {
+    const Eigen::Matrix2d g = scale_kinematics.asDiagonal() * f * scale_loads.cwiseInverse().asDiagonal();
+    return C * g * B;
+  };
+  const CableState& from = state_.committed();
+  StateDetermination result;
+  auto evaluate = [&](const VectorK& q, CableState& into) -> VectorK {
+    const Eigen::Vector2d p = (B * q).cwiseQuotient(scale_loads);
+    apply_loads(cable_, from, p(0), p(1), into, workspace_);
+    ++result.evaluations;
+    return C * scaled_kinematics(into) - target;
+  };
+
+  // Predictor: the committed tangent when loading goes on in the same direction,
+  // the all-stick tangent after a reversal (where every element sticks again).
+  const Eigen::Vector2d committed_loads =
+      Eigen::Vector2d(from.clamp_moment, from.tip_force).cwiseProduct(scale_loads);
+  VectorK q = (B.transpose() * B).inverse() * (B.transpose() * committed_loads);
+  const VectorK committed_kinematics = C * scaled_kinematics(from);
+  const VectorK increment = target - committed_kinematics;
+  const bool continuing = (C * last_increment_).dot(increment) > 0.0;
+  q += scaled_jacobian(continuing ? from.flexibility : elastic_flexibility_).inverse() * increment;
+
+  const double scale = std::max({target.template lpNorm<Eigen::Infinity>(),
+                                 committed_kinematics.template lpNorm<Eigen::Infinity>(), 1e-12});
+  CableState& trial = state_.trial();
+  VectorK residual = evaluate(q, trial);
+  double norm = residual.norm();
+  while (true) {
+    if (norm <= options_.tolerance * scale) {
+      result.converged = true;
+      break;
+    }
+    if (result.iterations == options_.max_iterations || !std::isfinite(norm)) break;
+    ++result.iterations;
+    const VectorK step = -scaled_jacobian(trial.flexibility).inverse() * residual;
+    bool accepted = false;
+    double alpha = 1.0;
+    for (int halving = 0; halving <= options_.max_halvings; ++halving, alpha *= 0.5) {
+      const VectorK q_try = q + alpha * step;
+      const VectorK residual_try = evaluate(q_try, candidate_);
+      const double norm_try = residual_try.norm();
+      if (norm_try <= (1.0 - 1e-4 * alpha) * norm) {
+        q = q_try;
+        residual = residual_try;
+        norm = norm_try;
+        std::swap(trial, candidate_);
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+  }
+  result.residual = norm;
+  return result;
+}
+
+template StateDetermination Cantilever::solve<1>(const Eigen::Matrix<double, 2, 1>&, const Eigen::Matrix<double, 1, 2>&,
+                                                 const Eigen::Matrix<double, 1, 1>&);
+template StateDetermination Cantilever::solve<2>(const Eigen::Matrix<double, 2, 2>&, const Eigen::Matrix<double, 2, 2>&,
+                                                 const Eigen::Matrix<double, 2, 1>&);
+
+}  // namespace stockbridge::cable

@@ -1,0 +1,63 @@
+#include "stockbridge/strand/strand_bounds.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::strand {
+
+namespace {
+
+/// Second moment of area of a circular wire about its own axis, pi r^4 / 4, m^4.
+double wire_inertia(double radius) { return std::numbers::pi * std::pow(radius, 4) / 4.0; }
+
+/// cos alpha = 1 / sqrt(1 + tan^2 alpha), tan alpha = 2 pi R / lambda.
+double cos_lay_angle(const StrandLayer& layer) {
+  return 1.0 / std::hypot(1.0, 2.0 * std::numbers::pi * layer.pitch_radius / layer.lay_length);
+}
+
+}  // namespace
+
+double lay_angle(const StrandLayer& layer) {
+  return std::atan(2.0 * std::numbers::pi * layer.pitch_radius / layer.lay_length);
+}
+
+void validate(const Strand& strand) {
+  require_positive("youngs_modulus", strand.youngs_modulus, "Pa");
+  require_positive("core_radius", strand.core_radius, "m");
+  for (std::size_t j = 0; j < strand.layers.size(); ++j) {
+    const StrandLayer& layer = strand.layers[j];
+    require_in_range(fmt::format("layer[{}].count", j), layer.count, 1, 1000);
+    require_positive(fmt::format("layer[{}].wire_radius", j), layer.wire_radius, "m");
+    require_positive(fmt::format("layer[{}].pitch_radius", j), layer.pitch_radius, "m");
+    require_positive(fmt::format("layer[{}].lay_length", j), layer.lay_length, "m");
+  }
+}
+
+StrandBounds strand_bounds(const Strand& strand) {
+  validate(strand);
+  // Sums of second moments of area, m^4; E multiplies once at the end.
+  const double core = wire_inertia(strand.core_radius);
+  double free_wires = core;   // (A.4), (A.5)
+  double no_slip = core;      // (A.1) without B_ij
+  for (const StrandLayer& layer : strand.layers) {
+    const double n = layer.count;
+    const double r = layer.wire_radius;
+    const double R = layer.pitch_radius;
+    free_wires += n * wire_inertia(r);
+    // N/2 pi r^2 (r^2/2 + R^2) = N (pi r^4/4 + pi r^2 R^2 / 2): each wire about its own
+    // axis plus Steiner's term averaged over the wire's turn around the strand axis.
+    no_slip += n / 2.0 * std::numbers::pi * r * r * (r * r / 2.0 + R * R) * std::pow(cos_lay_angle(layer), 3);
+  }
+  const StrandBounds bounds{strand.youngs_modulus * free_wires, strand.youngs_modulus * no_slip};
+  if (!std::isfinite(bounds.ei_min) || !std::isfinite(bounds.ei_max)) {
+    throw NumericalError(fmt::format("strand bending stiffness overflows (ei_min = {}, ei_max = {} N m^2)",
+                                     format_value(bounds.ei_min), format_value(bounds.ei_max)));
+  }
+  return bounds;
+}
+
+}  // namespace stockbridge::strand

@@ -1,0 +1,201 @@
+// The cantilever's state determination: exact flexibility, Newton convergence on
+// random paths, the trial/commit protocol, convergence in the number of sections.
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "stockbridge/cable/cantilever.hpp"
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::cable {
+namespace {
+
+CableDescription two_element_cable(int sections = 40) {
+  return CableDescription::uniform(0.3, sections, 2.8, {{20.0, 0.7}, {6.0, 0.15}});
+}
+
+/// A hysteretic state: load, reverse, and stop part way.
+Cantilever loaded_cantilever() {
+  Cantilever cantilever{Cable(two_element_cable())};
+  for (const auto& [x, phi] : std::vector<std::pair<double, double>>{{0.02, 0.05}, {-0.01, -0.02}, {0.004, 0.01}}) {
+    EXPECT_TRUE(cantilever.set_trial_tip(x, phi).converged);
+    cantilever.commit();
+  }
+  return cantilever;
+}
+
+// d(phi, x)/d(T, F) equals finite differences of the exact load evaluation.
+TEST(Cantilever, FlexibilityMatchesFiniteDifferences) {
+  Cantilever cantilever = loaded_cantilever();
+  const CableState base = cantilever.committed();
+  int checked = 0;
+  for (const auto& [dT, dF] : std::vector<std::pair<double, double>>{{0.3, 1.0}, {-0.2, -0.5}, {0.05, -0.4}, {-0.6, 2.0}}) {
+    const double T = base.clamp_moment + dT;
+    const double F = base.tip_force + dF;
+    cantilever.set_trial_loads(T, F);
+    const CableState at = cantilever.trial();
+    const double h = 1e-7;
+    cantilever.set_trial_loads(T + h * dT / std::abs(dT), F);
+    const CableState dt = cantilever.trial();
+    cantilever.set_trial_loads(T, F + h * dF / std::abs(dF));
+    const CableState df = cantilever.trial();
+    if (dt.tangent != at.tangent || df.tangent != at.tangent) continue;  // a breakpoint in between
+    const double sT = dT / std::abs(dT), sF = dF / std::abs(dF);
+    const double tol = 1e-6;
+    EXPECT_NEAR((dt.rotation - at.rotation) / (h * sT), at.flexibility(0, 0), tol * std::abs(at.flexibility(0, 0)));
+    EXPECT_NEAR((dt.deflection - at.deflection) / (h * sT), at.flexibility(1, 0), tol * std::abs(at.flexibility(1, 0)));
+    EXPECT_NEAR((df.rotation - at.rotation) / (h * sF), at.flexibility(0, 1), tol * std::abs(at.flexibility(0, 1)));
+    EXPECT_NEAR((df.deflection - at.deflection) / (h * sF), at.flexibility(1, 1), tol * std::abs(at.flexibility(1, 1)));
+    ++checked;
+  }
+  EXPECT_GE(checked, 3);
+}
+
+// The tip stiffness d(F, Q)/d(x, phi) inverts the flexibility with Q = T - F l.
+TEST(Cantilever, TipStiffnessOfAnElasticCable) {
+  const double ei = 5.0, l = 0.2;
+  Cantilever cantilever{Cable(CableDescription::uniform(l, 8, ei, {}))};
+  const Eigen::Matrix2d k = cantilever.committed().tip_stiffness(l);
+  // Classical beam: F = 12 EI/l^3 x - 6 EI/l^2 phi, Q = -6 EI/l^2 x + 4 EI/l phi.
+  EXPECT_NEAR(k(0, 0), 12.0 * ei / std::pow(l, 3), 1e-9 * k(0, 0));
+  EXPECT_NEAR(k(0, 1), -6.0 * ei / std::pow(l, 2), 1e-9 * std::abs(k(0, 1)));
+  EXPECT_NEAR(k(1, 0), -6.0 * ei / std::pow(l, 2), 1e-9 * std::abs(k(1, 0)));
+  EXPECT_NEAR(k(1, 1), 4.0 * ei / l, 1e-9 * k(1, 1));
+}
+
+// Newton with the exact flexibility and a line search converges on random
+// paths with reversals, for every kind of prescription, in a few iterations.
+TEST(Cantilever, NewtonConvergesOnRandomPaths) {
+  Cantilever cantilever{Cable(two_element_cable())};
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> dx(-0.01, 0.01), dphi(-0.05, 0.05);
+  std::uniform_int_distribution<int> kind(0, 2);
+  double x = 0.0, phi = 0.0;
+  int total_iterations = 0, max_iterations = 0;
+  const int steps = 3000;
+  for (int i = 0; i < steps; ++i) {
+    StateDetermination r;
+    switch (kind(rng)) {
+      case 0: x += dx(rng); phi += dphi(rng); r = cantilever.set_trial_tip(x, phi); break;
+      case 1: x += dx(rng); r = cantilever.set_trial_deflection(x); break;
+      default: phi += dphi(rng); r = cantilever.set_trial_rotation(phi); break;
+    }
+    ASSERT_TRUE(r.converged) << "step " << i << " residual " << r.residual;
+    total_iterations += r.iterations;
+    max_iterations = std::max(max_iterations, r.iterations);
+    const CableState& s = cantilever.trial();
+    x = s.deflection;
+    phi = s.rotation;
+    cantilever.commit();
+  }
+  EXPECT_LE(max_iterations, 8);
+  EXPECT_LT(static_cast<double>(total_iterations) / steps, 3.0);
+}
+
+TEST(Cantilever, MixedFormsHoldTheirConstraints) {
+  Cantilever cantilever{Cable(two_element_cable())};
+  ASSERT_TRUE(cantilever.set_trial_deflection(0.03).converged);
+  EXPECT_NEAR(cantilever.trial().tip_moment(0.3), 0.0, 1e-12);
+  EXPECT_NEAR(cantilever.trial().deflection, 0.03, 1e-13);
+  cantilever.commit();
+  ASSERT_TRUE(cantilever.set_trial_rotation(-0.1).converged);
+  EXPECT_NEAR(cantilever.trial().deflection, 0.0, 1e-13);
+  EXPECT_NEAR(cantilever.trial().rotation, -0.1, 1e-12);
+}
+
+TEST(Cantilever, NonConvergenceIsAResultNotANumber) {
+  // A tolerance below round-off cannot be met: the solver must say so.
+  CantileverOptions options;
+  options.max_iterations = 3;
+  options.tolerance = 1e-30;
+  Cantilever cantilever{Cable(two_element_cable()), options};
+  cantilever.set_trial_tip(0.05, 0.1);
+  cantilever.commit();
+  const StateDetermination r = cantilever.set_trial_tip(-0.04, 0.3);
+  EXPECT_FALSE(r.converged);
+  EXPECT_LE(r.iterations, 3);
+  EXPECT_TRUE(std::isfinite(r.residual));
+  cantilever.revert_to_last_commit();
+  EXPECT_EQ(cantilever.trial().deflection, cantilever.committed().deflection);
+}
+
+TEST(Cantilever, DissipationOnlyGrowsAndRevertRestores) {
+  Cantilever cantilever{Cable(two_element_cable())};
+  double previous = 0.0;
+  for (int k = 0; k <= 400; ++k) {
+    ASSERT_TRUE(cantilever.set_trial_deflection(0.04 * std::sin(2 * M_PI * k / 100.0)).converged);
+    ASSERT_GE(cantilever.trial().dissipated, previous);
+    cantilever.commit();
+    previous = cantilever.committed().dissipated;
+  }
+  EXPECT_GT(previous, 0.0);
+  const CableState committed = cantilever.committed();
+  cantilever.set_trial_tip(0.1, 0.4);
+  cantilever.revert_to_last_commit();
+  EXPECT_EQ(cantilever.trial().hysteretic, committed.hysteretic);
+  EXPECT_EQ(cantilever.trial().tip_force, committed.tip_force);
+}
+
+/// Tip force after a loading, unloading and reloading path, with n sections.
+double force_after_path(int sections) {
+  Cantilever cantilever{Cable(two_element_cable(sections))};
+  for (const double x : {0.01, 0.02, 0.03, 0.015, 0.0, -0.01, 0.005}) {
+    EXPECT_TRUE(cantilever.set_trial_deflection(x).converged);
+    cantilever.commit();
+  }
+  return cantilever.committed().tip_force;
+}
+
+// The curvature has kinks at stick-slip boundaries, so Gauss-Legendre converges
+// as n^-2 (not spectrally): the observed order over n = 10 .. 160 is about 2.
+TEST(Cantilever, ConvergesInSectionsAtSecondOrder) {
+  const double reference = force_after_path(2560);
+  std::vector<double> n, error;
+  for (const int sections : {10, 20, 40, 80, 160}) {
+    n.push_back(std::log(sections));
+    error.push_back(std::log(std::abs(force_after_path(sections) - reference)));
+  }
+  // Least-squares slope of log error over log n.
+  double mean_n = 0, mean_e = 0;
+  for (std::size_t i = 0; i < n.size(); ++i) mean_n += n[i] / n.size(), mean_e += error[i] / n.size();
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < n.size(); ++i) sxy += (n[i] - mean_n) * (error[i] - mean_e), sxx += (n[i] - mean_n) * (n[i] - mean_n);
+  const double order = -sxy / sxx;
+  RecordProperty("observed_order", std::to_string(order));
+  EXPECT_GT(order, 1.7);
+  EXPECT_LT(order, 3.0);
+  EXPECT_LT(std::exp(error[2]), 1e-3 * std::abs(reference));  // 40 sections: better than 0.1 %
+}
+
+// With smooth parameters and no slip the rule is spectral: an elastic cable with a
+// linearly varying ei is exact to round-off with a handful of points.
+TEST(Cantilever, SmoothProfileConvergesSpectrally) {
+  auto force = [](int sections) {
+    CableDescription d = CableDescription::uniform(0.3, sections, 1.0, {});
+    d.ei = Profile::table({0.0, 0.3}, {4.0, 1.5}, "ei");
+    Cantilever cantilever{Cable(d)};
+    EXPECT_TRUE(cantilever.set_trial_deflection(0.01).converged);
+    return cantilever.trial().tip_force;
+  };
+  const double reference = force(200);
+  EXPECT_GT(std::abs(force(3) - reference), 1e-6 * reference);
+  EXPECT_LT(std::abs(force(16) - reference), 1e-12 * reference);
+}
+
+TEST(Cantilever, RejectsBadDescriptions) {
+  EXPECT_THROW(Cable(CableDescription::uniform(0.0, 40, 2.8, {})), InvalidParameter);
+  EXPECT_THROW(Cable(CableDescription::uniform(0.3, 0, 2.8, {})), InvalidParameter);
+  EXPECT_THROW(Cable(CableDescription::uniform(0.3, 40, 0.0, {{20.0, 0.7}})), InvalidParameter);  // ei > 0 on a cable
+  EXPECT_THROW(Cable(CableDescription::uniform(0.3, 40, 2.8, {{20.0, -0.7}})), InvalidParameter);
+  CantileverOptions options;
+  options.tolerance = 0.0;
+  EXPECT_THROW(Cantilever(Cable(two_element_cable()), options), InvalidParameter);
+  Cantilever cantilever{Cable(two_element_cable())};
+  EXPECT_THROW(cantilever.set_trial_tip(NAN, 0.0), InvalidParameter);
+}
+
+}  // namespace
+}  // namespace stockbridge::cable

@@ -1,0 +1,161 @@
+// Strand bending-stiffness bounds (MODEL.md section 7): closed forms, the
+// no-slip stiffness cross-checked against wire-by-wire parallel-axis sums,
+// monotonicity in the lay length, and validation messages.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/strand_file.hpp"
+#include "stockbridge/strand/strand_bounds.hpp"
+
+namespace stockbridge::strand {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kE = 210e9;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A lay length so long that tan alpha underflows: cos alpha == 1 exactly (straight wires).
+constexpr double kStraight = std::numeric_limits<double>::max();
+
+/// The 19-wire strand of examples/strand_19wire.toml: 1 + 6 + 12 wires of radius 1 mm
+/// on pitch radii 2 mm and 4 mm, lay lengths 60 mm and 100 mm.
+Strand nineteen_wire(double lay1 = 0.060, double lay2 = 0.100) {
+  return Strand{0.001, kE, {{6, 0.001, 0.002, lay1}, {12, 0.001, 0.004, lay2}}};
+}
+
+std::string message_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const InvalidParameter& e) {
+    return e.what();
+  }
+  return "(no InvalidParameter thrown)";
+}
+
+void expect_relative(double actual, double expected, double tolerance) {
+  EXPECT_LE(std::abs(actual - expected), tolerance * std::abs(expected))
+      << "actual " << actual << ", expected " << expected;
+}
+
+TEST(StrandBounds, MinimumOfNineteenWiresIsNineteenFreeWires) {
+  // 19 E pi r^4 / 4 with r = 1 mm, E = 210 GPa: 3.1337 N m^2, whatever the lay.
+  const double expected = 19.0 * kE * kPi * std::pow(0.001, 4) / 4.0;
+  EXPECT_NEAR(expected, 3.1337, 1e-4);
+  expect_relative(strand_bounds(nineteen_wire()).ei_min, expected, 1e-9);
+  expect_relative(strand_bounds(nineteen_wire(0.01, 0.02)).ei_min, expected, 1e-9);
+}
+
+TEST(StrandBounds, MaximumOfStraightLayerMatchesParallelAxisFormula) {
+  // cos alpha = 1: EI_max = E (pi rc^4/4 + N (pi r^4/4 + pi r^2 R^2 / 2)).
+  const double rc = 0.0012;
+  const double r = 0.0009;
+  const double R = 0.0021;
+  const Strand strand{rc, kE, {{6, r, R, kStraight}}};
+  const double hand = kE * (kPi * std::pow(rc, 4) / 4.0 + 6.0 * (kPi * std::pow(r, 4) / 4.0 + kPi * r * r * R * R / 2.0));
+  expect_relative(strand_bounds(strand).ei_max, hand, 1e-12);
+  EXPECT_LT(lay_angle(strand.layers[0]), 1e-300);  // tan alpha underflows to a denormal
+}
+
+TEST(StrandBounds, StraightMaximumEqualsWireByWireSteinerSum) {
+  // Two ways to the same number: for straight wires the no-slip stiffness is the
+  // sum over the wires of E (pi r^4/4 + A y_i^2), y_i the wire's distance from the
+  // bending axis, for any orientation theta of the strand (N >= 3 wires per layer).
+  const Strand strand{0.001, kE, {{6, 0.001, 0.002, kStraight}, {12, 0.001, 0.004, kStraight}}};
+  const double formula = strand_bounds(strand).ei_max;
+  for (const double theta : {0.0, 0.1, 0.7, 2.0}) {
+    double sum = kPi * std::pow(strand.core_radius, 4) / 4.0;
+    for (const StrandLayer& layer : strand.layers) {
+      for (int i = 0; i < layer.count; ++i) {
+        const double y = layer.pitch_radius * std::sin(theta + 2.0 * kPi * i / layer.count);
+        sum += kPi * std::pow(layer.wire_radius, 4) / 4.0 + kPi * layer.wire_radius * layer.wire_radius * y * y;
+      }
+    }
+    expect_relative(formula, kE * sum, 1e-12);
+  }
+}
+
+TEST(StrandBounds, MaximumOfHelicalLayersCarriesCosCubedOfTheLayAngle) {
+  // Lay angle through the trigonometric route, alpha = atan(2 pi R / lambda).
+  const Strand strand = nineteen_wire();
+  double sum = kPi * std::pow(0.001, 4) / 4.0;
+  for (const StrandLayer& layer : strand.layers) {
+    const double alpha = std::atan(2.0 * kPi * layer.pitch_radius / layer.lay_length);
+    EXPECT_DOUBLE_EQ(lay_angle(layer), alpha);
+    const double r = layer.wire_radius;
+    sum += layer.count / 2.0 * kPi * r * r * (r * r / 2.0 + layer.pitch_radius * layer.pitch_radius) *
+           std::pow(std::cos(alpha), 3);
+  }
+  expect_relative(strand_bounds(strand).ei_max, kE * sum, 1e-12);
+  expect_relative(strand_bounds(strand).ei_max, 68.09624780759316, 1e-9);  // the docs' figure
+}
+
+TEST(StrandBounds, MaximumExceedsMinimum) {
+  const StrandBounds bounds = strand_bounds(nineteen_wire());
+  EXPECT_GT(bounds.ei_max, bounds.ei_min);
+  EXPECT_GT(bounds.ei_max, 10.0 * bounds.ei_min);  // the dissertation's cable: 66.28 vs 3.19
+}
+
+TEST(StrandBounds, MaximumDecreasesAsTheLayLengthShortens) {
+  double previous = strand_bounds(nineteen_wire(kStraight, kStraight)).ei_max;
+  for (double lay = 10.0; lay >= 0.005; lay *= 0.8) {
+    const double current = strand_bounds(nineteen_wire(lay, lay)).ei_max;
+    EXPECT_LT(current, previous) << "lay length " << lay << " m";
+    previous = current;
+  }
+  // and tends to the straight-wire value as the lay length grows
+  expect_relative(strand_bounds(nineteen_wire(1e6, 1e6)).ei_max,
+                  strand_bounds(nineteen_wire(kStraight, kStraight)).ei_max, 1e-9);
+}
+
+TEST(StrandBounds, SingleWireHasEqualBoundsAndScalesWithE) {
+  const StrandBounds steel = strand_bounds(Strand{0.002, kE, {}});
+  EXPECT_DOUBLE_EQ(steel.ei_min, kE * kPi * std::pow(0.002, 4) / 4.0);
+  EXPECT_DOUBLE_EQ(steel.ei_max, steel.ei_min);
+  const StrandBounds aluminium = strand_bounds(Strand{0.002, 70e9, {}});
+  EXPECT_DOUBLE_EQ(aluminium.ei_min, steel.ei_min / 3.0);
+  EXPECT_EQ(Strand{}.youngs_modulus, 210e9);
+}
+
+TEST(StrandValidation, NamesTheFieldTheValueAndTheExpectation) {
+  auto with = [](const std::function<void(Strand&)>& change) {
+    Strand strand = nineteen_wire();
+    change(strand);
+    return message_of([&] { strand_bounds(strand); });
+  };
+  EXPECT_EQ(with([](Strand& s) { s.layers[1].lay_length = -0.05; }),
+            "layer[1].lay_length = -0.05: expected a finite value > 0 (m)");
+  EXPECT_EQ(with([](Strand& s) { s.layers[1].lay_length = kInf; }),
+            "layer[1].lay_length = inf: expected a finite value > 0 (m)");
+  EXPECT_EQ(with([](Strand& s) { s.layers[0].wire_radius = 0.0; }),
+            "layer[0].wire_radius = 0: expected a finite value > 0 (m)");
+  EXPECT_EQ(with([](Strand& s) { s.layers[0].pitch_radius = kNaN; }),
+            "layer[0].pitch_radius = nan: expected a finite value > 0 (m)");
+  EXPECT_EQ(with([](Strand& s) { s.layers[1].count = 0; }), "layer[1].count = 0: expected an integer from 1 to 1000");
+  EXPECT_EQ(with([](Strand& s) { s.core_radius = -0.001; }), "core_radius = -0.001: expected a finite value > 0 (m)");
+  EXPECT_EQ(with([](Strand& s) { s.youngs_modulus = 0.0; }), "youngs_modulus = 0: expected a finite value > 0 (Pa)");
+  EXPECT_EQ(message_of([] { validate(Strand{}); }), "core_radius = 0: expected a finite value > 0 (m)");
+  EXPECT_NO_THROW(validate(nineteen_wire()));
+}
+
+TEST(StrandFile, ReadsTheShippedExample) {
+  const Strand strand = io::read_strand_file(STOCKBRIDGE_SOURCE_DIR "/examples/strand_19wire.toml");
+  EXPECT_EQ(strand.youngs_modulus, 210e9);
+  EXPECT_EQ(strand.core_radius, 0.001);
+  ASSERT_EQ(strand.layers.size(), 2u);
+  EXPECT_EQ(strand.layers[0].count, 6);
+  EXPECT_EQ(strand.layers[1].count, 12);
+  EXPECT_EQ(strand.layers[1].pitch_radius, 0.004);
+  EXPECT_EQ(strand.layers[0].lay_length, 0.060);
+  EXPECT_EQ(strand.layers[1].lay_length, 0.100);
+  EXPECT_THROW(io::read_strand_file(STOCKBRIDGE_SOURCE_DIR "/examples/no-such-strand.toml"), InputError);
+}
+
+}  // namespace
+}  // namespace stockbridge::strand
