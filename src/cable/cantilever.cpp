@@ -124,6 +124,11 @@ void Cantilever::commit() {
   state_.commit();
 }
 
+void Cantilever::reset() {
+  state_ = Committable<CableState>(CableState::virgin(cable_));
+  last_increment_.setZero();
+}
+
 void Cantilever::set_trial_loads(double clamp_moment, double tip_force) {
   require_finite("clamp_moment", clamp_moment, "N m");
   require_finite("tip_force", tip_force, "N");

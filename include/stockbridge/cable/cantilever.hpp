@@ -94,6 +94,8 @@ class Cantilever {
   const CableState& committed() const { return state_.committed(); }
   void commit();
   void revert_to_last_commit() { state_.revert_to_last_commit(); }
+  /// Back to the virgin state.
+  void reset();
 
  private:
   template <int K>

@@ -32,6 +32,13 @@ struct JenkinStep {
   double dissipated = 0.0;       ///< energy the sliders dissipate in the step, J/m (per unit length)
 };
 
+/// Whether an element slips in the monotone step dkappa from the moment h_from (the
+/// classification jenkin_step uses; exposed for derivative propagation).
+inline bool jenkin_slips(const Jenkin& element, double h_from, double dkappa) {
+  const double elastic = h_from + element.c * dkappa;
+  return (dkappa > 0.0 && elastic >= element.h) || (dkappa < 0.0 && elastic <= -element.h);
+}
+
 /// Exact return mapping for the monotone curvature increment `dkappa`:
 /// h_to[j] = clamp(h_from[j] + c_j dkappa, -h_j, h_j).
 ///

@@ -1,0 +1,69 @@
+#pragma once
+// Drives an arm's cable through a sampled periodic path of tip kinematics
+// u_j = (x_j, phi_j), j = 0..N-1 (one period, t_j = j T / N), starting from the
+// virgin state, for a fixed number of periods, and returns the loads of the last
+// one with the periodicity defect (how much they changed from the period before).
+// A single Jenkin element is periodic after one pre-period (MODEL.md section 6);
+// the cable under two prescribed tip coordinates is not: its sections' memories
+// settle geometrically over several periods (defects of 1e-6 .. 1e-10 after six
+// periods are typical in the slipping regime). The number of periods is fixed per
+// call so that the loads are a deterministic, piecewise-linear function of the
+// path; the solvers raise it until the defect is small enough.
+// Each step is a monotone increment of the exact cable law.
+//
+// Optionally propagates exact forward sensitivities of the loads with respect to
+// parameters p of the path, du_j/dp = (basis row j) per degree of freedom: the
+// map from the path to the loads is piecewise linear, and on each piece its
+// derivative follows from the sticking sets of every section (the moment-driven
+// update solved for the curvature increment, differentiated, with the tip
+// kinematics constraint closing it through the exact flexibility).
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stockbridge/cable/cantilever.hpp"
+
+namespace stockbridge::damper {
+
+struct PeriodicCableResult {
+  bool converged = false;  ///< every state determination converged
+  std::string failure;     ///< why not, with where (sample, period) and by how much
+  int periods = 0;         ///< periods run in all
+  /// max |loads(last period) - loads(period before)| / max |loads|; 0 for one period.
+  double periodicity_defect = 0.0;
+  double dissipated = 0.0; ///< by the sliders over the final period, J
+  /// Loads of the final period: (F, Q) per sample, N and N m; (T, clamp-section
+  /// curvature) for output.
+  Eigen::Matrix2Xd loads;
+  std::vector<double> clamp_moment;
+  std::vector<double> clamp_curvature;
+  int max_iterations = 0;  ///< Newton iterations of any single state determination
+};
+
+class PeriodicCable {
+ public:
+  PeriodicCable(const cable::Cable& cable, cable::CantileverOptions options);
+
+  /// Loads along the periodic path `kinematics` (2 x N) in the last of `periods` periods.
+  /// With `basis` (N x C) the path is u_j = sum_c basis(j, c) q(2c + d) for DOF d,
+  /// and `sensitivity` (2N x 2C, rows 2j + d for F (d = 0) and Q (d = 1)) receives
+  /// the exact derivative of the final period's loads with respect to q.
+  PeriodicCableResult evaluate(const Eigen::Matrix2Xd& kinematics, int periods, const Eigen::MatrixXd* basis = nullptr,
+                               Eigen::MatrixXd* sensitivity = nullptr);
+
+ private:
+  void propagate_sensitivity(const cable::CableState& from, const cable::CableState& to,
+                             const Eigen::MatrixXd& basis, int sample, Eigen::MatrixXd* sensitivity);
+
+  const cable::Cable& cable_;
+  cable::Cantilever cantilever_;
+  // Sensitivity state: d kappa_i / dq (column i) and d H_(i,e) / dq (column i*m + e).
+  Eigen::MatrixXd d_curvature_;
+  Eigen::MatrixXd d_hysteretic_;
+  Eigen::MatrixXd a_all_;
+  Eigen::VectorXd a_, rhs_phi_, rhs_x_, d_clamp_moment_, d_tip_force_;
+};
+
+}  // namespace stockbridge::damper

@@ -1,0 +1,132 @@
+#include "stockbridge/damper/periodic_cable.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::damper {
+
+PeriodicCable::PeriodicCable(const cable::Cable& cable, cable::CantileverOptions options)
+    : cable_(cable), cantilever_(cable, options) {}
+
+PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, int periods,
+                                            const Eigen::MatrixXd* basis, Eigen::MatrixXd* sensitivity) {
+  require_in_range("periods", periods, 1, 100000);
+  const int n_samples = static_cast<int>(kinematics.cols());
+  const std::size_t n_sections = cable_.sections();
+  const std::size_t m = cable_.elements();
+  const bool with_sensitivity = basis && sensitivity;
+  if (with_sensitivity) {
+    const Eigen::Index p = 2 * basis->cols();
+    d_curvature_.setZero(p, static_cast<Eigen::Index>(n_sections));
+    d_hysteretic_.setZero(p, static_cast<Eigen::Index>(n_sections * m));
+    sensitivity->resize(2 * n_samples, p);
+  }
+  PeriodicCableResult result;
+  result.loads.resize(2, n_samples);
+  result.clamp_moment.resize(n_samples);
+  result.clamp_curvature.resize(n_samples);
+  Eigen::Matrix2Xd previous_loads(2, n_samples);
+  cantilever_.reset();
+  for (int period = 1; period <= periods; ++period) {
+    result.periods = period;
+    const double dissipated_before = cantilever_.committed().dissipated;
+    for (int j = 0; j < n_samples; ++j) {
+      const cable::StateDetermination solve = cantilever_.set_trial_tip(kinematics(0, j), kinematics(1, j));
+      result.max_iterations = std::max(result.max_iterations, solve.iterations);
+      if (!solve.converged) {
+        result.failure = fmt::format("cable state determination did not converge at sample {} of period {} "
+                                     "(residual {:.3g} rad after {} iterations)",
+                                     j, period, solve.residual, solve.iterations);
+        return result;
+      }
+      const cable::CableState& trial = cantilever_.trial();
+      if (with_sensitivity) propagate_sensitivity(cantilever_.committed(), trial, *basis, j, sensitivity);
+      result.loads(0, j) = trial.tip_force;
+      result.loads(1, j) = trial.tip_moment(cable_.length());
+      result.clamp_moment[j] = trial.clamp_moment;
+      result.clamp_curvature[j] = trial.curvature[0];
+      cantilever_.commit();
+    }
+    result.dissipated = cantilever_.committed().dissipated - dissipated_before;
+    if (period == periods && period >= 2) {
+      const double scale = std::max(result.loads.cwiseAbs().maxCoeff(), 1e-300);
+      result.periodicity_defect = (result.loads - previous_loads).cwiseAbs().maxCoeff() / scale;
+    }
+    if (period == periods - 1) previous_loads = result.loads;
+  }
+  result.converged = true;
+  return result;
+}
+
+// On the current piece of the piecewise-linear cable map (sticking sets fixed),
+// per section i with tangent k_i = ei + sum_{sticking e} c_e:
+//   kappa_new = a_i + M_i / k_i,   a_i = sum_{sticking e} (c_e kappa_old - H_old,e) / k_i (+ slipping terms, constant)
+//   M_i = T - F s_i,  and the tip kinematics  u = sum_i w_i [1; l - s_i] kappa_new,i.
+// Differentiating: d(T, F) = J^-1 (du - sum_i w_i [1; l - s_i] da_i), J the flexibility;
+//   d kappa_new = da_i + dM_i / k_i;  dH_new,e = dH_old,e + c_e (d kappa_new - d kappa_old) if e sticks, else 0.
+void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const cable::CableState& to,
+                                          const Eigen::MatrixXd& basis, int sample, Eigen::MatrixXd* sensitivity) {
+  const std::size_t n_sections = cable_.sections();
+  const std::size_t m = cable_.elements();
+  const Eigen::Index p = d_curvature_.rows();
+  const double l = cable_.length();
+  const auto s = cable_.positions();
+  const auto w = cable_.weights();
+  // du/dq for this sample: q(2c + d) scaled by basis(sample, c).
+  rhs_phi_.setZero(p);
+  rhs_x_.setZero(p);
+  for (Eigen::Index c = 0; c < basis.cols(); ++c) {
+    rhs_phi_(2 * c + 1) = basis(sample, c);
+    rhs_x_(2 * c) = basis(sample, c);
+  }
+  Eigen::MatrixXd& dk = d_curvature_;
+  Eigen::MatrixXd& dh = d_hysteretic_;
+  Eigen::MatrixXd& a_all = a_all_;
+  a_all.resize(p, static_cast<Eigen::Index>(n_sections));
+  // First pass: a_i and the kinematic right-hand side (the old dk and dH are still
+  // needed afterwards, so nothing is overwritten until the loads' derivatives are known).
+  for (std::size_t i = 0; i < n_sections; ++i) {
+    const double dkappa = to.curvature[i] - from.curvature[i];
+    const auto jenkin = cable_.jenkin(i);
+    const double k = to.tangent[i];
+    auto a = a_all.col(static_cast<Eigen::Index>(i));
+    a.setZero();
+    for (std::size_t e = 0; e < m; ++e) {
+      if (!section::jenkin_slips(jenkin[e], from.hysteretic[i * m + e], dkappa)) {
+        a += (jenkin[e].c / k) * dk.col(static_cast<Eigen::Index>(i)) -
+             (1.0 / k) * dh.col(static_cast<Eigen::Index>(i * m + e));
+      }
+    }
+    rhs_phi_ -= w[i] * a;
+    rhs_x_ -= (w[i] * (l - s[i])) * a;
+  }
+  const Eigen::Matrix2d inverse = to.flexibility.inverse();
+  d_clamp_moment_ = inverse(0, 0) * rhs_phi_ + inverse(0, 1) * rhs_x_;
+  d_tip_force_ = inverse(1, 0) * rhs_phi_ + inverse(1, 1) * rhs_x_;
+  for (std::size_t i = 0; i < n_sections; ++i) {
+    const double dkappa = to.curvature[i] - from.curvature[i];
+    const auto jenkin = cable_.jenkin(i);
+    const double k = to.tangent[i];
+    const Eigen::Index ci = static_cast<Eigen::Index>(i);
+    // d kappa_new - d kappa_old, then the new d kappa.
+    a_ = a_all.col(ci) + (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_) - dk.col(ci);
+    for (std::size_t e = 0; e < m; ++e) {
+      auto h = dh.col(static_cast<Eigen::Index>(i * m + e));
+      if (section::jenkin_slips(jenkin[e], from.hysteretic[i * m + e], dkappa)) {
+        h.setZero();
+      } else {
+        h += jenkin[e].c * a_;
+      }
+    }
+    dk.col(ci) += a_;
+  }
+  sensitivity->row(2 * sample) = d_tip_force_.transpose();
+  sensitivity->row(2 * sample + 1) = (d_clamp_moment_ - l * d_tip_force_).transpose();
+}
+
+}  // namespace stockbridge::damper
