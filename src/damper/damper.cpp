@@ -16,11 +16,19 @@ void ArmDescription::validate(std::string_view name_in_messages) const {
   require_positive(p + ".mass", mass, "kg");
   require_positive(p + ".inertia", inertia, "kg m^2");
   require_finite(p + ".offset", offset, "m");
+  if (std::isfinite(cable.length) && cable.length > 0.0 && !(std::abs(offset) < cable.length)) {
+    throw_invalid(p + ".offset", offset,
+                  fmt::format("|offset| < the cable length {} m (the centre of gravity lies on the arm)", cable.length));
+  }
   try {
     cable.validate();
   } catch (const InvalidParameter& e) {
     throw InvalidParameter(fmt::format("{}.cable.{}", p, e.what()));
   }
+}
+
+bool ArmDescription::same_mechanics(const ArmDescription& other) const {
+  return mass == other.mass && inertia == other.inertia && offset == other.offset && cable == other.cable;
 }
 
 void DamperDescription::validate() const {

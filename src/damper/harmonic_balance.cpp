@@ -161,6 +161,7 @@ ArmPeriod HarmonicBalance::period_of(const Eigen::VectorXd& q, const PeriodicCab
   period.loads = loads.loads;
   period.clamp_moment = loads.clamp_moment;
   period.clamp_curvature = loads.clamp_curvature;
+  period.clamp_section_moment = loads.clamp_section_moment;
   period.dissipated = loads.dissipated;
   return period;
 }
@@ -177,7 +178,13 @@ bool HarmonicBalance::newton(const Excitation& excitation, int periods, Eigen::V
   double norm = r.lpNorm<Eigen::Infinity>() / scale;
   for (int iteration = 0;; ++iteration) {
     summary.residual = norm;
-    if (norm <= options_.tolerance) return true;
+    if (norm <= options_.tolerance) {
+      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian);
+      double sign = lu.permutationP().determinant();
+      for (Eigen::Index i = 0; i < lu.matrixLU().rows(); ++i) sign *= lu.matrixLU()(i, i) < 0.0 ? -1.0 : 1.0;
+      summary.jacobian_sign = sign < 0.0 ? -1 : 1;
+      return true;
+    }
     if (iteration == options_.max_iterations) {
       summary.message = fmt::format("no convergence in {} Newton iterations (residual {:.3g} of the excitation force)",
                                     iteration, norm);

@@ -30,6 +30,7 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
   result.loads.resize(2, n_samples);
   result.clamp_moment.resize(n_samples);
   result.clamp_curvature.resize(n_samples);
+  result.clamp_section_moment.resize(n_samples);
   Eigen::Matrix2Xd previous_loads(2, n_samples);
   cantilever_.reset();
   for (int period = 1; period <= periods; ++period) {
@@ -50,6 +51,7 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
       result.loads(1, j) = trial.tip_moment(cable_.length());
       result.clamp_moment[j] = trial.clamp_moment;
       result.clamp_curvature[j] = trial.curvature[0];
+      result.clamp_section_moment[j] = trial.clamp_moment - trial.tip_force * cable_.positions()[0];
       cantilever_.commit();
     }
     result.dissipated = cantilever_.committed().dissipated - dissipated_before;

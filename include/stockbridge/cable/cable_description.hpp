@@ -17,6 +17,8 @@ struct JenkinProfile {
   Profile h = Profile::constant(0.0);  ///< slip moment h0, N m, > 0
   /// Modified Masing model (3.7): h = h0 + k0 |M| / |F|, k0 in N, >= 0; 0 = off.
   double k0 = 0.0;
+
+  bool operator==(const JenkinProfile&) const = default;
 };
 
 struct CableDescription {
@@ -39,6 +41,8 @@ struct CableDescription {
   /// The lever-arm cap in force (m).
   double lever_arm_limit() const { return lever_arm_cap.value_or(length); }
   bool uses_modified_masing() const;
+
+  bool operator==(const CableDescription&) const = default;
 
   /// The simplest cable: constant parameters.
   static CableDescription uniform(double length, int sections, double ei, std::vector<std::pair<double, double>> jenkin_c_h);

@@ -29,6 +29,8 @@ class Profile {
   template <class Check>
   void check_values(std::string_view name, Check check) const;
 
+  bool operator==(const Profile&) const = default;
+
  private:
   Profile(std::vector<double> positions, std::vector<double> values)
       : positions_(std::move(positions)), values_(std::move(values)) {}

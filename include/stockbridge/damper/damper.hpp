@@ -30,6 +30,8 @@ struct ArmDescription {
 
   /// Throws InvalidParameter naming the field ("arm[1].mass", "arm[0].cable.length").
   void validate(std::string_view name_in_messages) const;
+  /// Same mechanics (everything but the name): such arms move alike.
+  bool same_mechanics(const ArmDescription& other) const;
 };
 
 struct DamperDescription {

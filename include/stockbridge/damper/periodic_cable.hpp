@@ -39,6 +39,7 @@ struct PeriodicCableResult {
   Eigen::Matrix2Xd loads;
   std::vector<double> clamp_moment;
   std::vector<double> clamp_curvature;
+  std::vector<double> clamp_section_moment;
   int max_iterations = 0;  ///< Newton iterations of any single state determination
 };
 

@@ -23,6 +23,10 @@ struct SolverSummary {
   double seconds = 0.0;   ///< wall time
   int periods = 0;        ///< periods of the cable run to make its state periodic (harmonic balance, collocation)
   double periodicity_defect = 0.0;  ///< relative change of the loads over the last period
+  /// Sign of the Jacobian's determinant at the solution (harmonic balance,
+  /// collocation; 0 if unknown). A change of sign between neighbouring frequencies
+  /// marks a fold of the response curve: several steady states there.
+  int jacobian_sign = 0;
   std::string message;    ///< why it did not converge (where and by how much), or notes
 };
 
@@ -32,6 +36,7 @@ struct ArmPeriod {
   Eigen::Matrix2Xd loads;             ///< (F, Q), N and N m
   std::vector<double> clamp_moment;   ///< T, N m
   std::vector<double> clamp_curvature;  ///< curvature at the integration point nearest the clamp, 1/m
+  std::vector<double> clamp_section_moment;  ///< bending moment there, T - F s_0, N m
   double dissipated = 0.0;            ///< by the sliders over one period, J
 };
 

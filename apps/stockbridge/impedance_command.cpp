@@ -1,0 +1,152 @@
+// stockbridge impedance: Z(f, amplitude) of a damper over a frequency sweep.
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "commands.hpp"
+#include "option_parsing.hpp"
+#include "solver_options.hpp"
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/damper/sweep.hpp"
+#include "stockbridge/io/atomic_file.hpp"
+#include "stockbridge/io/csv_writer.hpp"
+#include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/json_writer.hpp"
+
+namespace stockbridge::cli {
+
+namespace {
+
+struct ImpedanceOptions {
+  std::string damper_file;
+  std::string velocity;
+  std::string displacement;
+  double fmin = 1.0;
+  double fmax = 100.0;
+  int points = 200;
+  std::string frequencies;
+  SolverFlags solver;
+  int threads = 1;
+  bool json = false;
+  std::string output;
+};
+
+damper::SweepSpec sweep_spec(const ImpedanceOptions& options) {
+  damper::SweepSpec spec;
+  if (options.velocity.empty() == options.displacement.empty()) {
+    throw InvalidParameter("give either --velocity V[,V...] (m/s) or --displacement X[,X...] (m)");
+  }
+  spec.constant_displacement = !options.displacement.empty();
+  spec.amplitudes = spec.constant_displacement ? parse_number_list(options.displacement, "--displacement")
+                                               : parse_number_list(options.velocity, "--velocity");
+  spec.frequencies = options.frequencies.empty() ? damper::log_spaced(options.fmin, options.fmax, options.points)
+                                                 : parse_number_list(options.frequencies, "--frequencies");
+  spec.solver = options.solver.options();
+  spec.threads = options.threads;
+  spec.validate();
+  return spec;
+}
+
+std::string impedance_csv(const std::vector<damper::SweepRun>& runs) {
+  io::CsvWriter csv({"frequency_hz", "velocity_m_s", "re_z_n_s_m", "im_z_n_s_m", "abs_z_n_s_m", "phase_deg", "power_w",
+                     "converged", "displacement_m", "dissipated_power_w", "energy_error", "residual", "iterations",
+                     "non_unique"});
+  constexpr double kEmpty = std::numeric_limits<double>::quiet_NaN();
+  for (const damper::SweepRun& run : runs) {
+    for (const damper::ImpedancePoint& p : run.points) {
+      const bool ok = p.converged;
+      const std::complex<double> z = p.impedance;
+      csv.add_row({p.frequency_hz, p.velocity_amplitude, ok ? z.real() : kEmpty, ok ? z.imag() : kEmpty,
+                   ok ? std::abs(z) : kEmpty, ok ? std::arg(z) * 180.0 / std::numbers::pi : kEmpty,
+                   ok ? p.power : kEmpty, ok ? 1.0 : 0.0, p.displacement_amplitude, ok ? p.dissipated_power : kEmpty,
+                   ok ? p.energy_error : kEmpty, ok ? p.residual : kEmpty, static_cast<double>(p.iterations),
+                   p.non_unique ? 1.0 : 0.0});
+    }
+  }
+  return csv.text();
+}
+
+void draw_progress(int done, int total) {
+  const int width = 40;
+  const int filled = total > 0 ? width * done / total : width;
+  fmt::print(stderr, "\r[{}{}] {}/{}", std::string(filled, '#'), std::string(width - filled, ' '), done, total);
+  if (done == total) fmt::print(stderr, "\r{}\r", std::string(width + 24, ' '));
+}
+
+int run_impedance_command(const ImpedanceOptions& options) {
+  const damper::SweepSpec spec = sweep_spec(options);
+  const damper::DamperDescription damper = io::read_damper_file(options.damper_file);
+  const auto start = std::chrono::steady_clock::now();
+  const bool terminal = ::isatty(STDERR_FILENO) == 1;
+  const std::vector<damper::SweepRun> runs =
+      damper::run_sweep(damper, spec, terminal ? damper::SweepProgress(draw_progress) : damper::SweepProgress());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  io::write_file_atomically(options.output, impedance_csv(runs));
+
+  int total = 0, failed = 0, non_unique = 0;
+  double max_energy_error = 0.0;
+  std::vector<std::string> failures;
+  std::vector<io::JsonObject> failed_json;
+  for (const damper::SweepRun& run : runs) {
+    for (const damper::ImpedancePoint& p : run.points) {
+      ++total;
+      non_unique += p.non_unique;
+      if (p.converged) {
+        max_energy_error = std::max(max_energy_error, p.energy_error);
+        continue;
+      }
+      ++failed;
+      failures.push_back(fmt::format("  f = {:.4g} Hz, amplitude {}: {}", p.frequency_hz, run.amplitude, p.message));
+      failed_json.push_back(io::JsonObject().add("frequency_hz", p.frequency_hz).add("amplitude", run.amplitude).add("reason", p.message));
+    }
+  }
+  if (options.json) {
+    fmt::print("{}\n", io::JsonObject()
+                           .add("method", options.solver.method)
+                           .add("points", total)
+                           .add("converged", total - failed)
+                           .add("non_unique", non_unique)
+                           .add("max_energy_error", max_energy_error)
+                           .add("seconds", seconds)
+                           .add("failed", failed_json)
+                           .str());
+  }
+  fmt::print(stderr, "impedance: {} points ({} method) in {:.2f} s, {} converged, largest energy error {:.2g}{}\n", total,
+             options.solver.method, seconds, total - failed, max_energy_error,
+             non_unique ? fmt::format("; {} points flagged non_unique (several steady states)", non_unique) : "");
+  if (failed == 0) return kSuccess;
+  fmt::print(stderr, "impedance: {} points did not converge (converged = 0, numbers left empty in {}):\n", failed,
+             options.output);
+  for (std::size_t i = 0; i < failures.size() && i < 10; ++i) fmt::print(stderr, "{}\n", failures[i]);
+  if (failures.size() > 10) fmt::print(stderr, "  ... and {} more\n", failures.size() - 10);
+  return kNotConverged;
+}
+
+}  // namespace
+
+void add_impedance_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<ImpedanceOptions>();
+  CLI::App* sub = app.add_subcommand("impedance", "Nonlinear impedance Z(f, amplitude) of a damper over a frequency sweep");
+  sub->add_option("damper", options->damper_file, "Damper description (TOML)")->required();
+  sub->add_option("--velocity", options->velocity, "Clamp velocity amplitudes V, m/s, comma-separated (constant over the sweep)");
+  sub->add_option("--displacement", options->displacement, "Clamp displacement amplitudes X, m, comma-separated, instead of --velocity");
+  sub->add_option("--fmin", options->fmin, "Lowest frequency, Hz")->capture_default_str();
+  sub->add_option("--fmax", options->fmax, "Highest frequency, Hz")->capture_default_str();
+  sub->add_option("--points", options->points, "Frequencies, log-spaced from fmin to fmax")->capture_default_str();
+  sub->add_option("--frequencies", options->frequencies, "Explicit frequencies, Hz, comma-separated (replaces fmin/fmax/points)");
+  options->solver.add_to(*sub);
+  sub->add_option("--threads", options->threads, "Parallel runs (amplitudes x distinct arms)")->capture_default_str();
+  sub->add_flag("--json", options->json, "Print a JSON summary on stdout");
+  sub->add_option("-o,--output", options->output, "Output CSV file")->required();
+  sub->callback([options, &exit_code] { exit_code = run_impedance_command(*options); });
+}
+
+}  // namespace stockbridge::cli

@@ -1,0 +1,111 @@
+// stockbridge response: one steady period of a damper at one frequency and amplitude.
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "solver_options.hpp"
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/damper/steady_state.hpp"
+#include "stockbridge/io/atomic_file.hpp"
+#include "stockbridge/io/csv_writer.hpp"
+#include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/json_writer.hpp"
+
+namespace stockbridge::cli {
+
+namespace {
+
+struct ResponseOptions {
+  std::string damper_file;
+  double frequency = 0.0;
+  double velocity = 0.0;
+  double displacement = 0.0;
+  SolverFlags solver;
+  bool json = false;
+  std::string output;
+};
+
+std::string response_csv(const damper::DamperDescription& damper, const damper::Excitation& excitation,
+                         const damper::DamperSteadyState& state) {
+  std::vector<std::string> header{"time_s", "clamp_displacement_m", "clamp_velocity_m_s", "shaker_force_n"};
+  for (std::size_t k = 1; k <= damper.arms.size(); ++k) {
+    for (const char* column : {"x_m", "phi_rad", "force_n", "clamp_moment_n_m", "tip_moment_n_m",
+                               "clamp_curvature_per_m", "clamp_section_moment_n_m"}) {
+      header.push_back(fmt::format("arm{}_{}", k, column));
+    }
+  }
+  io::CsvWriter csv(header);
+  std::vector<const damper::ArmSolution*> arms;
+  for (const damper::ArmSolution& s : state.arms) arms.push_back(&s);
+  const Eigen::RowVectorXd force = damper::shaker_force(damper, excitation, arms);
+  const Eigen::Index n = force.size();
+  const double w = excitation.angular_frequency(), x = excitation.displacement_amplitude;
+  std::vector<double> row;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double t = excitation.period() * static_cast<double>(j) / static_cast<double>(n);
+    row = {t, x * std::sin(w * t), w * x * std::cos(w * t), force(j)};
+    for (const damper::ArmSolution& s : state.arms) {
+      const damper::ArmPeriod& p = s.period;
+      row.insert(row.end(), {p.kinematics(0, j), p.kinematics(1, j), p.loads(0, j), p.clamp_moment[j], p.loads(1, j),
+                             p.clamp_curvature[j], p.clamp_section_moment[j]});
+    }
+    csv.add_row(row);
+  }
+  return csv.text();
+}
+
+int run_response_command(const ResponseOptions& options) {
+  if ((options.velocity > 0.0) == (options.displacement > 0.0)) {
+    throw InvalidParameter("give either --velocity V (m/s) or --displacement X (m), a value > 0");
+  }
+  const damper::Excitation excitation =
+      options.velocity > 0.0 ? damper::Excitation::from_velocity(options.frequency, options.velocity)
+                             : damper::Excitation{options.frequency, options.displacement};
+  excitation.validate();
+  const damper::SolverOptions solver = options.solver.options();
+  const damper::DamperDescription damper = io::read_damper_file(options.damper_file);
+  const damper::DamperSteadyState state = damper::solve_steady_state(damper, excitation, solver);
+  const damper::ImpedancePoint& p = state.point;
+  if (!p.converged) {
+    fmt::print(stderr, "response: no steady state at {} Hz: {}\n", options.frequency, p.message);
+    return kNotConverged;
+  }
+  io::write_file_atomically(options.output, response_csv(damper, excitation, state));
+  if (options.json) {
+    fmt::print("{}\n", io::JsonObject()
+                           .add("frequency_hz", p.frequency_hz)
+                           .add("velocity_m_s", p.velocity_amplitude)
+                           .add("displacement_m", p.displacement_amplitude)
+                           .add("re_z_n_s_m", p.impedance.real())
+                           .add("im_z_n_s_m", p.impedance.imag())
+                           .add("power_w", p.power)
+                           .add("dissipated_power_w", p.dissipated_power)
+                           .add("energy_error", p.energy_error)
+                           .str());
+  }
+  fmt::print(stderr, "response: {} Hz, V = {:.4g} m/s: Z = {:.5g} {:+.5g}i N s/m, P = {:.4g} W (sliders {:.4g} W)\n",
+             p.frequency_hz, p.velocity_amplitude, p.impedance.real(), p.impedance.imag(), p.power, p.dissipated_power);
+  return kSuccess;
+}
+
+}  // namespace
+
+void add_response_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<ResponseOptions>();
+  CLI::App* sub = app.add_subcommand("response", "One steady period of a damper: clamp motion, shaker force, each arm's motion and cable loads");
+  sub->add_option("damper", options->damper_file, "Damper description (TOML)")->required();
+  sub->add_option("--frequency", options->frequency, "Frequency, Hz")->required();
+  sub->add_option("--velocity", options->velocity, "Clamp velocity amplitude V, m/s");
+  sub->add_option("--displacement", options->displacement, "Clamp displacement amplitude X, m (instead of --velocity)");
+  options->solver.add_to(*sub);
+  sub->add_flag("--json", options->json, "Print a JSON summary on stdout");
+  sub->add_option("-o,--output", options->output, "Output CSV file")->required();
+  sub->callback([options, &exit_code] { exit_code = run_response_command(*options); });
+}
+
+}  // namespace stockbridge::cli

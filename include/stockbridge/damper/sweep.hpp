@@ -1,0 +1,47 @@
+#pragma once
+// Frequency sweeps of the impedance at constant velocity amplitude (or constant
+// displacement amplitude), with frequency continuation: each distinct arm walks
+// the frequencies in order, the previous solution (scaled to the new displacement
+// amplitude) predicting the next. Independent runs (amplitudes x distinct arms)
+// go to parallel threads.
+//
+// Non-uniqueness: where the harmonic-balance Jacobian's determinant changes sign
+// between neighbouring frequencies, the response curve folds back there and
+// several steady states coexist; both points are flagged `non_unique` with a note,
+// rather than one branch being picked silently.
+
+#include <functional>
+#include <vector>
+
+#include "stockbridge/damper/impedance.hpp"
+
+namespace stockbridge::damper {
+
+struct SweepSpec {
+  std::vector<double> frequencies;  ///< Hz, > 0, strictly increasing
+  std::vector<double> amplitudes;   ///< V in m/s (or X in m with constant_displacement), > 0
+  bool constant_displacement = false;
+  SolverOptions solver;
+  int threads = 1;                  ///< >= 1
+
+  void validate() const;
+  Excitation excitation(double frequency_hz, double amplitude) const;
+};
+
+struct SweepRun {
+  double amplitude = 0.0;  ///< as given (V or X)
+  std::vector<ImpedancePoint> points;  ///< one per frequency
+};
+
+/// Called after every solved point with (points done, points in all); calls are serialised.
+using SweepProgress = std::function<void(int, int)>;
+
+/// Runs every amplitude over every frequency. Never throws for non-convergence:
+/// such points have converged == false and a message.
+std::vector<SweepRun> run_sweep(const DamperDescription& damper, const SweepSpec& spec,
+                                const SweepProgress& progress = {});
+
+/// Log-spaced frequencies from fmin to fmax (points >= 2), Hz.
+std::vector<double> log_spaced(double fmin, double fmax, int points);
+
+}  // namespace stockbridge::damper

@@ -1,0 +1,24 @@
+#pragma once
+// Reading damper description files (TOML, format in docs/file-formats.md):
+//
+//   [clamp]
+//   mass = 0.7            # kg
+//   [[arm]]
+//   name = "long"
+//   mass = 0.856          # kg
+//   inertia = 0.001814    # kg m^2 about the centre of gravity
+//   offset = 0.0325       # m, cable tip to centre of gravity, toward the clamp
+//   [arm.cable]           # the keys of a cable file's [cable] table
+//   length = 0.1875
+//   ...
+
+#include <filesystem>
+
+#include "stockbridge/damper/damper.hpp"
+
+namespace stockbridge::io {
+
+/// Reads and validates a damper file; InputError with file, line, key, value, expectation.
+damper::DamperDescription read_damper_file(const std::filesystem::path& path);
+
+}  // namespace stockbridge::io

@@ -1,0 +1,153 @@
+#include "stockbridge/damper/sweep.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::damper {
+
+void SweepSpec::validate() const {
+  if (frequencies.empty()) throw InvalidParameter("frequencies: expected at least one frequency");
+  for (std::size_t i = 0; i < frequencies.size(); ++i) {
+    require_positive(fmt::format("frequency[{}]", i), frequencies[i], "Hz");
+    if (i > 0 && !(frequencies[i] > frequencies[i - 1])) {
+      throw_invalid(fmt::format("frequency[{}]", i), frequencies[i],
+                    fmt::format("frequencies increasing strictly (previous {} Hz)", frequencies[i - 1]));
+    }
+  }
+  if (amplitudes.empty()) throw InvalidParameter("amplitudes: expected at least one amplitude");
+  for (std::size_t i = 0; i < amplitudes.size(); ++i) {
+    require_positive(constant_displacement ? "displacement" : "velocity", amplitudes[i],
+                     constant_displacement ? "m" : "m/s");
+  }
+  require_in_range("threads", threads, 1, 256);
+  solver.validate();
+}
+
+Excitation SweepSpec::excitation(double frequency_hz, double amplitude) const {
+  return constant_displacement ? Excitation{frequency_hz, amplitude} : Excitation::from_velocity(frequency_hz, amplitude);
+}
+
+std::vector<double> log_spaced(double fmin, double fmax, int points) {
+  require_positive("fmin", fmin, "Hz");
+  require_positive("fmax", fmax, "Hz");
+  require_in_range("points", points, 1, 1000000);
+  if (points > 1 && !(fmax > fmin)) throw_invalid("fmax", fmax, fmt::format("a value > fmin = {} Hz", fmin));
+  std::vector<double> f(points);
+  for (int i = 0; i < points; ++i) {
+    f[i] = points == 1 ? fmin : std::exp(std::log(fmin) + (std::log(fmax) - std::log(fmin)) * i / (points - 1));
+  }
+  return f;
+}
+
+namespace {
+
+/// One continuation run of one arm over all frequencies at one amplitude.
+std::vector<ArmSolution> continue_arm(const Arm& arm, const SweepSpec& spec, double amplitude,
+                                      const std::function<void()>& tick) {
+  const std::unique_ptr<ArmSolver> solver = make_arm_solver(arm, spec.solver);
+  std::vector<ArmSolution> solutions;
+  solutions.reserve(spec.frequencies.size());
+  Eigen::VectorXd predictor;
+  double predictor_amplitude = 0.0;
+  for (const double f : spec.frequencies) {
+    const Excitation excitation = spec.excitation(f, amplitude);
+    if (predictor.size() > 0) predictor *= excitation.displacement_amplitude / predictor_amplitude;
+    ArmSolution solution = solver->solve(excitation, predictor);
+    if (solution.summary.converged) {
+      predictor = solution.unknowns;
+      predictor_amplitude = excitation.displacement_amplitude;
+    }
+    solutions.push_back(std::move(solution));
+    tick();
+  }
+  return solutions;
+}
+
+/// Flags both ends of every interval where an arm's Jacobian sign changes.
+void flag_folds(const std::vector<ArmSolution>& arm, const std::string& arm_name, std::vector<ImpedancePoint>& points) {
+  for (std::size_t i = 1; i < arm.size(); ++i) {
+    const int a = arm[i - 1].summary.jacobian_sign, b = arm[i].summary.jacobian_sign;
+    if (a != 0 && b != 0 && a != b) {
+      const std::string note = fmt::format("arm {}: the response curve folds between {:.4g} and {:.4g} Hz "
+                                           "(Jacobian determinant changes sign): several steady states coexist",
+                                           arm_name, points[i - 1].frequency_hz, points[i].frequency_hz);
+      for (const std::size_t k : {i - 1, i}) {
+        points[k].non_unique = true;
+        if (points[k].message.empty()) points[k].message = note;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<SweepRun> run_sweep(const DamperDescription& damper, const SweepSpec& spec, const SweepProgress& progress) {
+  damper.validate();
+  spec.validate();
+  std::vector<Arm> arms;
+  arms.reserve(damper.arms.size());
+  for (const ArmDescription& d : damper.arms) arms.emplace_back(d);
+  const std::vector<std::size_t> representative = distinct_arms(damper);
+  std::vector<std::size_t> distinct;
+  for (std::size_t k = 0; k < arms.size(); ++k) {
+    if (representative[k] == k) distinct.push_back(k);
+  }
+  // Tasks: (amplitude, distinct arm).
+  const std::size_t n_tasks = spec.amplitudes.size() * distinct.size();
+  std::vector<std::vector<ArmSolution>> results(n_tasks);
+  const int total = static_cast<int>(n_tasks * spec.frequencies.size());
+  std::atomic<std::size_t> next_task{0};
+  std::mutex progress_mutex;
+  int done = 0;
+  auto tick = [&] {
+    if (!progress) return;
+    const std::lock_guard<std::mutex> lock(progress_mutex);
+    progress(++done, total);
+  };
+  std::exception_ptr failure;
+  auto worker = [&] {
+    try {
+      for (std::size_t t = next_task++; t < n_tasks; t = next_task++) {
+        const std::size_t a = t / distinct.size();
+        const std::size_t arm = distinct[t % distinct.size()];
+        results[t] = continue_arm(arms[arm], spec, spec.amplitudes[a], tick);
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      if (!failure) failure = std::current_exception();
+    }
+  };
+  const int n_threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(spec.threads), n_tasks));
+  std::vector<std::thread> pool;
+  for (int i = 1; i < n_threads; ++i) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+
+  std::vector<SweepRun> runs(spec.amplitudes.size());
+  for (std::size_t a = 0; a < spec.amplitudes.size(); ++a) {
+    runs[a].amplitude = spec.amplitudes[a];
+    for (std::size_t i = 0; i < spec.frequencies.size(); ++i) {
+      std::vector<const ArmSolution*> per_arm(arms.size());
+      for (std::size_t k = 0; k < arms.size(); ++k) {
+        const std::size_t d = static_cast<std::size_t>(
+            std::find(distinct.begin(), distinct.end(), representative[k]) - distinct.begin());
+        per_arm[k] = &results[a * distinct.size() + d][i];
+      }
+      runs[a].points.push_back(combine(damper, spec.excitation(spec.frequencies[i], spec.amplitudes[a]), per_arm));
+    }
+    for (std::size_t d = 0; d < distinct.size(); ++d) {
+      flag_folds(results[a * distinct.size() + d], damper.arms[distinct[d]].name, runs[a].points);
+    }
+  }
+  return runs;
+}
+
+}  // namespace stockbridge::damper
