@@ -129,6 +129,11 @@ void Cantilever::reset() {
   last_increment_.setZero();
 }
 
+void Cantilever::restore(const CableState& state) {
+  state_ = Committable<CableState>(state);
+  last_increment_.setZero();
+}
+
 void Cantilever::set_trial_loads(double clamp_moment, double tip_force) {
   require_finite("clamp_moment", clamp_moment, "N m");
   require_finite("tip_force", tip_force, "N");

@@ -18,7 +18,7 @@ void HarmonicBalanceOptions::validate() const {
   require_in_range("max_iterations", max_iterations, 1, 10000);
   require_positive("tolerance", tolerance, "");
   require_positive("periodicity_tolerance", periodicity_tolerance, "");
-  require_in_range("max_periods", max_periods, 2, 100000);
+  require_in_range("periods", periods, 1, 1000);
   cantilever.validate();
 }
 
@@ -41,6 +41,14 @@ HarmonicBalanceOptions validated(HarmonicBalanceOptions options) {
 
 /// Harmonic number of coefficient column c: 0, 1, 1, 2, 2, ...
 int harmonic_of(int c) { return (c + 1) / 2; }
+
+/// Sign of det(J) from its LU factors.
+int determinant_sign(const Eigen::MatrixXd& jacobian) {
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian);
+  double sign = lu.permutationP().determinant();
+  for (Eigen::Index i = 0; i < lu.matrixLU().rows(); ++i) sign *= lu.matrixLU()(i, i) < 0.0 ? -1.0 : 1.0;
+  return sign < 0.0 ? -1 : 1;
+}
 }  // namespace
 
 HarmonicBalance::HarmonicBalance(const Arm& arm, HarmonicBalanceOptions options)
@@ -89,8 +97,13 @@ bool HarmonicBalance::residual(const Excitation& excitation, const Eigen::Vector
   const Eigen::Vector2d& load = arm_.load_vector();
   const Eigen::Map<const Eigen::Matrix2Xd> coefficients(q.data(), 2, c_count);
   const Eigen::Matrix2Xd kinematics = coefficients * basis_.transpose();
+  if (counting_) {
+    ++counting_->evaluations;
+    counting_->jacobians += jacobian != nullptr;
+  }
   PeriodicCableResult loads =
-      cable_.evaluate(kinematics, periods, jacobian ? &basis_ : nullptr, jacobian ? &sensitivity_ : nullptr);
+      cable_.evaluate(kinematics, periods, start_ ? &*start_ : nullptr, jacobian ? &basis_ : nullptr,
+                      jacobian ? &sensitivity_ : nullptr);
   if (!loads.converged) {
     if (loads_out) *loads_out = std::move(loads);
     return false;
@@ -107,10 +120,10 @@ bool HarmonicBalance::residual(const Excitation& excitation, const Eigen::Vector
     residual = mass * acceleration + loads.loads * projection_.transpose();
     residual.col(2) -= -w * w * x_amp * load;  // excitation, sin(W t)
     if (jacobian) {
-      jacobian->setZero(p_count, p_count);
+      force_jacobian_.resize(p_count, p_count);
       for (int d = 0; d < 2; ++d) {
         const ConstStrided s(sensitivity_.data() + d, samples_, p_count, Eigen::Stride<Eigen::Dynamic, 2>(2 * samples_, 2));
-        Strided(jacobian->data() + d, c_count, p_count, Eigen::Stride<Eigen::Dynamic, 2>(2 * c_count, 2)) =
+        Strided(force_jacobian_.data() + d, c_count, p_count, Eigen::Stride<Eigen::Dynamic, 2>(2 * c_count, 2)) =
             projection_ * s;
       }
     }
@@ -118,17 +131,11 @@ bool HarmonicBalance::residual(const Excitation& excitation, const Eigen::Vector
     Eigen::Map<Eigen::Matrix2Xd> residual(r.data(), 2, samples_);
     residual = mass * (acceleration * basis_.transpose()) + loads.loads;
     residual -= (-w * w * x_amp * load) * basis_.col(2).transpose();
-    if (jacobian) *jacobian = sensitivity_;
+    if (jacobian) force_jacobian_ = sensitivity_;
   }
   if (jacobian) {
-    for (int c = 0; c < c_count; ++c) {
-      const double k = harmonic_of(c);
-      if (!options_.collocation) {
-        jacobian->block<2, 2>(2 * c, 2 * c) += -k * k * w * w * mass;
-      } else {
-        for (int j = 0; j < samples_; ++j) jacobian->block<2, 2>(2 * j, 2 * c) += -k * k * w * w * basis_(j, c) * mass;
-      }
-    }
+    force_jacobian_stored_ = true;
+    assemble_jacobian(excitation, *jacobian);
   }
   if (d_frequency) {
     // At constant velocity amplitude V = W X: excitation -W V L sin(W t).
@@ -153,6 +160,21 @@ bool HarmonicBalance::residual(const Excitation& excitation, const Eigen::Vector
   return true;
 }
 
+void HarmonicBalance::assemble_jacobian(const Excitation& excitation, Eigen::MatrixXd& jacobian) const {
+  const int c_count = 2 * options_.harmonics + 1;
+  const double w = excitation.angular_frequency();
+  const Eigen::Matrix2d& mass = arm_.mass_matrix();
+  jacobian = force_jacobian_;
+  for (int c = 0; c < c_count; ++c) {
+    const double k = harmonic_of(c);
+    if (!options_.collocation) {
+      jacobian.block<2, 2>(2 * c, 2 * c) += -k * k * w * w * mass;
+    } else {
+      for (int j = 0; j < samples_; ++j) jacobian.block<2, 2>(2 * j, 2 * c) += -k * k * w * w * basis_(j, c) * mass;
+    }
+  }
+}
+
 ArmPeriod HarmonicBalance::period_of(const Eigen::VectorXd& q, const PeriodicCableResult& loads) const {
   const int c_count = 2 * options_.harmonics + 1;
   const Eigen::Map<const Eigen::Matrix2Xd> coefficients(q.data(), 2, c_count);
@@ -166,90 +188,118 @@ ArmPeriod HarmonicBalance::period_of(const Eigen::VectorXd& q, const PeriodicCab
   return period;
 }
 
-bool HarmonicBalance::newton(const Excitation& excitation, int periods, Eigen::VectorXd& q,
-                             PeriodicCableResult& loads, SolverSummary& summary) {
+bool HarmonicBalance::newton(const Excitation& excitation, Eigen::VectorXd& q, PeriodicCableResult& loads,
+                             SolverSummary& summary) {
   const double scale = force_scale(excitation);
+  const int periods = options_.periods;
   Eigen::VectorXd r, r_try, q_try;
   Eigen::MatrixXd jacobian;
-  if (!residual(excitation, q, periods, r, &jacobian, nullptr, &loads)) {
+  // A stored force Jacobian (from the previous frequency) saves a sensitivity pass.
+  bool fresh = !force_jacobian_stored_;
+  if (!residual(excitation, q, periods, r, fresh ? &jacobian : nullptr, nullptr, &loads)) {
     summary.message = "at the starting point: " + loads.failure;
     return false;
   }
+  start_ = cable_.final_state();
+  if (!fresh) assemble_jacobian(excitation, jacobian);
   double norm = r.lpNorm<Eigen::Infinity>() / scale;
   for (int iteration = 0;; ++iteration) {
     summary.residual = norm;
-    if (norm <= options_.tolerance) {
-      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian);
-      double sign = lu.permutationP().determinant();
-      for (Eigen::Index i = 0; i < lu.matrixLU().rows(); ++i) sign *= lu.matrixLU()(i, i) < 0.0 ? -1.0 : 1.0;
-      summary.jacobian_sign = sign < 0.0 ? -1 : 1;
+    summary.periodicity_defect = loads.periodicity_defect;
+    if (norm <= options_.tolerance && loads.periodicity_defect <= options_.periodicity_tolerance) {
+      summary.jacobian_sign = determinant_sign(jacobian);
+      if (!fresh && summary.jacobian_sign != last_sign_) {
+        // A fold is suspected: confirm the sign with the exact Jacobian.
+        residual(excitation, q, periods, r, &jacobian, nullptr, &loads);
+        start_ = cable_.final_state();
+        summary.jacobian_sign = determinant_sign(jacobian);
+      }
+      last_sign_ = summary.jacobian_sign;
       return true;
     }
     if (iteration == options_.max_iterations) {
-      summary.message = fmt::format("no convergence in {} Newton iterations (residual {:.3g} of the excitation force)",
-                                    iteration, norm);
+      summary.message = norm > options_.tolerance
+                            ? fmt::format("no convergence in {} Newton iterations (residual {:.3g} of the excitation force)",
+                                          iteration, norm)
+                            : fmt::format("cable state not periodic after {} Newton iterations (loads change by {:.3g} per period)",
+                                          iteration, loads.periodicity_defect);
       return false;
     }
     ++summary.iterations;
     const Eigen::VectorXd step = -jacobian.partialPivLu().solve(r);
-    if (!step.allFinite()) {
-      summary.message = fmt::format("singular Jacobian at Newton iteration {} (residual {:.3g})", iteration + 1, norm);
-      return false;
-    }
     bool accepted = false;
     double alpha = 1.0;
     const double norm2 = r.norm();
-    for (int halving = 0; halving < 30 && !accepted; ++halving, alpha *= 0.5) {
+    // With a stored Jacobian only the full step is tried: if it fails, an exact one is cheaper than halving.
+    const int halvings = fresh ? 30 : 1;
+    for (int halving = 0; step.allFinite() && halving < halvings && !accepted; ++halving, alpha *= 0.5) {
       q_try = q + alpha * step;
       PeriodicCableResult trial_loads;
-      // The full step usually succeeds: evaluate the Jacobian with it; shorter steps without.
-      const bool ok = residual(excitation, q_try, periods, r_try, halving == 0 ? &jacobian : nullptr, nullptr, &trial_loads);
-      if (ok && r_try.norm() <= (1.0 - 1e-4 * alpha) * norm2) {
-        if (halving > 0) residual(excitation, q_try, periods, r_try, &jacobian, nullptr, &trial_loads);
+      // Accept a decrease, or any step once the residual is met (the cable state is then settling).
+      if (residual(excitation, q_try, periods, r_try, nullptr, nullptr, &trial_loads) &&
+          (r_try.norm() <= (1.0 - 1e-4 * alpha) * norm2 || r_try.lpNorm<Eigen::Infinity>() / scale <= options_.tolerance)) {
         q = q_try;
         r = r_try;
         loads = std::move(trial_loads);
+        start_ = cable_.final_state();
         accepted = true;
       }
     }
+    if (!accepted && !fresh) {
+      // The stored Jacobian belongs to another piece: take an exact one here and try again.
+      residual(excitation, q, periods, r, &jacobian, nullptr, &loads);
+      start_ = cable_.final_state();
+      fresh = true;
+      norm = r.lpNorm<Eigen::Infinity>() / scale;
+      continue;
+    }
     if (!accepted) {
-      summary.message = fmt::format("line search failed at Newton iteration {} (residual {:.3g})", iteration + 1, norm);
+      summary.message = step.allFinite()
+                            ? fmt::format("line search failed at Newton iteration {} (residual {:.3g})", iteration + 1, norm)
+                            : fmt::format("singular Jacobian at Newton iteration {} (residual {:.3g})", iteration + 1, norm);
       return false;
     }
-    norm = r.lpNorm<Eigen::Infinity>() / scale;
+    const double new_norm = r.lpNorm<Eigen::Infinity>() / scale;
+    // Slow progress means the Jacobian belongs to another piece: refresh it.
+    fresh = new_norm > 0.25 * norm && new_norm > options_.tolerance;
+    if (fresh) {
+      residual(excitation, q, periods, r, &jacobian, nullptr, &loads);
+      start_ = cable_.final_state();
+    } else {
+      assemble_jacobian(excitation, jacobian);
+    }
+    norm = new_norm;
   }
 }
 
-ArmSolution HarmonicBalance::solve(const Excitation& excitation, const Eigen::VectorXd& initial, int periods) {
+ArmSolution HarmonicBalance::solve(const Excitation& excitation, const Eigen::VectorXd& initial,
+                                   bool continue_from_last) {
   excitation.validate();
-  const auto start = std::chrono::steady_clock::now();
+  const auto started = std::chrono::steady_clock::now();
   if (initial.size() != unknown_count()) {
     throw InvalidParameter(fmt::format("initial guess has {} values: expected {}", initial.size(), unknown_count()));
   }
   ArmSolution solution;
   SolverSummary& summary = solution.summary;
+  counting_ = &summary;
+  start_ = continue_from_last ? last_state_ : std::nullopt;
+  if (!continue_from_last) force_jacobian_stored_ = false;
   Eigen::VectorXd q = initial;
   PeriodicCableResult loads;
-  periods = std::clamp(periods, 2, options_.max_periods);
-  while (newton(excitation, periods, q, loads, summary)) {
-    if (loads.periodicity_defect <= options_.periodicity_tolerance) {
-      summary.converged = true;
-      break;
-    }
-    if (periods == options_.max_periods) {
-      summary.message = fmt::format("cable state not periodic after {} periods (loads change by {:.3g} per period)",
-                                    periods, loads.periodicity_defect);
-      break;
-    }
-    periods = std::min(2 * periods, options_.max_periods);
+  summary.converged = newton(excitation, q, loads, summary);
+  summary.periods = options_.periods;
+  if (summary.converged) {
+    last_state_ = start_;
+  } else {
+    last_state_.reset();
+    force_jacobian_stored_ = false;
   }
-  summary.periods = periods;
-  summary.periodicity_defect = loads.periodicity_defect;
   if (loads.loads.cols() > 0) {
     solution.period = period_of(q, loads);
     summary.energy_error = energy_error(solution.period, excitation);
   }
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  counting_ = nullptr;
   solution.unknowns = q;
   return solution;
 }

@@ -39,19 +39,18 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
   HarmonicBalanceArmSolver(const Arm& arm, HarmonicBalanceOptions options) : solver_(arm, options) {}
   ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& predictor) override {
     const Eigen::VectorXd start = predictor.size() == solver_.unknown_count() ? predictor : solver_.linear_guess(excitation);
-    ArmSolution solution = solver_.solve(excitation, start, periods_hint_);
-    if (!solution.summary.converged && predictor.size() == solver_.unknown_count()) {
-      // The predictor may lie on another piece: retry from the linear guess.
-      ArmSolution retry = solver_.solve(excitation, solver_.linear_guess(excitation), periods_hint_);
+    const bool continuing = predictor.size() == solver_.unknown_count();
+    ArmSolution solution = solver_.solve(excitation, start, continuing);
+    if (!solution.summary.converged && continuing) {
+      // The predictor may lie on another piece: retry from the virgin state and the linear guess.
+      ArmSolution retry = solver_.solve(excitation, solver_.linear_guess(excitation));
       if (retry.summary.converged) solution = std::move(retry);
     }
-    if (solution.summary.converged) periods_hint_ = std::max(2, solution.summary.periods / 2);
     return solution;
   }
 
  private:
   HarmonicBalance solver_;
-  int periods_hint_ = 2;
 };
 
 }  // namespace

@@ -14,7 +14,8 @@ PeriodicCable::PeriodicCable(const cable::Cable& cable, cable::CantileverOptions
     : cable_(cable), cantilever_(cable, options) {}
 
 PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, int periods,
-                                            const Eigen::MatrixXd* basis, Eigen::MatrixXd* sensitivity) {
+                                            const cable::CableState* start, const Eigen::MatrixXd* basis,
+                                            Eigen::MatrixXd* sensitivity) {
   require_in_range("periods", periods, 1, 100000);
   const int n_samples = static_cast<int>(kinematics.cols());
   const std::size_t n_sections = cable_.sections();
@@ -31,11 +32,15 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
   result.clamp_moment.resize(n_samples);
   result.clamp_curvature.resize(n_samples);
   result.clamp_section_moment.resize(n_samples);
-  Eigen::Matrix2Xd previous_loads(2, n_samples);
-  cantilever_.reset();
+  if (start) {
+    cantilever_.restore(*start);
+  } else {
+    cantilever_.reset();
+  }
   for (int period = 1; period <= periods; ++period) {
     result.periods = period;
     const double dissipated_before = cantilever_.committed().dissipated;
+    if (period == periods) period_start_ = cantilever_.committed();
     for (int j = 0; j < n_samples; ++j) {
       const cable::StateDetermination solve = cantilever_.set_trial_tip(kinematics(0, j), kinematics(1, j));
       result.max_iterations = std::max(result.max_iterations, solve.iterations);
@@ -55,14 +60,25 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
       cantilever_.commit();
     }
     result.dissipated = cantilever_.committed().dissipated - dissipated_before;
-    if (period == periods && period >= 2) {
-      const double scale = std::max(result.loads.cwiseAbs().maxCoeff(), 1e-300);
-      result.periodicity_defect = (result.loads - previous_loads).cwiseAbs().maxCoeff() / scale;
-    }
-    if (period == periods - 1) previous_loads = result.loads;
   }
+  result.periodicity_defect = state_change(period_start_, cantilever_.committed());
   result.converged = true;
   return result;
+}
+
+double PeriodicCable::state_change(const cable::CableState& start, const cable::CableState& end) const {
+  const std::size_t m = cable_.elements();
+  double curvature_scale = 0.0, curvature_change = 0.0, moment_change = 0.0;
+  for (std::size_t i = 0; i < cable_.sections(); ++i) {
+    curvature_scale = std::max(curvature_scale, std::abs(end.curvature[i]));
+    curvature_change = std::max(curvature_change, std::abs(end.curvature[i] - start.curvature[i]));
+    const auto jenkin = cable_.jenkin(i);
+    for (std::size_t e = 0; e < m; ++e) {
+      moment_change = std::max(moment_change,
+                               std::abs(end.hysteretic[i * m + e] - start.hysteretic[i * m + e]) / jenkin[e].h);
+    }
+  }
+  return std::max(curvature_scale > 0.0 ? curvature_change / curvature_scale : 0.0, moment_change);
 }
 
 // On the current piece of the piecewise-linear cable map (sticking sets fixed),

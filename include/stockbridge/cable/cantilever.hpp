@@ -96,6 +96,8 @@ class Cantilever {
   void revert_to_last_commit() { state_.revert_to_last_commit(); }
   /// Back to the virgin state.
   void reset();
+  /// Commits a given state (one of this cable's, e.g. saved from committed()).
+  void restore(const CableState& state);
 
  private:
   template <int K>

@@ -12,6 +12,8 @@
 // N = 2H + 1 points. Newton's method uses the exact Jacobian (forward
 // sensitivities of the piecewise-linear cable map) and a backtracking line search.
 
+#include <optional>
+
 #include <Eigen/Core>
 
 #include "stockbridge/damper/periodic_cable.hpp"
@@ -25,11 +27,11 @@ struct HarmonicBalanceOptions {
   bool collocation = false;   ///< trigonometric collocation at 2H + 1 points instead
   int max_iterations = 40;    ///< Newton iterations
   double tolerance = 1e-9;    ///< residual relative to the excitation force amplitude m W^2 X
-  /// The cable is driven from the virgin state through P periods and the last one is
-  /// used; P starts at 2 (or the hint) and doubles until the loads of the last two
-  /// periods differ by at most this, relative to their largest value.
-  double periodicity_tolerance = 1e-7;
-  int max_periods = 32;
+  /// Every evaluation drives the cable through `periods` periods and uses the last;
+  /// the solution is accepted when, in the same evaluation, the cable's state over the
+  /// last period changed by at most `periodicity_tolerance` (see PeriodicCableResult).
+  int periods = 2;
+  double periodicity_tolerance = 1e-8;
   cable::CantileverOptions cantilever;
 
   void validate() const;
@@ -47,11 +49,19 @@ class HarmonicBalance {
   /// The all-stick linear steady state (a starting point where no predictor exists).
   Eigen::VectorXd linear_guess(const Excitation& excitation) const;
 
-  /// Newton from `initial` (unknown_count() coefficients, m and rad), starting with
-  /// `periods` periods of the cable (at least 2; the previous frequency's count is a good hint).
-  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& initial, int periods = 2);
+  /// Newton from `initial` (unknown_count() coefficients, m and rad).
+  ///
+  /// The cable's hysteretic state is carried along: each evaluation starts from the
+  /// state the last accepted evaluation ended in (the first from the virgin state, or,
+  /// with `continue_from_last`, from the periodic state of the last converged solve,
+  /// as in a stepped-sine test). The cable's memory under two prescribed tip
+  /// coordinates settles over several periods, and chaining lets those periods
+  /// accumulate over the Newton iterations instead of being repeated in each; the
+  /// Jacobian is exact for the map with the start state held fixed. Convergence
+  /// requires the residual and the periodicity defect of the same evaluation.
+  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& initial, bool continue_from_last = false);
 
-  /// The residual (N, relative to nothing) at q, and optionally its exact Jacobian
+  /// The residual (N) at q, and optionally its exact Jacobian
   /// and its derivative with respect to the angular frequency at constant velocity
   /// amplitude (for arclength continuation). Returns false if the cable failed.
   bool residual(const Excitation& excitation, const Eigen::VectorXd& q, int periods, Eigen::VectorXd& r,
@@ -62,9 +72,10 @@ class HarmonicBalance {
 
  private:
   ArmPeriod period_of(const Eigen::VectorXd& q, const PeriodicCableResult& loads) const;
-  /// Newton at a fixed number of cable periods; updates q and loads.
-  bool newton(const Excitation& excitation, int periods, Eigen::VectorXd& q, PeriodicCableResult& loads,
-              SolverSummary& summary);
+  /// J = the stored force Jacobian + the inertia terms at this frequency.
+  void assemble_jacobian(const Excitation& excitation, Eigen::MatrixXd& jacobian) const;
+  /// Newton's iterations; updates q and loads.
+  bool newton(const Excitation& excitation, Eigen::VectorXd& q, PeriodicCableResult& loads, SolverSummary& summary);
 
   const Arm& arm_;
   HarmonicBalanceOptions options_;
@@ -73,6 +84,15 @@ class HarmonicBalance {
   Eigen::MatrixXd projection_;  // (2H+1) x N: Fourier coefficients from samples (harmonic balance)
   PeriodicCable cable_;
   Eigen::MatrixXd sensitivity_;
+  // d(force residual)/dq of the last exact evaluation: exact as long as the path stays
+  // on the same piece of the piecewise-linear cable map, so it is reused across Newton
+  // iterations and neighbouring frequencies and refreshed when convergence slows.
+  Eigen::MatrixXd force_jacobian_;
+  bool force_jacobian_stored_ = false;
+  int last_sign_ = 0;  // determinant sign at the last solution
+  SolverSummary* counting_ = nullptr;  // where residual() counts its evaluations
+  std::optional<cable::CableState> last_state_;  // periodic state of the last converged solve
+  std::optional<cable::CableState> start_;       // where the cable's next evaluation starts (empty: virgin)
 };
 
 }  // namespace stockbridge::damper

@@ -1,8 +1,9 @@
 #pragma once
 // Drives an arm's cable through a sampled periodic path of tip kinematics
 // u_j = (x_j, phi_j), j = 0..N-1 (one period, t_j = j T / N), starting from the
-// virgin state, for a fixed number of periods, and returns the loads of the last
-// one with the periodicity defect (how much they changed from the period before).
+// virgin state (or a given state), for a fixed number of periods, and returns the
+// loads of the last one with its periodicity defect (how much the state changed
+// over it).
 // A single Jenkin element is periodic after one pre-period (MODEL.md section 6);
 // the cable under two prescribed tip coordinates is not: its sections' memories
 // settle geometrically over several periods (defects of 1e-6 .. 1e-10 after six
@@ -31,7 +32,10 @@ struct PeriodicCableResult {
   bool converged = false;  ///< every state determination converged
   std::string failure;     ///< why not, with where (sample, period) and by how much
   int periods = 0;         ///< periods run in all
-  /// max |loads(last period) - loads(period before)| / max |loads|; 0 for one period.
+  /// How far the cable's state at the end of the last period is from its state at
+  /// that period's start: max |kappa_end - kappa_start| / max |kappa| over the
+  /// sections, and max |H_end - H_start| / h over the elements. Zero means every
+  /// further period repeats the last one exactly.
   double periodicity_defect = 0.0;
   double dissipated = 0.0; ///< by the sliders over the final period, J
   /// Loads of the final period: (F, Q) per sample, N and N m; (T, clamp-section
@@ -47,19 +51,25 @@ class PeriodicCable {
  public:
   PeriodicCable(const cable::Cable& cable, cable::CantileverOptions options);
 
-  /// Loads along the periodic path `kinematics` (2 x N) in the last of `periods` periods.
+  /// Loads along the periodic path `kinematics` (2 x N) in the last of `periods`
+  /// periods, starting from `start` (nullptr: the virgin state).
   /// With `basis` (N x C) the path is u_j = sum_c basis(j, c) q(2c + d) for DOF d,
   /// and `sensitivity` (2N x 2C, rows 2j + d for F (d = 0) and Q (d = 1)) receives
   /// the exact derivative of the final period's loads with respect to q.
-  PeriodicCableResult evaluate(const Eigen::Matrix2Xd& kinematics, int periods, const Eigen::MatrixXd* basis = nullptr,
-                               Eigen::MatrixXd* sensitivity = nullptr);
+  PeriodicCableResult evaluate(const Eigen::Matrix2Xd& kinematics, int periods, const cable::CableState* start = nullptr,
+                               const Eigen::MatrixXd* basis = nullptr, Eigen::MatrixXd* sensitivity = nullptr);
+  /// The cable's state at the end of the last evaluation.
+  const cable::CableState& final_state() const { return cantilever_.committed(); }
 
  private:
   void propagate_sensitivity(const cable::CableState& from, const cable::CableState& to,
                              const Eigen::MatrixXd& basis, int sample, Eigen::MatrixXd* sensitivity);
 
+  double state_change(const cable::CableState& start, const cable::CableState& end) const;
+
   const cable::Cable& cable_;
   cable::Cantilever cantilever_;
+  cable::CableState period_start_;
   // Sensitivity state: d kappa_i / dq (column i) and d H_(i,e) / dq (column i*m + e).
   Eigen::MatrixXd d_curvature_;
   Eigen::MatrixXd d_hysteretic_;

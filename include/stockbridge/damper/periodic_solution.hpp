@@ -16,6 +16,8 @@ namespace stockbridge::damper {
 struct SolverSummary {
   bool converged = false;
   int iterations = 0;     ///< Newton (or period) iterations
+  int evaluations = 0;    ///< periodic evaluations of the cable (harmonic balance, collocation)
+  int jacobians = 0;      ///< of which with exact sensitivities
   double residual = std::numeric_limits<double>::quiet_NaN();      ///< final residual, relative (see each solver)
   /// |P - D/T| relative to the apparent power V |F1| / 2: P the mean input power
   /// from the first harmonic, D the sliders' dissipation per period.
