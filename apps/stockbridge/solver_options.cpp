@@ -10,6 +10,7 @@ void SolverFlags::add_to(CLI::App& command) {
   command.add_option("--samples", samples, "Time samples per period for hb (0: automatic, 8 H rounded up to a power of 2, at least 64)")
       ->capture_default_str();
   command.add_option("--steps", steps, "Time steps per period (time, shooting)")->capture_default_str();
+  command.add_option("--max-iterations", max_iterations, "Newton iterations per point (hb, collocation)")->capture_default_str();
 }
 
 damper::SolverOptions SolverFlags::options() const {
@@ -17,6 +18,7 @@ damper::SolverOptions SolverFlags::options() const {
   options.method = damper::parse_method(method);
   options.harmonic_balance.harmonics = harmonics;
   options.harmonic_balance.samples = samples;
+  options.harmonic_balance.max_iterations = max_iterations;
   options.steps_per_period = steps;
   options.validate();
   return options;

@@ -1,0 +1,119 @@
+// `stockbridge impedance` and `stockbridge response` as users run them.
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+#include "support/temp_file.hpp"
+
+namespace stockbridge::testing {
+namespace {
+
+const std::string kExample = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml";
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(ImpedanceCli, SweepOfTheShippedExample) {
+  const auto dir = scratch_directory("impedance-ok");
+  const CliResult r = run_cli("impedance '" + kExample +
+                                  "' --velocity 0.2,0.05 --fmin 5 --fmax 50 --points 12 --threads 2 --json -o z.csv",
+                              dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto lines = lines_of(read_text(dir / "z.csv"));
+  ASSERT_EQ(lines.size(), 1u + 24u);
+  EXPECT_EQ(lines[0].rfind("frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m,abs_z_n_s_m,phase_deg,power_w,converged", 0), 0u);
+  EXPECT_NE(r.out.find("\"converged\": 24"), std::string::npos) << r.out;
+  EXPECT_NE(lines[1].find(",1,"), std::string::npos);  // converged
+}
+
+TEST(ImpedanceCli, ExplicitFrequenciesAndConstantDisplacement) {
+  const auto dir = scratch_directory("impedance-disp");
+  const CliResult r = run_cli("impedance '" + kExample + "' --displacement 0.001 --frequencies 8,12.5,20 -o z.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto lines = lines_of(read_text(dir / "z.csv"));
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[2].rfind("12.5,", 0), 0u);
+}
+
+TEST(ImpedanceCli, NonConvergedPointsAreFlaggedAndExitThree) {
+  const auto dir = scratch_directory("impedance-fail");
+  // One Newton iteration cannot reach the slipping steady state.
+  const CliResult r = run_cli("impedance '" + kExample + "' --velocity 0.2 --frequencies 10,12 --max-iterations 1 -o z.csv", dir);
+  ASSERT_EQ(r.exit_code, 3) << r.err;
+  const auto lines = lines_of(read_text(dir / "z.csv"));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_NE(lines[1].find(",,,,,,0,"), std::string::npos) << lines[1];  // numbers empty, converged 0
+  EXPECT_NE(r.err.find("did not converge"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("f = 10 Hz"), std::string::npos) << r.err;
+}
+
+TEST(ResponseCli, OneSteadyPeriod) {
+  const auto dir = scratch_directory("response-ok");
+  const CliResult r = run_cli("response '" + kExample + "' --frequency 20 --velocity 0.2 --json -o t.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto lines = lines_of(read_text(dir / "t.csv"));
+  EXPECT_EQ(lines[0].rfind("time_s,clamp_displacement_m,clamp_velocity_m_s,shaker_force_n,arm1_x_m,arm1_phi_rad,arm1_force_n", 0), 0u);
+  EXPECT_NE(lines[0].find("arm2_clamp_section_moment_n_m"), std::string::npos);
+  EXPECT_EQ(lines.size(), 1u + 128u);
+  EXPECT_NE(r.out.find("\"re_z_n_s_m\": "), std::string::npos);
+}
+
+struct BadRun {
+  const char* name;
+  const char* damper;  // file contents, or nullptr for the shipped example
+  const char* arguments;
+  const char* must_mention;
+};
+
+class DamperCliRejects : public ::testing::TestWithParam<BadRun> {};
+
+constexpr const char* kGoodArm = "[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\n";
+
+TEST_P(DamperCliRejects, WithOneLineExitTwoAndNoFile) {
+  const auto dir = scratch_directory(std::string("damper-bad-") + GetParam().name);
+  const std::string file = GetParam().damper ? "d.toml" : "'" + kExample + "'";
+  if (GetParam().damper) write_temp_file(dir, "d.toml", GetParam().damper);
+  const CliResult r = run_cli(std::string(GetParam().arguments).replace(std::string(GetParam().arguments).find("FILE"), 4, file) +
+                                  " -o out.csv", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_NE(r.err.find(GetParam().must_mention), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, DamperCliRejects,
+    ::testing::Values(
+        BadRun{"no_clamp", "[[arm]]\nmass = 1\n", "impedance FILE --velocity 0.2", "'clamp'"},
+        BadRun{"no_arm", "[clamp]\nmass = 0.7\n", "impedance FILE --velocity 0.2", "'arm'"},
+        BadRun{"negative_mass", "[clamp]\nmass = -0.7\n", "impedance FILE --velocity 0.2", "clamp.mass = -0.7"},
+        BadRun{"unknown_arm_key", "[clamp]\nmass = 0.7\n[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\ncolour = 1\n[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\n",
+               "impedance FILE --velocity 0.2", "arm[0].colour"},
+        BadRun{"offset_beyond_cable", "[clamp]\nmass = 0.7\n[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.5\n[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\n",
+               "impedance FILE --velocity 0.2", "arm[0].offset = 0.5"},
+        BadRun{"bad_cable", "[clamp]\nmass = 0.7\n[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\nlength = 0.1875\nsections = 8\nei = -2.8\n",
+               "impedance FILE --velocity 0.2", "arm[0].cable.ei = -2.8"},
+        BadRun{"no_amplitude", nullptr, "impedance FILE", "--velocity"},
+        BadRun{"both_amplitudes", nullptr, "impedance FILE --velocity 0.2 --displacement 0.001", "either"},
+        BadRun{"bad_velocity", nullptr, "impedance FILE --velocity 0.2,abc", "'abc'"},
+        BadRun{"negative_velocity", nullptr, "impedance FILE --velocity -0.2", "velocity = -0.2"},
+        BadRun{"bad_range", nullptr, "impedance FILE --velocity 0.2 --fmin 50 --fmax 10", "fmax = 10"},
+        BadRun{"unsorted_frequencies", nullptr, "impedance FILE --velocity 0.2 --frequencies 20,10", "frequency[1] = 10"},
+        BadRun{"bad_method", nullptr, "impedance FILE --velocity 0.2 --method euler", "euler"},
+        BadRun{"bad_harmonics", nullptr, "impedance FILE --velocity 0.2 --harmonics 0", "harmonics = 0"},
+        BadRun{"bad_threads", nullptr, "impedance FILE --velocity 0.2 --threads 0", "threads = 0"},
+        BadRun{"response_no_frequency", nullptr, "response FILE --velocity 0.2", "--frequency"},
+        BadRun{"response_zero_frequency", nullptr, "response FILE --frequency 0 --velocity 0.2", "frequency = 0"}),
+    [](const ::testing::TestParamInfo<BadRun>& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace stockbridge::testing
