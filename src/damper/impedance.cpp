@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/damper/shooting.hpp"
+#include "stockbridge/damper/time_integration.hpp"
 
 namespace stockbridge::damper {
 
@@ -53,6 +55,22 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
   HarmonicBalance solver_;
 };
 
+/// Time integration and shooting always start from the all-stick linear steady state
+/// of the excitation: where nothing slips it is already periodic, whereas a neighbour's
+/// state would set off a free vibration that dry friction alone never damps (MODEL.md
+/// section 6). The predictor is therefore not used.
+template <class Solver, class Options>
+class TimeDomainArmSolver final : public ArmSolver {
+ public:
+  TimeDomainArmSolver(const Arm& arm, Options options) : solver_(arm, options) {}
+  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& /*predictor*/) override {
+    return solver_.solve(excitation, nullptr);
+  }
+
+ private:
+  Solver solver_;
+};
+
 }  // namespace
 
 std::unique_ptr<ArmSolver> make_arm_solver(const Arm& arm, const SolverOptions& options) {
@@ -65,11 +83,18 @@ std::unique_ptr<ArmSolver> make_arm_solver(const Arm& arm, const SolverOptions& 
       collocation.collocation = true;
       return std::make_unique<HarmonicBalanceArmSolver>(arm, collocation);
     }
-    case Method::time_integration:
-    case Method::shooting:
-      break;
+    case Method::time_integration: {
+      TimeIntegrationOptions time;
+      time.steps_per_period = options.steps_per_period;
+      return std::make_unique<TimeDomainArmSolver<TimeIntegration, TimeIntegrationOptions>>(arm, time);
+    }
+    case Method::shooting: {
+      ShootingOptions shooting;
+      shooting.steps_per_period = options.steps_per_period;
+      return std::make_unique<TimeDomainArmSolver<Shooting, ShootingOptions>>(arm, shooting);
+    }
   }
-  throw InvalidParameter(fmt::format("method = '{}': not available in this build", method_name(options.method)));
+  throw InvalidParameter(fmt::format("method = {}: unknown", static_cast<int>(options.method)));
 }
 
 std::vector<std::size_t> distinct_arms(const DamperDescription& damper) {

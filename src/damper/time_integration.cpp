@@ -145,6 +145,7 @@ bool NewmarkStepper::advance_period(ArmPeriod* record) {
     record->loads.resize(2, steps_);
     record->clamp_moment.resize(static_cast<std::size_t>(steps_));
     record->clamp_curvature.resize(static_cast<std::size_t>(steps_));
+    record->clamp_section_moment.resize(static_cast<std::size_t>(steps_));
   }
   for (int j = 0; j < steps_; ++j) {
     if (record) {
@@ -153,6 +154,8 @@ bool NewmarkStepper::advance_period(ArmPeriod* record) {
       record->loads.col(j) = Eigen::Vector2d(state.tip_force, state.tip_moment(length_));
       record->clamp_moment[static_cast<std::size_t>(j)] = state.clamp_moment;
       record->clamp_curvature[static_cast<std::size_t>(j)] = state.curvature.front();
+      record->clamp_section_moment[static_cast<std::size_t>(j)] =
+          state.clamp_moment - state.tip_force * cantilever_.cable().positions()[0];
     }
     if (!step(j)) return false;
   }

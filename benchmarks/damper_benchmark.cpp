@@ -1,0 +1,54 @@
+// The product's main job: the impedance sweep of examples/sauter2003.toml
+// (200 frequencies log-spaced over 1-100 Hz at 0.05 and 0.2 m/s, harmonic
+// balance, 9 harmonics), on 1 and 2 threads; and the cost of one point per method.
+
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "stockbridge/damper/steady_state.hpp"
+#include "stockbridge/damper/sweep.hpp"
+#include "stockbridge/io/damper_file.hpp"
+
+namespace {
+
+using namespace stockbridge::damper;
+
+DamperDescription example() {
+  return stockbridge::io::read_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml");
+}
+
+void BM_SauterSweep(benchmark::State& state) {
+  const DamperDescription damper = example();
+  SweepSpec spec;
+  spec.frequencies = log_spaced(1.0, 100.0, 200);
+  spec.amplitudes = {0.05, 0.2};
+  spec.threads = static_cast<int>(state.range(0));
+  int converged = 0;
+  for (auto _ : state) {
+    converged = 0;
+    for (const SweepRun& run : run_sweep(damper, spec)) {
+      for (const ImpedancePoint& p : run.points) converged += p.converged;
+    }
+  }
+  state.counters["converged_points"] = converged;
+}
+BENCHMARK(BM_SauterSweep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
+// One point from a cold start (no continuation), per method, at a slipping frequency.
+void BM_OnePoint(benchmark::State& state, Method method, double frequency_hz) {
+  const DamperDescription damper = example();
+  SolverOptions options;
+  options.method = method;
+  if (method == Method::collocation) options.harmonic_balance.harmonics = 40;
+  const Excitation excitation = Excitation::from_velocity(frequency_hz, 0.2);
+  bool converged = false;
+  for (auto _ : state) converged = solve_steady_state(damper, excitation, options).point.converged;
+  state.counters["converged"] = converged;
+}
+BENCHMARK_CAPTURE(BM_OnePoint, hb_15Hz, Method::harmonic_balance, 15.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OnePoint, collocation_H40_15Hz, Method::collocation, 15.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OnePoint, hb_50Hz, Method::harmonic_balance, 50.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OnePoint, collocation_H40_50Hz, Method::collocation, 50.0)->Unit(benchmark::kMillisecond);
+
+}  // namespace
