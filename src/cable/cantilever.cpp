@@ -64,12 +64,17 @@ void apply_loads(const Cable& cable, const CableState& from, double clamp_moment
     workspace.hysteretic.resize(m);
   }
   const double lever_cap = cable.description().lever_arm_limit();
+  const double d_clamp_moment = clamp_moment - from.clamp_moment;
+  const double d_tip_force = tip_force - from.tip_force;
   double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
+  double a = 0.0, b = 0.0, d = 0.0, e = 0.0;  // the flexibility, summed on the way
   for (std::size_t i = 0; i < n; ++i) {
-    const double moment = clamp_moment - tip_force * s[i];
+    // Every state came from loads (T, F), so the committed moment is T - F s exactly.
+    double excess = d_clamp_moment - d_tip_force * s[i];
     std::span<const section::Jenkin> jenkin = cable.jenkin(i);
     std::span<const double> h_from = std::span<const double>(from.hysteretic).subspan(i * m, m);
     if (cable.modified_masing()) {
+      const double moment = clamp_moment - tip_force * s[i];
       const double lever = tip_force != 0.0 ? std::min(std::abs(moment / tip_force), lever_cap) : lever_cap;
       for (std::size_t j = 0; j < m; ++j) {
         const double h = jenkin[j].h + cable.k0()[j] * lever;
@@ -78,23 +83,30 @@ void apply_loads(const Cable& cable, const CableState& from, double clamp_moment
       }
       jenkin = std::span<const section::Jenkin>(workspace.jenkin).first(m);
       h_from = std::span<const double>(workspace.hysteretic).first(m);
+      for (std::size_t j = 0; j < m; ++j) excess -= h_from[j] - from.hysteretic[i * m + j];  // moments set back
     }
     double dk = 0.0;
-    section::solve_curvature_increment(cable.ei(i), jenkin, h_from, from.curvature[i], moment, dk);  // ei > 0
+    section::solve_curvature_increment(cable.ei(i), jenkin, h_from, excess, dk);  // ei > 0: always solvable
     const section::JenkinStep step =
         section::jenkin_step(jenkin, h_from, dk, std::span<double>(to.hysteretic).subspan(i * m, m));
     const double kappa = from.curvature[i] + dk;
+    const double tangent = cable.ei(i) + step.stick_stiffness;
     to.curvature[i] = kappa;
-    to.tangent[i] = cable.ei(i) + step.stick_stiffness;
+    to.tangent[i] = tangent;
     rotation += w[i] * kappa;
     deflection += w[i] * (l - s[i]) * kappa;
     dissipated += w[i] * step.dissipated;
+    const double g = w[i] / tangent;
+    a += g;
+    b -= g * s[i];
+    d += g * (l - s[i]);
+    e -= g * (l - s[i]) * s[i];
   }
   to.clamp_moment = clamp_moment;
   to.tip_force = tip_force;
   to.rotation = rotation;
   to.deflection = deflection;
-  to.flexibility = tip_flexibility(cable, to.tangent);
+  to.flexibility << a, b, d, e;
   to.dissipated = from.dissipated + dissipated;
 }
 

@@ -24,7 +24,8 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
   if (with_sensitivity) {
     const Eigen::Index p = 2 * basis->cols();
     d_curvature_.setZero(p, static_cast<Eigen::Index>(n_sections));
-    d_hysteretic_.setZero(p, static_cast<Eigen::Index>(n_sections * m));
+    d_hysteretic_.resize(p, static_cast<Eigen::Index>(n_sections * m));
+    dh_zero_.assign(n_sections * m, 1);  // the columns of d_hysteretic_ are zero where set
     sensitivity->resize(2 * n_samples, p);
   }
   PeriodicCableResult result;
@@ -106,37 +107,58 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
   Eigen::MatrixXd& dh = d_hysteretic_;
   Eigen::MatrixXd& a_all = a_all_;
   a_all.resize(p, static_cast<Eigen::Index>(n_sections));
+  sticking_.resize(n_sections * m);
+  has_a_.resize(n_sections);
+  dh_zero_.resize(n_sections * m, 1);
   // First pass: a_i and the kinematic right-hand side (the old dk and dH are still
   // needed afterwards, so nothing is overwritten until the loads' derivatives are known).
-  for (std::size_t i = 0; i < n_sections; ++i) {
-    const double dkappa = to.curvature[i] - from.curvature[i];
-    const auto jenkin = cable_.jenkin(i);
-    const double k = to.tangent[i];
-    auto a = a_all.col(static_cast<Eigen::Index>(i));
-    a.setZero();
-    for (std::size_t e = 0; e < m; ++e) {
-      if (!section::jenkin_slips(jenkin[e], from.hysteretic[i * m + e], dkappa)) {
-        a += (jenkin[e].c / k) * dk.col(static_cast<Eigen::Index>(i)) -
-             (1.0 / k) * dh.col(static_cast<Eigen::Index>(i * m + e));
-      }
-    }
-    rhs_phi_ -= w[i] * a;
-    rhs_x_ -= (w[i] * (l - s[i])) * a;
-  }
-  const Eigen::Matrix2d inverse = to.flexibility.inverse();
-  d_clamp_moment_ = inverse(0, 0) * rhs_phi_ + inverse(0, 1) * rhs_x_;
-  d_tip_force_ = inverse(1, 0) * rhs_phi_ + inverse(1, 1) * rhs_x_;
+  // A section where every element slips has a_i = 0 and is skipped.
   for (std::size_t i = 0; i < n_sections; ++i) {
     const double dkappa = to.curvature[i] - from.curvature[i];
     const auto jenkin = cable_.jenkin(i);
     const double k = to.tangent[i];
     const Eigen::Index ci = static_cast<Eigen::Index>(i);
-    // d kappa_new - d kappa_old, then the new d kappa.
-    a_ = a_all.col(ci) + (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_) - dk.col(ci);
+    has_a_[i] = 0;
     for (std::size_t e = 0; e < m; ++e) {
-      auto h = dh.col(static_cast<Eigen::Index>(i * m + e));
-      if (section::jenkin_slips(jenkin[e], from.hysteretic[i * m + e], dkappa)) {
-        h.setZero();
+      const bool sticks = !section::jenkin_slips(jenkin[e], from.hysteretic[i * m + e], dkappa);
+      sticking_[i * m + e] = sticks;
+      if (!sticks) continue;
+      auto a = a_all.col(ci);
+      if (!has_a_[i]) {
+        a = (jenkin[e].c / k) * dk.col(ci);
+        has_a_[i] = 1;
+      } else {
+        a += (jenkin[e].c / k) * dk.col(ci);
+      }
+      if (!dh_zero_[i * m + e]) a -= (1.0 / k) * dh.col(static_cast<Eigen::Index>(i * m + e));
+    }
+    if (has_a_[i]) {
+      rhs_phi_ -= w[i] * a_all.col(ci);
+      rhs_x_ -= (w[i] * (l - s[i])) * a_all.col(ci);
+    }
+  }
+  const Eigen::Matrix2d inverse = to.flexibility.inverse();
+  d_clamp_moment_ = inverse(0, 0) * rhs_phi_ + inverse(0, 1) * rhs_x_;
+  d_tip_force_ = inverse(1, 0) * rhs_phi_ + inverse(1, 1) * rhs_x_;
+  for (std::size_t i = 0; i < n_sections; ++i) {
+    const auto jenkin = cable_.jenkin(i);
+    const double k = to.tangent[i];
+    const Eigen::Index ci = static_cast<Eigen::Index>(i);
+    // d kappa_new - d kappa_old, then the new d kappa.
+    if (has_a_[i]) {
+      a_ = a_all.col(ci) + (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_) - dk.col(ci);
+    } else {
+      a_ = (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_) - dk.col(ci);
+    }
+    for (std::size_t e = 0; e < m; ++e) {
+      const std::size_t ie = i * m + e;
+      auto h = dh.col(static_cast<Eigen::Index>(ie));
+      if (!sticking_[ie]) {
+        if (!dh_zero_[ie]) h.setZero();
+        dh_zero_[ie] = 1;
+      } else if (dh_zero_[ie]) {
+        h = jenkin[e].c * a_;
+        dh_zero_[ie] = 0;
       } else {
         h += jenkin[e].c * a_;
       }

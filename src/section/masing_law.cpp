@@ -53,8 +53,7 @@ void curvature_update(const MasingParameters& parameters, const SectionState& fr
 void moment_update(const MasingParameters& parameters, const SectionState& from, double moment,
                    SectionState& to) {
   double dk = 0.0;
-  if (!solve_curvature_increment(parameters.ei, parameters.jenkin, from.hysteretic,
-                                 from.curvature, moment, dk)) {
+  if (!solve_curvature_increment(parameters.ei, parameters.jenkin, from.hysteretic, moment - from.moment, dk)) {
     throw NumericalError(fmt::format(
         "moment = {} N m: beyond what the section carries with ei = 0 (total slip moment {} N m)",
         format_value(moment), format_value(parameters.total_slip_moment())));

@@ -74,6 +74,7 @@ class PeriodicCable {
   Eigen::MatrixXd d_curvature_;
   Eigen::MatrixXd d_hysteretic_;
   Eigen::MatrixXd a_all_;
+  std::vector<unsigned char> sticking_, has_a_, dh_zero_;
   Eigen::VectorXd a_, rhs_phi_, rhs_x_, d_clamp_moment_, d_tip_force_;
 };
 

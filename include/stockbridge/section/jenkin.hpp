@@ -69,19 +69,16 @@ inline JenkinStep jenkin_step(std::span<const Jenkin> jenkin, std::span<const do
   return step;
 }
 
-/// Moment-driven use: the curvature increment dk at which
-///     ei * (kappa_from + dk) + sum_j clamp(h_from[j] + c_j dk, -h_j, h_j) = moment.
+/// Moment-driven use: the curvature increment dk at which the section's moment
+/// grows by `excess`:
+///     ei * dk + sum_j [clamp(h_from[j] + c_j dk, -h_j, h_j) - h_from[j]] = excess.
 /// The left side is monotone and piecewise linear in dk, so the solution is exact:
 /// an active-set pass that only ever removes elements from the sticking set, at most
 /// m + 1 passes of O(m) each, no sorting, no allocation.
 /// Returns false (and leaves dk unset) only when no solution exists, which requires
-/// ei == 0 and |moment| beyond the elements' total slip moment.
+/// ei == 0 and |excess| beyond what the elements can still take.
 inline bool solve_curvature_increment(double ei, std::span<const Jenkin> jenkin,
-                                      std::span<const double> h_from, double kappa_from,
-                                      double moment, double& dk) {
-  double committed_moment = ei * kappa_from;
-  for (const double h : h_from) committed_moment += h;
-  const double excess = moment - committed_moment;
+                                      std::span<const double> h_from, double excess, double& dk) {
   if (excess == 0.0) {
     dk = 0.0;
     return true;
