@@ -50,5 +50,9 @@ BENCHMARK_CAPTURE(BM_OnePoint, hb_15Hz, Method::harmonic_balance, 15.0)->Unit(be
 BENCHMARK_CAPTURE(BM_OnePoint, collocation_H40_15Hz, Method::collocation, 15.0)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OnePoint, hb_50Hz, Method::harmonic_balance, 50.0)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OnePoint, collocation_H40_50Hz, Method::collocation, 50.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OnePoint, time_15Hz, Method::time_integration, 15.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OnePoint, time_50Hz, Method::time_integration, 50.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OnePoint, shooting_15Hz, Method::shooting, 15.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OnePoint, shooting_50Hz, Method::shooting, 50.0)->Unit(benchmark::kMillisecond);
 
 }  // namespace
