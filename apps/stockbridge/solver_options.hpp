@@ -14,7 +14,7 @@ struct SolverFlags {
   int harmonics = 9;
   int samples = 0;
   int steps = 256;
-  int max_iterations = 40;
+  int max_iterations = 100;
 
   void add_to(CLI::App& command);
   damper::SolverOptions options() const;

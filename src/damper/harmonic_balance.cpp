@@ -19,6 +19,7 @@ void HarmonicBalanceOptions::validate() const {
   require_positive("tolerance", tolerance, "");
   require_positive("periodicity_tolerance", periodicity_tolerance, "");
   require_in_range("periods", periods, 1, 1000);
+  require_in_range("max_settling_periods", max_settling_periods, 0, 1000000);
   cantilever.validate();
 }
 
@@ -203,6 +204,7 @@ bool HarmonicBalance::newton(const Excitation& excitation, Eigen::VectorXd& q, P
   start_ = cable_.final_state();
   if (!fresh) assemble_jacobian(excitation, jacobian);
   double norm = r.lpNorm<Eigen::Infinity>() / scale;
+  int settling_periods = 0;
   for (int iteration = 0;; ++iteration) {
     summary.residual = norm;
     summary.periodicity_defect = loads.periodicity_defect;
@@ -217,12 +219,29 @@ bool HarmonicBalance::newton(const Excitation& excitation, Eigen::VectorXd& q, P
       last_sign_ = summary.jacobian_sign;
       return true;
     }
+    if (norm <= options_.tolerance) {
+      // The equations hold but the cable's memory is still settling: run more periods
+      // at the same coefficients rather than Newton steps, which would disturb it again.
+      if (settling_periods >= options_.max_settling_periods) {
+        summary.message = fmt::format("cable state not periodic after {} more periods at the solution "
+                                      "(its state still changes by {:.3g} per period)",
+                                      settling_periods, loads.periodicity_defect);
+        return false;
+      }
+      settling_periods += periods;
+      --iteration;
+      if (!residual(excitation, q, periods, r, nullptr, nullptr, &loads)) {
+        summary.message = "while settling: " + loads.failure;
+        return false;
+      }
+      start_ = cable_.final_state();
+      norm = r.lpNorm<Eigen::Infinity>() / scale;
+      if (norm > options_.tolerance) assemble_jacobian(excitation, jacobian);
+      continue;
+    }
     if (iteration == options_.max_iterations) {
-      summary.message = norm > options_.tolerance
-                            ? fmt::format("no convergence in {} Newton iterations (residual {:.3g} of the excitation force)",
-                                          iteration, norm)
-                            : fmt::format("cable state not periodic after {} Newton iterations (loads change by {:.3g} per period)",
-                                          iteration, loads.periodicity_defect);
+      summary.message = fmt::format("no convergence in {} Newton iterations (residual {:.3g} of the excitation force)",
+                                    iteration, norm);
       return false;
     }
     ++summary.iterations;
@@ -235,7 +254,7 @@ bool HarmonicBalance::newton(const Excitation& excitation, Eigen::VectorXd& q, P
     for (int halving = 0; step.allFinite() && halving < halvings && !accepted; ++halving, alpha *= 0.5) {
       q_try = q + alpha * step;
       PeriodicCableResult trial_loads;
-      // Accept a decrease, or any step once the residual is met (the cable state is then settling).
+      // Accept a decrease, or a step that meets the tolerance.
       if (residual(excitation, q_try, periods, r_try, nullptr, nullptr, &trial_loads) &&
           (r_try.norm() <= (1.0 - 1e-4 * alpha) * norm2 || r_try.lpNorm<Eigen::Infinity>() / scale <= options_.tolerance)) {
         q = q_try;

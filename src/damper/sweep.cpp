@@ -48,21 +48,49 @@ std::vector<double> log_spaced(double fmin, double fmax, int points) {
 
 namespace {
 
-/// One continuation run of one arm over all frequencies at one amplitude.
-std::vector<ArmSolution> continue_arm(const Arm& arm, const SweepSpec& spec, double amplitude,
-                                      const std::function<void()>& tick) {
-  const std::unique_ptr<ArmSolver> solver = make_arm_solver(arm, spec.solver);
-  std::vector<ArmSolution> solutions;
-  solutions.reserve(spec.frequencies.size());
+/// Continuation state of one arm: the last converged solution as predictor.
+struct Continuation {
+  ArmSolver& solver;
   Eigen::VectorXd predictor;
   double predictor_amplitude = 0.0;
-  for (const double f : spec.frequencies) {
-    const Excitation excitation = spec.excitation(f, amplitude);
+  double predictor_frequency = 0.0;
+
+  ArmSolution solve(const Excitation& excitation) {
     if (predictor.size() > 0) predictor *= excitation.displacement_amplitude / predictor_amplitude;
-    ArmSolution solution = solver->solve(excitation, predictor);
+    ArmSolution solution = solver.solve(excitation, predictor);
     if (solution.summary.converged) {
       predictor = solution.unknowns;
       predictor_amplitude = excitation.displacement_amplitude;
+      predictor_frequency = excitation.frequency_hz;
+    } else if (predictor.size() > 0) {
+      predictor *= predictor_amplitude / excitation.displacement_amplitude;  // undo the scaling
+    }
+    return solution;
+  }
+};
+
+/// One continuation run of one arm over all frequencies at one amplitude. A point
+/// that fails is approached again from the last converged frequency in smaller steps.
+std::vector<ArmSolution> continue_arm(const Arm& arm, const SweepSpec& spec, double amplitude,
+                                      const std::function<void()>& tick) {
+  const std::unique_ptr<ArmSolver> solver = make_arm_solver(arm, spec.solver);
+  Continuation continuation{*solver, Eigen::VectorXd(), 0.0, 0.0};
+  std::vector<ArmSolution> solutions;
+  solutions.reserve(spec.frequencies.size());
+  for (const double f : spec.frequencies) {
+    ArmSolution solution = continuation.solve(spec.excitation(f, amplitude));
+    if (!solution.summary.converged && continuation.predictor.size() > 0) {
+      constexpr int kSubsteps = 8;
+      const double from = continuation.predictor_frequency;
+      bool reached = true;
+      for (int k = 1; k < kSubsteps && reached; ++k) {
+        const double fk = from * std::pow(f / from, static_cast<double>(k) / kSubsteps);
+        reached = continuation.solve(spec.excitation(fk, amplitude)).summary.converged;
+      }
+      if (reached) {
+        ArmSolution retry = continuation.solve(spec.excitation(f, amplitude));
+        if (retry.summary.converged) solution = std::move(retry);
+      }
     }
     solutions.push_back(std::move(solution));
     tick();

@@ -25,13 +25,16 @@ struct HarmonicBalanceOptions {
   int harmonics = 9;          ///< H, >= 1
   int samples = 0;            ///< AFT samples per period (harmonic balance); 0: 8 H rounded up to a power of 2, >= 64
   bool collocation = false;   ///< trigonometric collocation at 2H + 1 points instead
-  int max_iterations = 40;    ///< Newton iterations
-  double tolerance = 1e-9;    ///< residual relative to the excitation force amplitude m W^2 X
+  int max_iterations = 100;   ///< Newton iterations
+  double tolerance = 1e-8;    ///< residual relative to the excitation force amplitude m W^2 X
   /// Every evaluation drives the cable through `periods` periods and uses the last;
   /// the solution is accepted when, in the same evaluation, the cable's state over the
   /// last period changed by at most `periodicity_tolerance` (see PeriodicCableResult).
   int periods = 2;
   double periodicity_tolerance = 1e-8;
+  /// Once the equations hold, further periods at the same coefficients let the
+  /// cable's memory settle; at most this many (near-stick states settle slowly).
+  int max_settling_periods = 2000;
   cable::CantileverOptions cantilever;
 
   void validate() const;
