@@ -2,16 +2,10 @@
 
 #include <utility>
 
+#include "stockbridge/core/error.hpp"
 #include "stockbridge/numerics/gauss_legendre.hpp"
 
 namespace stockbridge::cable {
-
-namespace {
-CableDescription validated(CableDescription description) {
-  description.validate();
-  return description;
-}
-}  // namespace
 
 Cable::Cable(CableDescription description) : description_(validated(std::move(description))) {
   const numerics::QuadratureRule rule = numerics::gauss_legendre(description_.sections, 0.0, description_.length);

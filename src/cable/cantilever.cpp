@@ -116,13 +116,6 @@ void CantileverOptions::validate() const {
   require_in_range("max_halvings", max_halvings, 0, 200);
 }
 
-namespace {
-CantileverOptions validated(CantileverOptions options) {
-  options.validate();
-  return options;
-}
-}  // namespace
-
 Cantilever::Cantilever(Cable cable, CantileverOptions options)
     : cable_(std::move(cable)),
       options_(validated(options)),

@@ -35,11 +35,6 @@ namespace {
 using Strided = Eigen::Map<Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 2>>;
 using ConstStrided = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 2>>;
 
-HarmonicBalanceOptions validated(HarmonicBalanceOptions options) {
-  options.validate();
-  return options;
-}
-
 /// Harmonic number of coefficient column c: 0, 1, 1, 2, 2, ...
 int harmonic_of(int c) { return (c + 1) / 2; }
 

@@ -32,11 +32,6 @@ void ShootingOptions::validate() const {
 }
 
 namespace {
-ShootingOptions validated(ShootingOptions options) {
-  options.validate();
-  return options;
-}
-
 /// max_j max(|x_j|, l |phi_j|), m.
 double amplitude_of(const ArmPeriod& period, double length) {
   double amplitude = 0.0;

@@ -203,13 +203,6 @@ void TimeIntegrationOptions::validate() const {
   }
 }
 
-namespace {
-TimeIntegrationOptions validated(TimeIntegrationOptions options) {
-  options.validate();
-  return options;
-}
-}  // namespace
-
 TimeIntegration::TimeIntegration(const Arm& arm, TimeIntegrationOptions options)
     : arm_(arm),
       options_(validated(std::move(options))),

@@ -60,4 +60,12 @@ void require_finite(std::string_view name, double value, std::string_view unit);
 /// Checks lo <= value <= hi for an integer count.
 void require_in_range(std::string_view name, long long value, long long lo, long long hi);
 
+/// `value` after its validate() member accepted it (throws otherwise): for member
+/// initialisers, so that an object is never built from bad parameters.
+template <class T>
+T validated(T value) {
+  value.validate();
+  return value;
+}
+
 }  // namespace stockbridge

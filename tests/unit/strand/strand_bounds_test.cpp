@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/error_message.hpp"
+
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -30,14 +32,7 @@ Strand nineteen_wire(double lay1 = 0.060, double lay2 = 0.100) {
   return Strand{0.001, kE, {{6, 0.001, 0.002, lay1}, {12, 0.001, 0.004, lay2}}};
 }
 
-std::string message_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InvalidParameter& e) {
-    return e.what();
-  }
-  return "(no InvalidParameter thrown)";
-}
+using testing::invalid_parameter_message;
 
 void expect_relative(double actual, double expected, double tolerance) {
   EXPECT_LE(std::abs(actual - expected), tolerance * std::abs(expected))
@@ -127,7 +122,7 @@ TEST(StrandValidation, NamesTheFieldTheValueAndTheExpectation) {
   auto with = [](const std::function<void(Strand&)>& change) {
     Strand strand = nineteen_wire();
     change(strand);
-    return message_of([&] { strand_bounds(strand); });
+    return invalid_parameter_message([&] { strand_bounds(strand); });
   };
   EXPECT_EQ(with([](Strand& s) { s.layers[1].lay_length = -0.05; }),
             "layer[1].lay_length = -0.05: expected a finite value > 0 (m)");
@@ -140,7 +135,7 @@ TEST(StrandValidation, NamesTheFieldTheValueAndTheExpectation) {
   EXPECT_EQ(with([](Strand& s) { s.layers[1].count = 0; }), "layer[1].count = 0: expected an integer from 1 to 1000");
   EXPECT_EQ(with([](Strand& s) { s.core_radius = -0.001; }), "core_radius = -0.001: expected a finite value > 0 (m)");
   EXPECT_EQ(with([](Strand& s) { s.youngs_modulus = 0.0; }), "youngs_modulus = 0: expected a finite value > 0 (Pa)");
-  EXPECT_EQ(message_of([] { validate(Strand{}); }), "core_radius = 0: expected a finite value > 0 (m)");
+  EXPECT_EQ(invalid_parameter_message([] { validate(Strand{}); }), "core_radius = 0: expected a finite value > 0 (m)");
   EXPECT_NO_THROW(validate(nineteen_wire()));
 }
 
