@@ -23,6 +23,14 @@ Cable::Cable(CableDescription description) : description_(validated(std::move(de
     }
   }
   for (const JenkinProfile& e : description_.jenkin) k0_.push_back(e.k0);
+  slip_compliance_.resize(n);
+  stick_compliance_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    double stiffness = ei_[i];
+    for (std::size_t j = 0; j < m; ++j) stiffness += jenkin_[i * m + j].c;
+    slip_compliance_[i] = 1.0 / ei_[i];
+    stick_compliance_[i] = 1.0 / stiffness;
+  }
   modified_masing_ = description_.uses_modified_masing();
 }
 

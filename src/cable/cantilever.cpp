@@ -52,8 +52,74 @@ Eigen::Matrix2d CableState::tip_stiffness(double length) const {
   return out;
 }
 
+namespace {
+
+/// The one-element section in closed form, without divisions: stick if the elastic
+/// trial stays inside the slip limit (the classification of section::jenkin_slips),
+/// else slip at +-h with the elastic stiffness only.
+struct OneElementStep {
+  double dk, hysteretic, compliance, dissipated;
+};
+
+inline OneElementStep one_element_step(const section::Jenkin& e, double h_from, double excess, double stick_compliance,
+                                       double slip_compliance) {
+  const double dk_stick = excess * stick_compliance;
+  const double elastic = h_from + e.c * dk_stick;
+  if (dk_stick > 0.0 && elastic >= e.h) {
+    const double dk = (excess - (e.h - h_from)) * slip_compliance;
+    return {dk, e.h, slip_compliance, e.h * (h_from + e.c * dk - e.h) / e.c};
+  }
+  if (dk_stick < 0.0 && elastic <= -e.h) {
+    const double dk = (excess - (-e.h - h_from)) * slip_compliance;
+    return {dk, -e.h, slip_compliance, e.h * (-e.h - h_from - e.c * dk) / e.c};
+  }
+  return {dk_stick, elastic, stick_compliance, 0.0};
+}
+
+/// apply_loads for cables of one element per section and constant slip moments.
+void apply_loads_one_element(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
+                             CableState& to) {
+  const std::size_t n = cable.sections();
+  const double l = cable.length();
+  const auto s = cable.positions();
+  const auto w = cable.weights();
+  const double d_clamp_moment = clamp_moment - from.clamp_moment;
+  const double d_tip_force = tip_force - from.tip_force;
+  double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
+  double a = 0.0, b = 0.0, d = 0.0, e = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const OneElementStep step = one_element_step(cable.jenkin(i)[0], from.hysteretic[i], d_clamp_moment - d_tip_force * s[i],
+                                                 cable.stick_compliance(i), cable.slip_compliance(i));
+    const double kappa = from.curvature[i] + step.dk;
+    to.curvature[i] = kappa;
+    to.hysteretic[i] = step.hysteretic;
+    to.tangent[i] = step.compliance == cable.slip_compliance(i) ? cable.ei(i) : cable.ei(i) + cable.jenkin(i)[0].c;
+    const double arm = l - s[i];
+    rotation += w[i] * kappa;
+    deflection += w[i] * arm * kappa;
+    dissipated += w[i] * step.dissipated;
+    const double g = w[i] * step.compliance;
+    a += g;
+    b -= g * s[i];
+    d += g * arm;
+    e -= g * arm * s[i];
+  }
+  to.clamp_moment = clamp_moment;
+  to.tip_force = tip_force;
+  to.rotation = rotation;
+  to.deflection = deflection;
+  to.flexibility << a, b, d, e;
+  to.dissipated = from.dissipated + dissipated;
+}
+
+}  // namespace
+
 void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
                  CableState& to, CableWorkspace& workspace) {
+  if (cable.elements() == 1 && !cable.modified_masing()) {
+    apply_loads_one_element(cable, from, clamp_moment, tip_force, to);
+    return;
+  }
   const std::size_t n = cable.sections();
   const std::size_t m = cable.elements();
   const double l = cable.length();

@@ -28,6 +28,10 @@ class Cable {
   std::span<const section::Jenkin> jenkin(std::size_t i) const {
     return std::span<const section::Jenkin>(jenkin_).subspan(i * elements(), elements());
   }
+  /// 1 / ei and 1 / (ei + sum c) at section i: the slipping and sticking compliances
+  /// of a one-element section (the fast path of the cable evaluation).
+  double slip_compliance(std::size_t i) const { return slip_compliance_[i]; }
+  double stick_compliance(std::size_t i) const { return stick_compliance_[i]; }
   /// k0 of each element (all zero unless the modified Masing model is used).
   std::span<const double> k0() const { return k0_; }
   bool modified_masing() const { return modified_masing_; }
@@ -39,6 +43,8 @@ class Cable {
   std::vector<double> ei_;
   std::vector<section::Jenkin> jenkin_;  // sections x elements, row-major
   std::vector<double> k0_;
+  std::vector<double> slip_compliance_;
+  std::vector<double> stick_compliance_;
   bool modified_masing_ = false;
 };
 

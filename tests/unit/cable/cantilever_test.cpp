@@ -185,6 +185,35 @@ TEST(Cantilever, SmoothProfileConvergesSpectrally) {
   EXPECT_LT(std::abs(force(16) - reference), 1e-12 * reference);
 }
 
+// The closed-form one-element path of apply_loads against the general one: two
+// identical half elements (c/2, h/2) slip together and behave as one (c, h), but go
+// through the general active-set solve.
+TEST(Cantilever, OneElementFastPathEqualsTheGeneralPath) {
+  Cantilever one{Cable(CableDescription::uniform(0.3, 40, 2.8, {{20.0, 0.7}}))};
+  Cantilever halves{Cable(CableDescription::uniform(0.3, 40, 2.8, {{10.0, 0.35}, {10.0, 0.35}}))};
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> dx(-0.01, 0.01), dphi(-0.05, 0.05);
+  double x = 0.0, phi = 0.0;
+  for (int i = 0; i < 500; ++i) {
+    x += dx(rng);
+    phi += dphi(rng);
+    ASSERT_TRUE(one.set_trial_tip(x, phi).converged);
+    ASSERT_TRUE(halves.set_trial_tip(x, phi).converged);
+    const CableState& a = one.trial();
+    const CableState& b = halves.trial();
+    ASSERT_NEAR(a.tip_force, b.tip_force, 1e-10 * (1.0 + std::abs(a.tip_force))) << "step " << i;
+    ASSERT_NEAR(a.clamp_moment, b.clamp_moment, 1e-10 * (1.0 + std::abs(a.clamp_moment)));
+    ASSERT_NEAR(a.dissipated, b.dissipated, 1e-10 * (1.0 + a.dissipated));
+    ASSERT_LT((a.flexibility - b.flexibility).norm(), 1e-9 * a.flexibility.norm());
+    for (std::size_t k = 0; k < a.curvature.size(); ++k) {
+      ASSERT_NEAR(a.curvature[k], b.curvature[k], 1e-10 * (1.0 + std::abs(a.curvature[k])));
+      ASSERT_NEAR(a.hysteretic[k], b.hysteretic[2 * k] + b.hysteretic[2 * k + 1], 1e-10);
+    }
+    one.commit();
+    halves.commit();
+  }
+}
+
 TEST(Cantilever, RejectsBadDescriptions) {
   EXPECT_THROW(Cable(CableDescription::uniform(0.0, 40, 2.8, {})), InvalidParameter);
   EXPECT_THROW(Cable(CableDescription::uniform(0.3, 0, 2.8, {})), InvalidParameter);
