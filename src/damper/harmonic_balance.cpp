@@ -20,6 +20,9 @@ void HarmonicBalanceOptions::validate() const {
   require_positive("periodicity_tolerance", periodicity_tolerance, "");
   require_in_range("periods", periods, 1, 1000);
   require_in_range("max_settling_periods", max_settling_periods, 0, 1000000);
+  if (!(jacobian_refresh_ratio > 0.0 && jacobian_refresh_ratio <= 1.0)) {
+    throw_invalid("jacobian_refresh_ratio", jacobian_refresh_ratio, "a value in (0, 1]");
+  }
   cantilever.validate();
 }
 
@@ -275,7 +278,7 @@ bool HarmonicBalance::newton(const Excitation& excitation, Eigen::VectorXd& q, P
     }
     const double new_norm = r.lpNorm<Eigen::Infinity>() / scale;
     // Slow progress means the Jacobian belongs to another piece: refresh it.
-    fresh = new_norm > 0.25 * norm && new_norm > options_.tolerance;
+    fresh = new_norm > options_.jacobian_refresh_ratio * norm && new_norm > options_.tolerance;
     if (fresh) {
       residual(excitation, q, periods, r, &jacobian, nullptr, &loads);
       start_ = cable_.final_state();

@@ -23,9 +23,9 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
   const bool with_sensitivity = basis && sensitivity;
   if (with_sensitivity) {
     const Eigen::Index p = 2 * basis->cols();
-    d_curvature_.setZero(p, static_cast<Eigen::Index>(n_sections));
-    d_hysteretic_.resize(p, static_cast<Eigen::Index>(n_sections * m));
-    dh_zero_.assign(n_sections * m, 1);  // the columns of d_hysteretic_ are zero where set
+    anchor_.setZero(p, static_cast<Eigen::Index>(n_sections * m));
+    pending_.assign(n_sections * m, 0);
+    pending_compliance_.assign(n_sections, 0.0);
     sensitivity->resize(2 * n_samples, p);
   }
   PeriodicCableResult result;
@@ -83,16 +83,25 @@ double PeriodicCable::state_change(const cable::CableState& start, const cable::
 }
 
 // On the current piece of the piecewise-linear cable map (sticking sets fixed),
-// per section i with tangent k_i = ei + sum_{sticking e} c_e:
-//   kappa_new = a_i + M_i / k_i,   a_i = sum_{sticking e} (c_e kappa_old - H_old,e) / k_i (+ slipping terms, constant)
-//   M_i = T - F s_i,  and the tip kinematics  u = sum_i w_i [1; l - s_i] kappa_new,i.
-// Differentiating: d(T, F) = J^-1 (du - sum_i w_i [1; l - s_i] da_i), J the flexibility;
-//   d kappa_new = da_i + dM_i / k_i;  dH_new,e = dH_old,e + c_e (d kappa_new - d kappa_old) if e sticks, else 0.
+// per section i with tangent k_i = ei + sum_{sticking e} c_e, the moment-driven
+// update gives kappa_new = a_i + M_i / k_i with M_i = T - F s_i, and the tip
+// kinematics u = sum_i w_i [1; l - s_i] kappa_new,i close it.
+//
+// Sensitivities are kept through "anchors": while element e sticks, its moment is
+// H = H_anchor + c_e (kappa - kappa_anchor), where the anchor is the end of its last
+// slip (where H = +-h does not depend on the path) or the start of the evaluation
+// (whose state is held fixed). Hence dH_e = c_e (d kappa - A_e) with A_e = d kappa at
+// the anchor, and the derivative of a_i reduces to
+//     da_i = sum_{sticking e} (c_e / k_i) A_e,
+// so that d(T, F) = J^-1 (du - sum_i w_i [1; l - s_i] da_i), J the flexibility.
+// When e slips, A_e becomes the new d kappa = da_i + dM_i / k_i. A section whose
+// elements all slip contributes nothing; its anchors are set lazily, from the
+// step's (dT, dF), only when an element sticks again.
 void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const cable::CableState& to,
                                           const Eigen::MatrixXd& basis, int sample, Eigen::MatrixXd* sensitivity) {
   const std::size_t n_sections = cable_.sections();
   const std::size_t m = cable_.elements();
-  const Eigen::Index p = d_curvature_.rows();
+  const Eigen::Index p = anchor_.rows();
   const double l = cable_.length();
   const auto s = cable_.positions();
   const auto w = cable_.weights();
@@ -103,39 +112,30 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
     rhs_phi_(2 * c + 1) = basis(sample, c);
     rhs_x_(2 * c) = basis(sample, c);
   }
-  Eigen::MatrixXd& dk = d_curvature_;
-  Eigen::MatrixXd& dh = d_hysteretic_;
-  Eigen::MatrixXd& a_all = a_all_;
-  a_all.resize(p, static_cast<Eigen::Index>(n_sections));
   sticking_.resize(n_sections * m);
-  has_a_.resize(n_sections);
-  dh_zero_.resize(n_sections * m, 1);
-  // First pass: a_i and the kinematic right-hand side (the old dk and dH are still
-  // needed afterwards, so nothing is overwritten until the loads' derivatives are known).
-  // A section where every element slips has a_i = 0 and is skipped.
+  partial_.assign(n_sections, 0);
   for (std::size_t i = 0; i < n_sections; ++i) {
     const double dkappa = to.curvature[i] - from.curvature[i];
     const auto jenkin = cable_.jenkin(i);
     const double k = to.tangent[i];
-    const Eigen::Index ci = static_cast<Eigen::Index>(i);
-    has_a_[i] = 0;
+    bool any_stick = false, any_slip = false;
     for (std::size_t e = 0; e < m; ++e) {
-      const bool sticks = !section::jenkin_slips(jenkin[e], from.hysteretic[i * m + e], dkappa);
-      sticking_[i * m + e] = sticks;
+      const std::size_t ie = i * m + e;
+      const bool sticks = !section::jenkin_slips(jenkin[e], from.hysteretic[ie], dkappa);
+      sticking_[ie] = sticks;
+      any_stick |= sticks;
+      any_slip |= !sticks;
       if (!sticks) continue;
-      auto a = a_all.col(ci);
-      if (!has_a_[i]) {
-        a = (jenkin[e].c / k) * dk.col(ci);
-        has_a_[i] = 1;
-      } else {
-        a += (jenkin[e].c / k) * dk.col(ci);
+      auto anchor = anchor_.col(static_cast<Eigen::Index>(ie));
+      if (pending_[ie]) {  // it slipped in the previous step, in a section where all slipped
+        anchor = pending_compliance_[i] * (previous_d_clamp_moment_ - s[i] * previous_d_tip_force_);
+        pending_[ie] = 0;
       }
-      if (!dh_zero_[i * m + e]) a -= (1.0 / k) * dh.col(static_cast<Eigen::Index>(i * m + e));
+      const double coefficient = jenkin[e].c / k;
+      rhs_phi_.noalias() -= (w[i] * coefficient) * anchor;
+      rhs_x_.noalias() -= (w[i] * (l - s[i]) * coefficient) * anchor;
     }
-    if (has_a_[i]) {
-      rhs_phi_ -= w[i] * a_all.col(ci);
-      rhs_x_ -= (w[i] * (l - s[i])) * a_all.col(ci);
-    }
+    partial_[i] = any_stick && any_slip;
   }
   const Eigen::Matrix2d inverse = to.flexibility.inverse();
   d_clamp_moment_ = inverse(0, 0) * rhs_phi_ + inverse(0, 1) * rhs_x_;
@@ -143,30 +143,28 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
   for (std::size_t i = 0; i < n_sections; ++i) {
     const auto jenkin = cable_.jenkin(i);
     const double k = to.tangent[i];
-    const Eigen::Index ci = static_cast<Eigen::Index>(i);
-    // d kappa_new - d kappa_old, then the new d kappa.
-    if (has_a_[i]) {
-      a_ = a_all.col(ci) + (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_) - dk.col(ci);
+    if (partial_[i]) {
+      // d kappa_new = da_i + dM_i / k_i becomes the anchor of every slipping element.
+      a_ = (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_);
+      for (std::size_t e = 0; e < m; ++e) {
+        if (sticking_[i * m + e]) a_ += (jenkin[e].c / k) * anchor_.col(static_cast<Eigen::Index>(i * m + e));
+      }
+      for (std::size_t e = 0; e < m; ++e) {
+        if (!sticking_[i * m + e]) anchor_.col(static_cast<Eigen::Index>(i * m + e)) = a_;
+      }
     } else {
-      a_ = (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_) - dk.col(ci);
-    }
-    for (std::size_t e = 0; e < m; ++e) {
-      const std::size_t ie = i * m + e;
-      auto h = dh.col(static_cast<Eigen::Index>(ie));
-      if (!sticking_[ie]) {
-        if (!dh_zero_[ie]) h.setZero();
-        dh_zero_[ie] = 1;
-      } else if (dh_zero_[ie]) {
-        h = jenkin[e].c * a_;
-        dh_zero_[ie] = 0;
-      } else {
-        h += jenkin[e].c * a_;
+      bool all_slip = true;
+      for (std::size_t e = 0; e < m; ++e) all_slip &= !sticking_[i * m + e];
+      if (all_slip && m > 0) {
+        for (std::size_t e = 0; e < m; ++e) pending_[i * m + e] = 1;
+        pending_compliance_[i] = 1.0 / k;
       }
     }
-    dk.col(ci) += a_;
   }
-  sensitivity->row(2 * sample) = d_tip_force_.transpose();
-  sensitivity->row(2 * sample + 1) = (d_clamp_moment_ - l * d_tip_force_).transpose();
+  std::swap(previous_d_clamp_moment_, d_clamp_moment_);
+  std::swap(previous_d_tip_force_, d_tip_force_);
+  sensitivity->row(2 * sample) = previous_d_tip_force_.transpose();
+  sensitivity->row(2 * sample + 1) = (previous_d_clamp_moment_ - l * previous_d_tip_force_).transpose();
 }
 
 }  // namespace stockbridge::damper

@@ -35,6 +35,9 @@ struct HarmonicBalanceOptions {
   /// Once the equations hold, further periods at the same coefficients let the
   /// cable's memory settle; at most this many (near-stick states settle slowly).
   int max_settling_periods = 2000;
+  /// The stored Jacobian is replaced by an exact one when a Newton step reduces the
+  /// residual by less than this factor (an exact one costs about 12 residuals).
+  double jacobian_refresh_ratio = 0.25;
   cable::CantileverOptions cantilever;
 
   void validate() const;

@@ -70,12 +70,13 @@ class PeriodicCable {
   const cable::Cable& cable_;
   cable::Cantilever cantilever_;
   cable::CableState period_start_;
-  // Sensitivity state: d kappa_i / dq (column i) and d H_(i,e) / dq (column i*m + e).
-  Eigen::MatrixXd d_curvature_;
-  Eigen::MatrixXd d_hysteretic_;
-  Eigen::MatrixXd a_all_;
-  std::vector<unsigned char> sticking_, has_a_, dh_zero_;
-  Eigen::VectorXd a_, rhs_phi_, rhs_x_, d_clamp_moment_, d_tip_force_;
+  // Sensitivity state (see propagate_sensitivity): the anchor d kappa / dq of every
+  // element (column i*m + e), and the elements whose anchor is still to be set from
+  // the previous step's load derivatives.
+  Eigen::MatrixXd anchor_;
+  std::vector<unsigned char> sticking_, partial_, pending_;
+  std::vector<double> pending_compliance_;
+  Eigen::VectorXd a_, rhs_phi_, rhs_x_, d_clamp_moment_, d_tip_force_, previous_d_clamp_moment_, previous_d_tip_force_;
 };
 
 }  // namespace stockbridge::damper
