@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <numbers>
 #include <cmath>
 #include <numbers>
 
@@ -319,6 +320,114 @@ ArmSolution HarmonicBalance::solve(const Excitation& excitation, const Eigen::Ve
   counting_ = nullptr;
   solution.unknowns = q;
   return solution;
+}
+
+// y = (q / scale_q, W / scale_w): the unknowns of the arclength continuation, scaled
+// so that a unit step changes the response and the frequency by comparable amounts.
+bool HarmonicBalance::correct_on_branch(double velocity, Eigen::VectorXd& y, const Eigen::VectorXd& tangent,
+                                        const Eigen::VectorXd& y_pred, const Eigen::VectorXd& scale,
+                                        Eigen::MatrixXd& jacobian, Eigen::VectorXd& d_frequency) {
+  const Eigen::Index p_count = unknown_count();
+  Eigen::VectorXd r, q;
+  Eigen::MatrixXd bordered(p_count + 1, p_count + 1);
+  Eigen::VectorXd g(p_count + 1);
+  PeriodicCableResult loads;
+  int settling_periods = 0;
+  const int max_iterations = std::min(options_.max_iterations, 25);  // a failed corrector halves the step instead
+  for (int iteration = 0; iteration <= max_iterations; ++iteration) {
+    q = y.head(p_count).cwiseProduct(scale.head(p_count));
+    const double w = y(p_count) * scale(p_count);
+    if (!(w > 0.0)) return false;
+    const Excitation excitation = Excitation::from_velocity(w / (2.0 * std::numbers::pi), velocity);
+    if (!residual(excitation, q, options_.periods, r, &jacobian, &d_frequency, &loads)) return false;
+    start_ = cable_.final_state();
+    const double force = force_scale(excitation);
+    const double constraint = tangent.dot(y - y_pred);
+    const double norm = r.lpNorm<Eigen::Infinity>() / force;
+    if (norm <= options_.tolerance && std::abs(constraint) <= 1e-10) {
+      if (loads.periodicity_defect <= options_.periodicity_tolerance) return true;
+      if (settling_periods >= options_.max_settling_periods) return false;
+      settling_periods += options_.periods;  // let the cable's memory settle at this point
+      continue;
+    }
+    bordered.topLeftCorner(p_count, p_count) = jacobian * scale.head(p_count).asDiagonal() / force;
+    bordered.topRightCorner(p_count, 1) = d_frequency * (scale(p_count) / force);
+    bordered.bottomRows(1) = tangent.transpose();
+    g.head(p_count) = r / force;
+    g(p_count) = constraint;
+    const Eigen::VectorXd step = -bordered.partialPivLu().solve(g);
+    if (!step.allFinite()) return false;
+    y += step;
+  }
+  return false;
+}
+
+std::vector<ArmSolution> HarmonicBalance::continue_along_branch(double velocity, const Eigen::VectorXd& q0, double f0_hz,
+                                                                double target_hz, int max_steps) {
+  require_positive("velocity", velocity, "m/s");
+  const Eigen::Index p_count = unknown_count();
+  const double w0 = 2.0 * std::numbers::pi * f0_hz, w_target = 2.0 * std::numbers::pi * target_hz;
+  const double direction = w_target > w0 ? 1.0 : -1.0;
+  Eigen::VectorXd scale(p_count + 1);
+  scale.head(p_count).setConstant(std::max(q0.lpNorm<Eigen::Infinity>(), 1e-12));
+  scale(p_count) = std::abs(w_target - w0) > 0.0 ? std::abs(w_target - w0) : w0;
+  Eigen::VectorXd y(p_count + 1);
+  y.head(p_count) = q0.cwiseQuotient(scale.head(p_count));
+  y(p_count) = w0 / scale(p_count);
+  start_ = last_state_;
+  Eigen::MatrixXd jacobian;
+  Eigen::VectorXd d_frequency, r;
+  // Tangent at the start: [J, R_W] t = 0, pointing toward the target frequency.
+  const Excitation start = Excitation::from_velocity(f0_hz, velocity);
+  std::vector<ArmSolution> crossings;
+  if (!residual(start, q0, options_.periods, r, &jacobian, &d_frequency, nullptr)) return crossings;
+  auto tangent_at = [&](const Eigen::MatrixXd& j, const Eigen::VectorXd& dw) {
+    Eigen::VectorXd t(p_count + 1);
+    t.head(p_count) = -(j * scale.head(p_count).asDiagonal()).partialPivLu().solve(dw * scale(p_count));
+    t(p_count) = 1.0;
+    return Eigen::VectorXd(t.normalized());
+  };
+  Eigen::VectorXd tangent = tangent_at(jacobian, d_frequency);
+  if (!tangent.allFinite()) return crossings;
+  if (tangent(p_count) * direction < 0.0) tangent = -tangent;
+  double ds = 0.25;
+  for (int step = 0; step < max_steps && ds > 1e-6; ++step) {
+    const Eigen::VectorXd y_pred = y + ds * tangent;
+    Eigen::VectorXd y_new = y_pred;
+    const std::optional<cable::CableState> before = start_;
+    if (!correct_on_branch(velocity, y_new, tangent, y_pred, scale, jacobian, d_frequency)) {
+      start_ = before;
+      ds *= 0.5;
+      continue;
+    }
+    const double wa = y(p_count) * scale(p_count), wb = y_new(p_count) * scale(p_count);
+    if ((wa - w_target) * (wb - w_target) <= 0.0 && wa != w_target) {
+      // Polish at exactly the target from the interpolated point.
+      const double t = (w_target - wa) / (wb - wa);
+      const Eigen::VectorXd q_guess =
+          ((1.0 - t) * y.head(p_count) + t * y_new.head(p_count)).cwiseProduct(scale.head(p_count));
+      last_state_ = start_;
+      const std::optional<cable::CableState> on_branch = start_;
+      ArmSolution at_target = solve(Excitation::from_velocity(target_hz, velocity), q_guess, true);
+      start_ = on_branch;
+      if (at_target.summary.converged) {
+        at_target.summary.message = "reached by arclength continuation";
+        crossings.push_back(std::move(at_target));
+      }
+    }
+    Eigen::VectorXd new_tangent = tangent_at(jacobian, d_frequency);
+    if (!new_tangent.allFinite()) break;
+    if (new_tangent.dot(tangent) < 0.0) new_tangent = -new_tangent;
+    tangent = new_tangent;
+    y = y_new;
+    ds = std::min(2.0 * ds, 1.0);
+    // Done once the branch has passed the target for good (moving on, beyond it).
+    if (!crossings.empty() && direction * (wb - w_target) > 0.0 && direction * tangent(p_count) > 0.0 &&
+        direction * (wb - w_target) > 0.5 * std::abs(w_target - w0)) {
+      break;
+    }
+  }
+  return crossings;
 }
 
 }  // namespace stockbridge::damper

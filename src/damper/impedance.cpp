@@ -51,6 +51,15 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
     return solution;
   }
 
+  std::vector<ArmSolution> continue_to(const Excitation& target, const Eigen::VectorXd& from,
+                                       double from_frequency_hz) override {
+    if (from.size() != solver_.unknown_count()) return {};
+    std::vector<ArmSolution> crossings =
+        solver_.continue_along_branch(target.velocity_amplitude(), from, from_frequency_hz, target.frequency_hz);
+    for (ArmSolution& s : crossings) s.summary.branches = static_cast<int>(crossings.size());
+    return crossings;
+  }
+
  private:
   HarmonicBalance solver_;
 };
@@ -133,6 +142,11 @@ ImpedancePoint combine(const DamperDescription& damper, const Excitation& excita
       continue;
     }
     point.residual = std::max(point.residual, s.summary.residual);
+    if (s.summary.branches > 1) {
+      point.non_unique = true;
+      point.message = fmt::format("arm {} ({}): {} steady states at this frequency (the response curve folds back)", k,
+                                  damper.arms[k].name, s.summary.branches);
+    }
     point.energy_error = std::max(point.energy_error, s.summary.energy_error);
     z += arm_force_first_harmonic(s.period) / v;
     dissipated += s.period.dissipated;

@@ -92,6 +92,17 @@ std::vector<ArmSolution> continue_arm(const Arm& arm, const SweepSpec& spec, dou
         if (retry.summary.converged) solution = std::move(retry);
       }
     }
+    if (!solution.summary.converged && continuation.predictor.size() > 0 && !spec.constant_displacement) {
+      // Natural continuation fails where the branch turns: follow it by arclength.
+      std::vector<ArmSolution> crossings =
+          solver->continue_to(spec.excitation(f, amplitude), continuation.predictor, continuation.predictor_frequency);
+      if (!crossings.empty()) {
+        solution = std::move(crossings.back());
+        continuation.predictor = solution.unknowns;
+        continuation.predictor_amplitude = spec.excitation(f, amplitude).displacement_amplitude;
+        continuation.predictor_frequency = f;
+      }
+    }
     solutions.push_back(std::move(solution));
     tick();
   }

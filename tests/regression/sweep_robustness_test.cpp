@@ -44,5 +44,14 @@ TEST(SweepRobustness, TinyAmplitudeNearTheStickResonance) {
   EXPECT_EQ(converged_points(stiff_low_friction(200.0, 0.05), log_spaced(1.0, 100.0, 200), 0.01), 200);
 }
 
+// ei = 0.5 (c/ei = 40) at 0.1 m/s: natural continuation, the retry from the virgin
+// state and the eight smaller steps all failed at 40.55 Hz (line search); arclength
+// continuation from the last converged point follows the branch there.
+TEST(SweepRobustness, ArclengthRescuesAPointNaturalContinuationMisses) {
+  damper::ArmDescription arm = testing::sauter_arm();
+  arm.cable = cable::CableDescription::uniform(0.1875, 40, 0.5, {{20.0, 0.7}});
+  EXPECT_EQ(converged_points(testing::damper_of({arm, arm}), log_spaced(1.0, 100.0, 200), 0.1), 200);
+}
+
 }  // namespace
 }  // namespace stockbridge::damper

@@ -13,6 +13,7 @@
 // sensitivities of the piecewise-linear cable map) and a backtracking line search.
 
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -67,6 +68,15 @@ class HarmonicBalance {
   /// requires the residual and the periodicity defect of the same evaluation.
   ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& initial, bool continue_from_last = false);
 
+  /// Pseudo-arclength continuation in (q, W) at constant velocity amplitude V, from
+  /// the solution `q0` at `f0_hz` (the last converged solve, whose cable state it
+  /// continues) until the frequency has passed `target_hz`, turning through folds.
+  /// Returns the solutions at every crossing of `target_hz` (polished at exactly that
+  /// frequency): one on a single-valued branch, several where the branch folds back
+  /// over it; empty if the branch could not be followed there in `max_steps` steps.
+  std::vector<ArmSolution> continue_along_branch(double velocity, const Eigen::VectorXd& q0, double f0_hz,
+                                                 double target_hz, int max_steps = 60);
+
   /// The residual (N) at q, and optionally its exact Jacobian
   /// and its derivative with respect to the angular frequency at constant velocity
   /// amplitude (for arclength continuation). Returns false if the cable failed.
@@ -80,6 +90,9 @@ class HarmonicBalance {
   ArmPeriod period_of(const Eigen::VectorXd& q, const PeriodicCableResult& loads) const;
   /// J = the stored force Jacobian + the inertia terms at this frequency.
   void assemble_jacobian(const Excitation& excitation, Eigen::MatrixXd& jacobian) const;
+  /// One arclength corrector: Newton on [R(q, W); t . (y - y_pred)] = 0, scaled.
+  bool correct_on_branch(double velocity, Eigen::VectorXd& y, const Eigen::VectorXd& tangent, const Eigen::VectorXd& y_pred,
+                         const Eigen::VectorXd& scale, Eigen::MatrixXd& jacobian, Eigen::VectorXd& d_frequency);
   /// Newton's iterations; updates q and loads.
   bool newton(const Excitation& excitation, Eigen::VectorXd& q, PeriodicCableResult& loads, SolverSummary& summary);
 

@@ -36,6 +36,14 @@ class ArmSolver {
   virtual ~ArmSolver() = default;
   /// `predictor`: the unknowns of a nearby solution (empty: the solver's own start).
   virtual ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& predictor) = 0;
+  /// Follows the branch of the solution `from` (at `from_frequency_hz`) to the target
+  /// excitation by arclength continuation, at constant velocity amplitude; the
+  /// solutions at every crossing of the target frequency (several where the branch
+  /// folds back over it). Empty where the method cannot (only harmonic balance can).
+  virtual std::vector<ArmSolution> continue_to(const Excitation& /*target*/, const Eigen::VectorXd& /*from*/,
+                                               double /*from_frequency_hz*/) {
+    return {};
+  }
 };
 
 std::unique_ptr<ArmSolver> make_arm_solver(const Arm& arm, const SolverOptions& options);

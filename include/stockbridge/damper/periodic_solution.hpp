@@ -29,6 +29,9 @@ struct SolverSummary {
   /// collocation; 0 if unknown). A change of sign between neighbouring frequencies
   /// marks a fold of the response curve: several steady states there.
   int jacobian_sign = 0;
+  /// Steady states found at this excitation (more than 1: the response curve folds
+  /// back over this frequency; the solution is the one the continuation goes on with).
+  int branches = 1;
   std::string message;    ///< why it did not converge (where and by how much), or notes
 };
 

@@ -139,6 +139,30 @@ TEST(HarmonicBalance, CollocationAgreesWithHarmonicBalance) {
   }
 }
 
+// Arclength continuation follows the branch through the first resonance (14 -> 30 Hz
+// at 0.2 m/s), crosses the target once, and lands on the solution found directly.
+TEST(HarmonicBalance, ArclengthContinuationFollowsTheBranch) {
+  const Arm arm(sauter_arm());
+  HarmonicBalance tracer(arm, HarmonicBalanceOptions{});
+  HarmonicBalance direct(arm, HarmonicBalanceOptions{});
+  const double v = 0.2;
+  Eigen::VectorXd q;
+  for (int k = 0; k <= 20; ++k) {  // reach 14 Hz by natural continuation
+    const Excitation e = Excitation::from_velocity(3.5 * std::pow(4.0, k / 20.0), v);
+    const ArmSolution s = tracer.solve(e, q.size() > 0 ? q : tracer.linear_guess(e), q.size() > 0);
+    ASSERT_TRUE(s.summary.converged) << s.summary.message;
+    q = s.unknowns;
+  }
+  const std::vector<ArmSolution> crossings = tracer.continue_along_branch(v, q, 14.0, 30.0);
+  ASSERT_EQ(crossings.size(), 1u);
+  const Excitation target = Excitation::from_velocity(30.0, v);
+  const ArmSolution reference = direct.solve(target, direct.linear_guess(target));
+  ASSERT_TRUE(reference.summary.converged);
+  const std::complex<double> z_arc = arm_force_first_harmonic(crossings[0].period) / v;
+  const std::complex<double> z_ref = arm_force_first_harmonic(reference.period) / v;
+  EXPECT_LT(std::abs(z_arc - z_ref), 1e-6 * std::abs(z_ref));
+}
+
 TEST(HarmonicBalance, NonConvergenceIsReportedNotThrown) {
   const Arm arm(sauter_arm());
   HarmonicBalanceOptions options;
