@@ -10,21 +10,45 @@
 
 namespace stockbridge::cable {
 
-Eigen::Matrix2d tip_flexibility(const Cable& cable, std::span<const double> tangent) {
-  const double l = cable.length();
-  const auto s = cable.positions();
-  const auto w = cable.weights();
-  double a = 0.0, b = 0.0, d = 0.0, e = 0.0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const double g = w[i] / tangent[i];
-    a += g;
-    b -= g * s[i];
-    d += g * (l - s[i]);
-    e -= g * (l - s[i]) * s[i];
+namespace {
+
+/// The quadrature sums along the cable for one state: the tip kinematics
+/// phi = int kappa, x = int (l - s) kappa, the flexibility int [1; l-s] (1/k_t) [1, -s],
+/// and the dissipation.
+struct CableSums {
+  double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
+  Eigen::Matrix2d flexibility = Eigen::Matrix2d::Zero();
+
+  void add(double weight, double s, double length, double curvature, double compliance, double dissipated_per_length) {
+    const double arm = length - s;
+    rotation += weight * curvature;
+    deflection += weight * arm * curvature;
+    dissipated += weight * dissipated_per_length;
+    const double g = weight * compliance;
+    flexibility(0, 0) += g;
+    flexibility(0, 1) -= g * s;
+    flexibility(1, 0) += g * arm;
+    flexibility(1, 1) -= g * arm * s;
   }
-  Eigen::Matrix2d f;
-  f << a, b, d, e;
-  return f;
+
+  void store(double clamp_moment, double tip_force, const CableState& from, CableState& to) const {
+    to.clamp_moment = clamp_moment;
+    to.tip_force = tip_force;
+    to.rotation = rotation;
+    to.deflection = deflection;
+    to.flexibility = flexibility;
+    to.dissipated = from.dissipated + dissipated;
+  }
+};
+
+}  // namespace
+
+Eigen::Matrix2d tip_flexibility(const Cable& cable, std::span<const double> tangent) {
+  CableSums sums;
+  for (std::size_t i = 0; i < cable.sections(); ++i) {
+    sums.add(cable.weights()[i], cable.positions()[i], cable.length(), 0.0, 1.0 / tangent[i], 0.0);
+  }
+  return sums.flexibility;
 }
 
 CableState CableState::virgin(const Cable& cable) {
@@ -85,8 +109,7 @@ void apply_loads_one_element(const Cable& cable, const CableState& from, double 
   const auto w = cable.weights();
   const double d_clamp_moment = clamp_moment - from.clamp_moment;
   const double d_tip_force = tip_force - from.tip_force;
-  double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
-  double a = 0.0, b = 0.0, d = 0.0, e = 0.0;
+  CableSums sums;
   for (std::size_t i = 0; i < n; ++i) {
     const OneElementStep step = one_element_step(cable.jenkin(i)[0], from.hysteretic[i], d_clamp_moment - d_tip_force * s[i],
                                                  cable.stick_compliance(i), cable.slip_compliance(i));
@@ -94,22 +117,9 @@ void apply_loads_one_element(const Cable& cable, const CableState& from, double 
     to.curvature[i] = kappa;
     to.hysteretic[i] = step.hysteretic;
     to.tangent[i] = step.compliance == cable.slip_compliance(i) ? cable.ei(i) : cable.ei(i) + cable.jenkin(i)[0].c;
-    const double arm = l - s[i];
-    rotation += w[i] * kappa;
-    deflection += w[i] * arm * kappa;
-    dissipated += w[i] * step.dissipated;
-    const double g = w[i] * step.compliance;
-    a += g;
-    b -= g * s[i];
-    d += g * arm;
-    e -= g * arm * s[i];
+    sums.add(w[i], s[i], l, kappa, step.compliance, step.dissipated);
   }
-  to.clamp_moment = clamp_moment;
-  to.tip_force = tip_force;
-  to.rotation = rotation;
-  to.deflection = deflection;
-  to.flexibility << a, b, d, e;
-  to.dissipated = from.dissipated + dissipated;
+  sums.store(clamp_moment, tip_force, from, to);
 }
 
 }  // namespace
@@ -132,8 +142,7 @@ void apply_loads(const Cable& cable, const CableState& from, double clamp_moment
   const double lever_cap = cable.description().lever_arm_limit();
   const double d_clamp_moment = clamp_moment - from.clamp_moment;
   const double d_tip_force = tip_force - from.tip_force;
-  double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
-  double a = 0.0, b = 0.0, d = 0.0, e = 0.0;  // the flexibility, summed on the way
+  CableSums sums;
   for (std::size_t i = 0; i < n; ++i) {
     // Every state came from loads (T, F), so the committed moment is T - F s exactly.
     double excess = d_clamp_moment - d_tip_force * s[i];
@@ -159,21 +168,9 @@ void apply_loads(const Cable& cable, const CableState& from, double clamp_moment
     const double tangent = cable.ei(i) + step.stick_stiffness;
     to.curvature[i] = kappa;
     to.tangent[i] = tangent;
-    rotation += w[i] * kappa;
-    deflection += w[i] * (l - s[i]) * kappa;
-    dissipated += w[i] * step.dissipated;
-    const double g = w[i] / tangent;
-    a += g;
-    b -= g * s[i];
-    d += g * (l - s[i]);
-    e -= g * (l - s[i]) * s[i];
+    sums.add(w[i], s[i], l, kappa, 1.0 / tangent, step.dissipated);
   }
-  to.clamp_moment = clamp_moment;
-  to.tip_force = tip_force;
-  to.rotation = rotation;
-  to.deflection = deflection;
-  to.flexibility << a, b, d, e;
-  to.dissipated = from.dissipated + dissipated;
+  sums.store(clamp_moment, tip_force, from, to);
 }
 
 void CantileverOptions::validate() const {
