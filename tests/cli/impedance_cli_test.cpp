@@ -76,7 +76,6 @@ struct BadRun {
 
 class DamperCliRejects : public ::testing::TestWithParam<BadRun> {};
 
-constexpr const char* kGoodArm = "[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\n";
 
 TEST_P(DamperCliRejects, WithOneLineExitTwoAndNoFile) {
   const auto dir = scratch_directory(std::string("damper-bad-") + GetParam().name);
