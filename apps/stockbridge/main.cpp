@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   int exit_code = cli::kSuccess;
   cli::add_loop_command(app, exit_code);
   cli::add_cycle_command(app, exit_code);
+  cli::add_identify_command(app, exit_code);
   cli::add_impedance_command(app, exit_code);
   cli::add_response_command(app, exit_code);
   cli::add_strand_command(app, exit_code);

@@ -1,0 +1,63 @@
+#pragma once
+// Local identification (MODEL.md section 8, dissertation 3.5 and 4.3.3): the Masing
+// parameters of one cable cross-section from a measured moment-curvature record.
+//
+// The model section is driven from the virgin state with the measured curvature
+// kappa_k; its moment is compared with the measured one from the first extreme on,
+// where every element has slipped so that model and specimen share their state:
+//     e = int |M_model + m0 - M_measured| |d kappa|,
+// relative to int |M_measured| |d kappa| (the trapezoid rule over the samples). The
+// integral runs along the curvature path rather than over the sample index, so that
+// uneven sampling does not weight parts of the loop. m0 is a constant moment offset
+// (a drift-free offset of either signal: after the first extreme a curvature offset
+// kappa0 acts as the moment offset ei kappa0). The parameters are optimised in
+// logarithms (so they stay positive) with NLopt, from several starts derived from
+// the record: the stiffness just after the reversals (ei + sum c), at the extremes
+// (ei), and the loop's half-height at the extremes (sum h).
+
+#include <string>
+#include <vector>
+
+#include "stockbridge/section/masing_law.hpp"
+
+namespace stockbridge::identification {
+
+struct MomentCurvatureRecord {
+  std::vector<double> curvature;  ///< kappa, 1/m, in time order
+  std::vector<double> moment;     ///< M, N m
+};
+
+enum class Optimizer { subplex, nelder_mead };
+
+/// "subplex" or "nelder-mead"; throws InvalidParameter otherwise.
+Optimizer parse_optimizer(std::string_view name);
+
+struct LocalIdentificationOptions {
+  int elements = 1;                  ///< Jenkin elements to fit, 1..6
+  Optimizer optimizer = Optimizer::subplex;  ///< NLopt's Subplex (default) or Nelder-Mead (the dissertation's)
+  int max_evaluations = 40000;       ///< per start
+  double tolerance = 1e-12;          ///< relative change of the parameters at which a start stops
+  void validate() const;
+};
+
+struct LocalIdentification {
+  section::MasingParameters parameters;  ///< elements sorted by slip curvature h / c
+  double moment_offset = 0.0;        ///< m0, N m
+  double error = 0.0;                ///< relative L1 error from the first extreme on
+  std::vector<double> cycle_errors;  ///< the same, per cycle (between every second reversal)
+  int evaluations = 0;               ///< model runs in all starts
+  int starts = 0;
+};
+
+/// The relative L1 error of `parameters` (and offset m0) on the record, from the first extreme.
+double relative_l1_error(const section::MasingParameters& parameters, double moment_offset,
+                         const MomentCurvatureRecord& record);
+
+/// Throws InvalidParameter for a record that cannot be identified (fewer than one
+/// full cycle after the first extreme: two reversals; sizes that differ).
+LocalIdentification identify_local(const MomentCurvatureRecord& record, const LocalIdentificationOptions& options);
+
+/// Indices where the curvature reverses (the last sample before the direction changes).
+std::vector<std::size_t> reversals(const std::vector<double>& curvature);
+
+}  // namespace stockbridge::identification

@@ -1,0 +1,101 @@
+#include "stockbridge/io/csv_reader.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::io {
+
+namespace {
+
+std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    std::string cell = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::size_t first = cell.find_first_not_of(" \t");
+    const std::size_t last = cell.find_last_not_of(" \t");
+    cells.push_back(first == std::string::npos ? std::string() : cell.substr(first, last - first + 1));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return cells;
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& path,
+                                                  const std::vector<std::string>& names, std::size_t min_rows) {
+  const std::string file = path.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(fmt::format("{}: no such file", file));
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::size_t line_number = 0;
+  std::vector<std::size_t> index(names.size(), std::string::npos);
+  std::size_t header_cells = 0;
+  // Header: the first non-blank line.
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    const std::vector<std::string> header = split_cells(line);
+    header_cells = header.size();
+    for (std::size_t c = 0; c < header.size(); ++c) {
+      for (std::size_t k = 0; k < names.size(); ++k) {
+        if (header[c] != names[k]) continue;
+        if (index[k] != std::string::npos) {
+          throw InputError(fmt::format("{}:{}: column '{}' appears twice (columns {} and {})", file, line_number,
+                                       names[k], index[k] + 1, c + 1));
+        }
+        index[k] = c;
+      }
+    }
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      if (index[k] == std::string::npos) {
+        throw InputError(fmt::format("{}:{}: missing column '{}': expected a header with {}", file, line_number,
+                                     names[k], fmt::join(names, ",")));
+      }
+    }
+    break;
+  }
+  if (header_cells == 0) throw InputError(fmt::format("{}: empty file: expected a header row and data", file));
+  std::vector<std::vector<double>> columns(names.size());
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    const std::vector<std::string> cells = split_cells(line);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      if (index[k] >= cells.size()) {
+        throw InputError(fmt::format("{}:{}: {} cells: expected {} (column '{}' missing)", file, line_number,
+                                     cells.size(), header_cells, names[k]));
+      }
+      const std::string& cell = cells[index[k]];
+      double value = 0.0;
+      const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
+      if (cell.empty() || error != std::errc() || end != cell.data() + cell.size()) {
+        throw InputError(fmt::format("{}:{}: column '{}' = '{}': expected a number ('.' as decimal separator)", file,
+                                     line_number, names[k], cell));
+      }
+      if (!std::isfinite(value)) {
+        throw InputError(fmt::format("{}:{}: column '{}' = {}: expected a finite number", file, line_number, names[k],
+                                     cell));
+      }
+      columns[k].push_back(value);
+    }
+  }
+  if (columns.front().size() < min_rows) {
+    throw InputError(fmt::format("{}: {} data rows: expected at least {}", file, columns.front().size(), min_rows));
+  }
+  return columns;
+}
+
+}  // namespace stockbridge::io
