@@ -59,6 +59,11 @@ std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& p
       }
     }
     for (std::size_t k = 0; k < names.size(); ++k) {
+      if (index[k] == std::string::npos && (line.find(';') != std::string::npos || line.find('\t') != std::string::npos)) {
+        throw InputError(fmt::format("{}:{}: header '{}' is separated by ';' or tabs: expected ',' between columns and "
+                                     "'.' as decimal separator",
+                                     file, line_number, line));
+      }
       if (index[k] == std::string::npos) {
         throw InputError(fmt::format("{}:{}: missing column '{}': expected a header with {}", file, line_number,
                                      names[k], fmt::join(names, ",")));

@@ -1,0 +1,73 @@
+// `stockbridge identify local` on files the program itself writes, and on bad files.
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+#include "support/temp_file.hpp"
+
+namespace stockbridge::testing {
+namespace {
+
+TEST(IdentifyCli, LocalRecoversTheParametersOfALoopRecord) {
+  const auto dir = scratch_directory("identify-local");
+  ASSERT_EQ(run_cli("loop --ei 2.8 --jenkin 20:0.7 --amplitude 0.08 --cycles 3 --points 400 -o mk.csv", dir).exit_code, 0);
+  const CliResult r = run_cli("identify local --input mk.csv --json -o params.toml", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"ei\": 2.7999999"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"jenkin\": [{\"c\": 20.00000"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"h\": 0.70000"), std::string::npos) << r.out;
+  // The parameters file holds [cable] keys: a cable file built from it runs.
+  const std::string keys = read_text(dir / "params.toml");
+  write_temp_file(dir, "cable.toml", "[cable]\nlength = 0.3\nsections = 20\n" + keys);
+  const CliResult cycle = run_cli("cycle cable.toml --experiment a --amplitude 0.02 --cycles 1 -o c.csv", dir);
+  EXPECT_EQ(cycle.exit_code, 0) << cycle.err;
+}
+
+struct BadRecord {
+  const char* name;
+  const char* contents;
+  const char* must_mention;
+};
+
+class IdentifyCliRejects : public ::testing::TestWithParam<BadRecord> {};
+
+TEST_P(IdentifyCliRejects, WithOneLineExitTwoAndNoFile) {
+  const auto dir = scratch_directory(std::string("identify-bad-") + GetParam().name);
+  write_temp_file(dir, "mk.csv", GetParam().contents);
+  const CliResult r = run_cli("identify local --input mk.csv -o out.toml", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_NE(r.err.find("mk.csv"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(GetParam().must_mention), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.toml"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadFiles, IdentifyCliRejects,
+    ::testing::Values(BadRecord{"empty", "", "empty file"},
+                      BadRecord{"header_only", "curvature_per_m,moment_n_m\n", "0 data rows"},
+                      BadRecord{"missing_column", "curvature_per_m,torque\n0,0\n", "'moment_n_m'"},
+                      BadRecord{"non_numeric", "curvature_per_m,moment_n_m\n0,0\n0.1,one\n", "'one'"},
+                      BadRecord{"infinite", "curvature_per_m,moment_n_m\n0,0\n0.1,inf\n", "finite"},
+                      BadRecord{"decimal_comma", "curvature_per_m;moment_n_m\n0,1;0,2\n", "separated by ';'"},
+                      BadRecord{"less_than_a_cycle",
+                                "curvature_per_m,moment_n_m\n0,0\n0.01,0.2\n0.02,0.4\n0.03,0.5\n0.02,0.3\n0.01,0.1\n0,-0.1\n-0.01,-0.3\n",
+                                "reversals"}),
+    [](const ::testing::TestParamInfo<BadRecord>& info) { return info.param.name; });
+
+TEST(IdentifyCli, BadOptions) {
+  const auto dir = scratch_directory("identify-options");
+  write_temp_file(dir, "mk.csv", "curvature_per_m,moment_n_m\n0,0\n");
+  for (const std::string args : {"identify local --input mk.csv --elements 0", "identify local --input mk.csv --optimizer bfgs",
+                                 "identify local", "identify", "identify local --input missing.csv"}) {
+    const CliResult r = run_cli(args, dir);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(r.stderr_lines(), 1) << args << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace stockbridge::testing

@@ -1,0 +1,66 @@
+// Reading measured CSV records: what is accepted, and one precise line for each mistake.
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/csv_reader.hpp"
+#include "support/temp_file.hpp"
+
+namespace stockbridge::io {
+namespace {
+
+std::filesystem::path directory() {
+  return std::filesystem::temp_directory_path() / ("stockbridge-csv-" + std::to_string(::getpid()));
+}
+
+std::vector<std::vector<double>> read(const std::string& contents, std::size_t min_rows = 1) {
+  return read_csv_columns(testing::write_temp_file(directory(), "r.csv", contents), {"curvature_per_m", "moment_n_m"},
+                          min_rows);
+}
+
+std::string error_of(const std::string& contents, std::size_t min_rows = 1) {
+  try {
+    read(contents, min_rows);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+TEST(CsvReader, ReadsNamedColumnsInAnyOrderIgnoringOthers) {
+  const auto c = read("step,moment_n_m,extra,curvature_per_m\n0,1.5,x,0.1\n1,-2e-1,y,-0.25\n");
+  EXPECT_EQ(c[0], (std::vector<double>{0.1, -0.25}));
+  EXPECT_EQ(c[1], (std::vector<double>{1.5, -0.2}));
+}
+
+TEST(CsvReader, AcceptsBomCrlfAndBlankLines) {
+  const auto c = read("\xEF\xBB\xBF" "curvature_per_m,moment_n_m\r\n0.1,1\r\n\r\n0.2, 2 \r\n");
+  EXPECT_EQ(c[0], (std::vector<double>{0.1, 0.2}));
+  EXPECT_EQ(c[1], (std::vector<double>{1.0, 2.0}));
+}
+
+TEST(CsvReader, EachMistakeGetsOnePreciseLine) {
+  const std::string f = (directory() / "r.csv").string();
+  EXPECT_EQ(error_of(""), f + ": empty file: expected a header row and data");
+  EXPECT_EQ(error_of("curvature_per_m,moment\n0.1,1\n"),
+            f + ":1: missing column 'moment_n_m': expected a header with curvature_per_m,moment_n_m");
+  EXPECT_EQ(error_of("curvature_per_m,moment_n_m,moment_n_m\n0.1,1,2\n"),
+            f + ":1: column 'moment_n_m' appears twice (columns 2 and 3)");
+  EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n0.1,1\n0.2,abc\n"),
+            f + ":3: column 'moment_n_m' = 'abc': expected a number ('.' as decimal separator)");
+  EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n0,1\n0;2\n"),
+            f + ":3: column 'curvature_per_m' = '0;2': expected a number ('.' as decimal separator)");
+  EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n0,1\n2\n"), f + ":3: 1 cells: expected 2 (column 'moment_n_m' missing)");
+  EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n0.1,nan\n"), f + ":2: column 'moment_n_m' = nan: expected a finite number");
+  EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n0.1,1,5\n0,\n"),
+            f + ":3: column 'moment_n_m' = '': expected a number ('.' as decimal separator)");
+  EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n", 8), f + ": 0 data rows: expected at least 8");
+  EXPECT_THROW(read_csv_columns(directory() / "missing.csv", {"a"}, 1), InputError);
+}
+
+}  // namespace
+}  // namespace stockbridge::io
