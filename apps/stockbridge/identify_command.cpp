@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/identification/global_identification.hpp"
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
@@ -74,6 +75,72 @@ int run_local(const LocalOptions& options) {
   return kSuccess;
 }
 
+struct GlobalOptions {
+  std::string experiment = "a";
+  double length = 0.0;
+  std::string input;
+  std::string method = "fit";
+  int sections = 40;
+  int elements = 1;
+  std::string optimizer = "subplex";
+  std::string output;
+  bool json = false;
+};
+
+std::string cable_toml(const identification::GlobalIdentification& fit, const GlobalOptions& options) {
+  const cable::CableDescription& c = fit.cable;
+  std::string text = fmt::format(
+      "# Identified by stockbridge identify global ({}) from experiment ({}) in {}:\n"
+      "# relative L1 error {:.4g}, output offset {}.\n[cable]\nlength = {}        # m\nsections = {}\nei = {}   # N m^2\njenkin = [",
+      options.method, options.experiment, options.input, fit.error, fit.output_offset, c.length, c.sections, c.ei.at(0.0));
+  for (std::size_t j = 0; j < c.jenkin.size(); ++j) {
+    text += fmt::format("{} {{ c = {}, h = {} }}", j ? "," : "", c.jenkin[j].c.at(0.0), c.jenkin[j].h.at(0.0));
+  }
+  return text + " ]   # N m^2, N m\n";
+}
+
+int run_global(const GlobalOptions& options) {
+  identification::GlobalIdentificationOptions fit_options;
+  fit_options.length = options.length;
+  fit_options.sections = options.sections;
+  fit_options.elements = options.elements;
+  fit_options.optimizer = identification::parse_optimizer(options.optimizer);
+  fit_options.validate();
+  identification::ExperimentMeasurement measurement;
+  measurement.experiment = cable::parse_experiment(options.experiment);
+  const bool a = measurement.experiment == cable::Experiment::a;
+  std::vector<std::vector<double>> columns = io::read_csv_columns(
+      options.input, a ? std::vector<std::string>{"x_m", "force_n"} : std::vector<std::string>{"phi_rad", "clamp_moment_n_m"}, 8);
+  measurement.prescribed = std::move(columns[0]);
+  measurement.measured = std::move(columns[1]);
+  identification::GlobalIdentification fit;
+  try {
+    fit = options.method == "four-step" ? identification::identify_four_step(measurement, fit_options)
+                                        : identification::identify_fit(measurement, fit_options);
+  } catch (const InvalidParameter& e) {
+    throw InputError(fmt::format("{}: {}", options.input, e.what()));
+  }
+  if (!options.output.empty()) io::write_file_atomically(options.output, cable_toml(fit, options));
+  const cable::CableDescription& c = fit.cable;
+  if (options.json) {
+    std::vector<io::JsonObject> jenkin;
+    for (const cable::JenkinProfile& e : c.jenkin) jenkin.push_back(io::JsonObject().add("c", e.c.at(0.0)).add("h", e.h.at(0.0)));
+    fmt::print("{}\n", io::JsonObject()
+                           .add("ei", c.ei.at(0.0))
+                           .add("jenkin", jenkin)
+                           .add("error", fit.error)
+                           .add("method", options.method)
+                           .add("output_offset", fit.output_offset)
+                           .add("evaluations", fit.evaluations)
+                           .str());
+  }
+  std::string summary = fmt::format("identify global ({}): ei = {:.6g} N m^2", options.method, c.ei.at(0.0));
+  for (const cable::JenkinProfile& e : c.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c.at(0.0), e.h.at(0.0));
+  fmt::print(stderr, "{}; relative L1 error {:.3g}{}\n", summary, fit.error,
+             fit.evaluations ? fmt::format(", {} cable simulations", fit.evaluations) : "");
+  return kSuccess;
+}
+
 }  // namespace
 
 void add_identify_command(CLI::App& app, int& exit_code) {
@@ -90,6 +157,26 @@ void add_identify_command(CLI::App& app, int& exit_code) {
   sub->add_option("-o,--output", local->output, "Write the parameters as [cable] keys (TOML)");
   sub->add_flag("--json", local->json, "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout");
   sub->callback([local, &exit_code] { exit_code = run_local(*local); });
+
+  auto global = std::make_shared<GlobalOptions>();
+  CLI::App* g = identify->add_subcommand(
+      "global", "Constant cable parameters from a cycle of experiment (a) or (b) (CSV as written by stockbridge cycle)");
+  g->add_option("--experiment", global->experiment, "a: columns x_m, force_n;  b: columns phi_rad, clamp_moment_n_m")
+      ->check(CLI::IsMember({"a", "b"}))
+      ->required();
+  g->add_option("--length", global->length, "Length of the measured cable, m")->required();
+  g->add_option("--input", global->input, "Measured cycle (CSV)")->required();
+  g->add_option("--method", global->method, "four-step (the dissertation's formulas) or fit (model-based, from four-step)")
+      ->check(CLI::IsMember({"four-step", "fit"}))
+      ->capture_default_str();
+  g->add_option("--sections", global->sections, "Sections of the model cable")->capture_default_str();
+  g->add_option("--elements", global->elements, "Jenkin elements (fit)")->capture_default_str();
+  g->add_option("--optimizer", global->optimizer, "NLopt algorithm for fit: subplex or nelder-mead")
+      ->check(CLI::IsMember({"subplex", "nelder-mead"}))
+      ->capture_default_str();
+  g->add_option("-o,--output", global->output, "Write a cable file (TOML) that cycle and damper files accept");
+  g->add_flag("--json", global->json, "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout");
+  g->callback([global, &exit_code] { exit_code = run_global(*global); });
 }
 
 }  // namespace stockbridge::cli

@@ -89,22 +89,30 @@ ExperimentSummary summarise(const std::vector<ExperimentSample>& samples, const 
 
 }  // namespace
 
-ExperimentRecord run_experiment(Cantilever& cantilever, const ExperimentDrive& drive) {
-  drive.validate();
-  const int count = drive.cycles * drive.points + 1;
-  ExperimentRecord record;
-  record.samples.reserve(count);
-  for (int k = 0; k < count; ++k) {
-    const double value = drive.prescribed(k);
-    const StateDetermination solve = drive.experiment == Experiment::a ? cantilever.set_trial_deflection(value)
-                                                                       : cantilever.set_trial_rotation(value);
-    record.samples.push_back(sample_of(cantilever, solve));
+std::vector<ExperimentSample> run_path(Cantilever& cantilever, Experiment experiment,
+                                       const std::vector<double>& prescribed) {
+  std::vector<ExperimentSample> samples;
+  samples.reserve(prescribed.size());
+  for (const double value : prescribed) {
+    const StateDetermination solve =
+        experiment == Experiment::a ? cantilever.set_trial_deflection(value) : cantilever.set_trial_rotation(value);
+    samples.push_back(sample_of(cantilever, solve));
     if (solve.converged) {
       cantilever.commit();
     } else {
       cantilever.revert_to_last_commit();
     }
   }
+  return samples;
+}
+
+ExperimentRecord run_experiment(Cantilever& cantilever, const ExperimentDrive& drive) {
+  drive.validate();
+  const int count = drive.cycles * drive.points + 1;
+  std::vector<double> prescribed(static_cast<std::size_t>(count));
+  for (int k = 0; k < count; ++k) prescribed[static_cast<std::size_t>(k)] = drive.prescribed(k);
+  ExperimentRecord record;
+  record.samples = run_path(cantilever, drive.experiment, prescribed);
   record.summary = summarise(record.samples, drive);
   return record;
 }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlopt.hpp>
 
+#include "record_features.hpp"
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::identification {
@@ -90,25 +91,6 @@ void check(const MomentCurvatureRecord& record, const std::vector<std::size_t>& 
   }
 }
 
-/// Slope dM/dkappa over the first 2 % of the range after (sign +1) or before (-1) sample r.
-double slope_near(const MomentCurvatureRecord& record, std::size_t r, int side, double span) {
-  std::size_t j = r;
-  while (true) {
-    if (side > 0 ? j + 1 >= record.curvature.size() : j == 0) break;
-    j = side > 0 ? j + 1 : j - 1;
-    if (std::abs(record.curvature[j] - record.curvature[r]) >= span) break;
-  }
-  const double dk = record.curvature[j] - record.curvature[r];
-  return dk != 0.0 ? (record.moment[j] - record.moment[r]) / dk : std::numeric_limits<double>::quiet_NaN();
-}
-
-double median(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-
 struct Problem {
   const MomentCurvatureRecord& record;
   std::size_t from;
@@ -151,17 +133,12 @@ LocalIdentification identify_local(const MomentCurvatureRecord& record, const Lo
   const std::vector<std::size_t> turns = reversals(record.curvature);
   check(record, turns);
   const auto [lo, hi] = std::minmax_element(record.curvature.begin(), record.curvature.end());
-  const double span = 0.02 * (*hi - *lo);
   const double middle = 0.5 * (*hi + *lo);
 
   // Starting values from the record.
-  std::vector<double> after, before;
-  for (const std::size_t r : turns) {
-    after.push_back(slope_near(record, r, +1, span));
-    before.push_back(slope_near(record, r, -1, span));
-  }
-  const double k_max = median(after);
-  double ei = median(before);
+  const LoopSlopes slopes = loop_slopes(record.curvature, record.moment, turns);
+  const double k_max = slopes.after;
+  double ei = slopes.before;
   if (!(ei > 0.0) || !(k_max > ei)) ei = std::isfinite(k_max) && k_max > 0.0 ? 0.2 * k_max : 1.0;
   const double c_total = std::max(k_max - ei, 0.2 * ei);
   double upper = 0.0, lower = 0.0;

@@ -65,4 +65,9 @@ struct ExperimentRecord {
 /// flagged; the summary's energies then cover only what converged.
 ExperimentRecord run_experiment(Cantilever& cantilever, const ExperimentDrive& drive);
 
+/// The samples of an experiment along any path of the prescribed quantity (x for
+/// (a), phi for (b)), e.g. a measured one, from the cantilever's current state.
+std::vector<ExperimentSample> run_path(Cantilever& cantilever, Experiment experiment,
+                                       const std::vector<double>& prescribed);
+
 }  // namespace stockbridge::cable
