@@ -14,6 +14,7 @@
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
+#include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/json_writer.hpp"
 
 namespace stockbridge::cli {
@@ -25,6 +26,7 @@ struct LocalOptions {
   int elements = 1;
   std::string optimizer = "subplex";
   std::string output;
+  std::string fitted;
   bool json = false;
 };
 
@@ -55,6 +57,12 @@ int run_local(const LocalOptions& options) {
     throw InputError(fmt::format("{}: {}", options.input, e.what()));
   }
   if (!options.output.empty()) io::write_file_atomically(options.output, parameters_toml(fit, options.input));
+  if (!options.fitted.empty()) {
+    const std::vector<double> model = identification::model_moments(fit.parameters, fit.moment_offset, record);
+    io::CsvWriter csv({"curvature_per_m", "moment_n_m", "model_moment_n_m"});
+    for (std::size_t k = 0; k < model.size(); ++k) csv.add_row({record.curvature[k], record.moment[k], model[k]});
+    io::write_file_atomically(options.fitted, csv.text());
+  }
   if (options.json) {
     std::vector<io::JsonObject> jenkin;
     for (const section::Jenkin& e : fit.parameters.jenkin) jenkin.push_back(io::JsonObject().add("c", e.c).add("h", e.h));
@@ -84,6 +92,7 @@ struct GlobalOptions {
   int elements = 1;
   std::string optimizer = "subplex";
   std::string output;
+  std::string fitted;
   bool json = false;
 };
 
@@ -121,6 +130,13 @@ int run_global(const GlobalOptions& options) {
     throw InputError(fmt::format("{}: {}", options.input, e.what()));
   }
   if (!options.output.empty()) io::write_file_atomically(options.output, cable_toml(fit, options));
+  if (!options.fitted.empty()) {
+    const std::vector<double> model = identification::model_output(fit.cable, fit.output_offset, measurement);
+    io::CsvWriter csv(a ? std::vector<std::string>{"x_m", "force_n", "model_force_n"}
+                        : std::vector<std::string>{"phi_rad", "clamp_moment_n_m", "model_clamp_moment_n_m"});
+    for (std::size_t k = 0; k < model.size(); ++k) csv.add_row({measurement.prescribed[k], measurement.measured[k], model[k]});
+    io::write_file_atomically(options.fitted, csv.text());
+  }
   const cable::CableDescription& c = fit.cable;
   if (options.json) {
     std::vector<io::JsonObject> jenkin;
@@ -155,6 +171,7 @@ void add_identify_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"subplex", "nelder-mead"}))
       ->capture_default_str();
   sub->add_option("-o,--output", local->output, "Write the parameters as [cable] keys (TOML)");
+  sub->add_option("--fitted", local->fitted, "Write measured and model moment along the record (CSV, for plotting)");
   sub->add_flag("--json", local->json, "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout");
   sub->callback([local, &exit_code] { exit_code = run_local(*local); });
 
@@ -175,6 +192,7 @@ void add_identify_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"subplex", "nelder-mead"}))
       ->capture_default_str();
   g->add_option("-o,--output", global->output, "Write a cable file (TOML) that cycle and damper files accept");
+  g->add_option("--fitted", global->fitted, "Write measured and model output along the record (CSV, for plotting)");
   g->add_flag("--json", global->json, "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout");
   g->callback([global, &exit_code] { exit_code = run_global(*global); });
 }

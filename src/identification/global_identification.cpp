@@ -70,6 +70,17 @@ cable::CableDescription constant_cable(const GlobalIdentificationOptions& option
 
 }  // namespace
 
+std::vector<double> model_output(const cable::CableDescription& description, double output_offset,
+                                 const ExperimentMeasurement& m) {
+  cable::Cantilever cantilever{cable::Cable(description)};
+  std::vector<double> output;
+  for (const cable::ExperimentSample& s : cable::run_path(cantilever, m.experiment, m.prescribed)) {
+    const double value = m.experiment == cable::Experiment::a ? s.tip_force : s.clamp_moment;
+    output.push_back(s.solve.converged ? value + output_offset : std::numeric_limits<double>::quiet_NaN());
+  }
+  return output;
+}
+
 double relative_l1_error(const cable::CableDescription& cable, double output_offset,
                          const ExperimentMeasurement& measurement) {
   const Sums s = simulate(cable, output_offset, measurement, checked_reversals(measurement).front());

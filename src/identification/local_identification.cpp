@@ -120,6 +120,19 @@ double nlopt_objective(const std::vector<double>& x, std::vector<double>& /*grad
 
 }  // namespace
 
+std::vector<double> model_moments(const section::MasingParameters& parameters, double moment_offset,
+                                  const MomentCurvatureRecord& record) {
+  section::SectionState state = section::SectionState::virgin(parameters), next = state;
+  std::vector<double> moments;
+  moments.reserve(record.curvature.size());
+  for (const double kappa : record.curvature) {
+    section::curvature_update(parameters, state, kappa, next);
+    std::swap(state, next);
+    moments.push_back(state.moment + moment_offset);
+  }
+  return moments;
+}
+
 double relative_l1_error(const section::MasingParameters& parameters, double moment_offset,
                          const MomentCurvatureRecord& record) {
   const std::vector<std::size_t> turns = reversals(record.curvature);

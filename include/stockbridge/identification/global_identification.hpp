@@ -52,6 +52,11 @@ GlobalIdentification identify_four_step(const ExperimentMeasurement& measurement
 /// Model-based fit, started from the four-step result.
 GlobalIdentification identify_fit(const ExperimentMeasurement& measurement, const GlobalIdentificationOptions& options);
 
+/// The model's output (F for (a), T for (b), plus the offset) along the measured
+/// path, from the virgin state; NaN where a state determination did not converge.
+std::vector<double> model_output(const cable::CableDescription& cable, double output_offset,
+                                 const ExperimentMeasurement& measurement);
+
 /// The relative L1 error of a cable (and output offset) on the measurement.
 double relative_l1_error(const cable::CableDescription& cable, double output_offset,
                          const ExperimentMeasurement& measurement);

@@ -53,6 +53,10 @@ struct LocalIdentification {
 double relative_l1_error(const section::MasingParameters& parameters, double moment_offset,
                          const MomentCurvatureRecord& record);
 
+/// The model's moment (plus the offset) along the record's curvature, from the virgin state.
+std::vector<double> model_moments(const section::MasingParameters& parameters, double moment_offset,
+                                  const MomentCurvatureRecord& record);
+
 /// Throws InvalidParameter for a record that cannot be identified (fewer than one
 /// full cycle after the first extreme: two reversals; sizes that differ).
 LocalIdentification identify_local(const MomentCurvatureRecord& record, const LocalIdentificationOptions& options);
