@@ -56,6 +56,24 @@ TEST(ImpedanceCli, NonConvergedPointsAreFlaggedAndExitThree) {
   EXPECT_NE(r.err.find("f = 10 Hz"), std::string::npos) << r.err;
 }
 
+TEST(ExamplesCli, TheShippedExamplesRun) {
+  const auto dir = scratch_directory("examples");
+  const std::string examples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
+  const CliResult asymmetric =
+      run_cli("impedance '" + examples + "asymmetric_damper.toml' --velocity 0.1 --frequencies 10,30,60 -o a.csv", dir);
+  EXPECT_EQ(asymmetric.exit_code, 0) << asymmetric.err;
+  const CliResult mirrored =
+      run_cli("cycle '" + examples + "cable_profile_mirror.toml' --experiment a --amplitude 0.02 --cycles 1 -o c.csv", dir);
+  EXPECT_EQ(mirrored.exit_code, 0) << mirrored.err;
+  const CliResult measured = run_cli("identify global --experiment a --length 0.3 --input '" + examples +
+                                         "cycle_measured_a.csv' --json -o cable.toml",
+                                     dir);
+  EXPECT_EQ(measured.exit_code, 0) << measured.err;
+  EXPECT_NE(measured.out.find("\"ei\": 2.7"), std::string::npos) << measured.out;
+  const CliResult strand = run_cli("strand '" + examples + "strand_19wire.toml'", dir);
+  EXPECT_EQ(strand.exit_code, 0) << strand.err;
+}
+
 TEST(ResponseCli, OneSteadyPeriod) {
   const auto dir = scratch_directory("response-ok");
   const CliResult r = run_cli("response '" + kExample + "' --frequency 20 --velocity 0.2 --json -o t.csv", dir);

@@ -1,0 +1,84 @@
+"""The Python binding: the same numbers as the program for the same file, errors as
+Python exceptions with the library's message, arrays of the documented shapes and
+dtypes, and the example script."""
+
+import csv
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import stockbridge as sb
+
+CLI = os.environ["STOCKBRIDGE_CLI"]
+SOURCE = os.environ["STOCKBRIDGE_SOURCE_DIR"]
+EXAMPLE = os.path.join(SOURCE, "examples", "sauter2003.toml")
+CABLE = os.path.join(SOURCE, "examples", "cable_sauter2003.toml")
+
+
+def test_impedance_equals_the_program_for_the_same_file(tmp_path):
+    frequencies = [8.0, 12.5, 20.0, 45.0]
+    subprocess.run([CLI, "impedance", EXAMPLE, "--velocity", "0.2,0.05", "--frequencies", "8,12.5,20,45", "-o", "z.csv"],
+                   cwd=tmp_path, check=True, capture_output=True)
+    with open(tmp_path / "z.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    z = sb.impedance(sb.load_damper(EXAMPLE), frequencies, velocity=[0.2, 0.05])
+    for k, row in enumerate(rows):
+        a, i = divmod(k, len(frequencies))
+        assert float(row["frequency_hz"]) == frequencies[i]
+        assert z["re_z_n_s_m"][a, i] == pytest.approx(float(row["re_z_n_s_m"]), rel=1e-12)
+        assert z["im_z_n_s_m"][a, i] == pytest.approx(float(row["im_z_n_s_m"]), rel=1e-12)
+        assert z["power_w"][a, i] == pytest.approx(float(row["power_w"]), rel=1e-12, abs=1e-15)
+
+
+def test_arrays_have_the_documented_shapes_and_dtypes():
+    damper = sb.load_damper(EXAMPLE)
+    z = sb.impedance(damper, np.array([10.0, 20.0, 30.0]), velocity=0.1)
+    assert z["re_z_n_s_m"].shape == (1, 3) and z["re_z_n_s_m"].dtype == np.float64
+    assert z["converged"].dtype == np.bool_ and z["converged"].all()
+    r = sb.response(damper, 20.0, velocity=0.2)
+    assert r["time_s"].shape == (128,) and r["x_m"].shape == (2, 128) and r["force_n"].dtype == np.float64
+    assert isinstance(r["impedance"], complex)
+    assert r["power_w"] == pytest.approx(r["dissipated_power_w"], rel=1e-3)
+    c = sb.cycle(sb.load_cable(CABLE), "a", 0.03, cycles=2, points=400)
+    assert c["force_n"].shape == (801,) and c["converged"].all()
+
+
+def test_identification_and_a_damper_built_from_python_values():
+    cable = sb.make_cable(length=0.3, sections=40, ei=2.8, jenkin=[(20.0, 0.7)])
+    c = sb.cycle(cable, "a", 0.03)
+    fit = sb.identify_global("a", 0.3, c["x_m"], c["force_n"])
+    assert fit["ei"] == pytest.approx(2.8, rel=1e-6)
+    assert fit["jenkin"][0]["c"] == pytest.approx(20.0, rel=1e-6)
+    kappa = 0.08 * np.sin(np.linspace(0.0, 6.0 * np.pi, 1201))
+    local = sb.identify_local(kappa, 2.8 * kappa + np.clip(20.0 * kappa, -0.7, 0.7))  # a virgin-like record is enough
+    assert local["ei"] > 0 and len(local["jenkin"]) == 1
+    arm = {"mass": 0.856, "inertia": 0.001814, "offset": 0.0325, "cable": fit["cable"]}
+    damper = sb.make_damper(0.7, [arm, arm])
+    assert sb.impedance(damper, [15.0], velocity=0.2)["converged"].all()
+    ei_min, ei_max = sb.strand_bounds(0.001, [(6, 0.001, 0.002, 0.06), (12, 0.001, 0.004, 0.1)])
+    assert ei_min == pytest.approx(3.1337, rel=1e-4) and ei_max > ei_min
+
+
+def test_errors_are_python_exceptions_with_the_library_message(tmp_path):
+    with pytest.raises(sb.InputError, match="no such file"):
+        sb.load_damper(str(tmp_path / "missing.toml"))
+    (tmp_path / "bad.toml").write_text("[cable]\nlength = -0.3\nsections = 40\nei = 2.8\n")
+    with pytest.raises(sb.InputError, match="cable.length = -0.3"):
+        sb.load_cable(str(tmp_path / "bad.toml"))
+    with pytest.raises(sb.InvalidParameter, match="ei = -1"):
+        sb.make_cable(0.3, 40, -1.0)
+    with pytest.raises(sb.InvalidParameter, match="either velocity"):
+        sb.impedance(sb.load_damper(EXAMPLE), [10.0])
+    with pytest.raises(ValueError):  # both error types are ValueErrors
+        sb.impedance(sb.load_damper(EXAMPLE), [10.0], velocity=0.2, method="euler")
+
+
+def test_example_script_runs(tmp_path):
+    script = os.path.join(SOURCE, "examples", "identify_and_impedance.py")
+    result = subprocess.run([sys.executable, script, str(tmp_path / "example.png")], capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert "240 of 240 points converged" in result.stdout
+    assert os.path.getsize(tmp_path / "example.png") > 10000
