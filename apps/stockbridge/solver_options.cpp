@@ -11,6 +11,9 @@ void SolverFlags::add_to(CLI::App& command) {
       ->capture_default_str();
   command.add_option("--steps", steps, "Time steps per period (time, shooting)")->capture_default_str();
   command.add_option("--max-iterations", max_iterations, "Newton iterations per point (hb, collocation)")->capture_default_str();
+  command.add_option("--energy-tolerance", energy_tolerance,
+                     "Largest energy-balance error (relative to the apparent power) of a trusted point")
+      ->capture_default_str();
 }
 
 damper::SolverOptions SolverFlags::options() const {
@@ -20,6 +23,7 @@ damper::SolverOptions SolverFlags::options() const {
   options.harmonic_balance.samples = samples;
   options.harmonic_balance.max_iterations = max_iterations;
   options.steps_per_period = steps;
+  options.energy_tolerance = energy_tolerance;
   options.validate();
   return options;
 }

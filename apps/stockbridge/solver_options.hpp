@@ -15,6 +15,7 @@ struct SolverFlags {
   int samples = 0;
   int steps = 256;
   int max_iterations = 100;
+  double energy_tolerance = 0.01;
 
   void add_to(CLI::App& command);
   damper::SolverOptions options() const;

@@ -97,6 +97,13 @@ bool HarmonicBalance::residual(const Excitation& excitation, const Eigen::Vector
   const Eigen::Vector2d& load = arm_.load_vector();
   const Eigen::Map<const Eigen::Matrix2Xd> coefficients(q.data(), 2, c_count);
   const Eigen::Matrix2Xd kinematics = coefficients * basis_.transpose();
+  if (!kinematics.allFinite()) {
+    if (loads_out) {
+      loads_out->converged = false;
+      loads_out->failure = "non-finite tip motion (the Fourier coefficients hold NaN or inf)";
+    }
+    return false;
+  }
   if (counting_) {
     ++counting_->evaluations;
     counting_->jacobians += jacobian != nullptr;
@@ -204,6 +211,10 @@ bool HarmonicBalance::newton(const Excitation& excitation, Eigen::VectorXd& q, P
   if (!fresh) assemble_jacobian(excitation, jacobian);
   double norm = r.lpNorm<Eigen::Infinity>() / scale;
   int settling_periods = 0;
+  if (!r.allFinite()) {
+    summary.message = "non-finite residual at the starting point";
+    return false;
+  }
   for (int iteration = 0;; ++iteration) {
     summary.residual = norm;
     summary.periodicity_defect = loads.periodicity_defect;

@@ -32,6 +32,7 @@ std::string_view method_name(Method method) {
 void SolverOptions::validate() const {
   harmonic_balance.validate();
   require_in_range("steps_per_period", steps_per_period, 16, 1 << 20);
+  require_positive("energy_tolerance", energy_tolerance, "");
 }
 
 namespace {
@@ -121,7 +122,7 @@ std::vector<std::size_t> distinct_arms(const DamperDescription& damper) {
 }
 
 ImpedancePoint combine(const DamperDescription& damper, const Excitation& excitation,
-                       const std::vector<const ArmSolution*>& arm_solutions) {
+                       const std::vector<const ArmSolution*>& arm_solutions, double energy_tolerance) {
   ImpedancePoint point;
   point.frequency_hz = excitation.frequency_hz;
   point.velocity_amplitude = excitation.velocity_amplitude();
@@ -138,6 +139,14 @@ ImpedancePoint combine(const DamperDescription& damper, const Excitation& excita
       point.converged = false;
       if (point.message.empty()) {
         point.message = fmt::format("arm {} ({}): {}", k, damper.arms[k].name, s.summary.message);
+      }
+      continue;
+    }
+    if (!(s.summary.energy_error <= energy_tolerance)) {
+      point.converged = false;
+      if (point.message.empty()) {
+        point.message = fmt::format("arm {} ({}): energy balance off by {:.3g} of the apparent power (tolerance {:.3g})", k,
+                                    damper.arms[k].name, s.summary.energy_error, energy_tolerance);
       }
       continue;
     }

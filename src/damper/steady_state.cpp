@@ -52,7 +52,7 @@ DamperSteadyState solve_steady_state(const DamperDescription& damper, const Exci
   }
   std::vector<const ArmSolution*> pointers;
   for (const ArmSolution& s : state.arms) pointers.push_back(&s);
-  state.point = combine(damper, excitation, pointers);
+  state.point = combine(damper, excitation, pointers, options.energy_tolerance);
   return state;
 }
 

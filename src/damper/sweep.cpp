@@ -180,7 +180,8 @@ std::vector<SweepRun> run_sweep(const DamperDescription& damper, const SweepSpec
             std::find(distinct.begin(), distinct.end(), representative[k]) - distinct.begin());
         per_arm[k] = &results[a * distinct.size() + d][i];
       }
-      runs[a].points.push_back(combine(damper, spec.excitation(spec.frequencies[i], spec.amplitudes[a]), per_arm));
+      runs[a].points.push_back(
+          combine(damper, spec.excitation(spec.frequencies[i], spec.amplitudes[a]), per_arm, spec.solver.energy_tolerance));
     }
     for (std::size_t d = 0; d < distinct.size(); ++d) {
       flag_folds(results[a * distinct.size() + d], damper.arms[distinct[d]].name, runs[a].points);

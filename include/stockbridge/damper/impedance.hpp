@@ -27,6 +27,10 @@ struct SolverOptions {
   Method method = Method::harmonic_balance;
   HarmonicBalanceOptions harmonic_balance;  ///< also for collocation (its `collocation` flag is set)
   int steps_per_period = 256;               ///< time integration and shooting
+  /// A point whose energy balance (SolverSummary::energy_error, relative to the
+  /// apparent power) is off by more than this is not trusted: converged = false.
+  /// Typical errors: 1e-4 (harmonic balance, 128 samples), 1e-3 (time, 64 steps).
+  double energy_tolerance = 0.01;
   void validate() const;
 };
 
@@ -66,9 +70,10 @@ struct ImpedancePoint {
   bool non_unique = false;
 };
 
-/// Combines the arms' periodic solutions with the clamp mass into the impedance.
+/// Combines the arms' periodic solutions with the clamp mass into the impedance; a
+/// point is converged only if every arm converged within `energy_tolerance`.
 ImpedancePoint combine(const DamperDescription& damper, const Excitation& excitation,
-                       const std::vector<const ArmSolution*>& arm_solutions);
+                       const std::vector<const ArmSolution*>& arm_solutions, double energy_tolerance = 0.01);
 
 /// The shaker force over one period at N samples (all arms sampled alike): m_c x_c'' - sum F_k.
 Eigen::RowVectorXd shaker_force(const DamperDescription& damper, const Excitation& excitation,

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <complex>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -173,6 +174,30 @@ TEST(HarmonicBalance, NonConvergenceIsReportedNotThrown) {
   EXPECT_FALSE(s.summary.converged);
   EXPECT_NE(s.summary.message.find("Newton iterations"), std::string::npos) << s.summary.message;
   EXPECT_GT(s.summary.residual, options.tolerance);
+}
+
+// Numerical trust: a non-finite value and an energy balance beyond tolerance are
+// reported as not converged, with the reason, never as numbers.
+TEST(HarmonicBalance, NonFiniteValuesAreReported) {
+  const Arm arm(sauter_arm());
+  HarmonicBalance hb(arm, HarmonicBalanceOptions{});
+  const Excitation e = Excitation::from_velocity(15.0, 0.2);
+  Eigen::VectorXd q = hb.linear_guess(e);
+  q(5) = std::numeric_limits<double>::quiet_NaN();
+  const ArmSolution s = hb.solve(e, q);
+  EXPECT_FALSE(s.summary.converged);
+  EXPECT_NE(s.summary.message.find("non-finite"), std::string::npos) << s.summary.message;
+}
+
+TEST(HarmonicBalance, EnergyBalanceBeyondToleranceIsNotTrusted) {
+  SolverOptions strict;
+  strict.energy_tolerance = 1e-9;  // the sampled balance is about 1e-5 here: force the path
+  const DamperSteadyState s = solve_steady_state(damper_of({sauter_arm()}), Excitation::from_velocity(15.0, 0.2), strict);
+  EXPECT_FALSE(s.point.converged);
+  EXPECT_NE(s.point.message.find("energy balance off by"), std::string::npos) << s.point.message;
+  const DamperSteadyState ok = solve_steady_state(damper_of({sauter_arm()}), Excitation::from_velocity(15.0, 0.2), SolverOptions{});
+  EXPECT_TRUE(ok.point.converged);
+  EXPECT_LT(ok.point.energy_error, 1e-3);
 }
 
 TEST(HarmonicBalance, RejectsBadOptions) {
