@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""Writes the hostile-input corpus (tests/bad_inputs/cases, tests/bad_inputs/accepted).
+
+Each case is a folder: `args` (the command line after `stockbridge`, where INPUT
+stands for the case's input file), `expect` (text the one error line must contain)
+and the input file. Run once; the folders are committed.
+"""
+import os
+import shutil
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CABLE = "[cable]\nlength = 0.3\nsections = 8\nei = 2.8\njenkin = [ { c = 20.0, h = 0.7 } ]\n"
+ARM = ("[[arm]]\nname = \"a\"\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n"
+       "[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\njenkin = [ { c = 20.0, h = 0.7 } ]\n")
+DAMPER = "[clamp]\nmass = 0.7\n" + ARM
+STRAND = "[strand]\ncore_radius = 0.001\n[[strand.layer]]\ncount = 6\nwire_radius = 0.001\npitch_radius = 0.002\nlay_length = 0.06\n"
+MK = "curvature_per_m,moment_n_m\n" + "".join(f"{0.08 * s:.6f},{0.5 * s:.6f}\n" for s in
+                                             [0, 0.5, 1, 0.5, 0, -0.5, -1, -0.5, 0, 0.5, 1, 0.5, 0, -0.5, -1])
+CYCLE_A = "x_m,force_n\n" + "".join(f"{0.03 * s:.6f},{10 * s:.6f}\n" for s in
+                                    [0, 0.5, 1, 0.5, 0, -0.5, -1, -0.5, 0, 0.5, 1, 0.5, 0, -0.5, -1])
+
+CYCLE_CMD = "cycle INPUT --experiment a --amplitude 0.01 --cycles 1 --points 8 -o out.csv"
+IMPEDANCE_CMD = "impedance INPUT --velocity 0.1 --frequencies 10 -o out.csv"
+STRAND_CMD = "strand INPUT"
+LOCAL_CMD = "identify local --input INPUT -o out.toml"
+GLOBAL_CMD = "identify global --experiment a --length 0.3 --input INPUT -o out.toml"
+LOOP_CMD = "loop --ei 2.8 --jenkin 20:0.7 --amplitude 0.05 -o out.csv"
+
+cases = {
+    # cable files
+    "cable_syntax": (CYCLE_CMD, "cable.toml", "[cable\nlength = 0.3\n", "syntax error"),
+    "cable_empty": (CYCLE_CMD, "cable.toml", "", "'cable'"),
+    "cable_missing_length": (CYCLE_CMD, "cable.toml", CABLE.replace("length = 0.3\n", ""), "'length'"),
+    "cable_missing_ei": (CYCLE_CMD, "cable.toml", CABLE.replace("ei = 2.8\n", ""), "'ei'"),
+    "cable_unknown_key": (CYCLE_CMD, "cable.toml", CABLE + "colour = 1\n", "cable.colour"),
+    "cable_unknown_table": (CYCLE_CMD, "cable.toml", CABLE + "[extra]\n", "'extra'"),
+    "cable_length_string": (CYCLE_CMD, "cable.toml", CABLE.replace("length = 0.3", 'length = "0.3"'), "cable.length"),
+    "cable_length_negative": (CYCLE_CMD, "cable.toml", CABLE.replace("length = 0.3", "length = -0.3"), "cable.length = -0.3"),
+    "cable_length_zero": (CYCLE_CMD, "cable.toml", CABLE.replace("length = 0.3", "length = 0"), "cable.length = 0"),
+    "cable_length_nan": (CYCLE_CMD, "cable.toml", CABLE.replace("length = 0.3", "length = nan"), "cable.length = nan"),
+    "cable_length_inf": (CYCLE_CMD, "cable.toml", CABLE.replace("length = 0.3", "length = inf"), "cable.length = inf"),
+    "cable_sections_zero": (CYCLE_CMD, "cable.toml", CABLE.replace("sections = 8", "sections = 0"), "cable.sections"),
+    "cable_sections_huge": (CYCLE_CMD, "cable.toml", CABLE.replace("sections = 8", "sections = 1000000000"), "cable.sections"),
+    "cable_sections_float": (CYCLE_CMD, "cable.toml", CABLE.replace("sections = 8", "sections = 8.5"), "cable.sections"),
+    "cable_ei_negative": (CYCLE_CMD, "cable.toml", CABLE.replace("ei = 2.8", "ei = -2.8"), "cable.ei = -2.8"),
+    "cable_ei_huge": (CYCLE_CMD, "cable.toml", CABLE.replace("ei = 2.8", "ei = 1e400"), "1e400"),
+    "cable_c_zero": (CYCLE_CMD, "cable.toml", CABLE.replace("c = 20.0", "c = 0"), "jenkin[0].c = 0"),
+    "cable_h_negative": (CYCLE_CMD, "cable.toml", CABLE.replace("h = 0.7", "h = -0.7"), "jenkin[0].h = -0.7"),
+    "cable_jenkin_not_table": (CYCLE_CMD, "cable.toml", CABLE.replace("[ { c = 20.0, h = 0.7 } ]", "[ 20.0 ]"), "jenkin[0]"),
+    "cable_jenkin_unknown": (CYCLE_CMD, "cable.toml", CABLE.replace("h = 0.7 }", "h = 0.7, k = 1 }"), "jenkin[0].k"),
+    "cable_k0_negative": (CYCLE_CMD, "cable.toml", CABLE.replace("h = 0.7 }", "h = 0.7, k0 = -1 }"), "k0 = -1"),
+    "cable_profile_unsorted": (CYCLE_CMD, "cable.toml", CABLE.replace("ei = 2.8", "ei = { s = [0, 0.2, 0.1], value = [1, 2, 3] }"), "ei.s[2]"),
+    "cable_profile_lengths": (CYCLE_CMD, "cable.toml", CABLE.replace("ei = 2.8", "ei = { s = [0, 0.2], value = [1] }"), "cable.ei"),
+    "cable_profile_negative": (CYCLE_CMD, "cable.toml", CABLE.replace("ei = 2.8", "ei = { s = [0, 0.2], value = [1, -2] }"), "ei.value[1] = -2"),
+    "cable_mirror_too_short": (CYCLE_CMD, "cable.toml", CABLE + "mirror_length = 0.1\n", "mirror_length"),
+    "cable_lever_zero": (CYCLE_CMD, "cable.toml", CABLE + "lever_arm_cap = 0\n", "lever_arm_cap = 0"),
+    # damper files
+    "damper_syntax": (IMPEDANCE_CMD, "damper.toml", "[clamp\nmass = 0.7\n", "syntax error"),
+    "damper_empty": (IMPEDANCE_CMD, "damper.toml", "", "'clamp'"),
+    "damper_no_arm": (IMPEDANCE_CMD, "damper.toml", "[clamp]\nmass = 0.7\n", "'arm'"),
+    "damper_clamp_negative": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("mass = 0.7", "mass = -0.7"), "clamp.mass = -0.7"),
+    "damper_arm_mass_zero": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("mass = 0.856", "mass = 0"), "arm[0].mass = 0"),
+    "damper_inertia_nan": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("inertia = 0.001814", "inertia = nan"), "arm[0].inertia = nan"),
+    "damper_offset_beyond_arm": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("offset = 0.0325", "offset = 0.3"), "arm[0].offset = 0.3"),
+    "damper_offset_in_mm": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("offset = 0.0325", "offset = 32.5"), "arm[0].offset = 32.5"),
+    "damper_unknown_arm_key": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("name = \"a\"", "name = \"a\"\ncolour = 1"), "arm[0].colour"),
+    "damper_missing_cable": (IMPEDANCE_CMD, "damper.toml", "[clamp]\nmass = 0.7\n[[arm]]\nmass = 1\ninertia = 0.001\noffset = 0.01\n", "'cable'"),
+    "damper_bad_cable": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("ei = 2.8", "ei = -2.8"), "arm[0].cable.ei = -2.8"),
+    "damper_arm_not_array": (IMPEDANCE_CMD, "damper.toml", "[clamp]\nmass = 0.7\n[arm]\nmass = 1\n", "arm"),
+    # strand files
+    "strand_syntax": (STRAND_CMD, "strand.toml", "[strand\n", "syntax error"),
+    "strand_empty": (STRAND_CMD, "strand.toml", "", "strand"),
+    "strand_missing_core": (STRAND_CMD, "strand.toml", STRAND.replace("core_radius = 0.001\n", ""), "core_radius"),
+    "strand_core_negative": (STRAND_CMD, "strand.toml", STRAND.replace("core_radius = 0.001", "core_radius = -0.001"), "core_radius"),
+    "strand_count_zero": (STRAND_CMD, "strand.toml", STRAND.replace("count = 6", "count = 0"), "count"),
+    "strand_lay_zero": (STRAND_CMD, "strand.toml", STRAND.replace("lay_length = 0.06", "lay_length = 0"), "lay_length"),
+    "strand_unknown_key": (STRAND_CMD, "strand.toml", STRAND + "twist = 1\n", "twist"),
+    "strand_wrong_type": (STRAND_CMD, "strand.toml", STRAND.replace("count = 6", 'count = "six"'), "count"),
+    # moment-curvature records
+    "mk_empty": (LOCAL_CMD, "mk.csv", "", "empty file"),
+    "mk_header_only": (LOCAL_CMD, "mk.csv", "curvature_per_m,moment_n_m\n", "0 data rows"),
+    "mk_missing_column": (LOCAL_CMD, "mk.csv", "curvature_per_m,torque\n0,0\n", "'moment_n_m'"),
+    "mk_duplicate_column": (LOCAL_CMD, "mk.csv", "curvature_per_m,moment_n_m,moment_n_m\n0,0,0\n", "appears twice"),
+    "mk_non_numeric": (LOCAL_CMD, "mk.csv", MK.replace("0.500000\n", "half\n", 1), "'half'"),
+    "mk_nan": (LOCAL_CMD, "mk.csv", MK.replace("0.500000\n", "nan\n", 1), "finite"),
+    "mk_inf": (LOCAL_CMD, "mk.csv", MK.replace("0.500000\n", "inf\n", 1), "finite"),
+    "mk_semicolons": (LOCAL_CMD, "mk.csv", MK.replace(",", ";"), "separated by ';'"),
+    "mk_short_row": (LOCAL_CMD, "mk.csv", MK + "0.1\n", "1 cells"),
+    "mk_less_than_a_cycle": (LOCAL_CMD, "mk.csv", "curvature_per_m,moment_n_m\n0,0\n0.01,0.2\n0.02,0.4\n0.03,0.5\n0.02,0.3\n0.01,0.1\n0,-0.1\n-0.01,-0.3\n", "reversals"),
+    # cycle records
+    "cycle_missing_force": (GLOBAL_CMD, "cycle.csv", "x_m,torque\n0,0\n", "'force_n'"),
+    "cycle_wrong_experiment_columns": ("identify global --experiment b --length 0.3 --input INPUT -o out.toml", "cycle.csv", CYCLE_A, "'phi_rad'"),
+    "cycle_non_numeric": (GLOBAL_CMD, "cycle.csv", CYCLE_A.replace("5.000000\n", "5.0abc\n", 1), "'5.0abc'"),
+    "cycle_too_short": (GLOBAL_CMD, "cycle.csv", "x_m,force_n\n0,0\n0.01,1\n", "data rows"),
+    # options
+    "option_loop_ei_negative": ("loop --ei -2.8 --amplitude 0.05 -o out.csv", None, None, "ei = -2.8"),
+    "option_loop_jenkin_format": ("loop --ei 2.8 --jenkin 20/0.7 --amplitude 0.05 -o out.csv", None, None, "c:h"),
+    "option_loop_cycles_zero": ("loop --ei 2.8 --amplitude 0.05 --cycles 0 -o out.csv", None, None, "cycles = 0"),
+    "option_loop_points_huge": ("loop --ei 2.8 --amplitude 0.05 --cycles 1000 --points 1000000 -o out.csv", None, None, "samples"),
+    "option_cycle_experiment": ("cycle INPUT --experiment c --amplitude 0.01 -o out.csv", "cable.toml", CABLE, "c"),
+    "option_cycle_amplitude_nan": ("cycle INPUT --experiment a --amplitude nan -o out.csv", "cable.toml", CABLE, "amplitude = nan"),
+    "option_impedance_no_amplitude": ("impedance INPUT --frequencies 10 -o out.csv", "damper.toml", DAMPER, "--velocity"),
+    "option_impedance_fmin_zero": ("impedance INPUT --velocity 0.1 --fmin 0 -o out.csv", "damper.toml", DAMPER, "fmin = 0"),
+    "option_impedance_method": ("impedance INPUT --velocity 0.1 --method newton -o out.csv", "damper.toml", DAMPER, "newton"),
+    "option_impedance_harmonics": ("impedance INPUT --velocity 0.1 --harmonics 1000 -o out.csv", "damper.toml", DAMPER, "harmonics = 1000"),
+    "option_impedance_samples": ("impedance INPUT --velocity 0.1 --samples 5 -o out.csv", "damper.toml", DAMPER, "samples = 5"),
+    "option_impedance_threads": ("impedance INPUT --velocity 0.1 --threads -1 -o out.csv", "damper.toml", DAMPER, "threads"),
+    "option_impedance_energy": ("impedance INPUT --velocity 0.1 --energy-tolerance 0 -o out.csv", "damper.toml", DAMPER, "energy_tolerance = 0"),
+    "option_response_velocity": ("response INPUT --frequency 20 --velocity -0.2 -o out.csv", "damper.toml", DAMPER, "velocity"),
+    "option_identify_elements": ("identify local --input INPUT --elements 9 -o out.toml", "mk.csv", MK, "elements = 9"),
+    "option_global_length": ("identify global --experiment a --length 0 --input INPUT -o out.toml", "cycle.csv", CYCLE_A, "length = 0"),
+    "option_unknown": ("loop --ei 2.8 --amplitude 0.05 --colour red -o out.csv", None, None, "colour"),
+    "option_missing_file": ("cycle missing.toml --experiment a --amplitude 0.01 -o out.csv", None, None, "missing.toml"),
+    "option_output_is_directory": ("loop --ei 2.8 --amplitude 0.05 -o .", None, None, "directory"),
+}
+
+accepted = {
+    "cable_crlf": (CYCLE_CMD, "cable.toml", CABLE.replace("\n", "\r\n")),
+    "damper_crlf": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("\n", "\r\n")),
+    "mk_bom_crlf": (LOCAL_CMD, "mk.csv", "\ufeff" + MK.replace("\n", "\r\n")),
+    "cycle_bom_crlf": (GLOBAL_CMD.replace("-o out.toml", "--method four-step -o out.toml"), "cycle.csv",
+                       "\ufeff" + open(os.path.join(HERE, "..", "..", "examples", "cycle_measured_a.csv")).read().replace("\n", "\r\n")),
+}
+
+for folder in ("cases", "accepted"):
+    shutil.rmtree(os.path.join(HERE, folder), ignore_errors=True)
+for name, (args, file_name, contents, expect) in cases.items():
+    d = os.path.join(HERE, "cases", name)
+    os.makedirs(d)
+    if file_name:
+        args = args.replace("INPUT", file_name)
+        with open(os.path.join(d, file_name), "w", newline="") as f:
+            f.write(contents)
+    with open(os.path.join(d, "args"), "w") as f:
+        f.write(args + "\n")
+    with open(os.path.join(d, "expect"), "w") as f:
+        f.write(expect + "\n")
+for name, (args, file_name, contents) in accepted.items():
+    d = os.path.join(HERE, "accepted", name)
+    os.makedirs(d)
+    with open(os.path.join(d, file_name), "w", newline="", encoding="utf-8") as f:
+        f.write(contents)
+    with open(os.path.join(d, "args"), "w") as f:
+        f.write(args.replace("INPUT", file_name) + "\n")
+print(len(cases), "bad cases,", len(accepted), "accepted cases")
