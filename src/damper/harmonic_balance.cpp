@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <numbers>
 #include <cmath>
 #include <numbers>
 
@@ -10,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/numerics/linear_solve.hpp"
 
 namespace stockbridge::damper {
 
@@ -255,13 +255,30 @@ bool HarmonicBalance::newton(const Excitation& excitation, Eigen::VectorXd& q, P
       return false;
     }
     ++summary.iterations;
-    const Eigen::VectorXd step = -jacobian.partialPivLu().solve(r);
+    Eigen::VectorXd step;
+    const double reciprocal_condition = numerics::solve_checked(jacobian, Eigen::VectorXd(-r), step);
+    if (numerics::is_singular(reciprocal_condition, step)) {
+      if (!fresh) {
+        // The stored Jacobian may belong to another piece: an exact one decides.
+        residual(excitation, q, periods, r, &jacobian, nullptr, &loads);
+        start_ = cable_.final_state();
+        fresh = true;
+        norm = r.lpNorm<Eigen::Infinity>() / scale;
+        --iteration;
+        --summary.iterations;
+        continue;
+      }
+      summary.message = fmt::format("singular Jacobian at Newton iteration {} (reciprocal condition number {:.3g}, "
+                                    "residual {:.3g}): no periodic solution is determined here",
+                                    iteration + 1, reciprocal_condition, norm);
+      return false;
+    }
     bool accepted = false;
     double alpha = 1.0;
     const double norm2 = r.norm();
     // With a stored Jacobian only the full step is tried: if it fails, an exact one is cheaper than halving.
     const int halvings = fresh ? 30 : 1;
-    for (int halving = 0; step.allFinite() && halving < halvings && !accepted; ++halving, alpha *= 0.5) {
+    for (int halving = 0; halving < halvings && !accepted; ++halving, alpha *= 0.5) {
       q_try = q + alpha * step;
       PeriodicCableResult trial_loads;
       // Accept a decrease, or a step that meets the tolerance.
@@ -283,9 +300,7 @@ bool HarmonicBalance::newton(const Excitation& excitation, Eigen::VectorXd& q, P
       continue;
     }
     if (!accepted) {
-      summary.message = step.allFinite()
-                            ? fmt::format("line search failed at Newton iteration {} (residual {:.3g})", iteration + 1, norm)
-                            : fmt::format("singular Jacobian at Newton iteration {} (residual {:.3g})", iteration + 1, norm);
+      summary.message = fmt::format("line search failed at Newton iteration {} (residual {:.3g})", iteration + 1, norm);
       return false;
     }
     const double new_norm = r.lpNorm<Eigen::Infinity>() / scale;
@@ -366,8 +381,8 @@ bool HarmonicBalance::correct_on_branch(double velocity, Eigen::VectorXd& y, con
     bordered.bottomRows(1) = tangent.transpose();
     g.head(p_count) = r / force;
     g(p_count) = constraint;
-    const Eigen::VectorXd step = -bordered.partialPivLu().solve(g);
-    if (!step.allFinite()) return false;
+    Eigen::VectorXd step;
+    if (numerics::is_singular(numerics::solve_checked(bordered, Eigen::VectorXd(-g), step), step)) return false;
     y += step;
   }
   return false;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/numerics/linear_solve.hpp"
 
 namespace stockbridge::damper {
 
@@ -165,14 +166,17 @@ ArmSolution Shooting::solve(const Excitation& excitation, const Eigen::VectorXd*
         }
         have_jacobian = jacobian_fresh = true;
       }
-      const Eigen::Vector4d step = -jacobian.partialPivLu().solve(residual);
-      if (!step.allFinite()) {
+      Eigen::Vector4d step;
+      const double reciprocal_condition = numerics::solve_checked(jacobian, Eigen::Vector4d(-residual), step);
+      if (numerics::is_singular(reciprocal_condition, step)) {
         if (!jacobian_fresh) {
           have_jacobian = false;
           continue;
         }
-        summary.message = fmt::format("singular Jacobian at Newton iteration {} (z(T) - z0 is {:.3g} of the amplitude)",
-                                      summary.iterations, measure);
+        summary.message = fmt::format(
+            "singular Jacobian at Newton iteration {} (reciprocal condition number {:.3g}; z(T) - z0 is {:.3g} of the "
+            "amplitude): no periodic solution is determined here",
+            summary.iterations, reciprocal_condition, measure);
         break;
       }
       double alpha = 1.0;

@@ -56,6 +56,26 @@ TEST(ImpedanceCli, NonConvergedPointsAreFlaggedAndExitThree) {
   EXPECT_NE(r.err.find("f = 10 Hz"), std::string::npos) << r.err;
 }
 
+// Forced singular Jacobian: an undamped linear arm at its natural frequencies
+// (21.1726198 and 68.2076467 Hz) has no periodic response. The program writes the
+// rows with the numbers empty, names the reason, and exits 3; the point beside
+// them is computed.
+TEST(ImpedanceCli, SingularJacobianPointsAreFlaggedNotPrinted) {
+  const auto dir = scratch_directory("impedance-singular");
+  write_temp_file(dir, "linear.toml",
+             "[clamp]\nmass = 0.7\n[[arm]]\nname = \"elastic\"\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n"
+             "[arm.cable]\nlength = 0.1875\nsections = 40\nei = 22.8\njenkin = []\n");
+  const CliResult r =
+      run_cli("impedance linear.toml --velocity 0.2 --frequencies 20,21.1726198299174,68.2076467330761 -o z.csv", dir);
+  ASSERT_EQ(r.exit_code, 3) << r.err;
+  const auto lines = lines_of(read_text(dir / "z.csv"));
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_NE(lines[1].find(",1,"), std::string::npos) << lines[1];
+  for (const int row : {2, 3}) EXPECT_NE(lines[row].find(",,,,,,0,"), std::string::npos) << lines[row];
+  EXPECT_NE(r.err.find("f = 21.17 Hz"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("singular Jacobian"), std::string::npos) << r.err;
+}
+
 TEST(ExamplesCli, TheShippedExamplesRun) {
   const auto dir = scratch_directory("examples");
   const std::string examples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";

@@ -62,6 +62,17 @@ def test_identification_and_a_damper_built_from_python_values():
     assert ei_min == pytest.approx(3.1337, rel=1e-4) and ei_max > ei_min
 
 
+def test_a_point_without_a_periodic_solution_is_nan_with_the_reason():
+    # An undamped linear arm at its first natural frequency: a singular Jacobian.
+    elastic = sb.make_cable(length=0.1875, sections=40, ei=22.8, jenkin=[])
+    arm = {"mass": 0.856, "inertia": 0.001814, "offset": 0.0325, "cable": elastic}
+    z = sb.impedance(sb.make_damper(0.7, [arm]), [20.0, 21.1726198299174], velocity=0.2)
+    assert z["converged"].tolist() == [[True, False]]
+    for key in ("re_z_n_s_m", "im_z_n_s_m", "power_w", "energy_error", "residual"):
+        assert np.isfinite(z[key][0, 0]) and np.isnan(z[key][0, 1]), key
+    assert "singular Jacobian" in z["messages"][0][1]
+
+
 def test_errors_are_python_exceptions_with_the_library_message(tmp_path):
     with pytest.raises(sb.InputError, match="no such file"):
         sb.load_damper(str(tmp_path / "missing.toml"))

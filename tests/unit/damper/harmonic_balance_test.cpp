@@ -200,6 +200,33 @@ TEST(HarmonicBalance, EnergyBalanceBeyondToleranceIsNotTrusted) {
   EXPECT_LT(ok.point.energy_error, 1e-3);
 }
 
+// A singular Jacobian: an undamped linear arm driven exactly at a natural frequency
+// has no periodic response. Harmonic balance and collocation say so (reciprocal
+// condition number about 1e-19) instead of returning a huge amplitude; a part in
+// a million away from it, where the response is large but determined, they agree
+// with the closed form.
+TEST(HarmonicBalance, SingularJacobianIsReported) {
+  using testing::linear_arm;
+  using testing::linear_impedance;
+  const DamperDescription damper = damper_of({linear_arm(22.8, false)});
+  const Eigen::Vector2d natural = Arm(damper.arms[0]).natural_frequencies(22.8);
+  for (const Method method : {Method::harmonic_balance, Method::collocation}) {
+    SolverOptions options;
+    options.method = method;
+    for (int mode = 0; mode < 2; ++mode) {
+      const DamperSteadyState at = solve_steady_state(damper, Excitation::from_velocity(natural(mode), 0.2), options);
+      EXPECT_FALSE(at.point.converged) << method_name(method) << ", mode " << mode;
+      EXPECT_NE(at.point.message.find("singular Jacobian"), std::string::npos) << at.point.message;
+      const double near_hz = natural(mode) * (1.0 + 1e-6);
+      const DamperSteadyState near = solve_steady_state(damper, Excitation::from_velocity(near_hz, 0.2), options);
+      ASSERT_TRUE(near.point.converged) << near.point.message;
+      const std::complex<double> expected = linear_impedance(damper, {22.8}, near_hz);
+      EXPECT_LT(std::abs(near.point.impedance - expected), 1e-6 * std::abs(expected)) << method_name(method);
+      EXPECT_GT(std::abs(expected), 1e3 * std::abs(linear_impedance(damper, {22.8}, 1.1 * natural(mode))));
+    }
+  }
+}
+
 TEST(HarmonicBalance, RejectsBadOptions) {
   const Arm arm(sauter_arm());
   HarmonicBalanceOptions options;

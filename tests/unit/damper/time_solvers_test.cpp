@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <complex>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -252,6 +253,28 @@ TEST(Shooting, UnsettledMemoryIsReported) {
   EXPECT_FALSE(solution.summary.converged);
   EXPECT_NE(solution.summary.message.find("not settled after 2 pre-periods"), std::string::npos)
       << solution.summary.message;
+}
+
+// At a resonance of the time-discrete system (the elastic arm's first natural
+// frequency seen through the trapezoidal rule, W_h = W_n) no periodic response
+// exists: shooting reports a singular Jacobian and time integration, whose
+// amplitude grows every period, never finds periodicity. Neither returns a number.
+TEST(TimeSolvers, DiscreteResonanceHasNoPeriodicResponse) {
+  const Arm arm(elastic_arm());
+  const int n = 256;
+  const double f = arm.natural_frequencies(22.8)(0) * std::numbers::pi / (n * std::tan(std::numbers::pi / n));
+  const Excitation excitation = Excitation::from_velocity(f, 0.2);
+  ShootingOptions shooting;
+  shooting.steps_per_period = n;
+  const ArmSolution shot = Shooting(arm, shooting).solve(excitation);
+  EXPECT_FALSE(shot.summary.converged);
+  EXPECT_NE(shot.summary.message.find("singular Jacobian"), std::string::npos) << shot.summary.message;
+  TimeIntegrationOptions marching;
+  marching.steps_per_period = n;
+  marching.max_periods = 200;
+  const ArmSolution marched = TimeIntegration(arm, marching).solve(excitation);
+  EXPECT_FALSE(marched.summary.converged);
+  EXPECT_NE(marched.summary.message.find("not periodic after 200 periods"), std::string::npos) << marched.summary.message;
 }
 
 template <class Options, class Solver>
