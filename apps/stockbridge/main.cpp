@@ -14,12 +14,13 @@
 
 namespace {
 
-/// Collapses a message to one line, so that every failure is exactly one line on stderr.
+/// A message as one line (the library's messages are; CLI11's and the standard
+/// library's may not be), so that every failure is exactly one line on stderr.
 std::string one_line(std::string text) {
   for (char& ch : text) {
     if (ch == '\n' || ch == '\r') ch = ' ';
   }
-  return text;
+  return stockbridge::printable(text, text.size());
 }
 
 }  // namespace

@@ -8,7 +8,7 @@ namespace stockbridge::cable {
 
 void CableDescription::validate() const {
   require_positive("length", length, "m");
-  require_in_range("sections", sections, 1, 5000);
+  require_in_range("sections", sections, min_sections, max_sections);
   ei.check_values("ei", [](std::string_view name, double v) { require_positive(name, v, "N m^2"); });
   for (std::size_t j = 0; j < jenkin.size(); ++j) {
     const std::string name = fmt::format("jenkin[{}]", j);

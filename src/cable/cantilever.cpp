@@ -256,7 +256,8 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
   const VectorK committed_kinematics = C * scaled_kinematics(from);
   const VectorK increment = target - committed_kinematics;
   const bool continuing = (C * last_increment_).dot(increment) > 0.0;
-  q += scaled_jacobian(continuing ? from.flexibility : elastic_flexibility_).inverse() * increment;
+  const VectorK predicted = q + scaled_jacobian(continuing ? from.flexibility : elastic_flexibility_).inverse() * increment;
+  if (predicted.allFinite()) q = predicted;  // else start from the committed loads
 
   const double scale = std::max({target.template lpNorm<Eigen::Infinity>(),
                                  committed_kinematics.template lpNorm<Eigen::Infinity>(), 1e-12});
@@ -271,6 +272,7 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
     if (result.iterations == options_.max_iterations || !std::isfinite(norm)) break;
     ++result.iterations;
     const VectorK step = -scaled_jacobian(trial.flexibility).inverse() * residual;
+    if (!step.allFinite()) break;  // a singular flexibility: reported as not converged
     bool accepted = false;
     double alpha = 1.0;
     for (int halving = 0; halving <= options_.max_halvings; ++halving, alpha *= 0.5) {

@@ -12,6 +12,31 @@ std::string format_value(double value) {
   return fmt::format("{}", value);
 }
 
+std::string printable(std::string_view text, std::size_t max_bytes) {
+  std::string out;
+  std::size_t kept = text.size();
+  if (kept > max_bytes) {
+    kept = max_bytes;
+    while (kept > 0 && (static_cast<unsigned char>(text[kept]) & 0xC0) == 0x80) --kept;  // a continuation byte
+  }
+  for (const char ch : text.substr(0, kept)) {
+    const auto byte = static_cast<unsigned char>(ch);
+    switch (ch) {
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (byte < 0x20 || byte == 0x7F) {
+          out += fmt::format("\\x{:02x}", byte);
+        } else {
+          out += ch;
+        }
+    }
+  }
+  if (kept < text.size()) out += "...";
+  return out;
+}
+
 void throw_invalid(std::string_view name, double value, std::string_view expected) {
   throw InvalidParameter(fmt::format("{} = {}: expected {}", name, format_value(value), expected));
 }

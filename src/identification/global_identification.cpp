@@ -14,7 +14,7 @@ namespace stockbridge::identification {
 
 void GlobalIdentificationOptions::validate() const {
   require_positive("length", length, "m");
-  require_in_range("sections", sections, 1, 5000);
+  require_in_range("sections", sections, cable::min_sections, cable::max_sections);
   require_in_range("elements", elements, 1, 6);
   require_in_range("max_evaluations", max_evaluations, 10, 100000000);
   require_positive("tolerance", tolerance, "");

@@ -73,7 +73,7 @@ cable::Profile read_profile(const TomlTable& table, std::string_view key, std::s
 cable::CableDescription read_cable_table(const TomlTable& table) {
   cable::CableDescription d;
   d.length = table.number("length", positive("m"));
-  d.sections = static_cast<int>(table.integer("sections", 1, 5000));
+  d.sections = static_cast<int>(table.integer("sections", cable::min_sections, cable::max_sections));
   d.ei = read_profile(table, "ei", "N m^2");
   for (const TomlTable& element : table.table_array("jenkin", false)) {
     cable::JenkinProfile jenkin;

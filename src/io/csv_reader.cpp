@@ -62,7 +62,7 @@ std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& p
       if (index[k] == std::string::npos && (line.find(';') != std::string::npos || line.find('\t') != std::string::npos)) {
         throw InputError(fmt::format("{}:{}: header '{}' is separated by ';' or tabs: expected ',' between columns and "
                                      "'.' as decimal separator",
-                                     file, line_number, line));
+                                     file, line_number, printable(line)));
       }
       if (index[k] == std::string::npos) {
         throw InputError(fmt::format("{}:{}: missing column '{}': expected a header with {}", file, line_number,
@@ -88,7 +88,7 @@ std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& p
       const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
       if (cell.empty() || error != std::errc() || end != cell.data() + cell.size()) {
         throw InputError(fmt::format("{}:{}: column '{}' = '{}': expected a number ('.' as decimal separator)", file,
-                                     line_number, names[k], cell));
+                                     line_number, names[k], printable(cell)));
       }
       if (!std::isfinite(value)) {
         throw InputError(fmt::format("{}:{}: column '{}' = {}: expected a finite number", file, line_number, names[k],

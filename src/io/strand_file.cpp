@@ -44,8 +44,22 @@ strand::Strand read_strand_file(const std::filesystem::path& path) {
     strand.youngs_modulus = *e;
   }
   strand.core_radius = table.number("core_radius", positive_length);
-  for (const TomlTable& layer : table.table_array("layer", false)) {
-    strand.layers.push_back(read_layer(layer));
+  double inner_radius = strand.core_radius;
+  for (const TomlTable& layer_table : table.table_array("layer", false)) {
+    const strand::StrandLayer layer = read_layer(layer_table);
+    // The geometry, with the line of the key it names.
+    try {
+      strand::check_layer_position(layer, inner_radius, layer_table.key_path());
+    } catch (const InvalidParameter& e) {
+      throw InputError(layer_table.location("pitch_radius") + e.what());
+    }
+    try {
+      strand::check_lay_angle(layer, layer_table.key_path());
+    } catch (const InvalidParameter& e) {
+      throw InputError(layer_table.location("lay_length") + e.what());
+    }
+    inner_radius = layer.pitch_radius + layer.wire_radius;
+    strand.layers.push_back(layer);
   }
 
   // Every field was checked against the same ranges as strand::validate; this

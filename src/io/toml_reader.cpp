@@ -18,10 +18,7 @@ toml::table parse_toml_file(const std::filesystem::path& path) {
     return toml::parse_file(path.string());
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
-    std::string what(e.description());
-    for (char& ch : what) {
-      if (ch == '\n' || ch == '\r') ch = ' ';
-    }
+    const std::string what = printable(e.description(), 200);
     throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", path.string(), where.line, where.column, what));
   }
 }
@@ -30,7 +27,7 @@ std::string describe_type(const toml::node& node) {
   switch (node.type()) {
     case toml::node_type::table: return "a table";
     case toml::node_type::array: return "an array";
-    case toml::node_type::string: return fmt::format("the string \"{}\"", *node.value<std::string>());
+    case toml::node_type::string: return fmt::format("the string \"{}\"", printable(*node.value<std::string>()));
     case toml::node_type::integer: return fmt::format("the integer {}", *node.value<long long>());
     case toml::node_type::floating_point: return fmt::format("the number {}", format_value(*node.value<double>()));
     case toml::node_type::boolean: return *node.value<bool>() ? "true" : "false";
@@ -132,7 +129,12 @@ std::optional<std::string> TomlTable::optional_string(std::string_view key) cons
   const toml::node* n = node(key);
   if (!n) return std::nullopt;
   if (!n->is_string()) fail(key, fmt::format("{}: expected a string", describe_type(*n)));
-  return *n->value<std::string>();
+  std::string text = *n->value<std::string>();
+  // Strings end up in messages and output files: one line of printable text.
+  if (printable(text, text.size()) != text) {
+    fail(key, fmt::format("\"{}\": expected text without line breaks, tabs or other control characters", printable(text)));
+  }
+  return text;
 }
 
 TomlTable TomlTable::table(std::string_view key) const {
@@ -168,7 +170,7 @@ void TomlTable::reject_unknown_keys() const {
     if (!asked_.contains(std::string_view(key.str()))) {
       std::string known;
       for (const auto& k : asked_) known += (known.empty() ? "" : ", ") + k;
-      throw InputError(fmt::format("{}unknown key '{}': expected one of {}", location_of(value), qualified(key.str()),
+      throw InputError(fmt::format("{}unknown key '{}': expected one of {}", location_of(value), printable(qualified(key.str())),
                                    known.empty() ? "(none)" : known));
     }
   }

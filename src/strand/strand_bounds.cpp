@@ -1,5 +1,6 @@
 #include "stockbridge/strand/strand_bounds.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -25,6 +26,30 @@ double lay_angle(const StrandLayer& layer) {
   return std::atan(2.0 * std::numbers::pi * layer.pitch_radius / layer.lay_length);
 }
 
+void check_layer_position(const StrandLayer& layer, double inner_radius, std::string_view name) {
+  constexpr double slack = 1.02;  // hand-rounded data: 2 %
+  const double r = layer.wire_radius, R = layer.pitch_radius;
+  const std::string field = fmt::format("{}.pitch_radius", name);
+  if (R * slack < inner_radius + r) {
+    throw_invalid(field, R,
+                  fmt::format("at least {} m, the radius the wires rest on ({} m) plus their radius ({} m)",
+                              format_value(inner_radius + r), format_value(inner_radius), format_value(r)));
+  }
+  if (layer.count * std::asin(std::min(1.0, r / R)) > std::numbers::pi * slack) {
+    throw_invalid(field, R,
+                  fmt::format("room for {} wires of radius {} m side by side around the strand (at least {} m)",
+                              layer.count, format_value(r), format_value(r / std::sin(std::numbers::pi / std::max(layer.count, 2)))));
+  }
+}
+
+void check_lay_angle(const StrandLayer& layer, std::string_view name) {
+  const double shortest = 2.0 * std::numbers::pi * layer.pitch_radius;
+  if (!(layer.lay_length > shortest)) {
+    throw_invalid(fmt::format("{}.lay_length", name), layer.lay_length,
+                  fmt::format("more than 2 pi pitch_radius = {} m (a lay angle below 45 degrees)", format_value(shortest)));
+  }
+}
+
 void validate(const Strand& strand) {
   require_positive("youngs_modulus", strand.youngs_modulus, "Pa");
   require_positive("core_radius", strand.core_radius, "m");
@@ -34,6 +59,13 @@ void validate(const Strand& strand) {
     require_positive(fmt::format("layer[{}].wire_radius", j), layer.wire_radius, "m");
     require_positive(fmt::format("layer[{}].pitch_radius", j), layer.pitch_radius, "m");
     require_positive(fmt::format("layer[{}].lay_length", j), layer.lay_length, "m");
+  }
+  double inner_radius = strand.core_radius;
+  for (std::size_t j = 0; j < strand.layers.size(); ++j) {
+    const StrandLayer& layer = strand.layers[j];
+    check_layer_position(layer, inner_radius, fmt::format("layer[{}]", j));
+    check_lay_angle(layer, fmt::format("layer[{}]", j));
+    inner_radius = layer.pitch_radius + layer.wire_radius;
   }
 }
 

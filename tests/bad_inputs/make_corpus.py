@@ -40,6 +40,9 @@ cases = {
     "cable_length_nan": (CYCLE_CMD, "cable.toml", CABLE.replace("length = 0.3", "length = nan"), "cable.length = nan"),
     "cable_length_inf": (CYCLE_CMD, "cable.toml", CABLE.replace("length = 0.3", "length = inf"), "cable.length = inf"),
     "cable_sections_zero": (CYCLE_CMD, "cable.toml", CABLE.replace("sections = 8", "sections = 0"), "cable.sections"),
+    # A fuzzing finding: one Gauss point ties the tip's deflection to its rotation, so (b) had no solution.
+    "cable_sections_one": ("cycle INPUT --experiment b --amplitude 0.1 -o out.csv", "cable.toml",
+                           CABLE.replace("sections = 8", "sections = 1"), "cable.sections"),
     "cable_sections_huge": (CYCLE_CMD, "cable.toml", CABLE.replace("sections = 8", "sections = 1000000000"), "cable.sections"),
     "cable_sections_float": (CYCLE_CMD, "cable.toml", CABLE.replace("sections = 8", "sections = 8.5"), "cable.sections"),
     "cable_ei_negative": (CYCLE_CMD, "cable.toml", CABLE.replace("ei = 2.8", "ei = -2.8"), "cable.ei = -2.8"),
@@ -68,6 +71,13 @@ cases = {
     "damper_bad_cable": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("ei = 2.8", "ei = -2.8"), "arm[0].cable.ei = -2.8"),
     "damper_arm_not_array": (IMPEDANCE_CMD, "damper.toml", "[clamp]\nmass = 0.7\n[arm]\nmass = 1\n", "arm"),
     # strand files
+    # Fuzzing findings: a name with a line break (it goes into messages and files), and
+    # wires wider than their pitch radius (ei_min came out above ei_max).
+    "damper_name_line_break": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace('name = "a"', 'name = "a\\nb"'), "arm[0].name"),
+    "strand_wires_overlap_core": (STRAND_CMD, "strand.toml", STRAND.replace("wire_radius = 0.001", "wire_radius = 0.005"),
+                                  "strand.layer[0].pitch_radius = 0.002: expected at least 0.006"),
+    "strand_lay_angle_steep": (STRAND_CMD, "strand.toml", STRAND.replace("lay_length = 0.06", "lay_length = 0.01"),
+                               "strand.layer[0].lay_length = 0.01: expected more than 2 pi"),
     "strand_syntax": (STRAND_CMD, "strand.toml", "[strand\n", "syntax error"),
     "strand_empty": (STRAND_CMD, "strand.toml", "", "strand"),
     "strand_missing_core": (STRAND_CMD, "strand.toml", STRAND.replace("core_radius = 0.001\n", ""), "core_radius"),

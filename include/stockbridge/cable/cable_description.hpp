@@ -21,6 +21,12 @@ struct JenkinProfile {
   bool operator==(const JenkinProfile&) const = default;
 };
 
+/// Integration points along a cable: at least two, since with one Gauss point the
+/// tip's deflection is always l/2 times its rotation (the cable could not be
+/// clamped at one end and guided at the other, as in experiment (b) and the damper).
+inline constexpr int min_sections = 2;
+inline constexpr int max_sections = 5000;
+
 struct CableDescription {
   double length = 0.0;   ///< l, m
   int sections = 40;     ///< Gauss-Legendre integration points along the cable

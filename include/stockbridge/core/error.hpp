@@ -48,6 +48,11 @@ class NumericalError : public Error {
 /// Formats a number the way every message shows it (shortest round-trip form).
 std::string format_value(double value);
 
+/// Text from a user's file as a message quotes it, so that a message stays one
+/// line: control characters as escapes (\n, \r, \t, \x1b, ...), and at most
+/// `max_bytes` bytes kept (then "...", never cutting a UTF-8 character).
+std::string printable(std::string_view text, std::size_t max_bytes = 60);
+
 /// Throws InvalidParameter "<name> = <value>: expected <expected>".
 [[noreturn]] void throw_invalid(std::string_view name, double value, std::string_view expected);
 

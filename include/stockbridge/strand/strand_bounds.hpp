@@ -22,9 +22,11 @@
 // are typically 5-20 deg). The function returns what the formulas give and does
 // not enforce it.
 //
-// Units: SI throughout (m, Pa, N m^2). The geometry is not checked for
-// consistency (wires of one layer overlapping each other or the core).
+// Units: SI throughout (m, Pa, N m^2). The geometry must be possible: each layer
+// lies outside the one below, its wires fit side by side around the strand, and
+// its lay angle is below 45 degrees (check_layer_geometry).
 
+#include <string_view>
 #include <vector>
 
 namespace stockbridge::strand {
@@ -53,9 +55,22 @@ struct StrandBounds {
 /// Lay angle alpha of a layer, rad, from tan alpha = 2 pi R / lambda (in [0, pi/2)).
 double lay_angle(const StrandLayer& layer);
 
+/// Throws InvalidParameter naming `<name>.pitch_radius` unless the layer's wires lie
+/// outside the radius `inner_radius` (the core's, or the layer below's R + r):
+/// R >= inner_radius + r, and fit side by side around the strand axis:
+/// N asin(r / R) <= pi (both up to 2 %, for data rounded by hand; the classic 1 + 6
+/// strand of equal wires meets both exactly).
+void check_layer_position(const StrandLayer& layer, double inner_radius, std::string_view name);
+
+/// Throws InvalidParameter naming `<name>.lay_length` unless the lay angle is below
+/// 45 degrees, lambda > 2 pi R (real strands: 10 to 20 degrees). Steeper layers are
+/// not helical wires in bending, and would give ei_max < ei_min.
+void check_lay_angle(const StrandLayer& layer, std::string_view name);
+
 /// Throws InvalidParameter naming the field, e.g.
 /// "layer[1].lay_length = -0.05: expected a finite value > 0 (m)".
-/// Every length and E must be finite and > 0; counts run from 1 to 1000.
+/// Every length and E must be finite and > 0; counts run from 1 to 1000; each layer's
+/// geometry passes check_layer_position and check_lay_angle.
 /// (Straight wires, lambda -> inf, are approximated by any very long lay length.)
 void validate(const Strand& strand);
 

@@ -214,9 +214,22 @@ TEST(Cantilever, OneElementFastPathEqualsTheGeneralPath) {
   }
 }
 
+// The coarsest cable allowed (two sections) is guided at the tip as in (b): finite
+// loads, the rotation met (with one section this returned NaN; see above).
+TEST(Cantilever, TwoSectionsCarryAGuidedTip) {
+  Cantilever cantilever{Cable(CableDescription::uniform(1.0, 2, 0.05, {}))};
+  const StateDetermination d = cantilever.set_trial_rotation(-1.0);
+  ASSERT_TRUE(d.converged);
+  EXPECT_NEAR(cantilever.trial().rotation, -1.0, 1e-10);
+  EXPECT_NEAR(cantilever.trial().deflection, 0.0, 1e-10);
+  EXPECT_NEAR(cantilever.trial().clamp_moment, -2.0 * 0.05 * (-1.0) / 1.0, 1e-9);  // T = -2 EI phi / l
+}
+
 TEST(Cantilever, RejectsBadDescriptions) {
   EXPECT_THROW(Cable(CableDescription::uniform(0.0, 40, 2.8, {})), InvalidParameter);
   EXPECT_THROW(Cable(CableDescription::uniform(0.3, 0, 2.8, {})), InvalidParameter);
+  // Fuzzing finding: with one section x = phi l / 2 always, and (b) returned NaN loads.
+  EXPECT_THROW(Cable(CableDescription::uniform(0.3, 1, 2.8, {})), InvalidParameter);
   EXPECT_THROW(Cable(CableDescription::uniform(0.3, 40, 0.0, {{20.0, 0.7}})), InvalidParameter);  // ei > 0 on a cable
   EXPECT_THROW(Cable(CableDescription::uniform(0.3, 40, 2.8, {{20.0, -0.7}})), InvalidParameter);
   CantileverOptions options;

@@ -82,9 +82,9 @@ TEST(CableFile, EachMistakeGetsOnePreciseLine) {
   EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\nlenght = 3\n"),
             file + ":5: unknown key 'cable.lenght': expected one of ei, jenkin, length, lever_arm_cap, mirror_length, sections");
   EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40.5\nei = 2.8\n"),
-            file + ":3: cable.sections: the number 40.5: expected an integer from 1 to 5000");
+            file + ":3: cable.sections: the number 40.5: expected an integer from 2 to 5000");
   EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 0\nei = 2.8\n"),
-            file + ":3: cable.sections: 0: expected an integer from 1 to 5000");
+            file + ":3: cable.sections: 0: expected an integer from 2 to 5000");
   EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = \"stiff\"\n"),
             file + ":4: cable.ei: the string \"stiff\": expected a number or a profile { s = [...], value = [...] }");
   EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\njenkin = [ { c = 20.0, h = 0 } ]\n"),
@@ -104,6 +104,10 @@ TEST(CableFile, EachMistakeGetsOnePreciseLine) {
   EXPECT_EQ(error_of("length = 0.3\n"), file + ":1: missing key 'cable' in the top level: expected a table");
   EXPECT_EQ(error_of("[cable\nlength = 0.3\n"), file + ":1:7: TOML syntax error: Error while parsing table header: expected ']', saw '\\n'");
   EXPECT_EQ(error_of(""), file + ":1: missing key 'cable' in the top level: expected a table");
+  // Control characters the user's text brings in (quoted keys, strings) are escaped: one line.
+  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\n\"a\\nb\" = 3\n").rfind(file + ":5: unknown key 'cable.a\\nb'", 0), 0u);
+  EXPECT_EQ(error_of("[cable]\nlength = \"0.3\\r\"\nsections = 40\nei = 2.8\n"),
+            file + ":2: cable.length: the string \"0.3\\r\": expected a number");
 }
 
 TEST(CableFile, MissingFile) {

@@ -59,6 +59,15 @@ TEST(CsvReader, EachMistakeGetsOnePreciseLine) {
   EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n0.1,1,5\n0,\n"),
             f + ":3: column 'moment_n_m' = '': expected a number ('.' as decimal separator)");
   EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n", 8), f + ": 0 data rows: expected at least 8");
+  // Fuzzing finding: a lone CR or other control character inside a quoted cell or
+  // header made the message two lines; they are escaped (and long text is cut).
+  EXPECT_EQ(error_of("curvature_per_m;moment\rx\n0,1\n"),
+            f + ":1: header 'curvature_per_m;moment\\rx' is separated by ';' or tabs: expected ',' between columns and "
+                "'.' as decimal separator");
+  EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n0.1,1\x1b[2J\n"),
+            f + ":2: column 'moment_n_m' = '1\\x1b[2J': expected a number ('.' as decimal separator)");
+  EXPECT_EQ(error_of("curvature_per_m,moment_n_m\n0.1," + std::string(100, '9') + "x\n"),
+            f + ":2: column 'moment_n_m' = '" + std::string(60, '9') + "...': expected a number ('.' as decimal separator)");
   EXPECT_THROW(read_csv_columns(directory() / "missing.csv", {"a"}, 1), InputError);
 }
 

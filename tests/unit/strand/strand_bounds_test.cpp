@@ -6,7 +6,9 @@
 
 #include "support/error_message.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -44,7 +46,7 @@ TEST(StrandBounds, MinimumOfNineteenWiresIsNineteenFreeWires) {
   const double expected = 19.0 * kE * kPi * std::pow(0.001, 4) / 4.0;
   EXPECT_NEAR(expected, 3.1337, 1e-4);
   expect_relative(strand_bounds(nineteen_wire()).ei_min, expected, 1e-9);
-  expect_relative(strand_bounds(nineteen_wire(0.01, 0.02)).ei_min, expected, 1e-9);
+  expect_relative(strand_bounds(nineteen_wire(0.03, 0.06)).ei_min, expected, 1e-9);  // lay angles 23 degrees
 }
 
 TEST(StrandBounds, MaximumOfStraightLayerMatchesParallelAxisFormula) {
@@ -99,7 +101,7 @@ TEST(StrandBounds, MaximumExceedsMinimum) {
 
 TEST(StrandBounds, MaximumDecreasesAsTheLayLengthShortens) {
   double previous = strand_bounds(nineteen_wire(kStraight, kStraight)).ei_max;
-  for (double lay = 10.0; lay >= 0.005; lay *= 0.8) {
+  for (double lay = 10.0; lay >= 0.026; lay *= 0.8) {  // down to 44 degrees in the outer layer
     const double current = strand_bounds(nineteen_wire(lay, lay)).ei_max;
     EXPECT_LT(current, previous) << "lay length " << lay << " m";
     previous = current;
@@ -137,6 +139,51 @@ TEST(StrandValidation, NamesTheFieldTheValueAndTheExpectation) {
   EXPECT_EQ(with([](Strand& s) { s.youngs_modulus = 0.0; }), "youngs_modulus = 0: expected a finite value > 0 (Pa)");
   EXPECT_EQ(invalid_parameter_message([] { validate(Strand{}); }), "core_radius = 0: expected a finite value > 0 (m)");
   EXPECT_NO_THROW(validate(nineteen_wire()));
+}
+
+// Impossible geometry (a fuzzing finding: wires of 5 mm radius on a 2 mm pitch radius
+// gave ei_min > ei_max): each layer outside the one below, room for its wires, and a
+// lay angle below 45 degrees.
+TEST(StrandValidation, RejectsImpossibleGeometry) {
+  auto with = [](const std::function<void(Strand&)>& change) {
+    Strand strand = nineteen_wire();
+    change(strand);
+    return invalid_parameter_message([&] { strand_bounds(strand); });
+  };
+  EXPECT_EQ(with([](Strand& s) { s.layers[0].wire_radius = 0.005; }).rfind("layer[0].pitch_radius = 0.002: expected at least 0.006 m", 0), 0u);
+  EXPECT_EQ(with([](Strand& s) { s.layers[1].pitch_radius = 0.0035; }).rfind("layer[1].pitch_radius = 0.0035: expected at least 0.004 m", 0), 0u);
+  EXPECT_EQ(with([](Strand& s) { s.layers[0].count = 7; }).rfind("layer[0].pitch_radius = 0.002: expected room for 7 wires", 0), 0u);
+  EXPECT_EQ(with([](Strand& s) { s.layers[1].lay_length = 0.025; }).rfind("layer[1].lay_length = 0.025: expected more than 2 pi", 0), 0u);
+  // Hand-rounded data within 2 % passes: 1 + 6 wires of 1.25 mm written as pitch 2.5 mm - 1 %.
+  EXPECT_NO_THROW(validate(Strand{0.00125, kE, {{6, 0.00125, 0.002475, 0.08}}}));
+}
+
+// Over many possible strands (radii, counts that fit, lay angles up to 45 degrees) the
+// no-slip bound is never below the free-wire bound.
+TEST(StrandBounds, MaximumIsNeverBelowMinimumForPossibleGeometry) {
+  std::uint64_t state = 12345;
+  auto uniform = [&state](double lo, double hi) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  for (int trial = 0; trial < 2000; ++trial) {
+    Strand strand{uniform(1e-5, 2e-3), kE, {}};
+    double inner = strand.core_radius;
+    for (int j = 0; j < 3; ++j) {
+      const double r = uniform(1e-5, 2e-3);
+      const double R = (inner + r) * uniform(1.0, 1.5);
+      const int count = std::clamp(static_cast<int>(std::floor(kPi / std::asin(std::min(1.0, r / R)))), 1, 1000);
+      strand.layers.push_back({count, r, R, 2.0 * kPi * R * uniform(1.0001, 20.0)});
+      inner = R + r;
+    }
+    try {
+      validate(strand);
+    } catch (const InvalidParameter& e) {
+      FAIL() << "trial " << trial << ": " << e.what();
+    }
+    const StrandBounds b = strand_bounds(strand);
+    ASSERT_LE(b.ei_min, b.ei_max) << "trial " << trial;
+  }
 }
 
 TEST(StrandFile, ReadsTheShippedExample) {
