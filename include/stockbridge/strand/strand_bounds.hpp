@@ -19,12 +19,11 @@
 //
 // EI_max > EI_min whenever cos^3 alpha_j > r_j^2 / (r_j^2 + 2 R_j^2) in every layer,
 // which holds for any real strand (R_j >= r_j gives alpha_j < 46 deg; lay angles
-// are typically 5-20 deg). The function returns what the formulas give and does
-// not enforce it.
+// are typically 5-20 deg). validate() makes it hold: the geometry must be possible,
+// each layer outside the one below with room for its wires (check_layer_position)
+// and a lay angle below 45 degrees (check_lay_angle).
 //
-// Units: SI throughout (m, Pa, N m^2). The geometry must be possible: each layer
-// lies outside the one below, its wires fit side by side around the strand, and
-// its lay angle is below 45 degrees (check_layer_geometry).
+// Units: SI throughout (m, Pa, N m^2).
 
 #include <string_view>
 #include <vector>
