@@ -74,8 +74,11 @@ int run_cycle_command(const CycleOptions& options) {
   const cable::ExperimentSummary& s = record.summary;
   if (options.json) fmt::print("{}\n", cycle_json(s, options).str());
   if (s.failed_samples > 0) {
-    fmt::print(stderr, "cycle: {} of {} points did not converge (converged = 0 in {}); energies cover the rest\n",
-               s.failed_samples, record.samples.size(), options.output);
+    fmt::print(stderr,
+               "cycle: {} of {} points did not converge (converged = 0 in {}); {}\n", s.failed_samples,
+               record.samples.size(), options.output,
+               std::isnan(s.loop_work) ? "the last cycle's energies are not given (null in --json)"
+                                       : "the last cycle converged, its energies are given");
     return kNotConverged;
   }
   fmt::print(stderr, "cycle: experiment ({}), last cycle dissipates {} J (sliders), {} J (loop work); Newton iterations max {}, mean {:.2f}\n",

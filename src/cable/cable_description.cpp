@@ -7,23 +7,23 @@
 namespace stockbridge::cable {
 
 void CableDescription::validate() const {
-  require_positive("length", length, "m");
+  require_plausible("length", length, "m");
   require_in_range("sections", sections, min_sections, max_sections);
-  ei.check_values("ei", [](std::string_view name, double v) { require_positive(name, v, "N m^2"); });
+  ei.check_values("ei", [](std::string_view name, double v) { require_plausible(name, v, "N m^2"); });
   for (std::size_t j = 0; j < jenkin.size(); ++j) {
     const std::string name = fmt::format("jenkin[{}]", j);
-    jenkin[j].c.check_values(name + ".c", [](std::string_view n, double v) { require_positive(n, v, "N m^2"); });
-    jenkin[j].h.check_values(name + ".h", [](std::string_view n, double v) { require_positive(n, v, "N m"); });
-    require_non_negative(name + ".k0", jenkin[j].k0, "N");
+    jenkin[j].c.check_values(name + ".c", [](std::string_view n, double v) { require_plausible(n, v, "N m^2"); });
+    jenkin[j].h.check_values(name + ".h", [](std::string_view n, double v) { require_plausible(n, v, "N m"); });
+    require_plausible_or_zero(name + ".k0", jenkin[j].k0, "N");
   }
   if (mirror_length) {
-    require_positive("mirror_length", *mirror_length, "m");
+    require_plausible("mirror_length", *mirror_length, "m");
     if (length > 2.0 * *mirror_length) {
       throw_invalid("length", length,
                     fmt::format("at most twice mirror_length = {} m for the mirror method", *mirror_length));
     }
   }
-  if (lever_arm_cap) require_positive("lever_arm_cap", *lever_arm_cap, "m");
+  if (lever_arm_cap) require_plausible("lever_arm_cap", *lever_arm_cap, "m");
 }
 
 double CableDescription::profile_position(double s) const {

@@ -84,6 +84,12 @@ ExperimentSummary summarise(const std::vector<ExperimentSample>& samples, const 
     previous = &s;
   }
   summary.slider_dissipation = previous ? summary.slider_dissipation + previous->dissipated : 0.0;
+  if (std::any_of(samples.begin() + static_cast<std::ptrdiff_t>(begin), samples.end(),
+                  [](const ExperimentSample& s) { return !s.solve.converged; })) {
+    // A gap in the loop: its energies would be numbers nobody can trust.
+    summary.slider_dissipation = summary.loop_work = summary.measured_loop_area =
+        std::numeric_limits<double>::quiet_NaN();
+  }
   return summary;
 }
 

@@ -55,6 +55,21 @@ void require_non_negative(std::string_view name, double value, std::string_view 
   if (!(std::isfinite(value) && value >= 0)) throw_invalid(name, value, with_unit("a finite value >= 0", unit));
 }
 
+void require_plausible(std::string_view name, double value, std::string_view unit) {
+  require_positive(name, value, unit);
+  if (value < smallest_magnitude || value > largest_magnitude) {
+    throw_invalid(name, value,
+                  with_unit(fmt::format("a value from {:g} to {:g}; one outside is a unit mistake", smallest_magnitude,
+                                        largest_magnitude),
+                            unit));
+  }
+}
+
+void require_plausible_or_zero(std::string_view name, double value, std::string_view unit) {
+  require_non_negative(name, value, unit);
+  if (value != 0.0) require_plausible(name, value, unit);
+}
+
 void require_finite(std::string_view name, double value, std::string_view unit) {
   if (!std::isfinite(value)) throw_invalid(name, value, with_unit("a finite value", unit));
 }

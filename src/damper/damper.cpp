@@ -13,8 +13,8 @@ namespace stockbridge::damper {
 
 void ArmDescription::validate(std::string_view name_in_messages) const {
   const std::string p(name_in_messages);
-  require_positive(p + ".mass", mass, "kg");
-  require_positive(p + ".inertia", inertia, "kg m^2");
+  require_plausible(p + ".mass", mass, "kg");
+  require_plausible(p + ".inertia", inertia, "kg m^2");
   require_finite(p + ".offset", offset, "m");
   if (std::isfinite(cable.length) && cable.length > 0.0 && !(std::abs(offset) < cable.length)) {
     throw_invalid(p + ".offset", offset,
@@ -32,7 +32,7 @@ bool ArmDescription::same_mechanics(const ArmDescription& other) const {
 }
 
 void DamperDescription::validate() const {
-  require_non_negative("clamp.mass", clamp_mass, "kg");
+  require_plausible_or_zero("clamp.mass", clamp_mass, "kg");
   if (arms.empty()) throw InvalidParameter("arm: expected at least one arm");
   for (std::size_t k = 0; k < arms.size(); ++k) arms[k].validate(fmt::format("arm[{}]", k));
 }

@@ -11,8 +11,9 @@ namespace {
 
 using CheckFn = std::function<void(std::string_view, double)>;
 
-CheckFn positive(std::string_view unit) {
-  return [unit](std::string_view name, double v) { require_positive(name, v, unit); };
+/// A positive value within the magnitudes a description may hold (require_plausible).
+CheckFn plausible(std::string_view unit) {
+  return [unit](std::string_view name, double v) { require_plausible(name, v, unit); };
 }
 
 std::vector<double> number_array(const TomlTable& table, std::string_view key) {
@@ -55,7 +56,7 @@ cable::Profile read_profile(const TomlTable& table, std::string_view key, std::s
     }
     result.check_values(table.qualified(key), [&](std::string_view name, double v) {
       try {
-        require_positive(name, v, unit);
+        require_plausible(name, v, unit);
       } catch (const InvalidParameter& e) {
         throw InputError(fmt::format("{}{}", table.location(key), e.what()));
       }
@@ -65,14 +66,14 @@ cable::Profile read_profile(const TomlTable& table, std::string_view key, std::s
   if (n && !n->is_number()) {
     table.fail(key, fmt::format("{}: expected a number or a profile {{ s = [...], value = [...] }}", describe_type(*n)));
   }
-  return cable::Profile::constant(table.number(key, positive(unit)));
+  return cable::Profile::constant(table.number(key, plausible(unit)));
 }
 
 }  // namespace
 
 cable::CableDescription read_cable_table(const TomlTable& table) {
   cable::CableDescription d;
-  d.length = table.number("length", positive("m"));
+  d.length = table.number("length", plausible("m"));
   d.sections = static_cast<int>(table.integer("sections", cable::min_sections, cable::max_sections));
   d.ei = read_profile(table, "ei", "N m^2");
   for (const TomlTable& element : table.table_array("jenkin", false)) {
@@ -80,13 +81,13 @@ cable::CableDescription read_cable_table(const TomlTable& table) {
     jenkin.c = read_profile(element, "c", "N m^2");
     jenkin.h = read_profile(element, "h", "N m");
     jenkin.k0 = element.optional_number("k0", [](std::string_view name, double v) {
-      require_non_negative(name, v, "N");
+      require_plausible_or_zero(name, v, "N");
     }).value_or(0.0);
     element.reject_unknown_keys();
     d.jenkin.push_back(std::move(jenkin));
   }
-  d.mirror_length = table.optional_number("mirror_length", positive("m"));
-  d.lever_arm_cap = table.optional_number("lever_arm_cap", positive("m"));
+  d.mirror_length = table.optional_number("mirror_length", plausible("m"));
+  d.lever_arm_cap = table.optional_number("lever_arm_cap", plausible("m"));
   table.reject_unknown_keys();
   try {
     d.validate();

@@ -9,13 +9,13 @@ namespace stockbridge::io {
 
 namespace {
 
-void positive_kg(std::string_view name, double v) { require_positive(name, v, "kg"); }
+void plausible_kg(std::string_view name, double v) { require_plausible(name, v, "kg"); }
 
 damper::ArmDescription read_arm(const TomlTable& table, std::size_t index) {
   damper::ArmDescription arm;
   arm.name = table.optional_string("name").value_or(fmt::format("arm{}", index + 1));
-  arm.mass = table.number("mass", positive_kg);
-  arm.inertia = table.number("inertia", [](std::string_view n, double v) { require_positive(n, v, "kg m^2"); });
+  arm.mass = table.number("mass", plausible_kg);
+  arm.inertia = table.number("inertia", [](std::string_view n, double v) { require_plausible(n, v, "kg m^2"); });
   arm.offset = table.number("offset", [](std::string_view n, double v) { require_finite(n, v, "m"); });
   arm.cable = read_cable_table(table.table("cable"));
   table.reject_unknown_keys();
@@ -34,7 +34,7 @@ damper::DamperDescription read_damper_file(const std::filesystem::path& path) {
   const TomlTable top(document, path.string(), "");
   damper::DamperDescription damper;
   const TomlTable clamp = top.table("clamp");
-  damper.clamp_mass = clamp.number("mass", [](std::string_view n, double v) { require_non_negative(n, v, "kg"); });
+  damper.clamp_mass = clamp.number("mass", [](std::string_view n, double v) { require_plausible_or_zero(n, v, "kg"); });
   clamp.reject_unknown_keys();
   const std::vector<TomlTable> arms = top.table_array("arm", true);
   if (arms.empty()) top.fail("arm", "an empty array: expected at least one [[arm]]");

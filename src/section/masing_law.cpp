@@ -7,8 +7,8 @@
 namespace stockbridge::section {
 
 void validate(const Jenkin& element, std::string_view name) {
-  require_positive(fmt::format("{}.c", name), element.c, "N m^2");
-  require_positive(fmt::format("{}.h", name), element.h, "N m");
+  require_plausible(fmt::format("{}.c", name), element.c, "N m^2");
+  require_plausible(fmt::format("{}.h", name), element.h, "N m");
 }
 
 double MasingParameters::max_stiffness() const {
@@ -24,7 +24,7 @@ double MasingParameters::total_slip_moment() const {
 }
 
 void validate(const MasingParameters& parameters) {
-  require_non_negative("ei", parameters.ei, "N m^2");
+  require_plausible_or_zero("ei", parameters.ei, "N m^2");
   for (std::size_t j = 0; j < parameters.jenkin.size(); ++j) {
     validate(parameters.jenkin[j], fmt::format("jenkin[{}]", j));
   }

@@ -43,6 +43,10 @@ cases = {
     # A fuzzing finding: one Gauss point ties the tip's deflection to its rotation, so (b) had no solution.
     "cable_sections_one": ("cycle INPUT --experiment b --amplitude 0.1 -o out.csv", "cable.toml",
                            CABLE.replace("sections = 8", "sections = 1"), "cable.sections"),
+    # Fuzzing finding: an absurd magnitude was accepted and overflowed the cable's flexibility.
+    "cable_length_1e307": (CYCLE_CMD, "cable.toml", CABLE.replace("length = 0.3", "length = 0.11e308"),
+                           "cable.length = 1.1e+307: expected a value from 1e-12 to 1e+12"),
+    "damper_arm_mass_1e20": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("mass = 0.856", "mass = 1e20"), "arm[0].mass = 1e+20"),
     "cable_sections_huge": (CYCLE_CMD, "cable.toml", CABLE.replace("sections = 8", "sections = 1000000000"), "cable.sections"),
     "cable_sections_float": (CYCLE_CMD, "cable.toml", CABLE.replace("sections = 8", "sections = 8.5"), "cable.sections"),
     "cable_ei_negative": (CYCLE_CMD, "cable.toml", CABLE.replace("ei = 2.8", "ei = -2.8"), "cable.ei = -2.8"),

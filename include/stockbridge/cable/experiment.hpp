@@ -41,7 +41,8 @@ struct ExperimentSample {
 struct ExperimentSummary {
   /// Over the last cycle: the sliders' dissipation, and the work of the tip loads
   /// around the loop (trapezoid rule over the samples): int F dx + Q dphi. The two
-  /// agree to the accuracy of the loop's quadrature.
+  /// agree to the accuracy of the loop's quadrature. NaN (all three) when a sample of
+  /// the last cycle did not converge.
   double slider_dissipation = 0.0;  ///< J
   double loop_work = 0.0;           ///< J
   /// Area of the (phi, T) loop (b) or of the (x, F) loop (a), the measured loop.
@@ -62,7 +63,8 @@ struct ExperimentRecord {
 
 /// Runs the experiment, committing every converged sample. A sample that does not
 /// converge is reverted (the next one starts from the last converged state) and
-/// flagged; the summary's energies then cover only what converged.
+/// flagged; the summary's extremes then cover only what converged, and its energies
+/// are NaN if the failure lies in the last cycle.
 ExperimentRecord run_experiment(Cantilever& cantilever, const ExperimentDrive& drive);
 
 /// The samples of an experiment along any path of the prescribed quantity (x for

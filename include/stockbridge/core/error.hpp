@@ -62,6 +62,16 @@ void require_positive(std::string_view name, double value, std::string_view unit
 void require_non_negative(std::string_view name, double value, std::string_view unit);
 /// Checks that `value` is finite.
 void require_finite(std::string_view name, double value, std::string_view unit);
+/// The magnitudes a description may hold, in SI units. A value outside is a unit
+/// mistake (no damper has a 1e13 m cable or a 1e-13 kg mass), and admitting it
+/// would let the arithmetic overflow (a fuzzing finding: length = 1.1e307).
+inline constexpr double smallest_magnitude = 1e-12;
+inline constexpr double largest_magnitude = 1e12;
+/// Checks that `value` is finite and > 0 (the message of require_positive), then
+/// smallest_magnitude <= value <= largest_magnitude.
+void require_plausible(std::string_view name, double value, std::string_view unit);
+/// The same, 0 also allowed.
+void require_plausible_or_zero(std::string_view name, double value, std::string_view unit);
 /// Checks lo <= value <= hi for an integer count.
 void require_in_range(std::string_view name, long long value, long long lo, long long hi);
 

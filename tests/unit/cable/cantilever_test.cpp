@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "stockbridge/cable/cantilever.hpp"
+#include "stockbridge/cable/experiment.hpp"
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::cable {
@@ -223,6 +224,24 @@ TEST(Cantilever, TwoSectionsCarryAGuidedTip) {
   EXPECT_NEAR(cantilever.trial().rotation, -1.0, 1e-10);
   EXPECT_NEAR(cantilever.trial().deflection, 0.0, 1e-10);
   EXPECT_NEAR(cantilever.trial().clamp_moment, -2.0 * 0.05 * (-1.0) / 1.0, 1e-9);  // T = -2 EI phi / l
+}
+
+// Numerical trust in the experiments: with one Newton iteration per sample the
+// slipping samples of (a) fail; they are flagged, and the last cycle's energies,
+// which would be integrated across the gaps, are NaN rather than a wrong number.
+TEST(Experiment, FailedSamplesLeaveNoEnergies) {
+  CantileverOptions options;
+  options.max_iterations = 1;
+  Cantilever cantilever(Cable(CableDescription::uniform(0.3, 40, 2.8, {{20.0, 0.7}})), options);
+  const ExperimentRecord record = run_experiment(cantilever, {Experiment::a, 0.03, 2, 200});
+  EXPECT_GT(record.summary.failed_samples, 0);
+  EXPECT_TRUE(std::isnan(record.summary.slider_dissipation));
+  EXPECT_TRUE(std::isnan(record.summary.loop_work));
+  EXPECT_TRUE(std::isnan(record.summary.measured_loop_area));
+  Cantilever converging{Cable(CableDescription::uniform(0.3, 40, 2.8, {{20.0, 0.7}}))};
+  const ExperimentSummary ok = run_experiment(converging, {Experiment::a, 0.03, 2, 200}).summary;
+  EXPECT_EQ(ok.failed_samples, 0);
+  EXPECT_GT(ok.slider_dissipation, 0.0);
 }
 
 TEST(Cantilever, RejectsBadDescriptions) {

@@ -108,6 +108,11 @@ TEST(CableFile, EachMistakeGetsOnePreciseLine) {
   EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\n\"a\\nb\" = 3\n").rfind(file + ":5: unknown key 'cable.a\\nb'", 0), 0u);
   EXPECT_EQ(error_of("[cable]\nlength = \"0.3\\r\"\nsections = 40\nei = 2.8\n"),
             file + ":2: cable.length: the string \"0.3\\r\": expected a number");
+  // Fuzzing finding: an absurd magnitude overflowed the flexibility (every sample failed).
+  EXPECT_EQ(error_of("[cable]\nlength = 0.11e308\nsections = 40\nei = 2.8\n"),
+            file + ":2: cable.length = 1.1e+307: expected a value from 1e-12 to 1e+12; one outside is a unit mistake (m)");
+  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 1e-13\n"),
+            file + ":4: cable.ei = 1e-13: expected a value from 1e-12 to 1e+12; one outside is a unit mistake (N m^2)");
 }
 
 TEST(CableFile, MissingFile) {
