@@ -33,7 +33,7 @@ cable::CableDescription random_cable(FuzzedDataProvider& in) {
     elements.emplace_back(in.ConsumeFloatingPointInRange(0.05, 500.0), in.ConsumeFloatingPointInRange(0.01, 5.0));
   }
   cable::CableDescription d = cable::CableDescription::uniform(length, sections, ei, elements);
-  if (!d.jenkin.empty() && in.ConsumeBool()) d.jenkin[0].k0 = in.ConsumeFloatingPointInRange(0.0, 5.0);
+  if (!d.jenkin.empty() && in.ConsumeBool()) d.jenkin[0].k0 = in.ConsumeFloatingPointInRange(1e-3, 5.0);
   return d;
 }
 
