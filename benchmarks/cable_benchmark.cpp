@@ -21,7 +21,7 @@ void BM_ExperimentACycle(benchmark::State& state) {
   for (auto _ : state) {
     const ExperimentRecord record = run_experiment(cantilever, drive);
     for (const ExperimentSample& s : record.samples) {
-      iterations += s.solve.iterations;
+      iterations += s.solve.newton_iterations;
       evaluations += s.solve.evaluations;
     }
     benchmark::DoNotOptimize(record.summary.slider_dissipation);

@@ -105,8 +105,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       } else {
         d = cantilever.set_trial_tip(x, phi);
       }
-      fuzz::require(std::isfinite(d.residual) && d.iterations >= 0, "a finite residual is reported");
-      if (d.converged) {
+      fuzz::require(std::isfinite(d.residual) && d.newton_iterations >= 0, "a finite residual is reported");
+      if (d.converged()) {
         const cable::CableState& s = cantilever.trial();
         fuzz::require(std::abs(s.deflection - x) <= 1e-7 * (x_max + std::abs(from.deflection)), "deflection met");
         if (kind != 1) fuzz::require(std::abs(s.rotation - phi) <= 1e-7 * (phi_max + std::abs(from.rotation)), "rotation met");

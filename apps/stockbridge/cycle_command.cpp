@@ -34,10 +34,10 @@ std::string cycle_csv(const cable::ExperimentRecord& record) {
   constexpr double kEmpty = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t k = 0; k < record.samples.size(); ++k) {
     const cable::ExperimentSample& s = record.samples[k];
-    const bool ok = s.solve.converged;
+    const bool ok = s.solve.converged();
     csv.add_row({static_cast<double>(k), ok ? s.deflection : kEmpty, ok ? s.rotation : kEmpty,
                  ok ? s.tip_force : kEmpty, ok ? s.clamp_moment : kEmpty, ok ? s.tip_moment : kEmpty,
-                 ok ? s.dissipated : kEmpty, static_cast<double>(s.solve.iterations), s.solve.residual,
+                 ok ? s.dissipated : kEmpty, static_cast<double>(s.solve.newton_iterations), s.solve.residual,
                  ok ? 1.0 : 0.0});
   }
   return csv.text();
@@ -68,7 +68,7 @@ int run_cycle_command(const CycleOptions& options) {
   drive.cycles = options.cycles;
   drive.points = options.points;
   drive.validate();
-  cable::Cantilever cantilever{cable::Cable(io::read_cable_file(options.cable_file))};
+  cable::Cantilever cantilever{io::read_cable_file(options.cable_file)};
   const cable::ExperimentRecord record = cable::run_experiment(cantilever, drive);
   io::write_file_atomically(options.output, cycle_csv(record));
   const cable::ExperimentSummary& s = record.summary;

@@ -13,6 +13,7 @@
 #include "stockbridge/identification/global_identification.hpp"
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/io/atomic_file.hpp"
+#include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
 #include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/json_writer.hpp"
@@ -97,15 +98,10 @@ struct GlobalOptions {
 };
 
 std::string cable_toml(const identification::GlobalIdentification& fit, const GlobalOptions& options) {
-  const cable::CableDescription& c = fit.cable;
-  std::string text = fmt::format(
-      "# Identified by stockbridge identify global ({}) from experiment ({}) in {}:\n"
-      "# relative L1 error {:.4g}, output offset {}.\n[cable]\nlength = {}        # m\nsections = {}\nei = {}   # N m^2\njenkin = [",
-      options.method, options.experiment, options.input, fit.error, fit.output_offset, c.length, c.sections, c.ei.at(0.0));
-  for (std::size_t j = 0; j < c.jenkin.size(); ++j) {
-    text += fmt::format("{} {{ c = {}, h = {} }}", j ? "," : "", c.jenkin[j].c.at(0.0), c.jenkin[j].h.at(0.0));
-  }
-  return text + " ]   # N m^2, N m\n";
+  return io::cable_file_toml(fit.cable, fmt::format("Identified by stockbridge identify global ({}) from experiment ({}) in {}:\n"
+                                                    "relative L1 error {:.4g}, output offset {}.",
+                                                    options.method, options.experiment, options.input, fit.error,
+                                                    fit.output_offset));
 }
 
 int run_global(const GlobalOptions& options) {

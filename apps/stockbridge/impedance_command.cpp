@@ -20,10 +20,13 @@
 #include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/sweep_request.hpp"
 
 namespace stockbridge::cli {
 
 namespace {
+
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 struct ImpedanceOptions {
   std::string damper_file;
@@ -40,36 +43,23 @@ struct ImpedanceOptions {
 };
 
 damper::SweepSpec sweep_spec(const ImpedanceOptions& options) {
-  damper::SweepSpec spec;
-  if (options.velocity.empty() == options.displacement.empty()) {
+  requests::SweepRequest request;
+  if (!options.velocity.empty()) request.velocities = parse_number_list(options.velocity, "--velocity");
+  if (!options.displacement.empty()) request.displacements = parse_number_list(options.displacement, "--displacement");
+  if (request.velocities.empty() == request.displacements.empty()) {
     throw InvalidParameter("give either --velocity V[,V...] (m/s) or --displacement X[,X...] (m)");
   }
-  spec.constant_displacement = !options.displacement.empty();
-  spec.amplitudes = spec.constant_displacement ? parse_number_list(options.displacement, "--displacement")
-                                               : parse_number_list(options.velocity, "--velocity");
-  spec.frequencies = options.frequencies.empty() ? damper::log_spaced(options.fmin, options.fmax, options.points)
-                                                 : parse_number_list(options.frequencies, "--frequencies");
-  spec.solver = options.solver.options();
-  spec.threads = options.threads;
-  spec.validate();
-  return spec;
+  if (!options.frequencies.empty()) request.frequencies = parse_number_list(options.frequencies, "--frequencies");
+  request.grid = {options.fmin, options.fmax, options.points};
+  request.solver = options.solver.settings();
+  request.threads = options.threads;
+  return requests::sweep_spec(request);
 }
 
 std::string impedance_csv(const std::vector<damper::SweepRun>& runs) {
-  io::CsvWriter csv({"frequency_hz", "velocity_m_s", "re_z_n_s_m", "im_z_n_s_m", "abs_z_n_s_m", "phase_deg", "power_w",
-                     "converged", "displacement_m", "dissipated_power_w", "energy_error", "residual", "iterations",
-                     "non_unique"});
-  constexpr double kEmpty = std::numeric_limits<double>::quiet_NaN();
+  io::CsvWriter csv(requests::impedance_columns());
   for (const damper::SweepRun& run : runs) {
-    for (const damper::ImpedancePoint& p : run.points) {
-      const bool ok = p.converged;
-      const std::complex<double> z = p.impedance;
-      csv.add_row({p.frequency_hz, p.velocity_amplitude, ok ? z.real() : kEmpty, ok ? z.imag() : kEmpty,
-                   ok ? std::abs(z) : kEmpty, ok ? std::arg(z) * 180.0 / std::numbers::pi : kEmpty,
-                   ok ? p.power : kEmpty, ok ? 1.0 : 0.0, p.displacement_amplitude, ok ? p.dissipated_power : kEmpty,
-                   ok ? p.energy_error : kEmpty, ok ? p.residual : kEmpty, static_cast<double>(p.iterations),
-                   p.non_unique ? 1.0 : 0.0});
-    }
+    for (const damper::ImpedancePoint& p : run.points) csv.add_row(requests::impedance_row(p));
   }
   return csv.text();
 }
@@ -83,7 +73,7 @@ void draw_progress(int done, int total) {
 
 int run_impedance_command(const ImpedanceOptions& options) {
   const damper::SweepSpec spec = sweep_spec(options);
-  const damper::DamperDescription damper = io::read_damper_file(options.damper_file);
+  const damper::Damper damper = io::read_damper_file(options.damper_file);
   const auto start = std::chrono::steady_clock::now();
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
   const std::vector<damper::SweepRun> runs =
@@ -91,37 +81,36 @@ int run_impedance_command(const ImpedanceOptions& options) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   io::write_file_atomically(options.output, impedance_csv(runs));
 
-  int total = 0, failed = 0, non_unique = 0;
-  double max_energy_error = 0.0;
+  const requests::SweepTally tally = requests::tally(runs);
   std::vector<std::string> failures;
   std::vector<io::JsonObject> failed_json;
   for (const damper::SweepRun& run : runs) {
     for (const damper::ImpedancePoint& p : run.points) {
-      ++total;
-      non_unique += p.non_unique;
-      if (p.converged) {
-        max_energy_error = std::max(max_energy_error, p.energy_error);
-        continue;
-      }
-      ++failed;
-      failures.push_back(fmt::format("  f = {:.4g} Hz, amplitude {}: {}", p.frequency_hz, run.amplitude, p.message));
-      failed_json.push_back(io::JsonObject().add("frequency_hz", p.frequency_hz).add("amplitude", run.amplitude).add("reason", p.message));
+      if (p.converged()) continue;
+      failures.push_back(fmt::format("  f = {:.4g} Hz, amplitude {}: {}", p.frequency_hz, run.amplitude, p.failure));
+      failed_json.push_back(io::JsonObject()
+                                .add("frequency_hz", p.frequency_hz)
+                                .add("amplitude", run.amplitude)
+                                .add("termination", std::string(termination_name(p.termination)))
+                                .add("reason", p.failure));
     }
   }
+  const int failed = tally.points - tally.converged;
   if (options.json) {
     fmt::print("{}\n", io::JsonObject()
-                           .add("method", options.solver.method)
-                           .add("points", total)
-                           .add("converged", total - failed)
-                           .add("non_unique", non_unique)
-                           .add("max_energy_error", max_energy_error)
+                           .add("method", options.solver.method())
+                           .add("points", tally.points)
+                           .add("converged", tally.converged)
+                           .add("non_unique", tally.non_unique)
+                           .add("max_energy_error", tally.max_energy_error.value_or(kNoValue))  // null when none
                            .add("seconds", seconds)
                            .add("failed", failed_json)
                            .str());
   }
-  fmt::print(stderr, "impedance: {} points ({} method) in {:.2f} s, {} converged, largest energy error {:.2g}{}\n", total,
-             options.solver.method, seconds, total - failed, max_energy_error,
-             non_unique ? fmt::format("; {} points flagged non_unique (several steady states)", non_unique) : "");
+  fmt::print(stderr, "impedance: {} points ({} method) in {:.2f} s, {} converged, largest energy error {}{}\n", tally.points,
+             options.solver.method(), seconds, tally.converged,
+             tally.max_energy_error ? fmt::format("{:.2g}", *tally.max_energy_error) : "none (no point converged)",
+             tally.non_unique ? fmt::format("; {} points flagged non_unique (several steady states)", tally.non_unique) : "");
   if (failed == 0) return kSuccess;
   fmt::print(stderr, "impedance: {} points did not converge (converged = 0, numbers left empty in {}):\n", failed,
              options.output);

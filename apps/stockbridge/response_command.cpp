@@ -1,6 +1,7 @@
 // stockbridge response: one steady period of a damper at one frequency and amplitude.
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,10 +16,13 @@
 #include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/solver_settings.hpp"
 
 namespace stockbridge::cli {
 
 namespace {
+
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 struct ResponseOptions {
   std::string damper_file;
@@ -30,30 +34,46 @@ struct ResponseOptions {
   std::string output;
 };
 
-std::string response_csv(const damper::DamperDescription& damper, const damper::Excitation& excitation,
+/// One period of every arm; a point that did not converge is written as its last
+/// iterate with converged = 0, an arm without any period as empty cells.
+std::string response_csv(const damper::Damper& damper, const damper::Excitation& excitation,
                          const damper::DamperSteadyState& state) {
   std::vector<std::string> header{"time_s", "clamp_displacement_m", "clamp_velocity_m_s", "shaker_force_n"};
-  for (std::size_t k = 1; k <= damper.arms.size(); ++k) {
+  for (std::size_t k = 1; k <= damper.arms().size(); ++k) {
     for (const char* column : {"x_m", "phi_rad", "force_n", "clamp_moment_n_m", "tip_moment_n_m",
                                "clamp_curvature_per_m", "clamp_section_moment_n_m"}) {
       header.push_back(fmt::format("arm{}_{}", k, column));
     }
   }
+  header.push_back("converged");
   io::CsvWriter csv(header);
+  Eigen::Index n = 0;
+  bool complete = true;  // every arm has a whole period of the same length
   std::vector<const damper::ArmSolution*> arms;
-  for (const damper::ArmSolution& s : state.arms) arms.push_back(&s);
-  const Eigen::RowVectorXd force = damper::shaker_force(damper, excitation, arms);
-  const Eigen::Index n = force.size();
+  for (const damper::ArmSolution& s : state.arms) {
+    arms.push_back(&s);
+    if (n != 0 && s.period.loads.cols() != n) complete = false;
+    n = std::max(n, s.period.loads.cols());
+  }
+  complete = complete && n > 0;
+  const Eigen::RowVectorXd force = complete ? damper::shaker_force(damper, excitation, arms) : Eigen::RowVectorXd();
+  const std::vector<double> time = damper::time_grid(excitation, static_cast<int>(n));
   const double w = excitation.angular_frequency(), x = excitation.displacement_amplitude;
   std::vector<double> row;
   for (Eigen::Index j = 0; j < n; ++j) {
-    const double t = excitation.period() * static_cast<double>(j) / static_cast<double>(n);
-    row = {t, x * std::sin(w * t), w * x * std::cos(w * t), force(j)};
+    const double t = time[static_cast<std::size_t>(j)];
+    row = {t, x * std::sin(w * t), w * x * std::cos(w * t), complete ? force(j) : kNoValue};
     for (const damper::ArmSolution& s : state.arms) {
       const damper::ArmPeriod& p = s.period;
-      row.insert(row.end(), {p.kinematics(0, j), p.kinematics(1, j), p.loads(0, j), p.clamp_moment[j], p.loads(1, j),
-                             p.clamp_curvature[j], p.clamp_section_moment[j]});
+      if (j >= p.loads.cols()) {
+        row.insert(row.end(), 7, kNoValue);
+        continue;
+      }
+      const auto i = static_cast<std::size_t>(j);
+      row.insert(row.end(), {p.kinematics(0, j), p.kinematics(1, j), p.loads(0, j), p.clamp_moment[i], p.loads(1, j),
+                             p.clamp_curvature[i], p.clamp_section_moment[i]});
     }
+    row.push_back(state.point.converged() ? 1.0 : 0.0);
     csv.add_row(row);
   }
   return csv.text();
@@ -67,26 +87,30 @@ int run_response_command(const ResponseOptions& options) {
       options.velocity > 0.0 ? damper::Excitation::from_velocity(options.frequency, options.velocity)
                              : damper::Excitation{options.frequency, options.displacement};
   excitation.validate();
-  const damper::SolverOptions solver = options.solver.options();
-  const damper::DamperDescription damper = io::read_damper_file(options.damper_file);
+  const damper::SolverOptions solver = requests::solver_options(options.solver.settings());
+  const damper::Damper damper = io::read_damper_file(options.damper_file);
   const damper::DamperSteadyState state = damper::solve_steady_state(damper, excitation, solver);
   const damper::ImpedancePoint& p = state.point;
-  if (!p.converged) {
-    fmt::print(stderr, "response: no steady state at {} Hz: {}\n", options.frequency, p.message);
-    return kNotConverged;
-  }
+  // Written even when not converged (the last iterate, marked), so that it can be inspected.
   io::write_file_atomically(options.output, response_csv(damper, excitation, state));
   if (options.json) {
     fmt::print("{}\n", io::JsonObject()
                            .add("frequency_hz", p.frequency_hz)
                            .add("velocity_m_s", p.velocity_amplitude)
                            .add("displacement_m", p.displacement_amplitude)
-                           .add("re_z_n_s_m", p.impedance.real())
-                           .add("im_z_n_s_m", p.impedance.imag())
-                           .add("power_w", p.power)
-                           .add("dissipated_power_w", p.dissipated_power)
+                           .add("converged", p.converged())
+                           .add("termination", termination_name(p.termination))
+                           .add("re_z_n_s_m", p.converged() ? p.impedance.real() : kNoValue)
+                           .add("im_z_n_s_m", p.converged() ? p.impedance.imag() : kNoValue)
+                           .add("power_w", p.converged() ? p.power : kNoValue)
+                           .add("dissipated_power_w", p.converged() ? p.dissipated_power : kNoValue)
                            .add("energy_error", p.energy_error)
                            .str());
+  }
+  if (!p.converged()) {
+    fmt::print(stderr, "response: no steady state at {} Hz: {}; {} holds the last iterate, not a solution\n",
+               options.frequency, p.failure, options.output);
+    return kNotConverged;
   }
   fmt::print(stderr, "response: {} Hz, V = {:.4g} m/s: Z = {:.5g} {:+.5g}i N s/m, P = {:.4g} W (sliders {:.4g} W)\n",
              p.frequency_hz, p.velocity_amplitude, p.impedance.real(), p.impedance.imag(), p.power, p.dissipated_power);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/requests/sweep_request.hpp"
 #include "stockbridge/strand/strand_bounds.hpp"
 
 namespace py = pybind11;
@@ -30,152 +32,150 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 py::array_t<double> array(const std::vector<double>& values) { return py::array_t<double>(values.size(), values.data()); }
 
-py::array_t<double> matrix(const std::vector<std::vector<double>>& rows) {
-  const std::size_t n = rows.size(), m = rows.empty() ? 0 : rows.front().size();
-  py::array_t<double> out({n, m});
-  auto view = out.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < m; ++j) view(i, j) = rows[i][j];
-  }
-  return out;
-}
-
 std::vector<double> amplitudes_of(const py::object& value) {
   if (value.is_none()) return {};
   if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) return {value.cast<double>()};
   return value.cast<std::vector<double>>();
 }
 
-damper::SolverOptions solver_options(const std::string& method, int harmonics, int samples) {
-  damper::SolverOptions options;
-  options.method = damper::parse_method(method);
-  options.harmonic_balance.harmonics = harmonics;
-  options.harmonic_balance.samples = samples;
-  options.validate();
-  return options;
+/// The CLI's solver flags by the same names (None: the method's default).
+requests::SolverSettings solver_settings(const std::string& method, std::optional<int> harmonics,
+                                         std::optional<int> samples, std::optional<int> steps,
+                                         std::optional<int> max_iterations, std::optional<int> max_periods,
+                                         std::optional<double> energy_tolerance) {
+  return {method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance};
 }
 
-py::dict impedance(const damper::DamperDescription& d, const std::vector<double>& frequencies, const py::object& velocity,
-                   const py::object& displacement, const std::string& method, int harmonics, int samples, int threads) {
-  damper::SweepSpec spec;
-  const std::vector<double> v = amplitudes_of(velocity), x = amplitudes_of(displacement);
-  if (v.empty() == x.empty()) throw InvalidParameter("give either velocity (m/s) or displacement (m), a value or a list");
-  spec.constant_displacement = !x.empty();
-  spec.amplitudes = spec.constant_displacement ? x : v;
-  spec.frequencies = frequencies;
-  spec.solver = solver_options(method, harmonics, samples);
-  spec.threads = threads;
+py::dict impedance(const damper::Damper& d, const std::optional<std::vector<double>>& frequencies,
+                   const py::object& velocity, const py::object& displacement, double fmin, double fmax, int points,
+                   const std::string& method, std::optional<int> harmonics, std::optional<int> samples,
+                   std::optional<int> steps, std::optional<int> max_iterations, std::optional<int> max_periods,
+                   std::optional<double> energy_tolerance, int threads) {
+  requests::SweepRequest request;
+  request.velocities = amplitudes_of(velocity);
+  request.displacements = amplitudes_of(displacement);
+  if (frequencies) {
+    if (frequencies->empty()) throw InvalidParameter("frequencies", ": an empty list, expected at least one frequency (Hz)");
+    request.frequencies = *frequencies;
+  }
+  request.grid = {fmin, fmax, points};
+  request.solver =
+      solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance);
+  request.threads = threads;
+  const damper::SweepSpec spec = requests::sweep_spec(request);
   std::vector<damper::SweepRun> runs;
   {
     py::gil_scoped_release release;
     runs = damper::run_sweep(d, spec);
   }
-  const std::size_t na = runs.size(), nf = frequencies.size();
-  std::vector<std::vector<double>> re(na), im(na), power(na), dissipated(na), energy(na), residual(na), vel(na), disp(na);
+  const std::vector<std::string>& columns = requests::impedance_columns();
+  const std::size_t na = runs.size(), nf = spec.frequencies.size();
+  std::vector<py::array_t<double>> arrays;
+  for (std::size_t c = 0; c < columns.size(); ++c) arrays.emplace_back(std::vector<std::size_t>{na, nf});
   py::array_t<bool> converged({na, nf}), non_unique({na, nf});
-  auto c = converged.mutable_unchecked<2>();
-  auto u = non_unique.mutable_unchecked<2>();
-  py::list messages;
+  auto ok = converged.mutable_unchecked<2>();
+  auto several = non_unique.mutable_unchecked<2>();
+  py::list terminations, messages;
   for (std::size_t a = 0; a < na; ++a) {
-    py::list row;
+    py::list termination_row, message_row;
     for (std::size_t i = 0; i < nf; ++i) {
       const damper::ImpedancePoint& p = runs[a].points[i];
-      re[a].push_back(p.converged ? p.impedance.real() : kNaN);
-      im[a].push_back(p.converged ? p.impedance.imag() : kNaN);
-      power[a].push_back(p.converged ? p.power : kNaN);
-      dissipated[a].push_back(p.converged ? p.dissipated_power : kNaN);
-      energy[a].push_back(p.converged ? p.energy_error : kNaN);
-      residual[a].push_back(p.converged ? p.residual : kNaN);
-      vel[a].push_back(p.velocity_amplitude);
-      disp[a].push_back(p.displacement_amplitude);
-      c(a, i) = p.converged;
-      u(a, i) = p.non_unique;
-      row.append(p.message);
+      const std::vector<double> row = requests::impedance_row(p);
+      for (std::size_t c = 0; c < columns.size(); ++c) arrays[c].mutable_at(a, i) = row[c];
+      ok(a, i) = p.converged();
+      several(a, i) = p.non_unique;
+      termination_row.append(std::string(termination_name(p.termination)));
+      message_row.append(p.converged() ? p.note : p.failure);
     }
-    messages.append(row);
+    terminations.append(termination_row);
+    messages.append(message_row);
   }
   py::dict out;
-  out["frequency_hz"] = array(frequencies);
+  for (std::size_t c = 0; c < columns.size(); ++c) out[py::str(columns[c])] = arrays[c];
+  out["frequency_hz"] = array(spec.frequencies);
   out["amplitude"] = array(spec.amplitudes);
-  out["velocity_m_s"] = matrix(vel);
-  out["displacement_m"] = matrix(disp);
-  out["re_z_n_s_m"] = matrix(re);
-  out["im_z_n_s_m"] = matrix(im);
-  out["power_w"] = matrix(power);
-  out["dissipated_power_w"] = matrix(dissipated);
-  out["energy_error"] = matrix(energy);
-  out["residual"] = matrix(residual);
   out["converged"] = converged;
   out["non_unique"] = non_unique;
+  out["termination"] = terminations;
   out["messages"] = messages;
   return out;
 }
 
-py::dict response(const damper::DamperDescription& d, double frequency, const py::object& velocity,
-                  const py::object& displacement, const std::string& method, int harmonics, int samples) {
+/// Per-arm rows (arms x samples) of one field of the arms' periods; NaN where an arm has no period.
+template <class Field>
+py::array_t<double> per_arm(const damper::DamperSteadyState& state, std::size_t n, Field field) {
+  py::array_t<double> out({state.arms.size(), n});
+  auto view = out.mutable_unchecked<2>();
+  for (std::size_t k = 0; k < state.arms.size(); ++k) {
+    const damper::ArmPeriod& p = state.arms[k].period;
+    for (std::size_t j = 0; j < n; ++j) {
+      view(k, j) = j < static_cast<std::size_t>(p.loads.cols()) ? field(p, static_cast<Eigen::Index>(j)) : kNaN;
+    }
+  }
+  return out;
+}
+
+py::dict response(const damper::Damper& d, double frequency, const py::object& velocity, const py::object& displacement,
+                  const std::string& method, std::optional<int> harmonics, std::optional<int> samples,
+                  std::optional<int> steps, std::optional<int> max_iterations, std::optional<int> max_periods,
+                  std::optional<double> energy_tolerance) {
   const std::vector<double> v = amplitudes_of(velocity), x = amplitudes_of(displacement);
   if (v.size() + x.size() != 1) throw InvalidParameter("give either velocity (m/s) or displacement (m), one value");
   const damper::Excitation e = v.empty() ? damper::Excitation{frequency, x[0]} : damper::Excitation::from_velocity(frequency, v[0]);
   e.validate();
-  const damper::SolverOptions options = solver_options(method, harmonics, samples);
+  const damper::SolverOptions options = requests::solver_options(
+      solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance));
   damper::DamperSteadyState state;
   {
     py::gil_scoped_release release;
     state = damper::solve_steady_state(d, e, options);
   }
-  if (!state.point.converged) throw NumericalError("no steady state: " + state.point.message);
-  std::vector<const damper::ArmSolution*> arms;
-  for (const auto& s : state.arms) arms.push_back(&s);
-  const Eigen::RowVectorXd force = damper::shaker_force(d, e, arms);
-  const std::size_t n = static_cast<std::size_t>(force.size());
-  std::vector<double> time(n), clamp(n), shaker(force.data(), force.data() + n);
-  for (std::size_t j = 0; j < n; ++j) {
-    time[j] = e.period() * static_cast<double>(j) / static_cast<double>(n);
-    clamp[j] = e.displacement_amplitude * std::sin(e.angular_frequency() * time[j]);
-  }
-  std::vector<std::vector<double>> xs, phis, fs, ts, qs, ks, ms;
-  for (const auto& s : state.arms) {
-    const damper::ArmPeriod& p = s.period;
-    std::vector<double> x_row(n), phi_row(n), f_row(n), q_row(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      x_row[j] = p.kinematics(0, static_cast<Eigen::Index>(j));
-      phi_row[j] = p.kinematics(1, static_cast<Eigen::Index>(j));
-      f_row[j] = p.loads(0, static_cast<Eigen::Index>(j));
-      q_row[j] = p.loads(1, static_cast<Eigen::Index>(j));
-    }
-    xs.push_back(x_row);
-    phis.push_back(phi_row);
-    fs.push_back(f_row);
-    qs.push_back(q_row);
-    ts.push_back(p.clamp_moment);
-    ks.push_back(p.clamp_curvature);
-    ms.push_back(p.clamp_section_moment);
+  const damper::ImpedancePoint& point = state.point;
+  std::size_t n = 0;
+  for (const auto& s : state.arms) n = std::max(n, static_cast<std::size_t>(s.period.loads.cols()));
+  const std::vector<double> time = damper::time_grid(e, static_cast<int>(n));
+  std::vector<double> clamp(n), shaker(n, kNaN);
+  for (std::size_t j = 0; j < n; ++j) clamp[j] = e.displacement_amplitude * std::sin(e.angular_frequency() * time[j]);
+  if (point.converged()) {
+    std::vector<const damper::ArmSolution*> arms;
+    for (const auto& s : state.arms) arms.push_back(&s);
+    const Eigen::RowVectorXd force = damper::shaker_force(d, e, arms);
+    shaker.assign(force.data(), force.data() + force.size());
   }
   py::dict out;
   out["time_s"] = array(time);
   out["clamp_displacement_m"] = array(clamp);
   out["shaker_force_n"] = array(shaker);
-  out["x_m"] = matrix(xs);
-  out["phi_rad"] = matrix(phis);
-  out["force_n"] = matrix(fs);
-  out["clamp_moment_n_m"] = matrix(ts);
-  out["tip_moment_n_m"] = matrix(qs);
-  out["clamp_curvature_per_m"] = matrix(ks);
-  out["clamp_section_moment_n_m"] = matrix(ms);
-  out["impedance"] = std::complex<double>(state.point.impedance);
-  out["power_w"] = state.point.power;
-  out["dissipated_power_w"] = state.point.dissipated_power;
+  out["x_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) { return p.kinematics(0, j); });
+  out["phi_rad"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) { return p.kinematics(1, j); });
+  out["force_n"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) { return p.loads(0, j); });
+  out["tip_moment_n_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) { return p.loads(1, j); });
+  out["clamp_moment_n_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) {
+    return p.clamp_moment[static_cast<std::size_t>(j)];
+  });
+  out["clamp_curvature_per_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) {
+    return p.clamp_curvature[static_cast<std::size_t>(j)];
+  });
+  out["clamp_section_moment_n_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) {
+    return p.clamp_section_moment[static_cast<std::size_t>(j)];
+  });
+  out["converged"] = point.converged();
+  out["termination"] = std::string(termination_name(point.termination));
+  out["message"] = point.converged() ? point.note : point.failure;
+  out["impedance"] = point.converged() ? point.impedance : std::complex<double>(kNaN, kNaN);
+  out["power_w"] = point.converged() ? point.power : kNaN;
+  out["dissipated_power_w"] = point.converged() ? point.dissipated_power : kNaN;
+  out["energy_error"] = point.energy_error;
   return out;
 }
 
-py::dict cycle(const cable::CableDescription& description, const std::string& experiment, double amplitude, int cycles,
-               int points) {
+py::dict cycle(const cable::Cable& cable, const std::string& experiment, double amplitude, int cycles, int points) {
   cable::ExperimentDrive drive{cable::parse_experiment(experiment), amplitude, cycles, points};
   drive.validate();
   cable::ExperimentRecord record;
   {
     py::gil_scoped_release release;
-    cable::Cantilever cantilever{cable::Cable(description)};
+    cable::Cantilever cantilever{cable};
     record = cable::run_experiment(cantilever, drive);
   }
   std::vector<double> x, phi, f, t, q, w;
@@ -183,7 +183,7 @@ py::dict cycle(const cable::CableDescription& description, const std::string& ex
   auto c = converged.mutable_unchecked<1>();
   for (std::size_t k = 0; k < record.samples.size(); ++k) {
     const cable::ExperimentSample& s = record.samples[k];
-    const bool ok = s.solve.converged;
+    const bool ok = s.solve.converged();
     x.push_back(ok ? s.deflection : kNaN);
     phi.push_back(ok ? s.rotation : kNaN);
     f.push_back(ok ? s.tip_force : kNaN);
@@ -259,7 +259,7 @@ py::dict identify_global(const std::string& experiment, double length, const std
   out["ei"] = fit.cable.ei.at(0.0);
   out["jenkin"] = jenkin_list(c_h);
   out["error"] = fit.error;
-  out["cable"] = fit.cable;
+  out["cable"] = cable::Cable(fit.cable);
   return out;
 }
 
@@ -286,15 +286,25 @@ PYBIND11_MODULE(_core, m) {
     }
   });
 
-  py::class_<cable::CableDescription>(m, "Cable", "A cable description (length, sections, Masing parameters)")
-      .def_readonly("length", &cable::CableDescription::length, "m")
-      .def_readonly("sections", &cable::CableDescription::sections)
-      .def_property_readonly("ei", [](const cable::CableDescription& c) { return c.ei.at(0.0); }, "N m^2 (at the clamp)");
-  py::class_<damper::DamperDescription>(m, "Damper", "A damper description (clamp mass and arms)")
-      .def_readonly("clamp_mass", &damper::DamperDescription::clamp_mass, "kg")
-      .def_property_readonly("arms", [](const damper::DamperDescription& d) {
+  py::class_<cable::Cable>(m, "Cable", "A cable (length, sections, Masing parameters), validated and discretised")
+      .def_property_readonly("length", &cable::Cable::length, "m")
+      .def_property_readonly("sections", [](const cable::Cable& c) { return c.description().sections; })
+      .def_property_readonly("ei", [](const cable::Cable& c) { return c.description().ei.at(0.0); }, "N m^2 (at the clamp)")
+      .def_property_readonly(
+          "jenkin",
+          [](const cable::Cable& c) {
+            std::vector<std::pair<double, double>> c_h;
+            for (const auto& e : c.description().jenkin) c_h.emplace_back(e.c.at(0.0), e.h.at(0.0));
+            return jenkin_list(c_h);
+          },
+          "[{'c': N m^2, 'h': N m}, ...] (at the clamp)")
+      .def("toml", [](const cable::Cable& c) { return io::cable_table_toml(c.description()); },
+           "The keys of a [cable] table for this cable (what cable and damper files accept).");
+  py::class_<damper::Damper>(m, "Damper", "A damper (clamp mass and arms), validated")
+      .def_property_readonly("clamp_mass", &damper::Damper::clamp_mass, "kg")
+      .def_property_readonly("arms", [](const damper::Damper& d) {
         py::list names;
-        for (const auto& a : d.arms) names.append(a.name);
+        for (std::size_t k = 0; k < d.arms().size(); ++k) names.append(d.arm_name(k));
         return names;
       });
 
@@ -302,42 +312,24 @@ PYBIND11_MODULE(_core, m) {
         "Read a cable TOML file.");
   m.def("load_damper", [](const std::string& path) { return io::read_damper_file(path); }, py::arg("path"),
         "Read a damper TOML file.");
-  m.def(
-      "make_cable",
-      [](double length, int sections, double ei, const std::vector<std::pair<double, double>>& jenkin) {
-        cable::CableDescription d = cable::CableDescription::uniform(length, sections, ei, jenkin);
-        d.validate();
-        return d;
-      },
-      py::arg("length"), py::arg("sections") = 40, py::arg("ei"), py::arg("jenkin") = std::vector<std::pair<double, double>>{},
-      "A cable with constant parameters: jenkin = [(c, h), ...] in N m^2 and N m.");
-  m.def(
-      "make_damper",
-      [](double clamp_mass, const std::vector<py::dict>& arms) {
-        damper::DamperDescription d;
-        d.clamp_mass = clamp_mass;
-        for (const py::dict& a : arms) {
-          damper::ArmDescription arm;
-          arm.name = a.contains("name") ? a["name"].cast<std::string>() : "arm" + std::to_string(d.arms.size() + 1);
-          arm.mass = a["mass"].cast<double>();
-          arm.inertia = a["inertia"].cast<double>();
-          arm.offset = a["offset"].cast<double>();
-          arm.cable = a["cable"].cast<cable::CableDescription>();
-          d.arms.push_back(arm);
-        }
-        d.validate();
-        return d;
-      },
-      py::arg("clamp_mass"), py::arg("arms"),
-      "A damper from arms given as dicts {name, mass, inertia, offset, cable} (kg, kg m^2, m, Cable).");
-  m.def("impedance", &impedance, py::arg("damper"), py::arg("frequencies"), py::arg("velocity") = py::none(),
-        py::arg("displacement") = py::none(), py::arg("method") = "hb", py::arg("harmonics") = 9, py::arg("samples") = 0,
-        py::arg("threads") = 1,
-        "Z(f, amplitude): arrays of shape (amplitudes, frequencies); NaN where a point did not converge "
-        "(see 'converged' and 'messages').");
+  m.def("_cable_from_toml", &io::read_cable_text, py::arg("text"), py::arg("source"),
+        "A cable from TOML text (make_cable builds it): the cable file reader's keys, checks and messages.");
+  m.def("_damper_from_toml", &io::read_damper_text, py::arg("text"), py::arg("source"),
+        "A damper from TOML text (make_damper builds it): the damper file reader's keys, checks and messages.");
+  m.def("impedance", &impedance, py::arg("damper"), py::arg("frequencies") = py::none(), py::arg("velocity") = py::none(),
+        py::arg("displacement") = py::none(), py::arg("fmin") = 1.0, py::arg("fmax") = 100.0, py::arg("points") = 200,
+        py::arg("method") = "hb", py::arg("harmonics") = py::none(), py::arg("samples") = py::none(),
+        py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(), py::arg("max_periods") = py::none(),
+        py::arg("energy_tolerance") = py::none(), py::arg("threads") = 1,
+        "Z(f, amplitude) over `frequencies` (or fmin..fmax, `points` log-spaced): arrays of shape (amplitudes, "
+        "frequencies) named as the impedance CSV's columns; NaN where a point did not converge (see 'converged', "
+        "'termination' and 'messages'). Solver settings left None take the method's default.");
   m.def("response", &response, py::arg("damper"), py::arg("frequency"), py::arg("velocity") = py::none(),
-        py::arg("displacement") = py::none(), py::arg("method") = "hb", py::arg("harmonics") = 9, py::arg("samples") = 0,
-        "One steady period; per-arm arrays have shape (arms, samples).");
+        py::arg("displacement") = py::none(), py::arg("method") = "hb", py::arg("harmonics") = py::none(),
+        py::arg("samples") = py::none(), py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(),
+        py::arg("max_periods") = py::none(), py::arg("energy_tolerance") = py::none(),
+        "One steady period; per-arm arrays have shape (arms, samples). A point that did not converge is returned "
+        "as its last iterate with converged = False, its termination and message (NaN where nothing was computed).");
   m.def("cycle", &cycle, py::arg("cable"), py::arg("experiment"), py::arg("amplitude"), py::arg("cycles") = 2,
         py::arg("points") = 400, "Experiment 'a' (tip force) or 'b' (tip rotation) on a cable.");
   m.def("identify_local", &identify_local, py::arg("curvature"), py::arg("moment"), py::arg("elements") = 1,

@@ -8,9 +8,48 @@ built by the CMake project) and adds plots (``python3 -m stockbridge.plot``).
     z = sb.impedance(damper, [10.0, 20.0], velocity=[0.2, 0.05])
 """
 
+from . import _toml
+
 try:
     from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, cycle,  # noqa: F401
-                        identify_global, identify_local, impedance, load_cable, load_damper, make_cable,
-                        make_damper, response, strand_bounds)
+                        identify_global, identify_local, impedance, load_cable, load_damper, response,
+                        strand_bounds)
+    from ._core import _cable_from_toml, _damper_from_toml
 except ImportError:  # the plots work from the source tree without the compiled module
     pass
+
+
+def _from_values(build, text, source):
+    """The library's reader on text made from Python values: its errors name the
+    values, not a file, so they are InvalidParameter (a ValueError)."""
+    try:
+        return build(text, source)
+    except InputError as error:
+        raise InvalidParameter(str(error)) from None
+
+
+def make_cable(length, sections=40, ei=None, jenkin=(), **keys):
+    """A cable with the keys of a cable file's [cable] table: length (m), ei (N m^2),
+    jenkin = [(c, h), ...] or [{"c": ..., "h": ..., "k0": ...}, ...] (N m^2, N m),
+    sections, and optionally mirror_length, lever_arm_cap; any value may be a profile
+    {"s": [...], "value": [...]}. Checked exactly as a cable file is (a misspelt or
+    missing key, a bad value: InputError naming it)."""
+    elements = [e if isinstance(e, dict) else {"c": e[0], "h": e[1]} for e in jenkin]
+    entries = {"length": length, "sections": sections, "jenkin": elements, **keys}
+    if ei is not None:
+        entries["ei"] = ei
+    return _from_values(_cable_from_toml, _toml.table("cable", entries), "make_cable")
+
+
+def make_damper(clamp_mass, arms):
+    """A damper from arms given as dicts {name, mass, inertia, offset, cable} (kg,
+    kg m^2, m; cable a Cable or a dict of a cable table's keys). Checked exactly as
+    a damper file is (a misspelt or missing key, a bad value: InputError naming it)."""
+    text = _toml.table("clamp", {"mass": clamp_mass})
+    for arm in arms:
+        arm = dict(arm)
+        cable = arm.pop("cable", None)
+        text += "[[arm]]\n" + "".join(f"{_toml.key(k)} = {_toml.value(v)}\n" for k, v in arm.items())
+        if cable is not None:
+            text += _toml.table("arm.cable", cable)
+    return _from_values(_damper_from_toml, text, "make_damper")

@@ -266,13 +266,24 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
   double norm = residual.norm();
   while (true) {
     if (norm <= options_.tolerance * scale) {
-      result.converged = true;
+      result.termination = Termination::converged;
       break;
     }
-    if (result.iterations == options_.max_iterations || !std::isfinite(norm)) break;
-    ++result.iterations;
+    if (!std::isfinite(norm)) {
+      result.termination = Termination::non_finite;
+      break;
+    }
+    if (result.newton_iterations == options_.max_iterations) {
+      result.termination = Termination::max_iterations;
+      break;
+    }
+    ++result.newton_iterations;
     const VectorK step = -scaled_jacobian(trial.flexibility).inverse() * residual;
-    if (!step.allFinite()) break;  // a singular flexibility: reported as not converged
+    if (!step.allFinite()) {  // a singular flexibility
+      result.termination = Termination::singular_jacobian;
+      result.reciprocal_condition = 0.0;
+      break;
+    }
     bool accepted = false;
     double alpha = 1.0;
     for (int halving = 0; halving <= options_.max_halvings; ++halving, alpha *= 0.5) {
@@ -288,7 +299,10 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
         break;
       }
     }
-    if (!accepted) break;
+    if (!accepted) {
+      result.termination = Termination::line_search_failed;
+      break;
+    }
   }
   result.residual = norm;
   return result;

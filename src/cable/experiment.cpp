@@ -47,9 +47,9 @@ ExperimentSummary summarise(const std::vector<ExperimentSample>& samples, const 
   summary.min_tip_force = summary.min_clamp_moment = summary.min_deflection = summary.min_rotation = kInf;
   long long iterations = 0;
   for (const ExperimentSample& s : samples) {
-    iterations += s.solve.iterations;
-    summary.max_iterations = std::max(summary.max_iterations, s.solve.iterations);
-    if (!s.solve.converged) {
+    iterations += s.solve.newton_iterations;
+    summary.max_iterations = std::max(summary.max_iterations, s.solve.newton_iterations);
+    if (!s.solve.converged()) {
       ++summary.failed_samples;
       continue;
     }
@@ -69,7 +69,7 @@ ExperimentSummary summarise(const std::vector<ExperimentSample>& samples, const 
   const ExperimentSample* previous = nullptr;
   for (std::size_t k = begin; k <= end; ++k) {
     const ExperimentSample& s = samples[k];
-    if (!s.solve.converged) continue;
+    if (!s.solve.converged()) continue;
     if (previous) {
       const double work = 0.5 * (s.tip_force + previous->tip_force) * (s.deflection - previous->deflection) +
                           0.5 * (s.tip_moment + previous->tip_moment) * (s.rotation - previous->rotation);
@@ -85,7 +85,7 @@ ExperimentSummary summarise(const std::vector<ExperimentSample>& samples, const 
   }
   summary.slider_dissipation = previous ? summary.slider_dissipation + previous->dissipated : 0.0;
   if (std::any_of(samples.begin() + static_cast<std::ptrdiff_t>(begin), samples.end(),
-                  [](const ExperimentSample& s) { return !s.solve.converged; })) {
+                  [](const ExperimentSample& s) { return !s.solve.converged(); })) {
     // A gap in the loop: its energies would be numbers nobody can trust.
     summary.slider_dissipation = summary.loop_work = summary.measured_loop_area =
         std::numeric_limits<double>::quiet_NaN();
@@ -103,7 +103,7 @@ std::vector<ExperimentSample> run_path(Cantilever& cantilever, Experiment experi
     const StateDetermination solve =
         experiment == Experiment::a ? cantilever.set_trial_deflection(value) : cantilever.set_trial_rotation(value);
     samples.push_back(sample_of(cantilever, solve));
-    if (solve.converged) {
+    if (solve.converged()) {
       cantilever.commit();
     } else {
       cantilever.revert_to_last_commit();

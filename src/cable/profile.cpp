@@ -13,8 +13,9 @@ Profile Profile::constant(double value) { return Profile({0.0}, {value}); }
 
 Profile Profile::table(std::vector<double> positions, std::vector<double> values, std::string_view name) {
   if (positions.empty() || positions.size() != values.size()) {
-    throw InvalidParameter(fmt::format("{}: a table needs as many values as positions, at least one ({} positions, {} values)",
-                                       name, positions.size(), values.size()));
+    throw InvalidParameter(std::string(name),
+                           fmt::format(": a table needs as many values as positions, at least one ({} positions, {} values)",
+                                       positions.size(), values.size()));
   }
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const std::string key = fmt::format("{}.s[{}]", name, i);

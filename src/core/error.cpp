@@ -6,6 +6,17 @@
 
 namespace stockbridge {
 
+InvalidParameter::InvalidParameter(std::string field, std::string detail)
+    : Error(field + detail), field_(std::move(field)), detail_(std::move(detail)) {}
+
+InvalidParameter::InvalidParameter(const std::string& message) : Error(message), detail_(message) {}
+
+InvalidParameter InvalidParameter::within(std::string_view parent) const {
+  if (field_.empty()) return InvalidParameter(std::string(parent), ": " + detail_);
+  const std::string joined = field_.front() == '[' ? fmt::format("{}{}", parent, field_) : fmt::format("{}.{}", parent, field_);
+  return InvalidParameter(joined, detail_);
+}
+
 std::string format_value(double value) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
@@ -38,7 +49,7 @@ std::string printable(std::string_view text, std::size_t max_bytes) {
 }
 
 void throw_invalid(std::string_view name, double value, std::string_view expected) {
-  throw InvalidParameter(fmt::format("{} = {}: expected {}", name, format_value(value), expected));
+  throw InvalidParameter(std::string(name), fmt::format(" = {}: expected {}", format_value(value), expected));
 }
 
 namespace {
@@ -76,7 +87,7 @@ void require_finite(std::string_view name, double value, std::string_view unit) 
 
 void require_in_range(std::string_view name, long long value, long long lo, long long hi) {
   if (value < lo || value > hi) {
-    throw InvalidParameter(fmt::format("{} = {}: expected an integer from {} to {}", name, value, lo, hi));
+    throw InvalidParameter(std::string(name), fmt::format(" = {}: expected an integer from {} to {}", value, lo, hi));
   }
 }
 

@@ -11,44 +11,61 @@
 
 namespace stockbridge::damper {
 
-void ArmDescription::validate(std::string_view name_in_messages) const {
-  const std::string p(name_in_messages);
-  require_plausible(p + ".mass", mass, "kg");
-  require_plausible(p + ".inertia", inertia, "kg m^2");
-  require_finite(p + ".offset", offset, "m");
-  if (std::isfinite(cable.length) && cable.length > 0.0 && !(std::abs(offset) < cable.length)) {
-    throw_invalid(p + ".offset", offset,
-                  fmt::format("|offset| < the cable length {} m (the centre of gravity lies on the arm)", cable.length));
-  }
-  try {
-    cable.validate();
-  } catch (const InvalidParameter& e) {
-    throw InvalidParameter(fmt::format("{}.cable.{}", p, e.what()));
-  }
-}
-
 bool ArmDescription::same_mechanics(const ArmDescription& other) const {
   return mass == other.mass && inertia == other.inertia && offset == other.offset && cable == other.cable;
 }
 
-void DamperDescription::validate() const {
-  require_plausible_or_zero("clamp.mass", clamp_mass, "kg");
-  if (arms.empty()) throw InvalidParameter("arm: expected at least one arm");
-  for (std::size_t k = 0; k < arms.size(); ++k) arms[k].validate(fmt::format("arm[{}]", k));
-}
-
 namespace {
-ArmDescription validated(ArmDescription d) {
-  d.validate(d.name.empty() ? "arm" : d.name);
+
+/// The arm's own numbers (the cable validates itself when it is built).
+ArmDescription validated_arm(ArmDescription d) {
+  require_plausible("mass", d.mass, "kg");
+  require_plausible("inertia", d.inertia, "kg m^2");
+  require_finite("offset", d.offset, "m");
   return d;
 }
+
+void require_offset_on_arm(double offset, double length) {
+  if (!(std::abs(offset) < length)) {
+    throw_invalid("offset", offset,
+                  fmt::format("|offset| < the cable length {} m (the centre of gravity lies on the arm)", length));
+  }
+}
+
 }  // namespace
 
 Arm::Arm(ArmDescription description)
-    : description_(validated(std::move(description))), cable_(description_.cable) {
+    : description_(validated_arm(std::move(description))),
+      cable_(within_field("cable", [&] { return cable::Cable(description_.cable); })) {
+  require_offset_on_arm(description_.offset, cable_.length());
   const double m = description_.mass, b = description_.offset;
   mass_matrix_ << m, -m * b, -m * b, description_.inertia + m * b * b;
   load_vector_ << -m, m * b;
+}
+
+Damper::Damper(DamperDescription description) : description_(std::move(description)) {
+  require_plausible_or_zero("clamp.mass", description_.clamp_mass, "kg");
+  if (description_.arms.empty()) throw InvalidParameter("arm", ": expected at least one arm");
+  arms_.reserve(description_.arms.size());
+  for (std::size_t k = 0; k < description_.arms.size(); ++k) {
+    arms_.push_back(within_field(fmt::format("arm[{}]", k), [&] { return Arm(description_.arms[k]); }));
+  }
+  representative_.resize(arms_.size());
+  for (std::size_t k = 0; k < arms_.size(); ++k) {
+    representative_[k] = k;
+    for (std::size_t j = 0; j < k; ++j) {
+      if (description_.arms[k].same_mechanics(description_.arms[j])) {
+        representative_[k] = representative_[j];
+        break;
+      }
+    }
+    if (representative_[k] == k) distinct_.push_back(k);
+  }
+}
+
+std::string Damper::arm_name(std::size_t k) const {
+  const std::string& name = description_.arms[k].name;
+  return name.empty() ? fmt::format("arm {}", k + 1) : name;
 }
 
 Eigen::Matrix2d Arm::stick_stiffness() const {

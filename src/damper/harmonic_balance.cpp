@@ -1,6 +1,7 @@
 #include "stockbridge/damper/harmonic_balance.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -51,11 +52,8 @@ int determinant_sign(const Eigen::MatrixXd& jacobian) {
 }
 }  // namespace
 
-HarmonicBalance::HarmonicBalance(const Arm& arm, HarmonicBalanceOptions options)
-    : arm_(arm),
-      options_(validated(options)),
-      samples_(options_.sample_count()),
-      cable_(arm.cable(), options_.cantilever) {
+HarmonicBalance::HarmonicBalance(Arm arm, HarmonicBalanceOptions options)
+    : arm_(std::move(arm)), options_(validated(options)), samples_(options_.sample_count()) {
   const int c_count = 2 * options_.harmonics + 1;
   basis_.resize(samples_, c_count);
   projection_.resize(c_count, samples_);
@@ -72,6 +70,10 @@ HarmonicBalance::HarmonicBalance(const Arm& arm, HarmonicBalanceOptions options)
   }
 }
 
+HarmonicBalanceWorkspace HarmonicBalance::make_workspace() const {
+  return HarmonicBalanceWorkspace{PeriodicCable(arm_.cable(), options_.cantilever), Eigen::MatrixXd()};
+}
+
 double HarmonicBalance::force_scale(const Excitation& excitation) const {
   const double w = excitation.angular_frequency();
   return arm_.description().mass * w * w * excitation.displacement_amplitude;
@@ -86,65 +88,58 @@ Eigen::VectorXd HarmonicBalance::linear_guess(const Excitation& excitation) cons
   return q;
 }
 
-bool HarmonicBalance::residual(const Excitation& excitation, const Eigen::VectorXd& q, int periods, Eigen::VectorXd& r,
-                               Eigen::MatrixXd* jacobian, Eigen::VectorXd* d_frequency,
-                               PeriodicCableResult* loads_out) {
+HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation, const Eigen::VectorXd& q,
+                                                    const cable::CableState* start, int periods, unsigned derivatives,
+                                                    HarmonicBalanceWorkspace& workspace) const {
+  assert(q.size() == unknown_count());
   const int c_count = 2 * options_.harmonics + 1;
   const int p_count = 2 * c_count;
+  const bool with_jacobian = (derivatives & kJacobian) != 0;
   const double w = excitation.angular_frequency();
   const double x_amp = excitation.displacement_amplitude;
   const Eigen::Matrix2d& mass = arm_.mass_matrix();
   const Eigen::Vector2d& load = arm_.load_vector();
   const Eigen::Map<const Eigen::Matrix2Xd> coefficients(q.data(), 2, c_count);
+  HarmonicBalanceEvaluation out;
   const Eigen::Matrix2Xd kinematics = coefficients * basis_.transpose();
   if (!kinematics.allFinite()) {
-    if (loads_out) {
-      loads_out->converged = false;
-      loads_out->failure = "non-finite tip motion (the Fourier coefficients hold NaN or inf)";
-    }
-    return false;
+    out.cable.termination = Termination::non_finite;
+    out.cable.where = "in the tip motion (the Fourier coefficients hold NaN or inf)";
+    return out;
   }
-  if (counting_) {
-    ++counting_->evaluations;
-    counting_->jacobians += jacobian != nullptr;
-  }
-  PeriodicCableResult loads =
-      cable_.evaluate(kinematics, periods, start_ ? &*start_ : nullptr, jacobian ? &basis_ : nullptr,
-                      jacobian ? &sensitivity_ : nullptr);
-  if (!loads.converged) {
-    if (loads_out) *loads_out = std::move(loads);
-    return false;
-  }
+  PeriodicCableResult loads = workspace.cable.evaluate(kinematics, periods, start, with_jacobian ? &basis_ : nullptr,
+                                                       with_jacobian ? &workspace.sensitivity : nullptr);
+  out.cable = std::move(loads.summary);
+  out.period = std::move(loads.period);
+  if (!out.ok()) return out;
+  out.end_state = workspace.cable.final_state();
   // Accelerations' coefficients: -k^2 W^2 per harmonic.
   Eigen::Matrix2Xd acceleration(2, c_count);
   for (int c = 0; c < c_count; ++c) {
     const double k = harmonic_of(c);
     acceleration.col(c) = -k * k * w * w * coefficients.col(c);
   }
-  r.resize(p_count);
+  out.residual.resize(p_count);
   if (!options_.collocation) {
-    Eigen::Map<Eigen::Matrix2Xd> residual(r.data(), 2, c_count);
-    residual = mass * acceleration + loads.loads * projection_.transpose();
+    Eigen::Map<Eigen::Matrix2Xd> residual(out.residual.data(), 2, c_count);
+    residual = mass * acceleration + out.period.loads * projection_.transpose();
     residual.col(2) -= -w * w * x_amp * load;  // excitation, sin(W t)
-    if (jacobian) {
-      force_jacobian_.resize(p_count, p_count);
+    if (with_jacobian) {
+      out.force_jacobian.resize(p_count, p_count);
       for (int d = 0; d < 2; ++d) {
-        const ConstStrided s(sensitivity_.data() + d, samples_, p_count, Eigen::Stride<Eigen::Dynamic, 2>(2 * samples_, 2));
-        Strided(force_jacobian_.data() + d, c_count, p_count, Eigen::Stride<Eigen::Dynamic, 2>(2 * c_count, 2)) =
+        const ConstStrided s(workspace.sensitivity.data() + d, samples_, p_count,
+                             Eigen::Stride<Eigen::Dynamic, 2>(2 * samples_, 2));
+        Strided(out.force_jacobian.data() + d, c_count, p_count, Eigen::Stride<Eigen::Dynamic, 2>(2 * c_count, 2)) =
             projection_ * s;
       }
     }
   } else {
-    Eigen::Map<Eigen::Matrix2Xd> residual(r.data(), 2, samples_);
-    residual = mass * (acceleration * basis_.transpose()) + loads.loads;
+    Eigen::Map<Eigen::Matrix2Xd> residual(out.residual.data(), 2, samples_);
+    residual = mass * (acceleration * basis_.transpose()) + out.period.loads;
     residual -= (-w * w * x_amp * load) * basis_.col(2).transpose();
-    if (jacobian) force_jacobian_ = sensitivity_;
+    if (with_jacobian) out.force_jacobian = workspace.sensitivity;
   }
-  if (jacobian) {
-    force_jacobian_stored_ = true;
-    assemble_jacobian(excitation, *jacobian);
-  }
-  if (d_frequency) {
+  if ((derivatives & kFrequency) != 0) {
     // At constant velocity amplitude V = W X: excitation -W V L sin(W t).
     const double v = w * x_amp;
     Eigen::Matrix2Xd d_acceleration(2, c_count);
@@ -152,26 +147,25 @@ bool HarmonicBalance::residual(const Excitation& excitation, const Eigen::Vector
       const double k = harmonic_of(c);
       d_acceleration.col(c) = -2.0 * k * k * w * coefficients.col(c);
     }
-    d_frequency->resize(p_count);
+    out.d_frequency.resize(p_count);
     if (!options_.collocation) {
-      Eigen::Map<Eigen::Matrix2Xd> d(d_frequency->data(), 2, c_count);
+      Eigen::Map<Eigen::Matrix2Xd> d(out.d_frequency.data(), 2, c_count);
       d = mass * d_acceleration;
       d.col(2) += v * load;
     } else {
-      Eigen::Map<Eigen::Matrix2Xd> d(d_frequency->data(), 2, samples_);
+      Eigen::Map<Eigen::Matrix2Xd> d(out.d_frequency.data(), 2, samples_);
       d = mass * (d_acceleration * basis_.transpose());
       d += (v * load) * basis_.col(2).transpose();
     }
   }
-  if (loads_out) *loads_out = std::move(loads);
-  return true;
+  return out;
 }
 
-void HarmonicBalance::assemble_jacobian(const Excitation& excitation, Eigen::MatrixXd& jacobian) const {
+Eigen::MatrixXd HarmonicBalance::jacobian(const Excitation& excitation, const Eigen::MatrixXd& force_jacobian) const {
   const int c_count = 2 * options_.harmonics + 1;
   const double w = excitation.angular_frequency();
   const Eigen::Matrix2d& mass = arm_.mass_matrix();
-  jacobian = force_jacobian_;
+  Eigen::MatrixXd jacobian = force_jacobian;
   for (int c = 0; c < c_count; ++c) {
     const double k = harmonic_of(c);
     if (!options_.collocation) {
@@ -180,280 +174,213 @@ void HarmonicBalance::assemble_jacobian(const Excitation& excitation, Eigen::Mat
       for (int j = 0; j < samples_; ++j) jacobian.block<2, 2>(2 * j, 2 * c) += -k * k * w * w * basis_(j, c) * mass;
     }
   }
+  return jacobian;
 }
 
-ArmPeriod HarmonicBalance::period_of(const Eigen::VectorXd& q, const PeriodicCableResult& loads) const {
-  const int c_count = 2 * options_.harmonics + 1;
-  const Eigen::Map<const Eigen::Matrix2Xd> coefficients(q.data(), 2, c_count);
-  ArmPeriod period;
-  period.kinematics = coefficients * basis_.transpose();
-  period.loads = loads.loads;
-  period.clamp_moment = loads.clamp_moment;
-  period.clamp_curvature = loads.clamp_curvature;
-  period.clamp_section_moment = loads.clamp_section_moment;
-  period.dissipated = loads.dissipated;
-  return period;
-}
+namespace {
 
-bool HarmonicBalance::newton(const Excitation& excitation, Eigen::VectorXd& q, PeriodicCableResult& loads,
-                             SolverSummary& summary) {
-  const double scale = force_scale(excitation);
-  const int periods = options_.periods;
-  Eigen::VectorXd r, r_try, q_try;
-  Eigen::MatrixXd jacobian;
-  // A stored force Jacobian (from the previous frequency) saves a sensitivity pass.
-  bool fresh = !force_jacobian_stored_;
-  if (!residual(excitation, q, periods, r, fresh ? &jacobian : nullptr, nullptr, &loads)) {
-    summary.message = "at the starting point: " + loads.failure;
-    return false;
-  }
-  start_ = cable_.final_state();
-  if (!fresh) assemble_jacobian(excitation, jacobian);
-  double norm = r.lpNorm<Eigen::Infinity>() / scale;
-  int settling_periods = 0;
-  if (!r.allFinite()) {
-    summary.message = "non-finite residual at the starting point";
-    return false;
-  }
-  for (int iteration = 0;; ++iteration) {
-    summary.residual = norm;
-    summary.periodicity_defect = loads.periodicity_defect;
-    if (norm <= options_.tolerance && loads.periodicity_defect <= options_.periodicity_tolerance) {
-      summary.jacobian_sign = determinant_sign(jacobian);
-      if (!fresh && summary.jacobian_sign != last_sign_) {
-        // A fold is suspected: confirm the sign with the exact Jacobian.
-        residual(excitation, q, periods, r, &jacobian, nullptr, &loads);
-        start_ = cable_.final_state();
-        summary.jacobian_sign = determinant_sign(jacobian);
-      }
-      last_sign_ = summary.jacobian_sign;
-      return true;
-    }
-    if (norm <= options_.tolerance) {
-      // The equations hold but the cable's memory is still settling: run more periods
-      // at the same coefficients rather than Newton steps, which would disturb it again.
-      if (settling_periods >= options_.max_settling_periods) {
-        summary.message = fmt::format("cable state not periodic after {} more periods at the solution "
-                                      "(its state still changes by {:.3g} per period)",
-                                      settling_periods, loads.periodicity_defect);
-        return false;
-      }
-      settling_periods += periods;
-      --iteration;
-      if (!residual(excitation, q, periods, r, nullptr, nullptr, &loads)) {
-        summary.message = "while settling: " + loads.failure;
-        return false;
-      }
-      start_ = cable_.final_state();
-      norm = r.lpNorm<Eigen::Infinity>() / scale;
-      if (norm > options_.tolerance) assemble_jacobian(excitation, jacobian);
-      continue;
-    }
-    if (iteration == options_.max_iterations) {
-      summary.message = fmt::format("no convergence in {} Newton iterations (residual {:.3g} of the excitation force)",
-                                    iteration, norm);
-      return false;
-    }
-    ++summary.iterations;
-    Eigen::VectorXd step;
-    const double reciprocal_condition = numerics::solve_checked(jacobian, Eigen::VectorXd(-r), step);
-    if (numerics::is_singular(reciprocal_condition, step)) {
-      if (!fresh) {
-        // The stored Jacobian may belong to another piece: an exact one decides.
-        residual(excitation, q, periods, r, &jacobian, nullptr, &loads);
-        start_ = cable_.final_state();
-        fresh = true;
-        norm = r.lpNorm<Eigen::Infinity>() / scale;
-        --iteration;
-        --summary.iterations;
-        continue;
-      }
-      summary.message = fmt::format("singular Jacobian at Newton iteration {} (reciprocal condition number {:.3g}, "
-                                    "residual {:.3g}): no periodic solution is determined here",
-                                    iteration + 1, reciprocal_condition, norm);
-      return false;
-    }
-    bool accepted = false;
-    double alpha = 1.0;
-    const double norm2 = r.norm();
-    // With a stored Jacobian only the full step is tried: if it fails, an exact one is cheaper than halving.
-    const int halvings = fresh ? 30 : 1;
-    for (int halving = 0; halving < halvings && !accepted; ++halving, alpha *= 0.5) {
-      q_try = q + alpha * step;
-      PeriodicCableResult trial_loads;
-      // Accept a decrease, or a step that meets the tolerance.
-      if (residual(excitation, q_try, periods, r_try, nullptr, nullptr, &trial_loads) &&
-          (r_try.norm() <= (1.0 - 1e-4 * alpha) * norm2 || r_try.lpNorm<Eigen::Infinity>() / scale <= options_.tolerance)) {
-        q = q_try;
-        r = r_try;
-        loads = std::move(trial_loads);
-        start_ = cable_.final_state();
-        accepted = true;
-      }
-    }
-    if (!accepted && !fresh) {
-      // The stored Jacobian belongs to another piece: take an exact one here and try again.
-      residual(excitation, q, periods, r, &jacobian, nullptr, &loads);
-      start_ = cable_.final_state();
-      fresh = true;
-      norm = r.lpNorm<Eigen::Infinity>() / scale;
-      continue;
-    }
-    if (!accepted) {
-      summary.message = fmt::format("line search failed at Newton iteration {} (residual {:.3g})", iteration + 1, norm);
-      return false;
-    }
-    const double new_norm = r.lpNorm<Eigen::Infinity>() / scale;
-    // Slow progress means the Jacobian belongs to another piece: refresh it.
-    fresh = new_norm > options_.jacobian_refresh_ratio * norm && new_norm > options_.tolerance;
-    if (fresh) {
-      residual(excitation, q, periods, r, &jacobian, nullptr, &loads);
-      start_ = cable_.final_state();
-    } else {
-      assemble_jacobian(excitation, jacobian);
-    }
-    norm = new_norm;
-  }
-}
+/// Newton's method for one excitation, in named steps. The cable's start state,
+/// the current evaluation and the Newton matrix are its own; the stored force
+/// Jacobian lives in the caller's memory.
+class NewtonSolve {
+ public:
+  NewtonSolve(const HarmonicBalance& model, const Excitation& excitation, HarmonicBalanceMemory& memory,
+              HarmonicBalanceWorkspace& workspace, SolverSummary& summary)
+      : model_(model),
+        options_(model.options()),
+        excitation_(excitation),
+        scale_(model.force_scale(excitation)),
+        memory_(memory),
+        workspace_(workspace),
+        summary_(summary),
+        start_(memory.cable_state) {}
 
-ArmSolution HarmonicBalance::solve(const Excitation& excitation, const Eigen::VectorXd& initial,
-                                   bool continue_from_last) {
-  excitation.validate();
-  const auto started = std::chrono::steady_clock::now();
-  if (initial.size() != unknown_count()) {
-    throw InvalidParameter(fmt::format("initial guess has {} values: expected {}", initial.size(), unknown_count()));
-  }
-  ArmSolution solution;
-  SolverSummary& summary = solution.summary;
-  counting_ = &summary;
-  start_ = continue_from_last ? last_state_ : std::nullopt;
-  if (!continue_from_last) force_jacobian_stored_ = false;
-  Eigen::VectorXd q = initial;
-  PeriodicCableResult loads;
-  summary.converged = newton(excitation, q, loads, summary);
-  summary.periods = options_.periods;
-  if (summary.converged) {
-    last_state_ = start_;
-  } else {
-    last_state_.reset();
-    force_jacobian_stored_ = false;
-  }
-  if (loads.loads.cols() > 0) {
-    solution.period = period_of(q, loads);
-    summary.energy_error = energy_error(solution.period, excitation);
-  }
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  counting_ = nullptr;
-  solution.unknowns = q;
-  return solution;
-}
+  /// Runs Newton from q (updated in place); true when converged. `current()` is the
+  /// last successful evaluation.
+  bool run(Eigen::VectorXd& q);
+  HarmonicBalanceEvaluation& current() { return current_; }
+  const std::optional<cable::CableState>& cable_state() const { return start_; }
 
-// y = (q / scale_q, W / scale_w): the unknowns of the arclength continuation, scaled
-// so that a unit step changes the response and the frequency by comparable amounts.
-bool HarmonicBalance::correct_on_branch(double velocity, Eigen::VectorXd& y, const Eigen::VectorXd& tangent,
-                                        const Eigen::VectorXd& y_pred, const Eigen::VectorXd& scale,
-                                        Eigen::MatrixXd& jacobian, Eigen::VectorXd& d_frequency) {
-  const Eigen::Index p_count = unknown_count();
-  Eigen::VectorXd r, q;
-  Eigen::MatrixXd bordered(p_count + 1, p_count + 1);
-  Eigen::VectorXd g(p_count + 1);
-  PeriodicCableResult loads;
-  int settling_periods = 0;
-  const int max_iterations = std::min(options_.max_iterations, 25);  // a failed corrector halves the step instead
-  for (int iteration = 0; iteration <= max_iterations; ++iteration) {
-    q = y.head(p_count).cwiseProduct(scale.head(p_count));
-    const double w = y(p_count) * scale(p_count);
-    if (!(w > 0.0)) return false;
-    const Excitation excitation = Excitation::from_velocity(w / (2.0 * std::numbers::pi), velocity);
-    if (!residual(excitation, q, options_.periods, r, &jacobian, &d_frequency, &loads)) return false;
-    start_ = cable_.final_state();
-    const double force = force_scale(excitation);
-    const double constraint = tangent.dot(y - y_pred);
-    const double norm = r.lpNorm<Eigen::Infinity>() / force;
-    if (norm <= options_.tolerance && std::abs(constraint) <= 1e-10) {
-      if (loads.periodicity_defect <= options_.periodicity_tolerance) return true;
-      if (settling_periods >= options_.max_settling_periods) return false;
-      settling_periods += options_.periods;  // let the cable's memory settle at this point
-      continue;
-    }
-    bordered.topLeftCorner(p_count, p_count) = jacobian * scale.head(p_count).asDiagonal() / force;
-    bordered.topRightCorner(p_count, 1) = d_frequency * (scale(p_count) / force);
-    bordered.bottomRows(1) = tangent.transpose();
-    g.head(p_count) = r / force;
-    g(p_count) = constraint;
-    Eigen::VectorXd step;
-    if (numerics::is_singular(numerics::solve_checked(bordered, Eigen::VectorXd(-g), step), step)) return false;
-    y += step;
-  }
+ private:
+  /// Evaluates at q from the chained start state; on success adopts it as the
+  /// current evaluation (the next start is its end state) and sets the Newton
+  /// matrix, exact when `exact` or else from the stored force Jacobian.
+  bool adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::string_view stage);
+  bool fail(Termination termination, std::string where = {});
+  /// Both criteria met: records the determinant sign (confirmed exactly if it
+  /// changed since the last solution) and ends.
+  bool finish(const Eigen::VectorXd& q);
+  /// The equations hold but the memory has not settled: more periods, no step.
+  bool settle(const Eigen::VectorXd& q);
+  enum class StepOutcome { accepted, retry_with_exact_jacobian, failed };
+  /// One Newton step with a backtracking line search.
+  StepOutcome step(Eigen::VectorXd& q);
+  double norm_of(const HarmonicBalanceEvaluation& e) const { return e.residual.lpNorm<Eigen::Infinity>() / scale_; }
+
+  const HarmonicBalance& model_;
+  const HarmonicBalanceOptions& options_;
+  const Excitation& excitation_;
+  const double scale_;
+  HarmonicBalanceMemory& memory_;
+  HarmonicBalanceWorkspace& workspace_;
+  SolverSummary& summary_;
+  std::optional<cable::CableState> start_;  // where the cable's next evaluation starts (empty: virgin)
+  HarmonicBalanceEvaluation current_;
+  Eigen::MatrixXd jacobian_;
+  bool exact_ = false;  // the Newton matrix is exact at the current point
+  double norm_ = 0.0;   // of the current residual, relative to the force scale
+  int settling_periods_ = 0;
+};
+
+bool NewtonSolve::fail(Termination termination, std::string where) {
+  summary_.termination = termination;
+  summary_.where = std::move(where);
   return false;
 }
 
-std::vector<ArmSolution> HarmonicBalance::continue_along_branch(double velocity, const Eigen::VectorXd& q0, double f0_hz,
-                                                                double target_hz, int max_steps) {
-  require_positive("velocity", velocity, "m/s");
-  const Eigen::Index p_count = unknown_count();
-  const double w0 = 2.0 * std::numbers::pi * f0_hz, w_target = 2.0 * std::numbers::pi * target_hz;
-  const double direction = w_target > w0 ? 1.0 : -1.0;
-  Eigen::VectorXd scale(p_count + 1);
-  scale.head(p_count).setConstant(std::max(q0.lpNorm<Eigen::Infinity>(), 1e-12));
-  scale(p_count) = std::abs(w_target - w0) > 0.0 ? std::abs(w_target - w0) : w0;
-  Eigen::VectorXd y(p_count + 1);
-  y.head(p_count) = q0.cwiseQuotient(scale.head(p_count));
-  y(p_count) = w0 / scale(p_count);
-  start_ = last_state_;
-  Eigen::MatrixXd jacobian;
-  Eigen::VectorXd d_frequency, r;
-  // Tangent at the start: [J, R_W] t = 0, pointing toward the target frequency.
-  const Excitation start = Excitation::from_velocity(f0_hz, velocity);
-  std::vector<ArmSolution> crossings;
-  if (!residual(start, q0, options_.periods, r, &jacobian, &d_frequency, nullptr)) return crossings;
-  auto tangent_at = [&](const Eigen::MatrixXd& j, const Eigen::VectorXd& dw) {
-    Eigen::VectorXd t(p_count + 1);
-    t.head(p_count) = -(j * scale.head(p_count).asDiagonal()).partialPivLu().solve(dw * scale(p_count));
-    t(p_count) = 1.0;
-    return Eigen::VectorXd(t.normalized());
-  };
-  Eigen::VectorXd tangent = tangent_at(jacobian, d_frequency);
-  if (!tangent.allFinite()) return crossings;
-  if (tangent(p_count) * direction < 0.0) tangent = -tangent;
-  double ds = 0.25;
-  for (int step = 0; step < max_steps && ds > 1e-6; ++step) {
-    const Eigen::VectorXd y_pred = y + ds * tangent;
-    Eigen::VectorXd y_new = y_pred;
-    const std::optional<cable::CableState> before = start_;
-    if (!correct_on_branch(velocity, y_new, tangent, y_pred, scale, jacobian, d_frequency)) {
-      start_ = before;
-      ds *= 0.5;
-      continue;
-    }
-    const double wa = y(p_count) * scale(p_count), wb = y_new(p_count) * scale(p_count);
-    if ((wa - w_target) * (wb - w_target) <= 0.0 && wa != w_target) {
-      // Polish at exactly the target from the interpolated point.
-      const double t = (w_target - wa) / (wb - wa);
-      const Eigen::VectorXd q_guess =
-          ((1.0 - t) * y.head(p_count) + t * y_new.head(p_count)).cwiseProduct(scale.head(p_count));
-      last_state_ = start_;
-      const std::optional<cable::CableState> on_branch = start_;
-      ArmSolution at_target = solve(Excitation::from_velocity(target_hz, velocity), q_guess, true);
-      start_ = on_branch;
-      if (at_target.summary.converged) {
-        at_target.summary.message = "reached by arclength continuation";
-        crossings.push_back(std::move(at_target));
-      }
-    }
-    Eigen::VectorXd new_tangent = tangent_at(jacobian, d_frequency);
-    if (!new_tangent.allFinite()) break;
-    if (new_tangent.dot(tangent) < 0.0) new_tangent = -new_tangent;
-    tangent = new_tangent;
-    y = y_new;
-    ds = std::min(2.0 * ds, 1.0);
-    // Done once the branch has passed the target for good (moving on, beyond it).
-    if (!crossings.empty() && direction * (wb - w_target) > 0.0 && direction * tangent(p_count) > 0.0 &&
-        direction * (wb - w_target) > 0.5 * std::abs(w_target - w0)) {
-      break;
+bool NewtonSolve::adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::string_view stage) {
+  const unsigned derivatives = exact ? HarmonicBalance::kJacobian : HarmonicBalance::kNone;
+  HarmonicBalanceEvaluation e =
+      model_.evaluate(excitation_, q, start_ ? &*start_ : nullptr, options_.periods, derivatives, workspace_);
+  ++summary_.evaluations;
+  summary_.jacobians += exact;
+  summary_.periods += options_.periods;
+  if (!e.ok()) {
+    return fail(e.cable.termination == Termination::non_finite ? Termination::non_finite : Termination::inner_failure,
+                fmt::format("{}: {}", stage, brief_report(e.cable)));
+  }
+  if (exact) memory_.force_jacobian = std::move(e.force_jacobian);
+  start_ = e.end_state;
+  current_ = std::move(e);
+  norm_ = norm_of(current_);
+  jacobian_ = model_.jacobian(excitation_, memory_.force_jacobian);
+  exact_ = exact;
+  if (!current_.residual.allFinite()) return fail(Termination::non_finite, fmt::format("in the residual {}", stage));
+  return true;
+}
+
+bool NewtonSolve::finish(const Eigen::VectorXd& q) {
+  int sign = determinant_sign(jacobian_);
+  if (!exact_ && sign != memory_.jacobian_sign) {
+    // A fold is suspected: confirm the sign with the exact Jacobian.
+    if (!adopt_evaluation(q, true, "confirming the Jacobian's sign")) return false;
+    sign = determinant_sign(jacobian_);
+  }
+  memory_.jacobian_sign = sign;
+  summary_.termination = Termination::converged;
+  return true;
+}
+
+bool NewtonSolve::settle(const Eigen::VectorXd& q) {
+  if (settling_periods_ >= options_.max_settling_periods) {
+    return fail(Termination::not_periodic,
+                fmt::format("(the equations hold; {} more periods at the solution did not settle the cable's memory)",
+                            settling_periods_));
+  }
+  settling_periods_ += options_.periods;
+  return adopt_evaluation(q, false, "while settling");
+}
+
+NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
+  Eigen::VectorXd direction;
+  const double reciprocal_condition =
+      numerics::solve_checked(jacobian_, Eigen::VectorXd(-current_.residual), direction);
+  if (numerics::is_singular(reciprocal_condition, direction)) {
+    // A stored Jacobian may belong to another piece: an exact one decides.
+    if (!exact_) return StepOutcome::retry_with_exact_jacobian;
+    summary_.reciprocal_condition = reciprocal_condition;
+    fail(Termination::singular_jacobian);
+    return StepOutcome::failed;
+  }
+  const double norm2 = current_.residual.norm();
+  // With a stored Jacobian only the full step is tried: if it fails, an exact one is cheaper than halving.
+  const int halvings = exact_ ? 30 : 1;
+  double alpha = 1.0;
+  for (int halving = 0; halving < halvings; ++halving, alpha *= 0.5) {
+    const Eigen::VectorXd q_try = q + alpha * direction;
+    HarmonicBalanceEvaluation trial =
+        model_.evaluate(excitation_, q_try, start_ ? &*start_ : nullptr, options_.periods, HarmonicBalance::kNone,
+                        workspace_);
+    ++summary_.evaluations;
+    summary_.periods += options_.periods;
+    // Accept a decrease, or a step that meets the tolerance.
+    if (trial.ok() && (trial.residual.norm() <= (1.0 - 1e-4 * alpha) * norm2 ||
+                       norm_of(trial) <= options_.tolerance)) {
+      q = q_try;
+      start_ = trial.end_state;
+      current_ = std::move(trial);
+      return StepOutcome::accepted;
     }
   }
-  return crossings;
+  if (!exact_) return StepOutcome::retry_with_exact_jacobian;
+  fail(Termination::line_search_failed);
+  return StepOutcome::failed;
+}
+
+bool NewtonSolve::run(Eigen::VectorXd& q) {
+  if (!adopt_evaluation(q, memory_.force_jacobian.size() == 0, "at the starting point")) return false;
+  while (true) {
+    summary_.residual = norm_;
+    summary_.periodicity_defect = current_.cable.periodicity_defect;
+    const bool equations_hold = norm_ <= options_.tolerance;
+    if (equations_hold && current_.cable.periodicity_defect <= options_.periodicity_tolerance) return finish(q);
+    if (equations_hold) {
+      if (!settle(q)) return false;
+      continue;
+    }
+    if (summary_.newton_iterations == options_.max_iterations) return fail(Termination::max_iterations);
+    ++summary_.newton_iterations;
+    const double previous_norm = norm_;
+    const StepOutcome outcome = step(q);
+    if (outcome == StepOutcome::failed) return false;
+    if (outcome == StepOutcome::retry_with_exact_jacobian) {
+      --summary_.newton_iterations;
+      if (!adopt_evaluation(q, true, "refreshing the Jacobian")) return false;
+      continue;
+    }
+    norm_ = norm_of(current_);
+    // Slow progress means the Jacobian belongs to another piece: refresh it.
+    const bool refresh = norm_ > options_.jacobian_refresh_ratio * previous_norm && norm_ > options_.tolerance;
+    if (refresh) {
+      if (!adopt_evaluation(q, true, "refreshing the Jacobian")) return false;
+    } else {
+      jacobian_ = model_.jacobian(excitation_, memory_.force_jacobian);
+      exact_ = false;
+    }
+  }
+}
+
+}  // namespace
+
+ArmSolution HarmonicBalance::solve(const Excitation& excitation, const Eigen::VectorXd& initial,
+                                   HarmonicBalanceMemory& memory, HarmonicBalanceWorkspace& workspace) const {
+  excitation.validate();
+  if (initial.size() != unknown_count()) {
+    throw InvalidParameter(fmt::format("initial guess has {} values: expected {}", initial.size(), unknown_count()));
+  }
+  const auto started = std::chrono::steady_clock::now();
+  ArmSolution solution;
+  solution.unknowns = initial;
+  NewtonSolve newton(*this, excitation, memory, workspace, solution.summary);
+  const bool converged = newton.run(solution.unknowns);
+  if (converged) {
+    memory.cable_state = newton.cable_state();
+    solution.jacobian_sign = memory.jacobian_sign;
+  } else {
+    memory.clear();
+  }
+  if (newton.current().ok()) {
+    solution.period = std::move(newton.current().period);
+    solution.summary.energy_error = energy_error(solution.period, excitation);
+  }
+  solution.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return solution;
+}
+
+ArmSolution HarmonicBalance::solve(const Excitation& excitation, const Eigen::VectorXd& initial) const {
+  HarmonicBalanceMemory memory;
+  HarmonicBalanceWorkspace workspace = make_workspace();
+  return solve(excitation, initial, memory, workspace);
 }
 
 }  // namespace stockbridge::damper

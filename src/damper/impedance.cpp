@@ -1,13 +1,15 @@
 #include "stockbridge/damper/impedance.hpp"
 
 #include <algorithm>
+#include <cassert>
+#include <optional>
+#include <utility>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
-#include "stockbridge/damper/shooting.hpp"
-#include "stockbridge/damper/time_integration.hpp"
+#include "stockbridge/damper/arclength.hpp"
 
 namespace stockbridge::damper {
 
@@ -16,7 +18,7 @@ Method parse_method(std::string_view name) {
   if (name == "collocation") return Method::collocation;
   if (name == "time") return Method::time_integration;
   if (name == "shooting") return Method::shooting;
-  throw InvalidParameter(fmt::format("method = '{}': expected hb, collocation, time or shooting", name));
+  throw InvalidParameter("method", fmt::format(" = '{}': expected hb, collocation, time or shooting", name));
 }
 
 std::string_view method_name(Method method) {
@@ -29,52 +31,85 @@ std::string_view method_name(Method method) {
   return "?";
 }
 
+HarmonicBalanceOptions SolverOptions::collocation_defaults() {
+  HarmonicBalanceOptions options;
+  options.collocation = true;
+  options.harmonics = 40;  // its 2H + 1 points are its sampling: at H = 9 it is 2 % off
+  return options;
+}
+
 void SolverOptions::validate() const {
-  harmonic_balance.validate();
-  require_in_range("steps_per_period", steps_per_period, 16, 1 << 20);
+  within_field("harmonic_balance", [&] { harmonic_balance.validate(); });
+  within_field("collocation", [&] { collocation.validate(); });
+  if (!collocation.collocation) throw InvalidParameter("collocation.collocation", " = false: expected true");
+  within_field("time_integration", [&] { time_integration.validate(); });
+  within_field("shooting", [&] { shooting.validate(); });
   require_positive("energy_tolerance", energy_tolerance, "");
+}
+
+Eigen::VectorXd Continuation::predictor(const Excitation& target) const {
+  return unknowns * (target.displacement_amplitude / excitation.displacement_amplitude);
 }
 
 namespace {
 
+/// Moves the path on to a converged solution.
+void advance(Continuation& path, const ArmSolution& solution, const Excitation& excitation) {
+  path.unknowns = solution.unknowns;
+  path.excitation = excitation;
+}
+
 class HarmonicBalanceArmSolver final : public ArmSolver {
  public:
-  HarmonicBalanceArmSolver(const Arm& arm, HarmonicBalanceOptions options) : solver_(arm, options) {}
-  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& predictor) override {
-    const Eigen::VectorXd start = predictor.size() == solver_.unknown_count() ? predictor : solver_.linear_guess(excitation);
-    const bool continuing = predictor.size() == solver_.unknown_count();
-    ArmSolution solution = solver_.solve(excitation, start, continuing);
-    if (!solution.summary.converged && continuing) {
+  HarmonicBalanceArmSolver(const Arm& arm, const HarmonicBalanceOptions& options)
+      : model_(arm, options), workspace_(model_.make_workspace()) {}
+
+  ArmSolution solve(const Excitation& excitation, Continuation& path) override {
+    ArmSolution solution = path.empty() ? model_.solve(excitation, model_.linear_guess(excitation), path.memory, workspace_)
+                                        : model_.solve(excitation, path.predictor(excitation), path.memory, workspace_);
+    if (!solution.summary.converged() && !path.empty()) {
       // The predictor may lie on another piece: retry from the virgin state and the linear guess.
-      ArmSolution retry = solver_.solve(excitation, solver_.linear_guess(excitation));
-      if (retry.summary.converged) solution = std::move(retry);
+      HarmonicBalanceMemory cold;
+      ArmSolution retry = model_.solve(excitation, model_.linear_guess(excitation), cold, workspace_);
+      if (retry.summary.converged()) {
+        solution = std::move(retry);
+        path.memory = std::move(cold);
+      }
     }
+    if (solution.summary.converged()) advance(path, solution, excitation);
     return solution;
   }
 
-  std::vector<ArmSolution> continue_to(const Excitation& target, const Eigen::VectorXd& from,
-                                       double from_frequency_hz) override {
-    if (from.size() != solver_.unknown_count()) return {};
-    std::vector<ArmSolution> crossings =
-        solver_.continue_along_branch(target.velocity_amplitude(), from, from_frequency_hz, target.frequency_hz);
-    for (ArmSolution& s : crossings) s.summary.branches = static_cast<int>(crossings.size());
-    return crossings;
+  std::vector<ArmSolution> continue_to(const Excitation& target, Continuation& path) override {
+    if (path.empty()) return {};
+    BranchCrossings crossings =
+        continue_along_branch(model_, target.velocity_amplitude(),
+                              BranchPoint{path.unknowns, path.excitation.frequency_hz, path.memory},
+                              target.frequency_hz, workspace_);
+    if (!crossings.solutions.empty()) {
+      advance(path, crossings.solutions.back(), target);
+      path.memory = std::move(crossings.memory);
+    }
+    return std::move(crossings.solutions);
   }
 
  private:
-  HarmonicBalance solver_;
+  HarmonicBalance model_;
+  HarmonicBalanceWorkspace workspace_;
 };
 
 /// Time integration and shooting always start from the all-stick linear steady state
 /// of the excitation: where nothing slips it is already periodic, whereas a neighbour's
 /// state would set off a free vibration that dry friction alone never damps (MODEL.md
-/// section 6). The predictor is therefore not used.
+/// section 6). The path's predictor is therefore not used.
 template <class Solver, class Options>
 class TimeDomainArmSolver final : public ArmSolver {
  public:
-  TimeDomainArmSolver(const Arm& arm, Options options) : solver_(arm, options) {}
-  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& /*predictor*/) override {
-    return solver_.solve(excitation, nullptr);
+  TimeDomainArmSolver(const Arm& arm, const Options& options) : solver_(arm, options) {}
+  ArmSolution solve(const Excitation& excitation, Continuation& path) override {
+    ArmSolution solution = solver_.solve(excitation, nullptr);
+    if (solution.summary.converged()) advance(path, solution, excitation);
+    return solution;
   }
 
  private:
@@ -84,98 +119,85 @@ class TimeDomainArmSolver final : public ArmSolver {
 }  // namespace
 
 std::unique_ptr<ArmSolver> make_arm_solver(const Arm& arm, const SolverOptions& options) {
-  options.validate();
   switch (options.method) {
-    case Method::harmonic_balance:
-      return std::make_unique<HarmonicBalanceArmSolver>(arm, options.harmonic_balance);
-    case Method::collocation: {
-      HarmonicBalanceOptions collocation = options.harmonic_balance;
-      collocation.collocation = true;
-      return std::make_unique<HarmonicBalanceArmSolver>(arm, collocation);
-    }
-    case Method::time_integration: {
-      TimeIntegrationOptions time;
-      time.steps_per_period = options.steps_per_period;
-      return std::make_unique<TimeDomainArmSolver<TimeIntegration, TimeIntegrationOptions>>(arm, time);
-    }
-    case Method::shooting: {
-      ShootingOptions shooting;
-      shooting.steps_per_period = options.steps_per_period;
-      return std::make_unique<TimeDomainArmSolver<Shooting, ShootingOptions>>(arm, shooting);
-    }
+    case Method::harmonic_balance: return std::make_unique<HarmonicBalanceArmSolver>(arm, options.harmonic_balance);
+    case Method::collocation: return std::make_unique<HarmonicBalanceArmSolver>(arm, options.collocation);
+    case Method::time_integration:
+      return std::make_unique<TimeDomainArmSolver<TimeIntegration, TimeIntegrationOptions>>(arm, options.time_integration);
+    case Method::shooting:
+      return std::make_unique<TimeDomainArmSolver<Shooting, ShootingOptions>>(arm, options.shooting);
   }
-  throw InvalidParameter(fmt::format("method = {}: unknown", static_cast<int>(options.method)));
+  throw InvalidParameter("method", fmt::format(" = {}: unknown", static_cast<int>(options.method)));
 }
 
-std::vector<std::size_t> distinct_arms(const DamperDescription& damper) {
-  std::vector<std::size_t> representative(damper.arms.size());
-  for (std::size_t k = 0; k < damper.arms.size(); ++k) {
-    representative[k] = k;
-    for (std::size_t j = 0; j < k; ++j) {
-      if (damper.arms[k].same_mechanics(damper.arms[j])) {
-        representative[k] = representative[j];
-        break;
-      }
-    }
+namespace {
+
+/// Why an arm's solution is not trusted, or nothing if it is.
+std::optional<std::pair<Termination, std::string>> distrust(const ArmSolution& s, double energy_tolerance) {
+  if (!s.summary.converged()) return std::pair{s.summary.termination, brief_report(s.summary)};
+  if (!(s.summary.energy_error <= energy_tolerance)) {
+    return std::pair{Termination::energy_mismatch,
+                     fmt::format("energy balance off by {:.3g} of the apparent power (tolerance {:.3g})",
+                                 s.summary.energy_error, energy_tolerance)};
   }
-  return representative;
+  return std::nullopt;
 }
 
-ImpedancePoint combine(const DamperDescription& damper, const Excitation& excitation,
+}  // namespace
+
+ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
                        const std::vector<const ArmSolution*>& arm_solutions, double energy_tolerance) {
+  assert(arm_solutions.size() == damper.arms().size());
   ImpedancePoint point;
   point.frequency_hz = excitation.frequency_hz;
   point.velocity_amplitude = excitation.velocity_amplitude();
   point.displacement_amplitude = excitation.displacement_amplitude;
-  point.converged = true;
+  point.termination = Termination::converged;
   const double v = point.velocity_amplitude;
-  std::complex<double> z(0.0, excitation.angular_frequency() * damper.clamp_mass);
-  double dissipated = 0.0;
+  std::complex<double> z(0.0, excitation.angular_frequency() * damper.clamp_mass());
+  double dissipated = 0.0, residual = 0.0, energy = 0.0;
   for (std::size_t k = 0; k < arm_solutions.size(); ++k) {
     const ArmSolution& s = *arm_solutions[k];
-    point.iterations = std::max(point.iterations, s.summary.iterations);
+    point.newton_iterations = std::max(point.newton_iterations, s.summary.newton_iterations);
+    point.periods = std::max(point.periods, s.summary.periods);
     point.seconds += s.summary.seconds;
-    if (!s.summary.converged) {
-      point.converged = false;
-      if (point.message.empty()) {
-        point.message = fmt::format("arm {} ({}): {}", k, damper.arms[k].name, s.summary.message);
+    if (const auto why = distrust(s, energy_tolerance)) {
+      if (point.converged()) {  // the first failure says why
+        point.termination = why->first;
+        point.failure = fmt::format("arm {}: {}", damper.arm_name(k), why->second);
       }
       continue;
     }
-    if (!(s.summary.energy_error <= energy_tolerance)) {
-      point.converged = false;
-      if (point.message.empty()) {
-        point.message = fmt::format("arm {} ({}): energy balance off by {:.3g} of the apparent power (tolerance {:.3g})", k,
-                                    damper.arms[k].name, s.summary.energy_error, energy_tolerance);
-      }
-      continue;
-    }
-    point.residual = std::max(point.residual, s.summary.residual);
-    if (s.summary.branches > 1) {
+    residual = std::max(residual, s.summary.residual);
+    energy = std::max(energy, s.summary.energy_error);
+    if (s.branches > 1) {
       point.non_unique = true;
-      point.message = fmt::format("arm {} ({}): {} steady states at this frequency (the response curve folds back)", k,
-                                  damper.arms[k].name, s.summary.branches);
+      point.note = fmt::format("arm {}: {} steady states at this frequency (the response curve folds back)",
+                               damper.arm_name(k), s.branches);
+    } else if (!s.note.empty() && point.note.empty()) {
+      point.note = fmt::format("arm {}: {}", damper.arm_name(k), s.note);
     }
-    point.energy_error = std::max(point.energy_error, s.summary.energy_error);
     z += arm_force_first_harmonic(s.period) / v;
     dissipated += s.period.dissipated;
   }
-  if (point.converged) {
+  if (point.converged()) {
     point.impedance = z;
     point.power = 0.5 * v * v * z.real();
     point.dissipated_power = dissipated / excitation.period();
+    point.residual = residual;
+    point.energy_error = energy;
   }
   return point;
 }
 
-Eigen::RowVectorXd shaker_force(const DamperDescription& damper, const Excitation& excitation,
+Eigen::RowVectorXd shaker_force(const Damper& damper, const Excitation& excitation,
                                 const std::vector<const ArmSolution*>& arm_solutions) {
   const Eigen::Index n = arm_solutions.front()->period.loads.cols();
   const double w = excitation.angular_frequency();
   Eigen::RowVectorXd force(n);
   for (Eigen::Index j = 0; j < n; ++j) {
     const double t = excitation.period() * static_cast<double>(j) / static_cast<double>(n);
-    force(j) = -damper.clamp_mass * w * w * excitation.displacement_amplitude * std::sin(w * t);
+    force(j) = -damper.clamp_mass() * w * w * excitation.displacement_amplitude * std::sin(w * t);
   }
   for (const ArmSolution* s : arm_solutions) force -= s->period.loads.row(0);
   return force;

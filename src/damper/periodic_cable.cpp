@@ -10,16 +10,15 @@
 
 namespace stockbridge::damper {
 
-PeriodicCable::PeriodicCable(const cable::Cable& cable, cable::CantileverOptions options)
-    : cable_(cable), cantilever_(cable, options) {}
+PeriodicCable::PeriodicCable(const cable::Cable& cable, cable::CantileverOptions options) : cantilever_(cable, options) {}
 
 PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, int periods,
                                             const cable::CableState* start, const Eigen::MatrixXd* basis,
                                             Eigen::MatrixXd* sensitivity) {
   require_in_range("periods", periods, 1, 100000);
   const int n_samples = static_cast<int>(kinematics.cols());
-  const std::size_t n_sections = cable_.sections();
-  const std::size_t m = cable_.elements();
+  const std::size_t n_sections = cable().sections();
+  const std::size_t m = cable().elements();
   const bool with_sensitivity = basis && sensitivity;
   if (with_sensitivity) {
     const Eigen::Index p = 2 * basis->cols();
@@ -29,51 +28,46 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
     sensitivity->resize(2 * n_samples, p);
   }
   PeriodicCableResult result;
-  result.loads.resize(2, n_samples);
-  result.clamp_moment.resize(n_samples);
-  result.clamp_curvature.resize(n_samples);
-  result.clamp_section_moment.resize(n_samples);
+  SolverSummary& summary = result.summary;
+  ArmPeriod& period = result.period;
+  period.resize(n_samples);
+  period.kinematics = kinematics;
   if (start) {
     cantilever_.restore(*start);
   } else {
     cantilever_.reset();
   }
-  for (int period = 1; period <= periods; ++period) {
-    result.periods = period;
+  for (int k = 1; k <= periods; ++k) {
+    summary.periods = k;
     const double dissipated_before = cantilever_.committed().dissipated;
-    if (period == periods) period_start_ = cantilever_.committed();
+    if (k == periods) period_start_ = cantilever_.committed();
     for (int j = 0; j < n_samples; ++j) {
       const cable::StateDetermination solve = cantilever_.set_trial_tip(kinematics(0, j), kinematics(1, j));
-      result.max_iterations = std::max(result.max_iterations, solve.iterations);
-      if (!solve.converged) {
-        result.failure = fmt::format("cable state determination did not converge at sample {} of period {} "
-                                     "(residual {:.3g} rad after {} iterations)",
-                                     j, period, solve.residual, solve.iterations);
+      summary.newton_iterations = std::max(summary.newton_iterations, solve.newton_iterations);
+      if (!solve.converged()) {
+        summary.termination = Termination::inner_failure;
+        summary.where = fmt::format("cable state determination at sample {} of period {}: {}", j, k, brief_report(solve));
         return result;
       }
       const cable::CableState& trial = cantilever_.trial();
       if (with_sensitivity) propagate_sensitivity(cantilever_.committed(), trial, *basis, j, sensitivity);
-      result.loads(0, j) = trial.tip_force;
-      result.loads(1, j) = trial.tip_moment(cable_.length());
-      result.clamp_moment[j] = trial.clamp_moment;
-      result.clamp_curvature[j] = trial.curvature[0];
-      result.clamp_section_moment[j] = trial.clamp_moment - trial.tip_force * cable_.positions()[0];
+      period.record_loads(j, trial, cantilever_.cable());
       cantilever_.commit();
     }
-    result.dissipated = cantilever_.committed().dissipated - dissipated_before;
+    period.dissipated = cantilever_.committed().dissipated - dissipated_before;
   }
-  result.periodicity_defect = state_change(period_start_, cantilever_.committed());
-  result.converged = true;
+  summary.periodicity_defect = state_change(period_start_, cantilever_.committed());
+  summary.termination = Termination::converged;
   return result;
 }
 
 double PeriodicCable::state_change(const cable::CableState& start, const cable::CableState& end) const {
-  const std::size_t m = cable_.elements();
+  const std::size_t m = cable().elements();
   double curvature_scale = 0.0, curvature_change = 0.0, moment_change = 0.0;
-  for (std::size_t i = 0; i < cable_.sections(); ++i) {
+  for (std::size_t i = 0; i < cable().sections(); ++i) {
     curvature_scale = std::max(curvature_scale, std::abs(end.curvature[i]));
     curvature_change = std::max(curvature_change, std::abs(end.curvature[i] - start.curvature[i]));
-    const auto jenkin = cable_.jenkin(i);
+    const auto jenkin = cable().jenkin(i);
     for (std::size_t e = 0; e < m; ++e) {
       moment_change = std::max(moment_change,
                                std::abs(end.hysteretic[i * m + e] - start.hysteretic[i * m + e]) / jenkin[e].h);
@@ -99,12 +93,12 @@ double PeriodicCable::state_change(const cable::CableState& start, const cable::
 // step's (dT, dF), only when an element sticks again.
 void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const cable::CableState& to,
                                           const Eigen::MatrixXd& basis, int sample, Eigen::MatrixXd* sensitivity) {
-  const std::size_t n_sections = cable_.sections();
-  const std::size_t m = cable_.elements();
+  const std::size_t n_sections = cable().sections();
+  const std::size_t m = cable().elements();
   const Eigen::Index p = anchor_.rows();
-  const double l = cable_.length();
-  const auto s = cable_.positions();
-  const auto w = cable_.weights();
+  const double l = cable().length();
+  const auto s = cable().positions();
+  const auto w = cable().weights();
   // du/dq for this sample: q(2c + d) scaled by basis(sample, c).
   rhs_phi_.setZero(p);
   rhs_x_.setZero(p);
@@ -116,7 +110,7 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
   partial_.assign(n_sections, 0);
   for (std::size_t i = 0; i < n_sections; ++i) {
     const double dkappa = to.curvature[i] - from.curvature[i];
-    const auto jenkin = cable_.jenkin(i);
+    const auto jenkin = cable().jenkin(i);
     const double k = to.tangent[i];
     bool any_stick = false, any_slip = false;
     for (std::size_t e = 0; e < m; ++e) {
@@ -141,7 +135,7 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
   d_clamp_moment_ = inverse(0, 0) * rhs_phi_ + inverse(0, 1) * rhs_x_;
   d_tip_force_ = inverse(1, 0) * rhs_phi_ + inverse(1, 1) * rhs_x_;
   for (std::size_t i = 0; i < n_sections; ++i) {
-    const auto jenkin = cable_.jenkin(i);
+    const auto jenkin = cable().jenkin(i);
     const double k = to.tangent[i];
     if (partial_[i]) {
       // d kappa_new = da_i + dM_i / k_i becomes the anchor of every slipping element.

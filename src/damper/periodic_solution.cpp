@@ -5,6 +5,29 @@
 
 namespace stockbridge::damper {
 
+void ArmPeriod::resize(int samples) {
+  kinematics.resize(2, samples);
+  loads.resize(2, samples);
+  clamp_moment.resize(static_cast<std::size_t>(samples));
+  clamp_curvature.resize(static_cast<std::size_t>(samples));
+  clamp_section_moment.resize(static_cast<std::size_t>(samples));
+}
+
+void ArmPeriod::record_loads(int j, const cable::CableState& state, const cable::Cable& cable) {
+  const auto k = static_cast<std::size_t>(j);
+  loads(0, j) = state.tip_force;
+  loads(1, j) = state.tip_moment(cable.length());
+  clamp_moment[k] = state.clamp_moment;
+  clamp_curvature[k] = state.curvature.front();
+  clamp_section_moment[k] = state.clamp_moment - state.tip_force * cable.positions().front();
+}
+
+std::vector<double> time_grid(const Excitation& excitation, int samples) {
+  std::vector<double> t(static_cast<std::size_t>(samples));
+  for (int j = 0; j < samples; ++j) t[static_cast<std::size_t>(j)] = excitation.period() * j / samples;
+  return t;
+}
+
 std::complex<double> first_harmonic(const Eigen::Ref<const Eigen::RowVectorXd>& samples) {
   const Eigen::Index n = samples.size();
   std::complex<double> sum = 0.0;

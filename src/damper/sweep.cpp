@@ -48,60 +48,35 @@ std::vector<double> log_spaced(double fmin, double fmax, int points) {
 
 namespace {
 
-/// Continuation state of one arm: the last converged solution as predictor.
-struct Continuation {
-  ArmSolver& solver;
-  Eigen::VectorXd predictor;
-  double predictor_amplitude = 0.0;
-  double predictor_frequency = 0.0;
-
-  ArmSolution solve(const Excitation& excitation) {
-    if (predictor.size() > 0) predictor *= excitation.displacement_amplitude / predictor_amplitude;
-    ArmSolution solution = solver.solve(excitation, predictor);
-    if (solution.summary.converged) {
-      predictor = solution.unknowns;
-      predictor_amplitude = excitation.displacement_amplitude;
-      predictor_frequency = excitation.frequency_hz;
-    } else if (predictor.size() > 0) {
-      predictor *= predictor_amplitude / excitation.displacement_amplitude;  // undo the scaling
-    }
-    return solution;
-  }
-};
-
 /// One continuation run of one arm over all frequencies at one amplitude. A point
-/// that fails is approached again from the last converged frequency in smaller steps.
+/// that fails is approached again from the last converged frequency in smaller
+/// steps, then (at constant velocity) by arclength continuation.
 std::vector<ArmSolution> continue_arm(const Arm& arm, const SweepSpec& spec, double amplitude,
                                       const std::function<void()>& tick) {
   const std::unique_ptr<ArmSolver> solver = make_arm_solver(arm, spec.solver);
-  Continuation continuation{*solver, Eigen::VectorXd(), 0.0, 0.0};
+  Continuation path;
   std::vector<ArmSolution> solutions;
   solutions.reserve(spec.frequencies.size());
   for (const double f : spec.frequencies) {
-    ArmSolution solution = continuation.solve(spec.excitation(f, amplitude));
-    if (!solution.summary.converged && continuation.predictor.size() > 0) {
+    const Excitation target = spec.excitation(f, amplitude);
+    ArmSolution solution = solver->solve(target, path);
+    if (!solution.summary.converged() && !path.empty()) {
       constexpr int kSubsteps = 8;
-      const double from = continuation.predictor_frequency;
+      const double from = path.excitation.frequency_hz;
       bool reached = true;
       for (int k = 1; k < kSubsteps && reached; ++k) {
         const double fk = from * std::pow(f / from, static_cast<double>(k) / kSubsteps);
-        reached = continuation.solve(spec.excitation(fk, amplitude)).summary.converged;
+        reached = solver->solve(spec.excitation(fk, amplitude), path).summary.converged();
       }
       if (reached) {
-        ArmSolution retry = continuation.solve(spec.excitation(f, amplitude));
-        if (retry.summary.converged) solution = std::move(retry);
+        ArmSolution retry = solver->solve(target, path);
+        if (retry.summary.converged()) solution = std::move(retry);
       }
     }
-    if (!solution.summary.converged && continuation.predictor.size() > 0 && !spec.constant_displacement) {
+    if (!solution.summary.converged() && !path.empty() && !spec.constant_displacement) {
       // Natural continuation fails where the branch turns: follow it by arclength.
-      std::vector<ArmSolution> crossings =
-          solver->continue_to(spec.excitation(f, amplitude), continuation.predictor, continuation.predictor_frequency);
-      if (!crossings.empty()) {
-        solution = std::move(crossings.back());
-        continuation.predictor = solution.unknowns;
-        continuation.predictor_amplitude = spec.excitation(f, amplitude).displacement_amplitude;
-        continuation.predictor_frequency = f;
-      }
+      std::vector<ArmSolution> crossings = solver->continue_to(target, path);
+      if (!crossings.empty()) solution = std::move(crossings.back());
     }
     solutions.push_back(std::move(solution));
     tick();
@@ -112,14 +87,14 @@ std::vector<ArmSolution> continue_arm(const Arm& arm, const SweepSpec& spec, dou
 /// Flags both ends of every interval where an arm's Jacobian sign changes.
 void flag_folds(const std::vector<ArmSolution>& arm, const std::string& arm_name, std::vector<ImpedancePoint>& points) {
   for (std::size_t i = 1; i < arm.size(); ++i) {
-    const int a = arm[i - 1].summary.jacobian_sign, b = arm[i].summary.jacobian_sign;
+    const int a = arm[i - 1].jacobian_sign, b = arm[i].jacobian_sign;
     if (a != 0 && b != 0 && a != b) {
       const std::string note = fmt::format("arm {}: the response curve folds between {:.4g} and {:.4g} Hz "
                                            "(Jacobian determinant changes sign): several steady states coexist",
                                            arm_name, points[i - 1].frequency_hz, points[i].frequency_hz);
       for (const std::size_t k : {i - 1, i}) {
         points[k].non_unique = true;
-        if (points[k].message.empty()) points[k].message = note;
+        if (points[k].note.empty()) points[k].note = note;
       }
     }
   }
@@ -127,17 +102,9 @@ void flag_folds(const std::vector<ArmSolution>& arm, const std::string& arm_name
 
 }  // namespace
 
-std::vector<SweepRun> run_sweep(const DamperDescription& damper, const SweepSpec& spec, const SweepProgress& progress) {
-  damper.validate();
+std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, const SweepProgress& progress) {
   spec.validate();
-  std::vector<Arm> arms;
-  arms.reserve(damper.arms.size());
-  for (const ArmDescription& d : damper.arms) arms.emplace_back(d);
-  const std::vector<std::size_t> representative = distinct_arms(damper);
-  std::vector<std::size_t> distinct;
-  for (std::size_t k = 0; k < arms.size(); ++k) {
-    if (representative[k] == k) distinct.push_back(k);
-  }
+  const std::vector<std::size_t>& distinct = damper.distinct();
   // Tasks: (amplitude, distinct arm).
   const std::size_t n_tasks = spec.amplitudes.size() * distinct.size();
   std::vector<std::vector<ArmSolution>> results(n_tasks);
@@ -156,7 +123,7 @@ std::vector<SweepRun> run_sweep(const DamperDescription& damper, const SweepSpec
       for (std::size_t t = next_task++; t < n_tasks; t = next_task++) {
         const std::size_t a = t / distinct.size();
         const std::size_t arm = distinct[t % distinct.size()];
-        results[t] = continue_arm(arms[arm], spec, spec.amplitudes[a], tick);
+        results[t] = continue_arm(damper.arms()[arm], spec, spec.amplitudes[a], tick);
       }
     } catch (...) {
       const std::lock_guard<std::mutex> lock(progress_mutex);
@@ -170,21 +137,23 @@ std::vector<SweepRun> run_sweep(const DamperDescription& damper, const SweepSpec
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
 
+  // Each arm's solutions: those of its representative among the distinct arms.
+  std::vector<std::size_t> task_column(damper.arms().size());
+  for (std::size_t k = 0; k < task_column.size(); ++k) {
+    task_column[k] = static_cast<std::size_t>(
+        std::find(distinct.begin(), distinct.end(), damper.representative()[k]) - distinct.begin());
+  }
   std::vector<SweepRun> runs(spec.amplitudes.size());
   for (std::size_t a = 0; a < spec.amplitudes.size(); ++a) {
     runs[a].amplitude = spec.amplitudes[a];
     for (std::size_t i = 0; i < spec.frequencies.size(); ++i) {
-      std::vector<const ArmSolution*> per_arm(arms.size());
-      for (std::size_t k = 0; k < arms.size(); ++k) {
-        const std::size_t d = static_cast<std::size_t>(
-            std::find(distinct.begin(), distinct.end(), representative[k]) - distinct.begin());
-        per_arm[k] = &results[a * distinct.size() + d][i];
-      }
+      std::vector<const ArmSolution*> per_arm(task_column.size());
+      for (std::size_t k = 0; k < per_arm.size(); ++k) per_arm[k] = &results[a * distinct.size() + task_column[k]][i];
       runs[a].points.push_back(
           combine(damper, spec.excitation(spec.frequencies[i], spec.amplitudes[a]), per_arm, spec.solver.energy_tolerance));
     }
     for (std::size_t d = 0; d < distinct.size(); ++d) {
-      flag_folds(results[a * distinct.size() + d], damper.arms[distinct[d]].name, runs[a].points);
+      flag_folds(results[a * distinct.size() + d], damper.arm_name(distinct[d]), runs[a].points);
     }
   }
   return runs;

@@ -1,6 +1,7 @@
 #include "stockbridge/damper/time_integration.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -37,26 +38,30 @@ Eigen::Vector4d linear_discrete_start(const Arm& arm, const Excitation& excitati
 // ---------------------------------------------------------------------------
 // NewmarkStepper
 
-NewmarkStepper::NewmarkStepper(const Arm& arm, int steps_per_period, int max_newton, double newton_tolerance,
-                               const cable::CantileverOptions& cantilever)
-    : arm_(arm),
-      steps_(steps_per_period),
-      max_newton_(max_newton),
-      newton_tolerance_(newton_tolerance),
-      cantilever_(arm.cable(), cantilever),
-      length_(arm.cable().length()),
-      mass_inverse_(arm.mass_matrix().inverse()) {
-  require_in_range("steps_per_period", steps_per_period, 1, 1 << 30);
+void TimeDomainOptions::validate() const {
+  require_in_range("steps_per_period", steps_per_period, 8, 1 << 22);
   require_in_range("max_newton", max_newton, 1, 10000);
   require_positive("newton_tolerance", newton_tolerance, "");
+  within_field("cantilever", [&] { cantilever.validate(); });
+}
+
+NewmarkStepper::NewmarkStepper(const Arm& arm, const TimeDomainOptions& options)
+    : mass_(arm.mass_matrix()),
+      load_(arm.load_vector()),
+      steps_(options.steps_per_period),
+      max_newton_(options.max_newton),
+      newton_tolerance_(options.newton_tolerance),
+      cantilever_(arm.cable(), options.cantilever),
+      length_(arm.cable().length()),
+      mass_inverse_(arm.mass_matrix().inverse()) {
+  assert(steps_ >= 8 && max_newton_ >= 1 && newton_tolerance_ > 0.0);
 }
 
 void NewmarkStepper::set_excitation(const Excitation& excitation) {
-  excitation.validate();
   period_ = excitation.period();
   h_ = period_ / steps_;
   const double w = excitation.angular_frequency();
-  const Eigen::Vector2d amplitude = -w * w * excitation.displacement_amplitude * arm_.load_vector();
+  const Eigen::Vector2d amplitude = -w * w * excitation.displacement_amplitude * load_;
   forcing_.resize(static_cast<std::size_t>(steps_));
   for (int j = 0; j < steps_; ++j) {
     forcing_[static_cast<std::size_t>(j)] = std::sin(2.0 * std::numbers::pi * j / steps_) * amplitude;
@@ -71,16 +76,22 @@ Eigen::Vector4d NewmarkStepper::state() const {
   return z;
 }
 
+bool NewmarkStepper::fail(Termination termination, std::string where) {
+  failure_.termination = termination;
+  failure_.where = std::move(where);
+  return false;
+}
+
 bool NewmarkStepper::place(const Eigen::Vector4d& z) {
   periods_since_place_ = 0;
-  failure_.clear();
+  failure_ = SolverSummary{};
   const cable::StateDetermination solve = cantilever_.set_trial_tip(z(0), z(1));
-  if (!solve.converged) {
+  if (!solve.converged()) {
     cantilever_.revert_to_last_commit();
-    failure_ = fmt::format("cable state determination failed moving the tip to the initial state "
-                           "(x, phi) = ({:.6g} m, {:.6g} rad): residual {:.3g} rad after {} iterations",
-                           z(0), z(1), solve.residual, solve.iterations);
-    return false;
+    return fail(Termination::inner_failure,
+                fmt::format("cable state determination moving the tip to the initial state (x, phi) = ({:.6g} m, "
+                            "{:.6g} rad): {}",
+                            z(0), z(1), brief_report(solve)));
   }
   cantilever_.commit();
   const cable::CableState& state = cantilever_.committed();
@@ -91,28 +102,26 @@ bool NewmarkStepper::place(const Eigen::Vector4d& z) {
 }
 
 bool NewmarkStepper::step(int j) {
-  const Eigen::Matrix2d& mass = arm_.mass_matrix();
   const Eigen::Vector2d& p = forcing_[static_cast<std::size_t>((j + 1) % steps_)];
   const double q = 0.25 * h_ * h_;  // u_{n+1} = base + q a_{n+1}
   const Eigen::Vector2d base = u_ + h_ * v_ + q * a_;
   Eigen::Vector2d a = a_;  // predictor: constant acceleration
   Eigen::Vector2d u;
   auto where = [&] {
-    return fmt::format("the time step to t = {:.9g} s (step {} of {} in period {} since the start)",
+    return fmt::format("in the time step to t = {:.9g} s (step {} of {} in period {} since the start)",
                        time() + (j + 1) * h_, j + 1, steps_, periods_since_place_ + 1);
   };
   for (int iteration = 0;; ++iteration) {
     u = base + q * a;
     const cable::StateDetermination solve = cantilever_.set_trial_tip(u(0), u(1));
-    if (!solve.converged) {
+    if (!solve.converged()) {
       cantilever_.revert_to_last_commit();
-      failure_ = fmt::format("cable state determination failed in {}: residual {:.3g} rad after {} iterations",
-                             where(), solve.residual, solve.iterations);
-      return false;
+      return fail(Termination::inner_failure,
+                  fmt::format("cable state determination {}: {}", where(), brief_report(solve)));
     }
     const cable::CableState& trial = cantilever_.trial();
     const Eigen::Vector2d f(trial.tip_force, trial.tip_moment(length_));
-    const Eigen::Vector2d inertia = mass * a;
+    const Eigen::Vector2d inertia = mass_ * a;
     const Eigen::Vector2d residual = inertia + f - p;
     const double scale = std::max({scaled_max(inertia, length_), scaled_max(f, length_), scaled_max(p, length_)});
     const double norm = scaled_max(residual, length_);
@@ -122,12 +131,13 @@ bool NewmarkStepper::step(int j) {
     }
     if (iteration == max_newton_ || !std::isfinite(norm)) {
       cantilever_.revert_to_last_commit();
-      failure_ = fmt::format("Newton did not converge in {}: residual {:.3g} of the largest term after {} iterations",
-                             where(), scale > 0.0 ? norm / scale : norm, iteration);
-      return false;
+      failure_.newton_iterations = iteration;
+      failure_.residual = scale > 0.0 ? norm / scale : norm;
+      return fail(std::isfinite(norm) ? Termination::max_iterations : Termination::non_finite,
+                  fmt::format("{} (relative to the largest term)", where()));
     }
     // d residual / d a = M + (h^2/4) K_t, i.e. (h^2/4) (K_t + (4/h^2) M).
-    const Eigen::Matrix2d tangent = mass + q * trial.tip_stiffness(length_);
+    const Eigen::Matrix2d tangent = mass_ + q * trial.tip_stiffness(length_);
     a -= tangent.inverse() * residual;
   }
   cantilever_.commit();
@@ -138,24 +148,13 @@ bool NewmarkStepper::step(int j) {
 }
 
 bool NewmarkStepper::advance_period(ArmPeriod* record) {
-  if (forcing_.empty()) throw InvalidParameter("NewmarkStepper: set_excitation() must be called before stepping");
+  assert(!forcing_.empty() && "set_excitation() must be called before stepping");
   const double dissipated_before = cantilever_.committed().dissipated;
-  if (record) {
-    record->kinematics.resize(2, steps_);
-    record->loads.resize(2, steps_);
-    record->clamp_moment.resize(static_cast<std::size_t>(steps_));
-    record->clamp_curvature.resize(static_cast<std::size_t>(steps_));
-    record->clamp_section_moment.resize(static_cast<std::size_t>(steps_));
-  }
+  if (record) record->resize(steps_);
   for (int j = 0; j < steps_; ++j) {
     if (record) {
-      const cable::CableState& state = cantilever_.committed();
       record->kinematics.col(j) = u_;
-      record->loads.col(j) = Eigen::Vector2d(state.tip_force, state.tip_moment(length_));
-      record->clamp_moment[static_cast<std::size_t>(j)] = state.clamp_moment;
-      record->clamp_curvature[static_cast<std::size_t>(j)] = state.curvature.front();
-      record->clamp_section_moment[static_cast<std::size_t>(j)] =
-          state.clamp_moment - state.tip_force * cantilever_.cable().positions()[0];
+      record->record_loads(j, cantilever_.committed(), cantilever_.cable());
     }
     if (!step(j)) return false;
   }
@@ -167,15 +166,19 @@ bool NewmarkStepper::advance_period(ArmPeriod* record) {
 // ---------------------------------------------------------------------------
 // Periodicity measures
 
-double state_change_measure(const Eigen::Vector4d& delta, const ArmPeriod& period, double angular_frequency,
-                            double length) {
+double amplitude_of(const ArmPeriod& period, double length) {
   double amplitude = 0.0;
   for (Eigen::Index j = 0; j < period.kinematics.cols(); ++j) {
     amplitude = std::max({amplitude, std::abs(period.kinematics(0, j)), length * std::abs(period.kinematics(1, j))});
   }
+  return amplitude;
+}
+
+double state_change_measure(const Eigen::Vector4d& delta, const ArmPeriod& period, double angular_frequency,
+                            double length) {
   const double change = std::max({std::abs(delta(0)), length * std::abs(delta(1)), std::abs(delta(2)) / angular_frequency,
                                    length * std::abs(delta(3)) / angular_frequency});
-  return change / std::max(amplitude, 1e-300);
+  return change / std::max(amplitude_of(period, length), 1e-300);
 }
 
 double loads_change_measure(const Eigen::Matrix2Xd& loads, const Eigen::Matrix2Xd& previous, double length) {
@@ -191,32 +194,21 @@ double loads_change_measure(const Eigen::Matrix2Xd& loads, const Eigen::Matrix2X
 // TimeIntegration
 
 void TimeIntegrationOptions::validate() const {
-  require_in_range("steps_per_period", steps_per_period, 8, 1 << 22);
+  TimeDomainOptions::validate();
   require_in_range("max_periods", max_periods, 2, 100000000);
   require_positive("periodicity_tolerance", periodicity_tolerance, "");
-  require_in_range("max_newton", max_newton, 1, 10000);
-  require_positive("newton_tolerance", newton_tolerance, "");
-  try {
-    cantilever.validate();
-  } catch (const InvalidParameter& e) {
-    throw InvalidParameter(fmt::format("cantilever.{}", e.what()));
-  }
 }
 
-TimeIntegration::TimeIntegration(const Arm& arm, TimeIntegrationOptions options)
-    : arm_(arm),
-      options_(validated(std::move(options))),
-      stepper_(arm, options_.steps_per_period, options_.max_newton, options_.newton_tolerance, options_.cantilever) {}
+TimeIntegration::TimeIntegration(Arm arm, TimeIntegrationOptions options)
+    : arm_(std::move(arm)), options_(validated(std::move(options))), stepper_(arm_, options_) {}
 
 ArmSolution TimeIntegration::solve(const Excitation& excitation, const Eigen::VectorXd* initial_state) {
   excitation.validate();
   if (initial_state && initial_state->size() != 4) {
-    throw InvalidParameter(fmt::format("initial_state has {} values: expected 4 (x, phi, x', phi')",
-                                       initial_state->size()));
+    throw InvalidParameter("initial_state", fmt::format(" has {} values: expected 4 (x, phi, x', phi')",
+                                                        initial_state->size()));
   }
-  if (initial_state && !initial_state->allFinite()) {
-    throw InvalidParameter("initial_state: expected finite values");
-  }
+  if (initial_state && !initial_state->allFinite()) throw InvalidParameter("initial_state", ": expected finite values");
   const auto start_time = std::chrono::steady_clock::now();
   const double w = excitation.angular_frequency();
   const double l = arm_.cable().length();
@@ -225,22 +217,25 @@ ArmSolution TimeIntegration::solve(const Excitation& excitation, const Eigen::Ve
 
   const Eigen::Vector4d z0 =
       initial_state ? Eigen::Vector4d(*initial_state) : linear_discrete_start(arm_, excitation, options_.steps_per_period);
+  solution.unknowns = z0;
   stepper_.set_excitation(excitation);
   stepper_.reset_cable();
   ArmPeriod current, previous;
   Eigen::Vector4d period_start = z0;
   bool have_period = false, step_failed = false;
   if (!stepper_.place(z0)) {
-    summary.message = stepper_.failure();
+    summary.termination = stepper_.failure().termination;
+    summary.where = "at the start: " + brief_report(stepper_.failure());
   } else {
     for (int k = 1; k <= options_.max_periods; ++k) {
       if (!stepper_.advance_period(&current)) {
-        summary.message = fmt::format("{} (after {} complete periods)", stepper_.failure(), k - 1);
+        summary.termination = stepper_.failure().termination;
+        summary.where = fmt::format("{} (after {} complete periods)", brief_report(stepper_.failure()), k - 1);
         step_failed = true;
         break;
       }
       have_period = true;
-      summary.iterations = k;
+      summary.periods = k;
       const Eigen::Vector4d period_end = stepper_.state();
       const double state_change = state_change_measure(period_end - period_start, current, w, l);
       double loads_change = std::numeric_limits<double>::infinity();
@@ -249,27 +244,26 @@ ArmSolution TimeIntegration::solve(const Excitation& excitation, const Eigen::Ve
       summary.periodicity_defect = loads_change;
       solution.unknowns = period_start;
       if (summary.residual <= options_.periodicity_tolerance) {
-        summary.converged = true;
+        summary.termination = Termination::converged;
         break;
       }
       if (k == options_.max_periods) {
-        summary.message = fmt::format(
-            "not periodic after {} periods: over the last period the state at the period start changed by {:.3g} "
-            "(relative to the amplitude) and the loads by {:.3g} (relative to the largest), tolerance {:.3g}",
-            k, state_change, loads_change, options_.periodicity_tolerance);
+        summary.termination = Termination::not_periodic;
+        summary.where = fmt::format(
+            "(over the last period the state at the period start changed by {:.3g} of the amplitude and the loads by "
+            "{:.3g} of the largest, tolerance {:.3g})",
+            state_change, loads_change, options_.periodicity_tolerance);
         break;
       }
       std::swap(previous, current);
       period_start = period_end;
     }
   }
-  summary.periods = summary.iterations;
   if (have_period) {
     // After a failed step `current` is incomplete: report the last complete period.
     solution.period = step_failed ? std::move(previous) : std::move(current);
     summary.energy_error = energy_error(solution.period, excitation);
   }
-  if (solution.unknowns.size() == 0) solution.unknowns = z0;
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
   return solution;
 }

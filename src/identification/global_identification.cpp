@@ -48,7 +48,7 @@ Sums simulate(const cable::CableDescription& description, double offset, const E
   Sums sums{0.0, 0.0};
   double previous = 0.0;
   for (std::size_t k = 0; k < samples.size(); ++k) {
-    if (!samples[k].solve.converged) return {};
+    if (!samples[k].solve.converged()) return {};
     const double output = m.experiment == cable::Experiment::a ? samples[k].tip_force : samples[k].clamp_moment;
     const double residual = output + offset - m.measured[k];
     if (k > from) {
@@ -76,7 +76,7 @@ std::vector<double> model_output(const cable::CableDescription& description, dou
   std::vector<double> output;
   for (const cable::ExperimentSample& s : cable::run_path(cantilever, m.experiment, m.prescribed)) {
     const double value = m.experiment == cable::Experiment::a ? s.tip_force : s.clamp_moment;
-    output.push_back(s.solve.converged ? value + output_offset : std::numeric_limits<double>::quiet_NaN());
+    output.push_back(s.solve.converged() ? value + output_offset : std::numeric_limits<double>::quiet_NaN());
   }
   return output;
 }

@@ -9,13 +9,6 @@ namespace stockbridge::io {
 
 namespace {
 
-using CheckFn = std::function<void(std::string_view, double)>;
-
-/// A positive value within the magnitudes a description may hold (require_plausible).
-CheckFn plausible(std::string_view unit) {
-  return [unit](std::string_view name, double v) { require_plausible(name, v, unit); };
-}
-
 std::vector<double> number_array(const TomlTable& table, std::string_view key) {
   const toml::node* n = table.node(key);
   if (!n) {
@@ -40,69 +33,99 @@ std::vector<double> number_array(const TomlTable& table, std::string_view key) {
   return values;
 }
 
-/// A parameter that is a number or a profile table { s = [...], value = [...] }.
-cable::Profile read_profile(const TomlTable& table, std::string_view key, std::string_view unit) {
+/// A parameter that is a number or a profile table { s = [...], value = [...] }
+/// (its values are the model's to check).
+cable::Profile read_profile(const TomlTable& table, std::string_view key) {
   const toml::node* n = table.node(key);
   if (n && n->is_table()) {
     const TomlTable profile = table.table(key);
     std::vector<double> s = number_array(profile, "s");
     std::vector<double> value = number_array(profile, "value");
     profile.reject_unknown_keys();
-    cable::Profile result = cable::Profile::constant(0.0);
-    try {
-      result = cable::Profile::table(std::move(s), std::move(value), table.qualified(key));
-    } catch (const InvalidParameter& e) {
-      throw InputError(fmt::format("{}{}", table.location(key), e.what()));
-    }
-    result.check_values(table.qualified(key), [&](std::string_view name, double v) {
-      try {
-        require_plausible(name, v, unit);
-      } catch (const InvalidParameter& e) {
-        throw InputError(fmt::format("{}{}", table.location(key), e.what()));
-      }
-    });
-    return result;
+    return cable::Profile::table(std::move(s), std::move(value), table.qualified(key));
   }
   if (n && !n->is_number()) {
     table.fail(key, fmt::format("{}: expected a number or a profile {{ s = [...], value = [...] }}", describe_type(*n)));
   }
-  return cable::Profile::constant(table.number(key, plausible(unit)));
+  return cable::Profile::constant(table.number(key));
 }
 
 }  // namespace
 
 cable::CableDescription read_cable_table(const TomlTable& table) {
   cable::CableDescription d;
-  d.length = table.number("length", plausible("m"));
+  d.length = table.number("length");
   d.sections = static_cast<int>(table.integer("sections", cable::min_sections, cable::max_sections));
-  d.ei = read_profile(table, "ei", "N m^2");
+  d.ei = read_profile(table, "ei");
   for (const TomlTable& element : table.table_array("jenkin", false)) {
     cable::JenkinProfile jenkin;
-    jenkin.c = read_profile(element, "c", "N m^2");
-    jenkin.h = read_profile(element, "h", "N m");
-    jenkin.k0 = element.optional_number("k0", [](std::string_view name, double v) {
-      require_plausible_or_zero(name, v, "N");
-    }).value_or(0.0);
+    jenkin.c = read_profile(element, "c");
+    jenkin.h = read_profile(element, "h");
+    jenkin.k0 = element.optional_number("k0").value_or(0.0);
     element.reject_unknown_keys();
     d.jenkin.push_back(std::move(jenkin));
   }
-  d.mirror_length = table.optional_number("mirror_length", plausible("m"));
-  d.lever_arm_cap = table.optional_number("lever_arm_cap", plausible("m"));
+  d.mirror_length = table.optional_number("mirror_length");
+  d.lever_arm_cap = table.optional_number("lever_arm_cap");
   table.reject_unknown_keys();
-  try {
-    d.validate();
-  } catch (const InvalidParameter& e) {
-    throw InputError(fmt::format("{}[{}] {}", table.location("length"), table.key_path(), e.what()));
-  }
   return d;
 }
 
-cable::CableDescription read_cable_file(const std::filesystem::path& path) {
-  const toml::table document = parse_toml_file(path);
-  const TomlTable top(document, path.string(), "");
-  const cable::CableDescription description = read_cable_table(top.table("cable"));
-  top.reject_unknown_keys();
-  return description;
+namespace {
+
+cable::Cable build_cable(const toml::table& document, const TomlSource& source) {
+  return build_from_file(document, source, [&] {
+    const TomlTable top(document, source, "");
+    cable::CableDescription description = read_cable_table(top.table("cable"));
+    top.reject_unknown_keys();
+    return within_field("cable", [&] { return cable::Cable(std::move(description)); });
+  });
+}
+
+std::string profile_toml(const cable::Profile& p) {
+  if (p.is_constant()) return format_value(p.values()[0]);
+  std::string s, v;
+  for (std::size_t i = 0; i < p.values().size(); ++i) {
+    s += fmt::format("{}{}", i ? ", " : "", format_value(p.positions()[i]));
+    v += fmt::format("{}{}", i ? ", " : "", format_value(p.values()[i]));
+  }
+  return fmt::format("{{ s = [{}], value = [{}] }}", s, v);
+}
+
+}  // namespace
+
+cable::Cable read_cable_file(const std::filesystem::path& path) {
+  return build_cable(parse_toml_file(path), TomlSource{path.string(), true});
+}
+
+cable::Cable read_cable_text(std::string_view text, std::string_view source) {
+  const TomlSource where{std::string(source), false};
+  return build_cable(parse_toml_text(text, source), where);
+}
+
+std::string cable_table_toml(const cable::CableDescription& c) {
+  std::string text = fmt::format("length = {}   # m\nsections = {}\nei = {}   # N m^2\njenkin = [", format_value(c.length),
+                                 c.sections, profile_toml(c.ei));
+  for (std::size_t j = 0; j < c.jenkin.size(); ++j) {
+    const cable::JenkinProfile& e = c.jenkin[j];
+    text += fmt::format("{} {{ c = {}, h = {}{} }}", j ? "," : "", profile_toml(e.c), profile_toml(e.h),
+                        e.k0 > 0.0 ? fmt::format(", k0 = {}", format_value(e.k0)) : "");
+  }
+  text += " ]   # N m^2, N m\n";
+  if (c.mirror_length) text += fmt::format("mirror_length = {}   # m\n", format_value(*c.mirror_length));
+  if (c.lever_arm_cap) text += fmt::format("lever_arm_cap = {}   # m\n", format_value(*c.lever_arm_cap));
+  return text;
+}
+
+std::string cable_file_toml(const cable::CableDescription& description, std::string_view comment) {
+  std::string text;
+  std::size_t start = 0;
+  while (start < comment.size()) {  // every comment line as a TOML comment
+    const std::size_t end = std::min(comment.find('\n', start), comment.size());
+    text += fmt::format("# {}\n", comment.substr(start, end - start));
+    start = end + 1;
+  }
+  return text + "[cable]\n" + cable_table_toml(description);
 }
 
 }  // namespace stockbridge::io

@@ -33,7 +33,7 @@ strand::StrandLayer read_layer(const TomlTable& table) {
 
 strand::Strand read_strand_file(const std::filesystem::path& path) {
   const toml::table document = parse_toml_file(path);
-  const TomlTable root(document, path.string(), "");
+  const TomlTable root(document, TomlSource{path.string(), true}, "");
   accept_only(root, {"strand"});
   const TomlTable table = root.table("strand");
   accept_only(table, {"youngs_modulus", "core_radius", "layer"});

@@ -23,6 +23,14 @@ toml::table parse_toml_file(const std::filesystem::path& path) {
   }
 }
 
+toml::table parse_toml_text(std::string_view text, std::string_view source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}: TOML syntax error: {}", source, printable(e.description(), 200)));
+  }
+}
+
 std::string describe_type(const toml::node& node) {
   switch (node.type()) {
     case toml::node_type::table: return "a table";
@@ -38,8 +46,24 @@ std::string describe_type(const toml::node& node) {
   }
 }
 
-TomlTable::TomlTable(const toml::table& table, std::string file, std::string key_path)
-    : table_(&table), file_(std::move(file)), key_path_(std::move(key_path)) {}
+std::string field_location(const toml::table& document, const TomlSource& source, std::string_view field) {
+  const std::string& file = source.name;
+  std::string path(source.lines ? field : std::string_view());
+  while (!path.empty()) {
+    const toml::node_view<const toml::node> node = document.at_path(path);
+    if (node) {
+      const auto line = node.node()->source().begin.line;
+      if (line > 0) return fmt::format("{}:{}: ", file, line);
+    }
+    // The nearest ancestor: drop the last ".key" or "[index]".
+    const std::size_t cut = path.find_last_of(".[");
+    path.resize(cut == std::string::npos ? 0 : cut);
+  }
+  return fmt::format("{}: ", file);
+}
+
+TomlTable::TomlTable(const toml::table& table, TomlSource source, std::string key_path)
+    : table_(&table), source_(std::move(source)), key_path_(std::move(key_path)) {}
 
 bool TomlTable::contains(std::string_view key) const {
   asked_.insert(std::string(key));
@@ -52,7 +76,7 @@ std::string TomlTable::qualified(std::string_view key) const {
 
 std::string TomlTable::location_of(const toml::node& node) const {
   const auto line = node.source().begin.line;
-  return line > 0 ? fmt::format("{}:{}: ", file_, line) : fmt::format("{}: ", file_);
+  return line > 0 && source_.lines ? fmt::format("{}:{}: ", source_.name, line) : fmt::format("{}: ", source_.name);
 }
 
 std::string TomlTable::location(std::string_view key) const {
@@ -89,6 +113,7 @@ double as_number(const TomlTable& t, const toml::node& n, std::string_view key) 
 double TomlTable::number(std::string_view key, const std::function<void(std::string_view, double)>& check) const {
   const toml::node& n = required(key, "a number");
   const double value = as_number(*this, n, key);
+  if (!check) return value;
   try {
     check(qualified(key), value);
   } catch (const InvalidParameter& e) {
@@ -140,7 +165,7 @@ std::optional<std::string> TomlTable::optional_string(std::string_view key) cons
 TomlTable TomlTable::table(std::string_view key) const {
   const toml::node& n = required(key, "a table");
   if (!n.is_table()) fail(key, fmt::format("{}: expected a table", describe_type(n)));
-  return TomlTable(*n.as_table(), file_, qualified(key));
+  return TomlTable(*n.as_table(), source_, qualified(key));
 }
 
 std::optional<TomlTable> TomlTable::optional_table(std::string_view key) const {
@@ -160,7 +185,7 @@ std::vector<TomlTable> TomlTable::table_array(std::string_view key, bool require
     if (!element.is_table()) {
       throw InputError(fmt::format("{}{}: {}: expected a table", location_of(element), path, describe_type(element)));
     }
-    tables.emplace_back(*element.as_table(), file_, path);
+    tables.emplace_back(*element.as_table(), source_, path);
   }
   return tables;
 }

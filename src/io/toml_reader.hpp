@@ -17,23 +17,35 @@
 
 #include <toml++/toml.h>
 
+#include "stockbridge/core/error.hpp"
+
 namespace stockbridge::io {
 
 /// Parses a whole TOML file; throws InputError "<file>:<line>:<col>: <what>" on syntax errors.
 toml::table parse_toml_file(const std::filesystem::path& path);
+/// Parses TOML text that is not a user's file (built by a front end from its own
+/// values); messages name `source` and no line.
+toml::table parse_toml_text(std::string_view text, std::string_view source);
+
+/// Where messages point: a file (with lines) or a front end's values (without).
+struct TomlSource {
+  std::string name;
+  bool lines = true;
+};
 
 class TomlTable {
  public:
-  TomlTable(const toml::table& table, std::string file, std::string key_path);
+  TomlTable(const toml::table& table, TomlSource source, std::string key_path);
 
   bool contains(std::string_view key) const;
 
-  /// A required number (integers are accepted); `check` validates it with the
-  /// library's require_* functions, whose InvalidParameter becomes an InputError
+  /// A required number (integers are accepted). Ranges are the model's to check
+  /// (build_from_file), except where `check` is given (values the model does not
+  /// own, such as a file's own settings); its InvalidParameter becomes an InputError
   /// with the file, line and full key.
-  double number(std::string_view key, const std::function<void(std::string_view, double)>& check) const;
+  double number(std::string_view key, const std::function<void(std::string_view, double)>& check = {}) const;
   std::optional<double> optional_number(std::string_view key,
-                                        const std::function<void(std::string_view, double)>& check) const;
+                                        const std::function<void(std::string_view, double)>& check = {}) const;
   long long integer(std::string_view key, long long lo, long long hi) const;
   std::optional<long long> optional_integer(std::string_view key, long long lo, long long hi) const;
   std::optional<bool> optional_boolean(std::string_view key) const;
@@ -55,7 +67,7 @@ class TomlTable {
   std::string location_of(const toml::node& node) const;
   /// The key's full dotted path, e.g. "cable.jenkin[0].h".
   std::string qualified(std::string_view key) const;
-  const std::string& file() const { return file_; }
+  const std::string& file() const { return source_.name; }
   const std::string& key_path() const { return key_path_; }
 
   /// Throws InputError "<location><qualified key>: <message>".
@@ -65,12 +77,29 @@ class TomlTable {
   const toml::node& required(std::string_view key, std::string_view expected) const;
 
   const toml::table* table_;
-  std::string file_;
+  TomlSource source_;
   std::string key_path_;
   mutable std::set<std::string, std::less<>> asked_;  // every key a reader asked for: the known keys
 };
 
 /// Describes a node's TOML type for messages ("a string", "an array", ...).
 std::string describe_type(const toml::node& node);
+
+/// "<file>:<line>: " for the node a field path names ("arm[1].cable.jenkin[0].h"),
+/// or for its nearest ancestor present in the document; "<file>: " if none is.
+std::string field_location(const toml::table& document, const TomlSource& source, std::string_view field);
+
+/// Builds the model from a parsed file: the model validates itself, and an
+/// InvalidParameter it throws (its field path as the file spells it) becomes an
+/// InputError at that field's line, its message unchanged. The one place where the
+/// model's validation meets the file.
+template <class Build>
+auto build_from_file(const toml::table& document, const TomlSource& source, Build&& build) -> decltype(build()) {
+  try {
+    return build();
+  } catch (const InvalidParameter& e) {
+    throw InputError(field_location(document, source, e.field()) + e.what());
+  }
+}
 
 }  // namespace stockbridge::io

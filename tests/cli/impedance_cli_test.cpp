@@ -132,7 +132,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadRun{"no_clamp", "[[arm]]\nmass = 1\n", "impedance FILE --velocity 0.2", "'clamp'"},
         BadRun{"no_arm", "[clamp]\nmass = 0.7\n", "impedance FILE --velocity 0.2", "'arm'"},
-        BadRun{"negative_mass", "[clamp]\nmass = -0.7\n", "impedance FILE --velocity 0.2", "clamp.mass = -0.7"},
+        BadRun{"negative_mass", "[clamp]\nmass = -0.7\n[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\n",
+               "impedance FILE --velocity 0.2", "clamp.mass = -0.7"},
         BadRun{"unknown_arm_key", "[clamp]\nmass = 0.7\n[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\ncolour = 1\n[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\n",
                "impedance FILE --velocity 0.2", "arm[0].colour"},
         BadRun{"offset_beyond_cable", "[clamp]\nmass = 0.7\n[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.5\n[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\n",

@@ -8,20 +8,20 @@
 namespace stockbridge::damper {
 namespace {
 
-int converged_points(const DamperDescription& damper, std::vector<double> frequencies, double velocity) {
+int converged_points(const Damper& damper, std::vector<double> frequencies, double velocity) {
   SweepSpec spec;
   spec.frequencies = std::move(frequencies);
   spec.amplitudes = {velocity};
   int converged = 0;
   const std::vector<SweepRun> runs = run_sweep(damper, spec);
   for (const ImpedancePoint& p : runs.front().points) {
-    converged += p.converged;
-    EXPECT_TRUE(p.converged) << p.frequency_hz << " Hz: " << p.message;
+    converged += p.converged();
+    EXPECT_TRUE(p.converged()) << p.frequency_hz << " Hz: " << p.failure;
   }
   return converged;
 }
 
-DamperDescription stiff_low_friction(double c, double h) {
+Damper stiff_low_friction(double c, double h) {
   damper::ArmDescription arm = testing::sauter_arm();
   arm.cable = cable::CableDescription::uniform(0.1875, 40, 2.8, {{c, h}});
   return testing::damper_of({arm, arm});

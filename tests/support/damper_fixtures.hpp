@@ -29,19 +29,21 @@ inline damper::ArmDescription linear_arm(double ei, bool as_sticking_element) {
   return a;
 }
 
-inline damper::DamperDescription damper_of(std::vector<damper::ArmDescription> arms, double clamp_mass = 0.7) {
+/// A (validated) damper of these arms.
+inline damper::Damper damper_of(std::vector<damper::ArmDescription> arms, double clamp_mass = 0.7) {
   damper::DamperDescription d;
   d.clamp_mass = clamp_mass;
   d.arms = std::move(arms);
-  return d;
+  return damper::Damper(std::move(d));
 }
 
 /// Closed-form impedance of a damper whose arms are linear with the classical beam
 /// tip stiffness K = [[12, -6 l], [-6 l, 4 l^2]] EI / l^3 (F, Q over x, phi):
 /// Z = i W m_c + sum_k  W^2 (K (K - W^2 M)^-1 L)_0 / (i W), from the phasor
 /// x_c = V / (i W), u = (K - W^2 M)^-1 L (-W^2 x_c), F_c = m_c x_c'' - sum F_k.
-inline std::complex<double> linear_impedance(const damper::DamperDescription& d, const std::vector<double>& ei,
+inline std::complex<double> linear_impedance(const damper::Damper& damper, const std::vector<double>& ei,
                                              double frequency_hz) {
+  const damper::DamperDescription& d = damper.description();
   const double w = 2.0 * std::numbers::pi * frequency_hz;
   std::complex<double> z(0.0, w * d.clamp_mass);
   for (std::size_t k = 0; k < d.arms.size(); ++k) {

@@ -22,7 +22,7 @@ Cantilever dissertation_cable(int sections = 40) {
 TEST(CableClosedForm, ElasticExperimentA) {
   Cantilever cantilever(Cable(CableDescription::uniform(kLength, 40, 22.8, {})));
   for (const double x : {0.001, -0.02, 0.05}) {
-    ASSERT_TRUE(cantilever.set_trial_deflection(x).converged);
+    ASSERT_TRUE(cantilever.set_trial_deflection(x).converged());
     EXPECT_NEAR(cantilever.trial().tip_force, 3.0 * 22.8 * x / std::pow(kLength, 3), 1e-10 * std::abs(cantilever.trial().tip_force));
     EXPECT_NEAR(cantilever.trial().tip_moment(kLength), 0.0, 1e-12);
     cantilever.commit();
@@ -32,7 +32,7 @@ TEST(CableClosedForm, ElasticExperimentA) {
 TEST(CableClosedForm, ElasticExperimentB) {
   Cantilever cantilever(Cable(CableDescription::uniform(kLength, 40, 22.8, {})));
   for (const double phi : {0.01, -0.1, 0.2}) {
-    ASSERT_TRUE(cantilever.set_trial_rotation(phi).converged);
+    ASSERT_TRUE(cantilever.set_trial_rotation(phi).converged());
     const CableState& s = cantilever.trial();
     EXPECT_NEAR(s.clamp_moment, -2.0 * 22.8 * phi / kLength, 1e-10 * std::abs(s.clamp_moment));
     EXPECT_NEAR(s.deflection, 0.0, 1e-14);
@@ -49,7 +49,7 @@ TEST(CableClosedForm, FullySlippingLimitExperimentA) {
   double previous_gap = -1e300;
   for (int i = 1; i <= 200; ++i) {
     const double x = 0.2 * i / 200.0;
-    ASSERT_TRUE(cantilever.set_trial_deflection(x).converged);
+    ASSERT_TRUE(cantilever.set_trial_deflection(x).converged());
     cantilever.commit();
     if (i % 25 != 0) continue;
     const double asymptote = 3.0 * kEi * x / std::pow(kLength, 3) + 3.0 * kH / (2.0 * kLength);
@@ -70,7 +70,7 @@ TEST(CableClosedForm, FullySlippingLimitExperimentB) {
   double previous_gap = -1e300, first_gap = 0.0;
   for (int i = 1; i <= 400; ++i) {
     const double phi = 0.6 * i / 400.0;
-    ASSERT_TRUE(cantilever.set_trial_rotation(phi).converged);
+    ASSERT_TRUE(cantilever.set_trial_rotation(phi).converged());
     cantilever.commit();
     const double gap = cantilever.committed().clamp_moment - (-2.0 * kEi * phi / kLength - kH);
     if (i >= 100 && i % 50 == 0) {
@@ -91,7 +91,7 @@ TEST(CableClosedForm, FullySlippingLimitExperimentB) {
 TEST(CableClosedForm, ModelFiguresForExperimentB) {
   Cantilever cantilever = dissertation_cable(40);
   for (int i = 1; i <= 100; ++i) {
-    ASSERT_TRUE(cantilever.set_trial_rotation(0.15 * i / 100.0).converged);
+    ASSERT_TRUE(cantilever.set_trial_rotation(0.15 * i / 100.0).converged());
     cantilever.commit();
   }
   EXPECT_NEAR(cantilever.committed().clamp_moment, -3.52, 0.005);

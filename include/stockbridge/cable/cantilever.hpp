@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "stockbridge/cable/cable.hpp"
+#include "stockbridge/numerics/solver_summary.hpp"
 #include "stockbridge/section/committable.hpp"
 
 namespace stockbridge::cable {
@@ -65,13 +66,11 @@ struct CantileverOptions {
   void validate() const;
 };
 
-/// How a state determination ended: never a number without this.
-struct StateDetermination {
-  bool converged = false;
-  int iterations = 0;     ///< Newton iterations (each one evaluation of the cable, plus line search)
-  int evaluations = 0;    ///< cable evaluations in all
-  double residual = 0.0;  ///< final kinematic residual, rad (deflection divided by l)
-};
+/// How a state determination ended: never a number without this. Fills
+/// termination, newton_iterations (each one evaluation of the cable, plus line
+/// search), evaluations (cable evaluations in all) and residual (the final kinematic
+/// residual, rad: deflections divided by l).
+using StateDetermination = SolverSummary;
 
 /// The cable with the trial/commit protocol.
 class Cantilever {

@@ -19,10 +19,26 @@ class Error : public std::runtime_error {
 };
 
 /// A parameter or option has a value outside its admissible range
-/// (negative stiffness, slip moment <= 0, cycles < 1, ...).
+/// (negative stiffness, slip moment <= 0, cycles < 1, ...). It carries the path of
+/// the offending field as the description files spell it
+/// ("arm[1].cable.jenkin[0].h"), so that a reader can point at the file's line
+/// without re-wording the message: what() is the field followed by the detail
+/// ("arm[1].mass" + " = -1: expected a finite value > 0 (kg)").
 class InvalidParameter : public Error {
  public:
-  using Error::Error;
+  InvalidParameter(std::string field, std::string detail);
+  /// A message that names no single field.
+  explicit InvalidParameter(const std::string& message);
+
+  const std::string& field() const { return field_; }
+  const std::string& detail() const { return detail_; }
+  /// The same error seen from the enclosing description: the field becomes
+  /// "<parent>.<field>" ("<parent><field>" for an index such as "[0].h").
+  InvalidParameter within(std::string_view parent) const;
+
+ private:
+  std::string field_;
+  std::string detail_;
 };
 
 /// A file could not be read, or its contents are malformed
@@ -74,6 +90,17 @@ void require_plausible(std::string_view name, double value, std::string_view uni
 void require_plausible_or_zero(std::string_view name, double value, std::string_view unit);
 /// Checks lo <= value <= hi for an integer count.
 void require_in_range(std::string_view name, long long value, long long lo, long long hi);
+
+/// Runs `build` and re-throws its InvalidParameter as seen from `parent`
+/// (InvalidParameter::within): for a description that holds another.
+template <class Build>
+auto within_field(std::string_view parent, Build&& build) -> decltype(build()) {
+  try {
+    return build();
+  } catch (const InvalidParameter& e) {
+    throw e.within(parent);
+  }
+}
 
 /// `value` after its validate() member accepted it (throws otherwise): for member
 /// initialisers, so that an object is never built from bad parameters.

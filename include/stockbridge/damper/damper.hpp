@@ -28,8 +28,6 @@ struct ArmDescription {
   double offset = 0.0;   ///< b, m: cable tip to centre of gravity, toward the clamp
   cable::CableDescription cable;
 
-  /// Throws InvalidParameter naming the field ("arm[1].mass", "arm[0].cable.length").
-  void validate(std::string_view name_in_messages) const;
   /// Same mechanics (everything but the name): such arms move alike.
   bool same_mechanics(const ArmDescription& other) const;
 };
@@ -37,13 +35,14 @@ struct ArmDescription {
 struct DamperDescription {
   double clamp_mass = 0.0;  ///< m_c, kg, >= 0
   std::vector<ArmDescription> arms;
-
-  void validate() const;
 };
 
-/// One arm: its constant model (mass matrix, load vector, discretised cable).
+/// One arm: its constant model (mass matrix, load vector, discretised cable),
+/// valid by construction.
 class Arm {
  public:
+  /// Throws InvalidParameter naming the field as the description spells it
+  /// ("mass", "cable.jenkin[0].h").
   explicit Arm(ArmDescription description);
 
   const ArmDescription& description() const { return description_; }
@@ -63,6 +62,31 @@ class Arm {
   cable::Cable cable_;
   Eigen::Matrix2d mass_matrix_;
   Eigen::Vector2d load_vector_;
+};
+
+/// The damper: the clamp and its arms, valid by construction, with the arms that
+/// move alike grouped (identical arms are solved once).
+class Damper {
+ public:
+  /// Throws InvalidParameter naming the field as a damper file spells it
+  /// ("clamp.mass", "arm[1].cable.jenkin[0].h").
+  explicit Damper(DamperDescription description);
+
+  const DamperDescription& description() const { return description_; }
+  double clamp_mass() const { return description_.clamp_mass; }
+  const std::vector<Arm>& arms() const { return arms_; }
+  /// The arm's name from the description, or "arm <k+1>" where it has none.
+  std::string arm_name(std::size_t k) const;
+  /// For each arm, the index of the first arm with the same mechanics.
+  const std::vector<std::size_t>& representative() const { return representative_; }
+  /// The arms that represent themselves (solved; the others copy them).
+  const std::vector<std::size_t>& distinct() const { return distinct_; }
+
+ private:
+  DamperDescription description_;
+  std::vector<Arm> arms_;
+  std::vector<std::size_t> representative_;
+  std::vector<std::size_t> distinct_;
 };
 
 /// Harmonic clamp motion x_c = X sin(W t), velocity V cos(W t), V = W X.

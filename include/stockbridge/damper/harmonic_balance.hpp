@@ -46,72 +46,93 @@ struct HarmonicBalanceOptions {
   int sample_count() const;
 };
 
+/// What a solve leaves for the next one along a path (as in a stepped-sine test):
+/// the cable's periodic state at the last solution, where the next evaluation
+/// starts, and the Jacobian of the force residual there, exact as long as the path
+/// stays on the same piece of the piecewise-linear cable map and so reused across
+/// Newton iterations and neighbouring frequencies. Empty: a cold start (virgin
+/// cable, no stored Jacobian).
+struct HarmonicBalanceMemory {
+  std::optional<cable::CableState> cable_state;
+  Eigen::MatrixXd force_jacobian;  ///< d(force residual)/dq (empty: none stored)
+  int jacobian_sign = 0;           ///< sign of det(J) at the last solution (0: unknown)
+
+  void clear() { *this = HarmonicBalanceMemory{}; }
+};
+
+/// Scratch space of the evaluations: the cable driven through the periods and its
+/// sensitivities. One per thread; it carries no result from one call to the next.
+struct HarmonicBalanceWorkspace {
+  PeriodicCable cable;
+  Eigen::MatrixXd sensitivity;
+};
+
+/// One evaluation of the harmonic-balance equations at unknowns q.
+struct HarmonicBalanceEvaluation {
+  /// The periodic cable's report: the residual exists only if it converged
+  /// (else inner_failure or non_finite, with `where`).
+  SolverSummary cable;
+  Eigen::VectorXd residual;        ///< N: Galerkin coefficients (or collocation values) of M u'' + f - L x_c''
+  ArmPeriod period;                ///< the kinematics and loads of the final period
+  cable::CableState end_state;     ///< the cable's state after it: where a chained evaluation goes on
+  Eigen::MatrixXd force_jacobian;  ///< d(force residual)/dq, if asked for
+  Eigen::VectorXd d_frequency;     ///< dR/dW at constant velocity amplitude, if asked for
+
+  bool ok() const { return cable.converged(); }
+};
+
+/// The harmonic-balance (or collocation) model of one arm: basis, projection and
+/// the arm, constant once built, so one model serves any number of solves and
+/// threads; what changes lives in the memory and workspace the caller passes.
 class HarmonicBalance {
  public:
-  HarmonicBalance(const Arm& arm, HarmonicBalanceOptions options);
+  HarmonicBalance(Arm arm, HarmonicBalanceOptions options);
 
+  const Arm& arm() const { return arm_; }
   const HarmonicBalanceOptions& options() const { return options_; }
   int unknown_count() const { return 2 * (2 * options_.harmonics + 1); }
+  HarmonicBalanceWorkspace make_workspace() const;
 
   /// The all-stick linear steady state (a starting point where no predictor exists).
   Eigen::VectorXd linear_guess(const Excitation& excitation) const;
-
-  /// Newton from `initial` (unknown_count() coefficients, m and rad).
-  ///
-  /// The cable's hysteretic state is carried along: each evaluation starts from the
-  /// state the last accepted evaluation ended in (the first from the virgin state, or,
-  /// with `continue_from_last`, from the periodic state of the last converged solve,
-  /// as in a stepped-sine test). The cable's memory under two prescribed tip
-  /// coordinates settles over several periods, and chaining lets those periods
-  /// accumulate over the Newton iterations instead of being repeated in each; the
-  /// Jacobian is exact for the map with the start state held fixed. Convergence
-  /// requires the residual and the periodicity defect of the same evaluation.
-  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& initial, bool continue_from_last = false);
-
-  /// Pseudo-arclength continuation in (q, W) at constant velocity amplitude V, from
-  /// the solution `q0` at `f0_hz` (the last converged solve, whose cable state it
-  /// continues) until the frequency has passed `target_hz`, turning through folds.
-  /// Returns the solutions at every crossing of `target_hz` (polished at exactly that
-  /// frequency): one on a single-valued branch, several where the branch folds back
-  /// over it; empty if the branch could not be followed there in `max_steps` steps.
-  std::vector<ArmSolution> continue_along_branch(double velocity, const Eigen::VectorXd& q0, double f0_hz,
-                                                 double target_hz, int max_steps = 60);
-
-  /// The residual (N) at q, and optionally its exact Jacobian
-  /// and its derivative with respect to the angular frequency at constant velocity
-  /// amplitude (for arclength continuation). Returns false if the cable failed.
-  bool residual(const Excitation& excitation, const Eigen::VectorXd& q, int periods, Eigen::VectorXd& r,
-                Eigen::MatrixXd* jacobian, Eigen::VectorXd* d_frequency, PeriodicCableResult* loads);
-
   /// The excitation force scale m W^2 X used for the tolerance, N.
   double force_scale(const Excitation& excitation) const;
 
- private:
-  ArmPeriod period_of(const Eigen::VectorXd& q, const PeriodicCableResult& loads) const;
-  /// J = the stored force Jacobian + the inertia terms at this frequency.
-  void assemble_jacobian(const Excitation& excitation, Eigen::MatrixXd& jacobian) const;
-  /// One arclength corrector: Newton on [R(q, W); t . (y - y_pred)] = 0, scaled.
-  bool correct_on_branch(double velocity, Eigen::VectorXd& y, const Eigen::VectorXd& tangent, const Eigen::VectorXd& y_pred,
-                         const Eigen::VectorXd& scale, Eigen::MatrixXd& jacobian, Eigen::VectorXd& d_frequency);
-  /// Newton's iterations; updates q and loads.
-  bool newton(const Excitation& excitation, Eigen::VectorXd& q, PeriodicCableResult& loads, SolverSummary& summary);
+  /// Which derivatives an evaluation computes (bit flags).
+  enum Derivatives : unsigned { kNone = 0, kJacobian = 1, kFrequency = 2 };
+  /// Drives the cable through `periods` periods of the tip motion q from `start`
+  /// (nullptr: the virgin state) and evaluates the equations on the last one, with
+  /// the exact force Jacobian (forward sensitivities, the start state held fixed)
+  /// and dR/dW if asked for. Check ok() before using any number.
+  [[nodiscard]] HarmonicBalanceEvaluation evaluate(const Excitation& excitation, const Eigen::VectorXd& q,
+                                                   const cable::CableState* start, int periods, unsigned derivatives,
+                                                   HarmonicBalanceWorkspace& workspace) const;
+  /// J = the force Jacobian + the inertia terms at this frequency.
+  Eigen::MatrixXd jacobian(const Excitation& excitation, const Eigen::MatrixXd& force_jacobian) const;
 
-  const Arm& arm_;
+  /// Newton from `initial` (unknown_count() coefficients, m and rad), starting the
+  /// cable from memory.cable_state and reusing memory.force_jacobian where stored.
+  ///
+  /// Each evaluation starts from the state the last accepted one ended in: the
+  /// cable's memory under two prescribed tip coordinates settles over several
+  /// periods, and chaining lets those periods accumulate over the Newton
+  /// iterations instead of being repeated in each. Convergence requires the
+  /// residual (relative to force_scale) and the periodicity defect of the same
+  /// evaluation; once the equations hold, further periods at the same coefficients
+  /// let the memory settle. On convergence `memory` holds this solution's state and
+  /// Jacobian; otherwise it is cleared. summary: newton_iterations, periods (in all),
+  /// evaluations, jacobians, residual, periodicity_defect, energy_error.
+  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& initial, HarmonicBalanceMemory& memory,
+                    HarmonicBalanceWorkspace& workspace) const;
+  /// A cold solve (virgin cable, no stored Jacobian).
+  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& initial) const;
+
+ private:
+  Arm arm_;
   HarmonicBalanceOptions options_;
   int samples_;
   Eigen::MatrixXd basis_;       // N x (2H+1): 1, cos(k W t_j), sin(k W t_j)
   Eigen::MatrixXd projection_;  // (2H+1) x N: Fourier coefficients from samples (harmonic balance)
-  PeriodicCable cable_;
-  Eigen::MatrixXd sensitivity_;
-  // d(force residual)/dq of the last exact evaluation: exact as long as the path stays
-  // on the same piece of the piecewise-linear cable map, so it is reused across Newton
-  // iterations and neighbouring frequencies and refreshed when convergence slows.
-  Eigen::MatrixXd force_jacobian_;
-  bool force_jacobian_stored_ = false;
-  int last_sign_ = 0;  // determinant sign at the last solution
-  SolverSummary* counting_ = nullptr;  // where residual() counts its evaluations
-  std::optional<cable::CableState> last_state_;  // periodic state of the last converged solve
-  std::optional<cable::CableState> start_;       // where the cable's next evaluation starts (empty: virgin)
 };
 
 }  // namespace stockbridge::damper

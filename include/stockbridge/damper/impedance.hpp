@@ -7,6 +7,7 @@
 // equals the energy the sliders dissipate per period / T.
 
 #include <complex>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -14,6 +15,8 @@
 
 #include "stockbridge/damper/harmonic_balance.hpp"
 #include "stockbridge/damper/periodic_solution.hpp"
+#include "stockbridge/damper/shooting.hpp"
+#include "stockbridge/damper/time_integration.hpp"
 
 namespace stockbridge::damper {
 
@@ -23,31 +26,50 @@ enum class Method { harmonic_balance, collocation, time_integration, shooting };
 Method parse_method(std::string_view name);
 std::string_view method_name(Method method);
 
+/// Every method's full options; `method` picks the one used. Each method keeps its
+/// own defaults (collocation needs more harmonics than harmonic balance, since its
+/// 2H + 1 collocation points are also its sampling).
 struct SolverOptions {
   Method method = Method::harmonic_balance;
-  HarmonicBalanceOptions harmonic_balance;  ///< also for collocation (its `collocation` flag is set)
-  int steps_per_period = 256;               ///< time integration and shooting
+  HarmonicBalanceOptions harmonic_balance;
+  HarmonicBalanceOptions collocation = collocation_defaults();
+  TimeIntegrationOptions time_integration;
+  ShootingOptions shooting;
   /// A point whose energy balance (SolverSummary::energy_error, relative to the
   /// apparent power) is off by more than this is not trusted: converged = false.
   /// Typical errors: 1e-4 (harmonic balance, 128 samples), 1e-3 (time, 64 steps).
   double energy_tolerance = 0.01;
+
   void validate() const;
+  static HarmonicBalanceOptions collocation_defaults();
 };
 
-/// One arm's periodic solver, whichever the method (a small interface the damper sees).
+/// Where a solve along a path (a sweep, a continuation) starts: the last converged
+/// solution. Empty: a cold start, from the solver's own starting point.
+struct Continuation {
+  Eigen::VectorXd unknowns;      ///< the solver's unknowns at the solution
+  Excitation excitation;         ///< where it was solved
+  HarmonicBalanceMemory memory;  ///< harmonic balance and collocation: its cable state and Jacobian
+
+  bool empty() const { return unknowns.size() == 0; }
+  /// The unknowns scaled to the target's displacement amplitude: the predictor.
+  Eigen::VectorXd predictor(const Excitation& target) const;
+};
+
+/// One arm's periodic solver, whichever the method (a small interface the damper
+/// sees). It owns its scratch space, so one solver serves one thread.
 class ArmSolver {
  public:
   virtual ~ArmSolver() = default;
-  /// `predictor`: the unknowns of a nearby solution (empty: the solver's own start).
-  virtual ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& predictor) = 0;
-  /// Follows the branch of the solution `from` (at `from_frequency_hz`) to the target
-  /// excitation by arclength continuation, at constant velocity amplitude; the
-  /// solutions at every crossing of the target frequency (several where the branch
-  /// folds back over it). Empty where the method cannot (only harmonic balance can).
-  virtual std::vector<ArmSolution> continue_to(const Excitation& /*target*/, const Eigen::VectorXd& /*from*/,
-                                               double /*from_frequency_hz*/) {
-    return {};
-  }
+  /// Solves at `excitation`, starting from `path`. On convergence `path` moves on to
+  /// this solution; otherwise its unknowns stay and the solver's memory is cleared.
+  virtual ArmSolution solve(const Excitation& excitation, Continuation& path) = 0;
+  /// Follows the branch through `path` to the target excitation by arclength
+  /// continuation at constant velocity amplitude: the solutions at every crossing
+  /// of the target frequency (several where the branch folds back over it), and
+  /// `path` moves on to the last. Empty where the method cannot (only harmonic
+  /// balance and collocation can) or the branch was lost.
+  virtual std::vector<ArmSolution> continue_to(const Excitation& /*target*/, Continuation& /*path*/) { return {}; }
 };
 
 std::unique_ptr<ArmSolver> make_arm_solver(const Arm& arm, const SolverOptions& options);
@@ -57,29 +79,33 @@ struct ImpedancePoint {
   double frequency_hz = 0.0;
   double velocity_amplitude = 0.0;      ///< V, m/s
   double displacement_amplitude = 0.0;  ///< X, m
-  bool converged = false;
+  /// converged: every arm converged within the energy tolerance; otherwise the
+  /// first failing arm's termination (energy_mismatch for the balance).
+  Termination termination = Termination::not_run;
   std::complex<double> impedance;       ///< Z, N s/m (only if converged)
   double power = 0.0;                   ///< V^2 Re(Z) / 2, W
   double dissipated_power = 0.0;        ///< sliders' energy per period / T, W
-  double energy_error = 0.0;            ///< largest over the arms (see SolverSummary)
-  double residual = 0.0;                ///< largest over the arms
-  int iterations = 0;                   ///< largest over the arms
+  double energy_error = std::numeric_limits<double>::quiet_NaN();  ///< largest over the arms (NaN unless converged)
+  double residual = std::numeric_limits<double>::quiet_NaN();      ///< largest over the arms (NaN unless converged)
+  int newton_iterations = 0;            ///< largest over the arms
+  int periods = 0;                      ///< largest over the arms, periods integrated
   double seconds = 0.0;
-  std::string message;                  ///< why not converged (which arm, where, by how much), or notes
+  std::string failure;                  ///< why not converged: which arm, where, by how much
+  std::string note;                     ///< about a converged point (several steady states, how it was reached)
   /// Several steady states near this frequency: set by the sweep (see sweep.hpp).
   bool non_unique = false;
+
+  bool converged() const { return termination == Termination::converged; }
 };
 
-/// Combines the arms' periodic solutions with the clamp mass into the impedance; a
-/// point is converged only if every arm converged within `energy_tolerance`.
-ImpedancePoint combine(const DamperDescription& damper, const Excitation& excitation,
-                       const std::vector<const ArmSolution*>& arm_solutions, double energy_tolerance = 0.01);
+/// Combines the arms' periodic solutions (one per arm of the damper) with the
+/// clamp mass into the impedance; a point is converged only if every arm converged
+/// within `energy_tolerance`.
+ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
+                       const std::vector<const ArmSolution*>& arm_solutions, double energy_tolerance);
 
 /// The shaker force over one period at N samples (all arms sampled alike): m_c x_c'' - sum F_k.
-Eigen::RowVectorXd shaker_force(const DamperDescription& damper, const Excitation& excitation,
+Eigen::RowVectorXd shaker_force(const Damper& damper, const Excitation& excitation,
                                 const std::vector<const ArmSolution*>& arm_solutions);
-
-/// Groups identical arms: index of the representative arm for each arm.
-std::vector<std::size_t> distinct_arms(const DamperDescription& damper);
 
 }  // namespace stockbridge::damper

@@ -19,32 +19,28 @@
 // update solved for the curvature increment, differentiated, with the tip
 // kinematics constraint closing it through the exact flexibility).
 
-#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "stockbridge/cable/cantilever.hpp"
+#include "stockbridge/damper/periodic_solution.hpp"
 
 namespace stockbridge::damper {
 
 struct PeriodicCableResult {
-  bool converged = false;  ///< every state determination converged
-  std::string failure;     ///< why not, with where (sample, period) and by how much
-  int periods = 0;         ///< periods run in all
-  /// How far the cable's state at the end of the last period is from its state at
-  /// that period's start: max |kappa_end - kappa_start| / max |kappa| over the
-  /// sections, and max |H_end - H_start| / h over the elements. Zero means every
-  /// further period repeats the last one exactly.
-  double periodicity_defect = 0.0;
-  double dissipated = 0.0; ///< by the sliders over the final period, J
-  /// Loads of the final period: (F, Q) per sample, N and N m; (T, clamp-section
-  /// curvature) for output.
-  Eigen::Matrix2Xd loads;
-  std::vector<double> clamp_moment;
-  std::vector<double> clamp_curvature;
-  std::vector<double> clamp_section_moment;
-  int max_iterations = 0;  ///< Newton iterations of any single state determination
+  /// termination: converged when every state determination converged, else
+  /// inner_failure with `where` naming the sample, the period and the failed state
+  /// determination's report; newton_iterations: the most any state determination
+  /// took; periods: periods run in all; periodicity_defect: how far the cable's state
+  /// at the end of the last period is from its state at that period's start,
+  /// max |kappa_end - kappa_start| / max |kappa| over the sections, and
+  /// max |H_end - H_start| / h over the elements (zero: every further period repeats
+  /// the last one exactly).
+  SolverSummary summary;
+  /// The final period: the tip loads (F, Q), the clamp moment and the clamp
+  /// section's curvature and moment per sample, the sliders' dissipation.
+  ArmPeriod period;
 };
 
 class PeriodicCable {
@@ -60,6 +56,7 @@ class PeriodicCable {
                                const Eigen::MatrixXd* basis = nullptr, Eigen::MatrixXd* sensitivity = nullptr);
   /// The cable's state at the end of the last evaluation.
   const cable::CableState& final_state() const { return cantilever_.committed(); }
+  const cable::Cable& cable() const { return cantilever_.cable(); }
 
  private:
   void propagate_sensitivity(const cable::CableState& from, const cable::CableState& to,
@@ -67,7 +64,6 @@ class PeriodicCable {
 
   double state_change(const cable::CableState& start, const cable::CableState& end) const;
 
-  const cable::Cable& cable_;
   cable::Cantilever cantilever_;
   cable::CableState period_start_;
   // Sensitivity state (see propagate_sensitivity): the anchor d kappa / dq of every

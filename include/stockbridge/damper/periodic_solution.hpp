@@ -8,32 +8,11 @@
 
 #include <Eigen/Core>
 
+#include "stockbridge/cable/cantilever.hpp"
 #include "stockbridge/damper/damper.hpp"
+#include "stockbridge/numerics/solver_summary.hpp"
 
 namespace stockbridge::damper {
-
-/// How a solver ended. A solution is used only if `converged`.
-struct SolverSummary {
-  bool converged = false;
-  int iterations = 0;     ///< Newton (or period) iterations
-  int evaluations = 0;    ///< periodic evaluations of the cable (harmonic balance, collocation)
-  int jacobians = 0;      ///< of which with exact sensitivities
-  double residual = std::numeric_limits<double>::quiet_NaN();      ///< final residual, relative (see each solver)
-  /// |P - D/T| relative to the apparent power V |F1| / 2: P the mean input power
-  /// from the first harmonic, D the sliders' dissipation per period.
-  double energy_error = std::numeric_limits<double>::quiet_NaN();
-  double seconds = 0.0;   ///< wall time
-  int periods = 0;        ///< periods of the cable run to make its state periodic (harmonic balance, collocation)
-  double periodicity_defect = 0.0;  ///< relative change of the loads over the last period
-  /// Sign of the Jacobian's determinant at the solution (harmonic balance,
-  /// collocation; 0 if unknown). A change of sign between neighbouring frequencies
-  /// marks a fold of the response curve: several steady states there.
-  int jacobian_sign = 0;
-  /// Steady states found at this excitation (more than 1: the response curve folds
-  /// back over this frequency; the solution is the one the continuation goes on with).
-  int branches = 1;
-  std::string message;    ///< why it did not converge (where and by how much), or notes
-};
 
 /// One arm's steady periodic motion, sampled at t_j = j T / N, j = 0..N-1.
 struct ArmPeriod {
@@ -43,16 +22,39 @@ struct ArmPeriod {
   std::vector<double> clamp_curvature;  ///< curvature at the integration point nearest the clamp, 1/m
   std::vector<double> clamp_section_moment;  ///< bending moment there, T - F s_0, N m
   double dissipated = 0.0;            ///< by the sliders over one period, J
+
+  /// Sizes every per-sample field for `samples` samples.
+  void resize(int samples);
+  /// The period recorder shared by every periodic solver (the observer of Boost.Odeint):
+  /// stores at sample j the cable's tip loads (F, Q), the clamp moment T and the clamp
+  /// section's curvature and moment T - F s_0 of `state`.
+  void record_loads(int j, const cable::CableState& state, const cable::Cable& cable);
 };
 
+/// How an arm's periodic solve ended: termination, newton_iterations (harmonic
+/// balance, collocation, shooting), periods (integrated in all), residual (each
+/// solver's header says relative to what), periodicity_defect, energy_error
+/// (see energy_error()), seconds. `where` says where a failure happened.
 struct ArmSolution {
   ArmPeriod period;
   SolverSummary summary;
+  /// Sign of the Jacobian's determinant at the solution (harmonic balance,
+  /// collocation; 0 if unknown). A change of sign between neighbouring frequencies
+  /// marks a fold of the response curve: several steady states there.
+  int jacobian_sign = 0;
+  /// Steady states found at this excitation (more than 1: the response curve folds
+  /// back over this frequency; the solution is the one the continuation goes on with).
+  int branches = 1;
+  /// How the solution was reached, where that is worth saying ("by arclength continuation").
+  std::string note;
   /// The solver's own unknowns at the solution (Fourier coefficients for harmonic
   /// balance and collocation, the initial mechanical state for shooting and time
   /// integration), used as the predictor at the next frequency.
   Eigen::VectorXd unknowns;
 };
+
+/// The sample times t_j = j T / N, j = 0..N-1, of one period, s.
+std::vector<double> time_grid(const Excitation& excitation, int samples);
 
 /// The first harmonic (2/N) sum_j y_j exp(-i W t_j) of samples y_j at t_j = j T / N.
 std::complex<double> first_harmonic(const Eigen::Ref<const Eigen::RowVectorXd>& samples);

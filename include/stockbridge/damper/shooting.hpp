@@ -60,8 +60,7 @@
 
 namespace stockbridge::damper {
 
-struct ShootingOptions {
-  int steps_per_period = 256;   ///< N, time steps per period, >= 8
+struct ShootingOptions : TimeDomainOptions {
   int pre_periods = 2;          ///< P at the start, >= 1
   int max_pre_periods = 256;    ///< P is doubled up to this, >= pre_periods
   int max_iterations = 30;      ///< Newton iterations (in all, over the values of P), >= 1
@@ -69,9 +68,6 @@ struct ShootingOptions {
   double periodicity_tolerance = 1e-7;  ///< on the loads, final period vs last pre-period
   double finite_difference_step = 1e-6;  ///< in the scaled unknowns D z0 (relative to the amplitude)
   int max_halvings = 20;        ///< line search
-  int max_newton = 30;          ///< Newton iterations per time step (as TimeIntegrationOptions)
-  double newton_tolerance = 1e-12;  ///< per time step (as TimeIntegrationOptions)
-  cable::CantileverOptions cantilever;
 
   /// Throws InvalidParameter naming the bad field ("pre_periods = 0: ...").
   void validate() const;
@@ -79,14 +75,15 @@ struct ShootingOptions {
 
 /// Result: ArmSolution::period = the final period of the last accepted shot,
 /// sampled at t_j = j T / N (aligned with x_c = X sin(W t_j)), dissipated over it;
-/// unknowns = z0; summary.iterations = Newton iterations; summary.residual = the
-/// state measure of S; summary.periods = P + 1 (periods integrated per shot);
+/// unknowns = z0; summary.newton_iterations = Newton iterations; summary.residual =
+/// the state measure of S; summary.periods = periods integrated in all;
 /// summary.periodicity_defect = the loads measure; summary.energy_error from
-/// energy_error(). Non-convergence (iterations, line search, pre-periods, a failed
-/// time step) is reported in the summary, never thrown.
+/// energy_error(). Non-convergence (max_iterations, line_search_failed,
+/// singular_jacobian, not_periodic for the pre-periods, a failed time step) is
+/// reported in the summary, never thrown.
 class Shooting {
  public:
-  Shooting(const Arm& arm, ShootingOptions options);
+  Shooting(Arm arm, ShootingOptions options);
 
   const ShootingOptions& options() const { return options_; }
 
@@ -95,23 +92,20 @@ class Shooting {
   /// excitation or an initial state of the wrong size.
   ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd* initial_state = nullptr);
 
-  /// Periods integrated in all by the last solve() (the cost: one period is N time steps).
-  long long periods_integrated() const { return periods_integrated_; }
-
- private:
+  /// A shot: steps 1-4 above from z0 with P pre-periods.
   struct Shot {
     bool ok = false;
     Eigen::Vector4d end = Eigen::Vector4d::Zero();  // z(T)
     ArmPeriod period;                               // the final period
     Eigen::Matrix2Xd pre_loads;                     // loads of the last pre-period
   };
-  /// Steps 1-4 above; false with the stepper's failure message in `failure`.
-  bool shoot(const Eigen::Vector4d& z0, int pre_periods, Shot& shot, std::string& failure);
+  /// Fires a shot; false (with the stepper's failure in `failure`) if a step failed.
+  bool shoot(const Eigen::Vector4d& z0, int pre_periods, Shot& shot, SolverSummary& failure);
 
-  const Arm& arm_;
+ private:
+  Arm arm_;
   ShootingOptions options_;
   NewmarkStepper stepper_;
-  long long periods_integrated_ = 0;
 };
 
 }  // namespace stockbridge::damper

@@ -15,7 +15,7 @@ struct DamperSteadyState {
   std::vector<ArmSolution> arms;  ///< one per arm of the damper (identical arms share a solution)
 };
 
-DamperSteadyState solve_steady_state(const DamperDescription& damper, const Excitation& excitation,
+DamperSteadyState solve_steady_state(const Damper& damper, const Excitation& excitation,
                                      const SolverOptions& options);
 
 }  // namespace stockbridge::damper

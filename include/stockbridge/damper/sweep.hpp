@@ -38,7 +38,7 @@ using SweepProgress = std::function<void(int, int)>;
 
 /// Runs every amplitude over every frequency. Never throws for non-convergence:
 /// such points have converged == false and a message.
-std::vector<SweepRun> run_sweep(const DamperDescription& damper, const SweepSpec& spec,
+std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec,
                                 const SweepProgress& progress = {});
 
 /// Log-spaced frequencies from fmin to fmax (points >= 2), Hz.

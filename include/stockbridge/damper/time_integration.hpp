@@ -50,6 +50,18 @@
 
 namespace stockbridge::damper {
 
+/// What every time-domain solver (time integration, shooting) shares: the Newmark
+/// scheme's step and the Newton iteration of each step.
+struct TimeDomainOptions {
+  int steps_per_period = 256;       ///< N, time steps per excitation period, >= 8
+  int max_newton = 30;              ///< Newton iterations per time step
+  double newton_tolerance = 1e-12;  ///< step residual relative to the equation's largest term
+  cable::CantileverOptions cantilever;
+
+  /// Throws InvalidParameter naming the bad field ("steps_per_period = 3: ...").
+  void validate() const;
+};
+
 /// The all-stick linear steady state of the discrete Newmark scheme with N steps
 /// per period at phase W t = 0: z = (x, phi, x', phi') = (0, 0, W_h U) (see above), m, rad, m/s, rad/s.
 Eigen::Vector4d linear_discrete_start(const Arm& arm, const Excitation& excitation, int steps_per_period);
@@ -59,8 +71,7 @@ Eigen::Vector4d linear_discrete_start(const Arm& arm, const Excitation& excitati
 /// Owns the cable (cable::Cantilever) and its hysteretic state.
 class NewmarkStepper {
  public:
-  NewmarkStepper(const Arm& arm, int steps_per_period, int max_newton, double newton_tolerance,
-                 const cable::CantileverOptions& cantilever);
+  NewmarkStepper(const Arm& arm, const TimeDomainOptions& options);
 
   /// Sets h = T / N and the load samples L x_c''(t_j); the state is unchanged.
   void set_excitation(const Excitation& excitation);
@@ -72,9 +83,10 @@ class NewmarkStepper {
   /// determination failed (see failure()).
   bool place(const Eigen::Vector4d& z);
   /// Integrates one period (N steps) from phase 0, committing every step. With
-  /// `record`, fills it with the state at t_j = j T / N, j = 0..N-1 (before step j)
-  /// and the dissipation over the period. Returns false if a step failed; then the
-  /// state is that of the last committed step and failure() says where and why.
+  /// `record`, fills it (the shared recorder, ArmPeriod::record_loads) with the state
+  /// at t_j = j T / N, j = 0..N-1 (before step j) and the dissipation over the
+  /// period. Returns false if a step failed; then the state is that of the last
+  /// committed step and failure() says where and why.
   bool advance_period(ArmPeriod* record = nullptr);
 
   /// (x, phi, x', phi') now.
@@ -86,12 +98,17 @@ class NewmarkStepper {
   double time() const { return static_cast<double>(periods_since_place_) * period_; }
   /// The largest number of Newton iterations of any step so far.
   int max_newton_iterations() const { return max_iterations_used_; }
-  const std::string& failure() const { return failure_; }
+  /// How the last failed place() or step ended: max_iterations or non_finite for
+  /// the step's Newton iteration, inner_failure for the cable's state
+  /// determination; `where` names the time and step.
+  const SolverSummary& failure() const { return failure_; }
 
  private:
   bool step(int j);  // from t_j to t_{j+1} of the current period
+  bool fail(Termination termination, std::string where);
 
-  const Arm& arm_;
+  Eigen::Matrix2d mass_;
+  Eigen::Vector2d load_;
   int steps_;
   int max_newton_;
   double newton_tolerance_;
@@ -103,18 +120,14 @@ class NewmarkStepper {
   Eigen::Vector2d u_ = Eigen::Vector2d::Zero(), v_ = Eigen::Vector2d::Zero(), a_ = Eigen::Vector2d::Zero();
   long long periods_since_place_ = 0;
   int max_iterations_used_ = 0;
-  std::string failure_;
+  SolverSummary failure_;
 };
 
-struct TimeIntegrationOptions {
-  int steps_per_period = 256;          ///< N, time steps per excitation period, >= 8
+struct TimeIntegrationOptions : TimeDomainOptions {
   int max_periods = 3000;              ///< periods integrated at most, >= 2
   double periodicity_tolerance = 1e-8; ///< on both periodicity measures (see above)
-  int max_newton = 30;                 ///< Newton iterations per time step
-  double newton_tolerance = 1e-12;     ///< step residual relative to the equation's largest term
-  cable::CantileverOptions cantilever;
 
-  /// Throws InvalidParameter naming the bad field ("steps_per_period = 3: ...").
+  /// Throws InvalidParameter naming the bad field.
   void validate() const;
 };
 
@@ -122,17 +135,16 @@ struct TimeIntegrationOptions {
 ///
 /// Result: ArmSolution::period sampled at t_j = j T / N of the final period
 /// (aligned with the excitation phase, x_c = X sin(W t_j)); dissipated = the
-/// cable's dissipation over the final period. summary.iterations = summary.periods
-/// = periods integrated; summary.residual = the final periodicity measure (the
-/// larger of the two); summary.periodicity_defect = the loads measure;
-/// summary.energy_error from energy_error(). ArmSolution::unknowns = (x, phi, x', phi')
-/// at the start of the final period, usable as the next `initial_state` of a sweep.
-/// Not reaching periodicity in max_periods, or a failed step, is reported in the
-/// summary (converged == false, message with how far from periodic, or the time and
-/// residual of the failed step), never thrown.
+/// cable's dissipation over the final period. summary.periods = periods
+/// integrated (no Newton iterations at this level); summary.residual = the final
+/// periodicity measure (the larger of the two); summary.periodicity_defect = the
+/// loads measure; summary.energy_error from energy_error(). ArmSolution::unknowns =
+/// (x, phi, x', phi') at the start of the final period. Not reaching periodicity in
+/// max_periods (not_periodic), or a failed step (the stepper's termination), is
+/// reported in the summary, never thrown.
 class TimeIntegration {
  public:
-  TimeIntegration(const Arm& arm, TimeIntegrationOptions options);
+  TimeIntegration(Arm arm, TimeIntegrationOptions options);
 
   const TimeIntegrationOptions& options() const { return options_; }
 
@@ -142,11 +154,13 @@ class TimeIntegration {
   ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd* initial_state = nullptr);
 
  private:
-  const Arm& arm_;
+  Arm arm_;
   TimeIntegrationOptions options_;
   NewmarkStepper stepper_;
 };
 
+/// The largest tip excursion of a period, max_j max(|x_j|, l |phi_j|), m.
+double amplitude_of(const ArmPeriod& period, double length);
 /// The periodicity measures used by TimeIntegration and Shooting (see above).
 /// State: change `delta` of (x, phi, x', phi') relative to the period's amplitude.
 double state_change_measure(const Eigen::Vector4d& delta, const ArmPeriod& period, double angular_frequency,

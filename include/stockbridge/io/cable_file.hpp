@@ -10,13 +10,23 @@
 //   lever_arm_cap = 0.3 # optional: modified Masing model's cap of |M|/|F|, m
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 
-#include "stockbridge/cable/cable_description.hpp"
+#include "stockbridge/cable/cable.hpp"
 
 namespace stockbridge::io {
 
-/// Reads and validates a cable file. Throws InputError with one line naming the
-/// file, line, key, value and what was expected.
-cable::CableDescription read_cable_file(const std::filesystem::path& path);
+/// Reads a cable file and builds the (validated, discretised) cable. Throws
+/// InputError with one line naming the file, line, key, value and what was expected.
+cable::Cable read_cable_file(const std::filesystem::path& path);
+/// The same from TOML text a front end built from its own values (Python's
+/// make_cable): the same keys, checks and messages, naming `source`, no lines.
+cable::Cable read_cable_text(std::string_view text, std::string_view source);
+
+/// The keys of a [cable] table for `description` (what cable and damper files accept).
+std::string cable_table_toml(const cable::CableDescription& description);
+/// A whole cable file: `comment` (each line as a TOML comment), then [cable].
+std::string cable_file_toml(const cable::CableDescription& description, std::string_view comment);
 
 }  // namespace stockbridge::io

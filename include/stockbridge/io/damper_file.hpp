@@ -13,12 +13,17 @@
 //   ...
 
 #include <filesystem>
+#include <string_view>
 
 #include "stockbridge/damper/damper.hpp"
 
 namespace stockbridge::io {
 
-/// Reads and validates a damper file; InputError with file, line, key, value, expectation.
-damper::DamperDescription read_damper_file(const std::filesystem::path& path);
+/// Reads a damper file and builds the (validated) damper; InputError with file,
+/// line, key, value and expectation.
+damper::Damper read_damper_file(const std::filesystem::path& path);
+/// The same from TOML text a front end built from its own values (Python's
+/// make_damper): the same keys, checks and messages, naming `source`, no lines.
+damper::Damper read_damper_text(std::string_view text, std::string_view source);
 
 }  // namespace stockbridge::io

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/damper/arclength.hpp"
 #include "stockbridge/damper/harmonic_balance.hpp"
 #include "stockbridge/damper/impedance.hpp"
 #include "stockbridge/damper/steady_state.hpp"
@@ -47,18 +48,20 @@ TEST_P(HarmonicBalanceJacobian, MatchesFiniteDifferences) {
     q *= 0.55;
     q(0) += 6e-4;
   }
-  Eigen::VectorXd r, rp, rm;
-  Eigen::MatrixXd jacobian;
-  ASSERT_TRUE(hb.residual(e, q, 2, r, &jacobian, nullptr, nullptr));
+  HarmonicBalanceWorkspace workspace = hb.make_workspace();
+  const HarmonicBalanceEvaluation at = hb.evaluate(e, q, nullptr, 2, HarmonicBalance::kJacobian, workspace);
+  ASSERT_TRUE(at.ok()) << brief_report(at.cable);
+  const Eigen::MatrixXd jacobian = hb.jacobian(e, at.force_jacobian);
   Eigen::MatrixXd fd(jacobian.rows(), jacobian.cols());
   for (Eigen::Index i = 0; i < q.size(); ++i) {
     const double h = 1e-7 * (std::abs(q(i)) + 1e-4);
     Eigen::VectorXd qp = q, qm = q;
     qp(i) += h;
     qm(i) -= h;
-    ASSERT_TRUE(hb.residual(e, qp, 2, rp, nullptr, nullptr, nullptr));
-    ASSERT_TRUE(hb.residual(e, qm, 2, rm, nullptr, nullptr, nullptr));
-    fd.col(i) = (rp - rm) / (2.0 * h);
+    const HarmonicBalanceEvaluation plus = hb.evaluate(e, qp, nullptr, 2, HarmonicBalance::kNone, workspace);
+    const HarmonicBalanceEvaluation minus = hb.evaluate(e, qm, nullptr, 2, HarmonicBalance::kNone, workspace);
+    ASSERT_TRUE(plus.ok() && minus.ok());
+    fd.col(i) = (plus.residual - minus.residual) / (2.0 * h);
   }
   EXPECT_LT((jacobian - fd).norm(), 1e-6 * jacobian.norm());
 }
@@ -72,21 +75,29 @@ TEST(HarmonicBalance, FrequencyDerivativeMatchesFiniteDifferences) {
   const double f = 15.0, v = 0.2, h = 1e-6;
   const Excitation e = Excitation::from_velocity(f, v);
   const Eigen::VectorXd q = hb.linear_guess(e);
-  Eigen::VectorXd r, rp, rm, d_frequency;
-  ASSERT_TRUE(hb.residual(e, q, 2, r, nullptr, &d_frequency, nullptr));
-  ASSERT_TRUE(hb.residual(Excitation::from_velocity(f + h, v), q, 2, rp, nullptr, nullptr, nullptr));
-  ASSERT_TRUE(hb.residual(Excitation::from_velocity(f - h, v), q, 2, rm, nullptr, nullptr, nullptr));
-  const Eigen::VectorXd fd = (rp - rm) / (2.0 * h * 2.0 * std::numbers::pi);
-  EXPECT_LT((d_frequency - fd).norm(), 1e-6 * d_frequency.norm());
+  HarmonicBalanceWorkspace workspace = hb.make_workspace();
+  const HarmonicBalanceEvaluation at = hb.evaluate(e, q, nullptr, 2, HarmonicBalance::kFrequency, workspace);
+  const HarmonicBalanceEvaluation plus =
+      hb.evaluate(Excitation::from_velocity(f + h, v), q, nullptr, 2, HarmonicBalance::kNone, workspace);
+  const HarmonicBalanceEvaluation minus =
+      hb.evaluate(Excitation::from_velocity(f - h, v), q, nullptr, 2, HarmonicBalance::kNone, workspace);
+  ASSERT_TRUE(at.ok() && plus.ok() && minus.ok());
+  const Eigen::VectorXd fd = (plus.residual - minus.residual) / (2.0 * h * 2.0 * std::numbers::pi);
+  EXPECT_LT((at.d_frequency - fd).norm(), 1e-6 * at.d_frequency.norm());
 }
 
 std::complex<double> arm_impedance(const HarmonicBalanceOptions& options, const Excitation& e,
                                    Method method = Method::harmonic_balance) {
   SolverOptions solver;
   solver.method = method;
-  solver.harmonic_balance = options;
+  if (method == Method::collocation) {
+    solver.collocation = options;
+    solver.collocation.collocation = true;
+  } else {
+    solver.harmonic_balance = options;
+  }
   const DamperSteadyState s = solve_steady_state(damper_of({sauter_arm()}, 0.0), e, solver);
-  EXPECT_TRUE(s.point.converged) << s.point.message;
+  EXPECT_TRUE(s.point.converged()) << s.point.failure;
   return s.point.impedance;
 }
 
@@ -131,8 +142,8 @@ TEST(HarmonicBalance, CollocationAgreesWithHarmonicBalance) {
     const Excitation e = Excitation::from_velocity(f, v);
     HarmonicBalanceOptions hb;
     hb.samples = 1024;
-    HarmonicBalanceOptions collocation;
-    collocation.harmonics = 40;
+    HarmonicBalanceOptions collocation = SolverOptions::collocation_defaults();
+    ASSERT_EQ(collocation.harmonics, 40);  // the default is the working setting
     const std::complex<double> z_hb = arm_impedance(hb, e);
     const std::complex<double> z_co = arm_impedance(collocation, e, Method::collocation);
     EXPECT_LT(std::abs(z_hb.real() - z_co.real()), 5e-3 * std::abs(z_hb)) << "f = " << f;
@@ -148,17 +159,20 @@ TEST(HarmonicBalance, ArclengthContinuationFollowsTheBranch) {
   HarmonicBalance direct(arm, HarmonicBalanceOptions{});
   const double v = 0.2;
   Eigen::VectorXd q;
+  HarmonicBalanceMemory memory;
+  HarmonicBalanceWorkspace workspace = tracer.make_workspace();
   for (int k = 0; k <= 20; ++k) {  // reach 14 Hz by natural continuation
     const Excitation e = Excitation::from_velocity(3.5 * std::pow(4.0, k / 20.0), v);
-    const ArmSolution s = tracer.solve(e, q.size() > 0 ? q : tracer.linear_guess(e), q.size() > 0);
-    ASSERT_TRUE(s.summary.converged) << s.summary.message;
+    const ArmSolution s = tracer.solve(e, q.size() > 0 ? q : tracer.linear_guess(e), memory, workspace);
+    ASSERT_TRUE(s.summary.converged()) << brief_report(s.summary);
     q = s.unknowns;
   }
-  const std::vector<ArmSolution> crossings = tracer.continue_along_branch(v, q, 14.0, 30.0);
+  const std::vector<ArmSolution> crossings =
+      continue_along_branch(tracer, v, BranchPoint{q, 14.0, memory}, 30.0, workspace).solutions;
   ASSERT_EQ(crossings.size(), 1u);
   const Excitation target = Excitation::from_velocity(30.0, v);
   const ArmSolution reference = direct.solve(target, direct.linear_guess(target));
-  ASSERT_TRUE(reference.summary.converged);
+  ASSERT_TRUE(reference.summary.converged());
   const std::complex<double> z_arc = arm_force_first_harmonic(crossings[0].period) / v;
   const std::complex<double> z_ref = arm_force_first_harmonic(reference.period) / v;
   EXPECT_LT(std::abs(z_arc - z_ref), 1e-6 * std::abs(z_ref));
@@ -171,8 +185,8 @@ TEST(HarmonicBalance, NonConvergenceIsReportedNotThrown) {
   HarmonicBalance hb(arm, options);
   const Excitation e = Excitation::from_velocity(10.0, 0.2);
   const ArmSolution s = hb.solve(e, hb.linear_guess(e));
-  EXPECT_FALSE(s.summary.converged);
-  EXPECT_NE(s.summary.message.find("Newton iterations"), std::string::npos) << s.summary.message;
+  EXPECT_FALSE(s.summary.converged());
+  EXPECT_EQ(s.summary.termination, Termination::max_iterations) << brief_report(s.summary);
   EXPECT_GT(s.summary.residual, options.tolerance);
 }
 
@@ -185,18 +199,18 @@ TEST(HarmonicBalance, NonFiniteValuesAreReported) {
   Eigen::VectorXd q = hb.linear_guess(e);
   q(5) = std::numeric_limits<double>::quiet_NaN();
   const ArmSolution s = hb.solve(e, q);
-  EXPECT_FALSE(s.summary.converged);
-  EXPECT_NE(s.summary.message.find("non-finite"), std::string::npos) << s.summary.message;
+  EXPECT_FALSE(s.summary.converged());
+  EXPECT_EQ(s.summary.termination, Termination::non_finite) << brief_report(s.summary);
 }
 
 TEST(HarmonicBalance, EnergyBalanceBeyondToleranceIsNotTrusted) {
   SolverOptions strict;
   strict.energy_tolerance = 1e-9;  // the sampled balance is about 1e-5 here: force the path
   const DamperSteadyState s = solve_steady_state(damper_of({sauter_arm()}), Excitation::from_velocity(15.0, 0.2), strict);
-  EXPECT_FALSE(s.point.converged);
-  EXPECT_NE(s.point.message.find("energy balance off by"), std::string::npos) << s.point.message;
+  EXPECT_FALSE(s.point.converged());
+  EXPECT_EQ(s.point.termination, Termination::energy_mismatch) << s.point.failure;
   const DamperSteadyState ok = solve_steady_state(damper_of({sauter_arm()}), Excitation::from_velocity(15.0, 0.2), SolverOptions{});
-  EXPECT_TRUE(ok.point.converged);
+  EXPECT_TRUE(ok.point.converged());
   EXPECT_LT(ok.point.energy_error, 1e-3);
 }
 
@@ -208,18 +222,18 @@ TEST(HarmonicBalance, EnergyBalanceBeyondToleranceIsNotTrusted) {
 TEST(HarmonicBalance, SingularJacobianIsReported) {
   using testing::linear_arm;
   using testing::linear_impedance;
-  const DamperDescription damper = damper_of({linear_arm(22.8, false)});
-  const Eigen::Vector2d natural = Arm(damper.arms[0]).natural_frequencies(22.8);
+  const Damper damper = damper_of({linear_arm(22.8, false)});
+  const Eigen::Vector2d natural = damper.arms()[0].natural_frequencies(22.8);
   for (const Method method : {Method::harmonic_balance, Method::collocation}) {
     SolverOptions options;
     options.method = method;
     for (int mode = 0; mode < 2; ++mode) {
       const DamperSteadyState at = solve_steady_state(damper, Excitation::from_velocity(natural(mode), 0.2), options);
-      EXPECT_FALSE(at.point.converged) << method_name(method) << ", mode " << mode;
-      EXPECT_NE(at.point.message.find("singular Jacobian"), std::string::npos) << at.point.message;
+      EXPECT_FALSE(at.point.converged()) << method_name(method) << ", mode " << mode;
+      EXPECT_EQ(at.point.termination, Termination::singular_jacobian) << at.point.failure;
       const double near_hz = natural(mode) * (1.0 + 1e-6);
       const DamperSteadyState near = solve_steady_state(damper, Excitation::from_velocity(near_hz, 0.2), options);
-      ASSERT_TRUE(near.point.converged) << near.point.message;
+      ASSERT_TRUE(near.point.converged()) << near.point.failure;
       const std::complex<double> expected = linear_impedance(damper, {22.8}, near_hz);
       EXPECT_LT(std::abs(near.point.impedance - expected), 1e-6 * std::abs(expected)) << method_name(method);
       EXPECT_GT(std::abs(expected), 1e3 * std::abs(linear_impedance(damper, {22.8}, 1.1 * natural(mode))));

@@ -78,14 +78,14 @@ TEST(TimeIntegration, ElasticArmMatchesClosedFormSteadyState) {
     const std::complex<double> expected = linear_arm_force(arm, excitation);
     const std::complex<double> discrete = linear_arm_force(arm, excitation, steps);
     const ArmSolution ti = time_integration.solve(excitation);
-    ASSERT_TRUE(ti.summary.converged) << ti.summary.message;
+    ASSERT_TRUE(ti.summary.converged()) << brief_report(ti.summary);
     // The start is the discrete scheme's own linear steady state: periodic at once.
-    EXPECT_EQ(ti.summary.iterations, 2);
+    EXPECT_EQ(ti.summary.periods, 2);
     EXPECT_LT(std::abs(arm_force_first_harmonic(ti.period) - expected), 1e-4 * std::abs(expected));
     EXPECT_LT(std::abs(arm_force_first_harmonic(ti.period) - discrete), 1e-9 * std::abs(expected));
     EXPECT_LT(std::abs(ti.period.dissipated), 1e-12);
     const ArmSolution sh = shooting.solve(excitation);
-    ASSERT_TRUE(sh.summary.converged) << sh.summary.message;
+    ASSERT_TRUE(sh.summary.converged()) << brief_report(sh.summary);
     EXPECT_LT(std::abs(arm_force_first_harmonic(sh.period) - expected), 1e-4 * std::abs(expected));
     EXPECT_LT(std::abs(arm_force_first_harmonic(sh.period) - discrete), 1e-8 * std::abs(expected));
   }
@@ -100,8 +100,8 @@ TEST(Shooting, ElasticArmFromRestConverges) {
   const Excitation excitation = Excitation::from_velocity(30.0, 0.2);
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(4);
   const ArmSolution solution = shooting.solve(excitation, &rest);
-  ASSERT_TRUE(solution.summary.converged) << solution.summary.message;
-  EXPECT_GE(solution.summary.iterations, 1);
+  ASSERT_TRUE(solution.summary.converged()) << brief_report(solution.summary);
+  EXPECT_GE(solution.summary.newton_iterations, 1);
   const std::complex<double> expected = linear_arm_force(arm, excitation);
   EXPECT_LT(std::abs(arm_force_first_harmonic(solution.period) - expected), 1e-4 * std::abs(expected));
 }
@@ -111,14 +111,13 @@ TEST(TimeIntegration, PeriodStartsAtTheReturnedState) {
   const Arm arm(damper_arm());
   TimeIntegration solver(arm, {});
   const ArmSolution solution = solver.solve(Excitation::from_velocity(15.0, 0.2));
-  ASSERT_TRUE(solution.summary.converged) << solution.summary.message;
+  ASSERT_TRUE(solution.summary.converged()) << brief_report(solution.summary);
   ASSERT_EQ(solution.unknowns.size(), 4);
   ASSERT_EQ(solution.period.kinematics.cols(), 256);
   ASSERT_EQ(solution.period.clamp_moment.size(), 256u);
   EXPECT_EQ(solution.period.kinematics(0, 0), solution.unknowns(0));
   EXPECT_EQ(solution.period.kinematics(1, 0), solution.unknowns(1));
   EXPECT_GT(solution.period.dissipated, 0.0);
-  EXPECT_EQ(solution.summary.periods, solution.summary.iterations);
   EXPECT_LE(solution.summary.residual, 1e-8);
 }
 
@@ -134,7 +133,7 @@ TEST(TimeIntegration, SecondOrderInTheTimeStep) {
     options.steps_per_period = steps;
     TimeIntegration solver(arm, options);
     const ArmSolution solution = solver.solve(excitation);
-    EXPECT_TRUE(solution.summary.converged) << steps << ": " << solution.summary.message;
+    EXPECT_TRUE(solution.summary.converged()) << steps << ": " << brief_report(solution.summary);
     return impedance(solution, excitation);
   };
   const std::complex<double> reference = solve(8192);
@@ -173,8 +172,8 @@ TEST(Shooting, AgreesWithTimeIntegrationWhenSlipping) {
     const Excitation excitation = Excitation::from_velocity(frequency, 0.2);
     const ArmSolution ti = time_integration.solve(excitation);
     const ArmSolution sh = shooting.solve(excitation);
-    ASSERT_TRUE(ti.summary.converged) << ti.summary.message;
-    ASSERT_TRUE(sh.summary.converged) << sh.summary.message;
+    ASSERT_TRUE(ti.summary.converged()) << brief_report(ti.summary);
+    ASSERT_TRUE(sh.summary.converged()) << brief_report(sh.summary);
     EXPECT_LE(sh.summary.residual, 1e-9);
     EXPECT_LE(sh.summary.periodicity_defect, 1e-7);
     const std::complex<double> z_ti = impedance(ti, excitation), z_sh = impedance(sh, excitation);
@@ -198,7 +197,7 @@ TEST(TimeIntegration, EnergyBalanceImprovesWithSteps) {
     options.steps_per_period = steps;
     TimeIntegration solver(arm, options);
     const ArmSolution solution = solver.solve(excitation);
-    ASSERT_TRUE(solution.summary.converged) << solution.summary.message;
+    ASSERT_TRUE(solution.summary.converged()) << brief_report(solution.summary);
     EXPECT_LT(solution.summary.energy_error, 1e-3);
     EXPECT_LT(solution.summary.energy_error, previous);
     EXPECT_DOUBLE_EQ(solution.summary.energy_error, energy_error(solution.period, excitation));
@@ -211,7 +210,7 @@ TEST(Shooting, EnergyBalance) {
   const Excitation excitation = Excitation::from_velocity(15.0, 0.2);
   Shooting solver(arm, {});
   const ArmSolution solution = solver.solve(excitation);
-  ASSERT_TRUE(solution.summary.converged) << solution.summary.message;
+  ASSERT_TRUE(solution.summary.converged()) << brief_report(solution.summary);
   EXPECT_LT(solution.summary.energy_error, 1e-3);
 }
 
@@ -223,13 +222,12 @@ TEST(TimeIntegration, TooFewPeriodsIsReported) {
   TimeIntegration solver(arm, options);
   ArmSolution solution;
   ASSERT_NO_THROW(solution = solver.solve(Excitation::from_velocity(15.0, 0.2)));
-  EXPECT_FALSE(solution.summary.converged);
-  EXPECT_EQ(solution.summary.iterations, 2);
+  EXPECT_FALSE(solution.summary.converged());
+  EXPECT_EQ(solution.summary.newton_iterations, 0);  // time integration takes no Newton steps at this level
   EXPECT_GT(solution.summary.residual, 1e-3);  // the slipping start is far from periodic
-  EXPECT_NE(solution.summary.message.find("not periodic after 2 periods"), std::string::npos)
-      << solution.summary.message;
-  EXPECT_NE(solution.summary.message.find("changed by"), std::string::npos) << solution.summary.message;
-  EXPECT_EQ(solution.period.kinematics.cols(), 256);  // the last period is still there to inspect
+  EXPECT_EQ(solution.summary.termination, Termination::not_periodic) << brief_report(solution.summary);
+  EXPECT_EQ(solution.summary.periods, 2);
+    EXPECT_EQ(solution.period.kinematics.cols(), 256);  // the last period is still there to inspect
 }
 
 TEST(Shooting, TooFewIterationsIsReported) {
@@ -239,9 +237,8 @@ TEST(Shooting, TooFewIterationsIsReported) {
   Shooting solver(arm, options);
   ArmSolution solution;
   ASSERT_NO_THROW(solution = solver.solve(Excitation::from_velocity(15.0, 0.2)));
-  EXPECT_FALSE(solution.summary.converged);
-  EXPECT_NE(solution.summary.message.find("no convergence in 1 Newton iterations"), std::string::npos)
-      << solution.summary.message;
+  EXPECT_FALSE(solution.summary.converged());
+  EXPECT_EQ(solution.summary.termination, Termination::max_iterations) << brief_report(solution.summary);
 }
 
 TEST(Shooting, UnsettledMemoryIsReported) {
@@ -250,9 +247,8 @@ TEST(Shooting, UnsettledMemoryIsReported) {
   options.max_pre_periods = 2;  // the memory needs about 30 periods at 15 Hz
   Shooting solver(arm, options);
   const ArmSolution solution = solver.solve(Excitation::from_velocity(15.0, 0.2));
-  EXPECT_FALSE(solution.summary.converged);
-  EXPECT_NE(solution.summary.message.find("not settled after 2 pre-periods"), std::string::npos)
-      << solution.summary.message;
+  EXPECT_FALSE(solution.summary.converged());
+  EXPECT_EQ(solution.summary.termination, Termination::not_periodic) << brief_report(solution.summary);
 }
 
 // At a resonance of the time-discrete system (the elastic arm's first natural
@@ -267,14 +263,15 @@ TEST(TimeSolvers, DiscreteResonanceHasNoPeriodicResponse) {
   ShootingOptions shooting;
   shooting.steps_per_period = n;
   const ArmSolution shot = Shooting(arm, shooting).solve(excitation);
-  EXPECT_FALSE(shot.summary.converged);
-  EXPECT_NE(shot.summary.message.find("singular Jacobian"), std::string::npos) << shot.summary.message;
+  EXPECT_FALSE(shot.summary.converged());
+  EXPECT_EQ(shot.summary.termination, Termination::singular_jacobian) << brief_report(shot.summary);
   TimeIntegrationOptions marching;
   marching.steps_per_period = n;
   marching.max_periods = 200;
   const ArmSolution marched = TimeIntegration(arm, marching).solve(excitation);
-  EXPECT_FALSE(marched.summary.converged);
-  EXPECT_NE(marched.summary.message.find("not periodic after 200 periods"), std::string::npos) << marched.summary.message;
+  EXPECT_FALSE(marched.summary.converged());
+  EXPECT_EQ(marched.summary.termination, Termination::not_periodic) << brief_report(marched.summary);
+  EXPECT_EQ(marched.summary.periods, 200);
 }
 
 template <class Options, class Solver>

@@ -19,7 +19,7 @@ std::filesystem::path directory() {
 }
 
 cable::CableDescription read(const std::string& contents) {
-  return read_cable_file(testing::write_temp_file(directory(), "cable.toml", contents));
+  return read_cable_file(testing::write_temp_file(directory(), "cable.toml", contents)).description();
 }
 
 std::string error_of(const std::string& contents) {
@@ -98,7 +98,7 @@ TEST(CableFile, EachMistakeGetsOnePreciseLine) {
   EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = { s = [0, 0.2], value = [1, -2] }\n"),
             file + ":4: cable.ei.value[1] = -2: expected a finite value > 0 (N m^2)");
   EXPECT_EQ(error_of("[cable]\nlength = 0.7\nsections = 40\nei = 2.8\nmirror_length = 0.3\n"),
-            file + ":2: [cable] length = 0.7: expected at most twice mirror_length = 0.3 m for the mirror method");
+            file + ":2: cable.length = 0.7: expected at most twice mirror_length = 0.3 m for the mirror method");
   EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\n[extra]\n"),
             file + ":5: unknown key 'extra': expected one of cable");
   EXPECT_EQ(error_of("length = 0.3\n"), file + ":1: missing key 'cable' in the top level: expected a table");

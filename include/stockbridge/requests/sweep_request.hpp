@@ -1,0 +1,50 @@
+#pragma once
+// The request layer for impedance sweeps: what a user asks for (amplitudes as
+// velocities or displacements, a frequency grid or list, solver settings, threads)
+// turned into the library's SweepSpec, and the sweep's points as the rows every
+// front end shows, with non-converged points masked (NaN).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stockbridge/damper/sweep.hpp"
+#include "stockbridge/requests/solver_settings.hpp"
+
+namespace stockbridge::requests {
+
+/// Log-spaced frequencies from fmin to fmax (Hz); its ends are exactly fmin and fmax.
+struct FrequencyGrid {
+  double fmin = 1.0;
+  double fmax = 100.0;
+  int points = 200;
+};
+
+struct SweepRequest {
+  std::vector<double> velocities;     ///< V, m/s (constant over the sweep) ...
+  std::vector<double> displacements;  ///< ... or X, m: exactly one of the two is given
+  std::vector<double> frequencies;    ///< explicit frequencies, Hz; empty: the grid
+  FrequencyGrid grid;
+  SolverSettings solver;
+  int threads = 1;
+};
+
+/// The validated sweep (InvalidParameter naming the setting otherwise).
+damper::SweepSpec sweep_spec(const SweepRequest& request);
+
+/// The columns of a point as the impedance CSV and Python's arrays name them.
+const std::vector<std::string>& impedance_columns();
+/// A point's values in impedance_columns() order: NaN for every computed number of
+/// a point that did not converge (the amplitude and frequency are always given).
+std::vector<double> impedance_row(const damper::ImpedancePoint& point);
+
+/// Summary figures of a sweep.
+struct SweepTally {
+  int points = 0;
+  int converged = 0;
+  int non_unique = 0;
+  std::optional<double> max_energy_error;  ///< over the converged points; none if none converged
+};
+SweepTally tally(const std::vector<damper::SweepRun>& runs);
+
+}  // namespace stockbridge::requests

@@ -1,0 +1,71 @@
+#include "stockbridge/requests/sweep_request.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::requests {
+
+damper::SweepSpec sweep_spec(const SweepRequest& request) {
+  damper::SweepSpec spec;
+  if (request.velocities.empty() == request.displacements.empty()) {
+    throw InvalidParameter("give either velocity (m/s) or displacement (m) amplitudes, one of the two");
+  }
+  spec.constant_displacement = !request.displacements.empty();
+  spec.amplitudes = spec.constant_displacement ? request.displacements : request.velocities;
+  spec.frequencies = request.frequencies.empty()
+                         ? damper::log_spaced(request.grid.fmin, request.grid.fmax, request.grid.points)
+                         : request.frequencies;
+  spec.solver = solver_options(request.solver);
+  spec.threads = request.threads;
+  spec.validate();
+  return spec;
+}
+
+const std::vector<std::string>& impedance_columns() {
+  static const std::vector<std::string> columns{
+      "frequency_hz", "velocity_m_s", "re_z_n_s_m", "im_z_n_s_m",         "abs_z_n_s_m", "phase_deg",
+      "power_w",      "converged",    "displacement_m", "dissipated_power_w", "energy_error", "residual",
+      "iterations",   "periods",      "non_unique"};
+  return columns;
+}
+
+std::vector<double> impedance_row(const damper::ImpedancePoint& p) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const bool ok = p.converged();
+  const auto masked = [ok](double value) { return ok ? value : kNaN; };
+  const std::complex<double> z = p.impedance;
+  return {p.frequency_hz,
+          p.velocity_amplitude,
+          masked(z.real()),
+          masked(z.imag()),
+          masked(std::abs(z)),
+          masked(std::arg(z) * 180.0 / std::numbers::pi),
+          masked(p.power),
+          ok ? 1.0 : 0.0,
+          p.displacement_amplitude,
+          masked(p.dissipated_power),
+          masked(p.energy_error),
+          masked(p.residual),
+          static_cast<double>(p.newton_iterations),
+          static_cast<double>(p.periods),
+          p.non_unique ? 1.0 : 0.0};
+}
+
+SweepTally tally(const std::vector<damper::SweepRun>& runs) {
+  SweepTally t;
+  for (const damper::SweepRun& run : runs) {
+    for (const damper::ImpedancePoint& p : run.points) {
+      ++t.points;
+      t.non_unique += p.non_unique;
+      if (!p.converged()) continue;
+      ++t.converged;
+      t.max_energy_error = std::max(t.max_energy_error.value_or(0.0), p.energy_error);
+    }
+  }
+  return t;
+}
+
+}  // namespace stockbridge::requests
