@@ -93,3 +93,61 @@ def test_example_script_runs(tmp_path):
     assert result.returncode == 0, result.stderr
     assert "240 of 240 points converged" in result.stdout
     assert os.path.getsize(tmp_path / "example.png") > 10000
+
+
+def read_csv(path):
+    with open(path, newline="") as handle:
+        return list(csv.DictReader(handle))
+
+
+@pytest.mark.parametrize("flags, keywords", [
+    (["--method", "collocation", "--harmonics", "20", "--max-iterations", "60", "--energy-tolerance", "0.02"],
+     dict(method="collocation", harmonics=20, max_iterations=60, energy_tolerance=0.02)),
+    (["--method", "time", "--steps", "64", "--max-periods", "500"], dict(method="time", steps=64, max_periods=500)),
+    (["--fmin", "9", "--fmax", "30", "--points", "3", "--samples", "256", "--threads", "2"],
+     dict(fmin=9.0, fmax=30.0, points=3, samples=256, threads=2)),
+])
+def test_every_cli_option_has_the_same_python_keyword(tmp_path, flags, keywords):
+    frequencies = [] if "--fmin" in flags else ["--frequencies", "12,40"]
+    subprocess.run([CLI, "impedance", EXAMPLE, "--velocity", "0.1", *frequencies, *flags, "-o", "z.csv"],
+                   cwd=tmp_path, check=True, capture_output=True)
+    rows = read_csv(tmp_path / "z.csv")
+    z = sb.impedance(sb.load_damper(EXAMPLE), None if "--fmin" in flags else [12.0, 40.0], velocity=0.1, **keywords)
+    assert z["frequency_hz"].tolist() == [float(row["frequency_hz"]) for row in rows]
+    for i, row in enumerate(rows):
+        for column in ("re_z_n_s_m", "im_z_n_s_m", "iterations", "periods"):
+            assert z[column][0, i] == pytest.approx(float(row[column]), rel=1e-12), column
+
+
+def test_a_setting_the_method_does_not_use_is_an_error():
+    with pytest.raises(sb.InvalidParameter, match="steps = 64: not used by this method"):
+        sb.impedance(sb.load_damper(EXAMPLE), [20.0], velocity=0.1, method="hb", steps=64)
+
+
+def test_non_convergence_is_a_result_not_an_exception():
+    damper = sb.load_damper(EXAMPLE)
+    r = sb.response(damper, 20.0, velocity=0.2, energy_tolerance=1e-12)  # the sampled balance is about 1e-5
+    assert r["converged"] is False and r["termination"] == "energy_mismatch"
+    assert "energy balance off by" in r["message"]
+    assert np.isnan(r["power_w"]) and np.isnan(r["impedance"].real)
+    assert np.isfinite(r["x_m"]).all()  # the last iterate is there to inspect
+    z = sb.impedance(damper, [20.0], velocity=0.2, energy_tolerance=1e-12)
+    assert z["termination"][0][0] == "energy_mismatch" and np.isnan(z["re_z_n_s_m"][0, 0])
+
+
+def test_values_from_python_are_checked_as_a_file_is():
+    cable = sb.make_cable(0.1875, ei=2.8, jenkin=[(20.0, 0.7)])
+    arm = dict(name="a", mass=0.856, inertia=0.001814, offset=0.0325, cable=cable)
+    with pytest.raises(sb.InvalidParameter, match="unknown key 'arm\\[0\\].colour'"):
+        sb.make_damper(0.7, [dict(arm, colour=1)])
+    with pytest.raises(sb.InvalidParameter, match="missing key 'inertia' in \\[arm\\[0\\]\\]"):
+        sb.make_damper(0.7, [{k: v for k, v in arm.items() if k != "inertia"}])
+    with pytest.raises(sb.InvalidParameter, match="arm\\[0\\].cable.jenkin\\[0\\].h = -0.7"):
+        sb.make_damper(0.7, [dict(arm, cable=dict(length=0.1875, sections=40, ei=2.8, jenkin=[dict(c=20.0, h=-0.7)]))])
+    with pytest.raises(sb.InvalidParameter, match="cable.lenght"):
+        sb.make_cable(0.3, ei=2.8, lenght=0.2)
+    # A cable from Python and the same numbers from a file are the same damper.
+    from_python = sb.make_damper(0.7, [arm, dict(arm, name="b")])
+    z = sb.impedance(from_python, [15.0], velocity=0.2)
+    assert z["re_z_n_s_m"][0, 0] == pytest.approx(sb.impedance(sb.load_damper(EXAMPLE), [15.0], velocity=0.2)["re_z_n_s_m"][0, 0],
+                                                  rel=1e-12)

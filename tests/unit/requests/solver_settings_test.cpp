@@ -1,0 +1,106 @@
+// The request layer: each method's own defaults, settings applied where the method
+// uses them and rejected (by name) where it does not; non-converged points masked.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/requests/solver_settings.hpp"
+#include "stockbridge/requests/sweep_request.hpp"
+#include "support/error_message.hpp"
+
+namespace stockbridge::requests {
+namespace {
+
+using damper::Method;
+
+TEST(SolverSettings, UnsetSettingsTakeTheMethodsOwnDefaults) {
+  const damper::SolverOptions hb = solver_options({});
+  EXPECT_EQ(hb.method, Method::harmonic_balance);
+  EXPECT_EQ(hb.harmonic_balance.harmonics, 9);
+  SolverSettings collocation;
+  collocation.method = "collocation";
+  const damper::SolverOptions co = solver_options(collocation);
+  EXPECT_EQ(co.method, Method::collocation);
+  EXPECT_EQ(co.collocation.harmonics, 40);  // its 2H + 1 points are its sampling
+  EXPECT_TRUE(co.collocation.collocation);
+}
+
+TEST(SolverSettings, EachSettingReachesTheChosenMethod) {
+  SolverSettings s;
+  s.method = "collocation";
+  s.harmonics = 25;
+  s.max_iterations = 70;
+  s.energy_tolerance = 0.05;
+  const damper::SolverOptions co = solver_options(s);
+  EXPECT_EQ(co.collocation.harmonics, 25);
+  EXPECT_EQ(co.collocation.max_iterations, 70);
+  EXPECT_EQ(co.energy_tolerance, 0.05);
+  EXPECT_EQ(co.harmonic_balance.harmonics, 9);  // the other method's options are untouched
+  SolverSettings t;
+  t.method = "time";
+  t.steps = 64;
+  t.max_periods = 50;
+  const damper::SolverOptions time = solver_options(t);
+  EXPECT_EQ(time.time_integration.steps_per_period, 64);
+  EXPECT_EQ(time.time_integration.max_periods, 50);
+}
+
+TEST(SolverSettings, ASettingTheMethodDoesNotUseOrABadValueIsNamed) {
+  SolverSettings s;
+  s.steps = 64;
+  EXPECT_EQ(testing::invalid_parameter_message([&] { solver_options(s); }),
+            "steps = 64: not used by this method (only by time and shooting)");
+  SolverSettings h;
+  h.harmonics = 0;
+  EXPECT_EQ(testing::invalid_parameter_message([&] { solver_options(h); }),
+            "harmonics = 0: expected an integer from 1 to 100");
+  SolverSettings m;
+  m.method = "newton";
+  EXPECT_THROW(solver_options(m), InvalidParameter);
+}
+
+TEST(SweepRequest, GridEndsAndAmplitudeChoice) {
+  SweepRequest r;
+  r.velocities = {0.2};
+  r.grid = {5.0, 100.0, 7};
+  const damper::SweepSpec spec = sweep_spec(r);
+  ASSERT_EQ(spec.frequencies.size(), 7u);
+  EXPECT_FALSE(spec.constant_displacement);
+  r.displacements = {0.001};
+  EXPECT_THROW(sweep_spec(r), InvalidParameter);
+  r.velocities.clear();
+  EXPECT_TRUE(sweep_spec(r).constant_displacement);
+}
+
+TEST(ImpedanceRow, ANonConvergedPointShowsOnlyWhereItWas) {
+  damper::ImpedancePoint p;
+  p.frequency_hz = 20.0;
+  p.velocity_amplitude = 0.2;
+  p.displacement_amplitude = 0.0016;
+  p.termination = Termination::line_search_failed;
+  p.impedance = {1.0, 2.0};
+  p.power = 3.0;
+  const std::vector<double> row = impedance_row(p);
+  const std::vector<std::string>& columns = impedance_columns();
+  ASSERT_EQ(row.size(), columns.size());
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    const std::string& name = columns[c];
+    if (name == "frequency_hz" || name == "velocity_m_s" || name == "displacement_m" || name == "converged" ||
+        name == "iterations" || name == "periods" || name == "non_unique") {
+      EXPECT_TRUE(std::isfinite(row[c])) << name;
+    } else {
+      EXPECT_TRUE(std::isnan(row[c])) << name;
+    }
+  }
+  EXPECT_EQ(row[7], 0.0);  // converged
+  std::vector<damper::SweepRun> runs(1);
+  runs[0].points = {p};
+  const SweepTally t = tally(runs);
+  EXPECT_EQ(t.converged, 0);
+  EXPECT_FALSE(t.max_energy_error.has_value());  // none, not 0
+}
+
+}  // namespace
+}  // namespace stockbridge::requests
