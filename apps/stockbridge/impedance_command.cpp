@@ -46,7 +46,7 @@ damper::SweepSpec sweep_spec(const ImpedanceOptions& options) {
   requests::SweepRequest request;
   if (!options.velocity.empty()) request.velocities = parse_number_list(options.velocity, "--velocity");
   if (!options.displacement.empty()) request.displacements = parse_number_list(options.displacement, "--displacement");
-  if (request.velocities.empty() == request.displacements.empty()) {
+  if (request.velocities.empty() == request.displacements.empty()) {  // named by the flags
     throw InvalidParameter("give either --velocity V[,V...] (m/s) or --displacement X[,X...] (m)");
   }
   if (!options.frequencies.empty()) request.frequencies = parse_number_list(options.frequencies, "--frequencies");

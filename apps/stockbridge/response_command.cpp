@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,7 @@
 #include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
-#include "stockbridge/requests/solver_settings.hpp"
+#include "stockbridge/requests/sweep_request.hpp"
 
 namespace stockbridge::cli {
 
@@ -27,8 +28,8 @@ constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 struct ResponseOptions {
   std::string damper_file;
   double frequency = 0.0;
-  double velocity = 0.0;
-  double displacement = 0.0;
+  std::optional<double> velocity;
+  std::optional<double> displacement;
   SolverFlags solver;
   bool json = false;
   std::string output;
@@ -80,13 +81,10 @@ std::string response_csv(const damper::Damper& damper, const damper::Excitation&
 }
 
 int run_response_command(const ResponseOptions& options) {
-  if ((options.velocity > 0.0) == (options.displacement > 0.0)) {
-    throw InvalidParameter("give either --velocity V (m/s) or --displacement X (m), a value > 0");
+  if (options.velocity.has_value() == options.displacement.has_value()) {  // named by the flags
+    throw InvalidParameter("give either --velocity V (m/s) or --displacement X (m)");
   }
-  const damper::Excitation excitation =
-      options.velocity > 0.0 ? damper::Excitation::from_velocity(options.frequency, options.velocity)
-                             : damper::Excitation{options.frequency, options.displacement};
-  excitation.validate();
+  const damper::Excitation excitation = requests::excitation(options.frequency, options.velocity, options.displacement);
   const damper::SolverOptions solver = requests::solver_options(options.solver.settings());
   const damper::Damper damper = io::read_damper_file(options.damper_file);
   const damper::DamperSteadyState state = damper::solve_steady_state(damper, excitation, solver);

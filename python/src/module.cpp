@@ -115,14 +115,11 @@ py::array_t<double> per_arm(const damper::DamperSteadyState& state, std::size_t 
   return out;
 }
 
-py::dict response(const damper::Damper& d, double frequency, const py::object& velocity, const py::object& displacement,
+py::dict response(const damper::Damper& d, double frequency, std::optional<double> velocity, std::optional<double> displacement,
                   const std::string& method, std::optional<int> harmonics, std::optional<int> samples,
                   std::optional<int> steps, std::optional<int> max_iterations, std::optional<int> max_periods,
                   std::optional<double> energy_tolerance) {
-  const std::vector<double> v = amplitudes_of(velocity), x = amplitudes_of(displacement);
-  if (v.size() + x.size() != 1) throw InvalidParameter("give either velocity (m/s) or displacement (m), one value");
-  const damper::Excitation e = v.empty() ? damper::Excitation{frequency, x[0]} : damper::Excitation::from_velocity(frequency, v[0]);
-  e.validate();
+  const damper::Excitation e = requests::excitation(frequency, velocity, displacement);
   const damper::SolverOptions options = requests::solver_options(
       solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance));
   damper::DamperSteadyState state;
@@ -238,11 +235,13 @@ py::dict identify_local(const std::vector<double>& curvature, const std::vector<
 }
 
 py::dict identify_global(const std::string& experiment, double length, const std::vector<double>& prescribed,
-                         const std::vector<double>& measured, const std::string& method, int sections, int elements) {
+                         const std::vector<double>& measured, const std::string& method, int sections, int elements,
+                         const std::string& optimizer) {
   identification::GlobalIdentificationOptions options;
   options.length = length;
   options.sections = sections;
   options.elements = elements;
+  options.optimizer = identification::parse_optimizer(optimizer);
   options.validate();
   const identification::ExperimentMeasurement m{cable::parse_experiment(experiment), prescribed, measured};
   if (method != "fit" && method != "four-step") {
@@ -336,6 +335,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("optimizer") = "subplex", "Masing parameters of a section from a moment-curvature record.");
   m.def("identify_global", &identify_global, py::arg("experiment"), py::arg("length"), py::arg("prescribed"),
         py::arg("measured"), py::arg("method") = "fit", py::arg("sections") = 40, py::arg("elements") = 1,
+        py::arg("optimizer") = "subplex",
         "Constant cable parameters from a cycle of experiment (a) or (b); 'cable' is a Cable ready for make_damper.");
   m.def(
       "strand_bounds",

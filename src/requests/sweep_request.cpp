@@ -8,11 +8,21 @@
 
 namespace stockbridge::requests {
 
+namespace {
+constexpr const char* kOneAmplitudeKind = "give either velocity (m/s) or displacement (m) amplitudes, one of the two";
+}  // namespace
+
+damper::Excitation excitation(double frequency_hz, std::optional<double> velocity, std::optional<double> displacement) {
+  if (velocity.has_value() == displacement.has_value()) throw InvalidParameter(kOneAmplitudeKind);
+  const damper::Excitation e = velocity ? damper::Excitation::from_velocity(frequency_hz, *velocity)
+                                        : damper::Excitation{frequency_hz, *displacement};
+  e.validate();
+  return e;
+}
+
 damper::SweepSpec sweep_spec(const SweepRequest& request) {
   damper::SweepSpec spec;
-  if (request.velocities.empty() == request.displacements.empty()) {
-    throw InvalidParameter("give either velocity (m/s) or displacement (m) amplitudes, one of the two");
-  }
+  if (request.velocities.empty() == request.displacements.empty()) throw InvalidParameter(kOneAmplitudeKind);
   spec.constant_displacement = !request.displacements.empty();
   spec.amplitudes = spec.constant_displacement ? request.displacements : request.velocities;
   spec.frequencies = request.frequencies.empty()

@@ -32,6 +32,10 @@ struct SweepRequest {
 /// The validated sweep (InvalidParameter naming the setting otherwise).
 damper::SweepSpec sweep_spec(const SweepRequest& request);
 
+/// One excitation from a frequency and exactly one of a velocity amplitude (m/s)
+/// and a displacement amplitude (m), validated.
+damper::Excitation excitation(double frequency_hz, std::optional<double> velocity, std::optional<double> displacement);
+
 /// The columns of a point as the impedance CSV and Python's arrays name them.
 const std::vector<std::string>& impedance_columns();
 /// A point's values in impedance_columns() order: NaN for every computed number of
