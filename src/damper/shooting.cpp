@@ -215,12 +215,7 @@ bool ShootingNewton::run(Eigen::Vector4d& z) {
 }  // namespace
 
 ArmSolution Shooting::solve(const Excitation& excitation, const Eigen::VectorXd* initial_state) {
-  excitation.validate();
-  if (initial_state && initial_state->size() != 4) {
-    throw InvalidParameter("initial_state", fmt::format(" has {} values: expected 4 (x, phi, x', phi')",
-                                                        initial_state->size()));
-  }
-  if (initial_state && !initial_state->allFinite()) throw InvalidParameter("initial_state", ": expected finite values");
+  require_time_domain_start(excitation, initial_state);
   const auto start_time = std::chrono::steady_clock::now();
   stepper_.set_excitation(excitation);
   ArmSolution solution;

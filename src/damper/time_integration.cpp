@@ -166,6 +166,15 @@ bool NewmarkStepper::advance_period(ArmPeriod* record) {
 // ---------------------------------------------------------------------------
 // Periodicity measures
 
+void require_time_domain_start(const Excitation& excitation, const Eigen::VectorXd* initial_state) {
+  excitation.validate();
+  if (initial_state && initial_state->size() != 4) {
+    throw InvalidParameter("initial_state", fmt::format(" has {} values: expected 4 (x, phi, x', phi')",
+                                                        initial_state->size()));
+  }
+  if (initial_state && !initial_state->allFinite()) throw InvalidParameter("initial_state", ": expected finite values");
+}
+
 double amplitude_of(const ArmPeriod& period, double length) {
   double amplitude = 0.0;
   for (Eigen::Index j = 0; j < period.kinematics.cols(); ++j) {
@@ -203,12 +212,7 @@ TimeIntegration::TimeIntegration(Arm arm, TimeIntegrationOptions options)
     : arm_(std::move(arm)), options_(validated(std::move(options))), stepper_(arm_, options_) {}
 
 ArmSolution TimeIntegration::solve(const Excitation& excitation, const Eigen::VectorXd* initial_state) {
-  excitation.validate();
-  if (initial_state && initial_state->size() != 4) {
-    throw InvalidParameter("initial_state", fmt::format(" has {} values: expected 4 (x, phi, x', phi')",
-                                                        initial_state->size()));
-  }
-  if (initial_state && !initial_state->allFinite()) throw InvalidParameter("initial_state", ": expected finite values");
+  require_time_domain_start(excitation, initial_state);
   const auto start_time = std::chrono::steady_clock::now();
   const double w = excitation.angular_frequency();
   const double l = arm_.cable().length();

@@ -159,6 +159,10 @@ class TimeIntegration {
   NewmarkStepper stepper_;
 };
 
+/// Checks a time-domain solve's arguments: a valid excitation, and an initial state
+/// (if given) of four finite values (x, phi, x', phi'); InvalidParameter otherwise.
+void require_time_domain_start(const Excitation& excitation, const Eigen::VectorXd* initial_state);
+
 /// The largest tip excursion of a period, max_j max(|x_j|, l |phi_j|), m.
 double amplitude_of(const ArmPeriod& period, double length);
 /// The periodicity measures used by TimeIntegration and Shooting (see above).
