@@ -49,15 +49,13 @@ std::string response_csv(const damper::Damper& damper, const damper::Excitation&
   header.push_back("converged");
   io::CsvWriter csv(header);
   Eigen::Index n = 0;
-  bool complete = true;  // every arm has a whole period of the same length
   std::vector<const damper::ArmSolution*> arms;
   for (const damper::ArmSolution& s : state.arms) {
     arms.push_back(&s);
-    if (n != 0 && s.period.loads.cols() != n) complete = false;
     n = std::max(n, s.period.loads.cols());
   }
-  complete = complete && n > 0;
-  const Eigen::RowVectorXd force = complete ? damper::shaker_force(damper, excitation, arms) : Eigen::RowVectorXd();
+  const Eigen::RowVectorXd force = damper::shaker_force(damper, excitation, arms);
+  const bool complete = force.size() == n;
   const std::vector<double> time = damper::time_grid(excitation, static_cast<int>(n));
   const double w = excitation.angular_frequency(), x = excitation.displacement_amplitude;
   std::vector<double> row;

@@ -133,12 +133,10 @@ py::dict response(const damper::Damper& d, double frequency, std::optional<doubl
   const std::vector<double> time = damper::time_grid(e, static_cast<int>(n));
   std::vector<double> clamp(n), shaker(n, kNaN);
   for (std::size_t j = 0; j < n; ++j) clamp[j] = e.displacement_amplitude * std::sin(e.angular_frequency() * time[j]);
-  if (point.converged()) {
-    std::vector<const damper::ArmSolution*> arms;
-    for (const auto& s : state.arms) arms.push_back(&s);
-    const Eigen::RowVectorXd force = damper::shaker_force(d, e, arms);
-    shaker.assign(force.data(), force.data() + force.size());
-  }
+  std::vector<const damper::ArmSolution*> arms;
+  for (const auto& s : state.arms) arms.push_back(&s);
+  const Eigen::RowVectorXd force = damper::shaker_force(d, e, arms);  // the last iterate's too, as the CLI writes it
+  if (static_cast<std::size_t>(force.size()) == n) shaker.assign(force.data(), force.data() + force.size());
   py::dict out;
   out["time_s"] = array(time);
   out["clamp_displacement_m"] = array(clamp);

@@ -33,7 +33,7 @@ def make_cable(length, sections=40, ei=None, jenkin=(), **keys):
     jenkin = [(c, h), ...] or [{"c": ..., "h": ..., "k0": ...}, ...] (N m^2, N m),
     sections, and optionally mirror_length, lever_arm_cap; any value may be a profile
     {"s": [...], "value": [...]}. Checked exactly as a cable file is (a misspelt or
-    missing key, a bad value: InputError naming it)."""
+    missing key, a bad value: InvalidParameter naming it)."""
     elements = [e if isinstance(e, dict) else {"c": e[0], "h": e[1]} for e in jenkin]
     entries = {"length": length, "sections": sections, "jenkin": elements, **keys}
     if ei is not None:
@@ -44,7 +44,7 @@ def make_cable(length, sections=40, ei=None, jenkin=(), **keys):
 def make_damper(clamp_mass, arms):
     """A damper from arms given as dicts {name, mass, inertia, offset, cable} (kg,
     kg m^2, m; cable a Cable or a dict of a cable table's keys). Checked exactly as
-    a damper file is (a misspelt or missing key, a bad value: InputError naming it)."""
+    a damper file is (a misspelt or missing key, a bad value: InvalidParameter naming it)."""
     text = _toml.table("clamp", {"mass": clamp_mass})
     for arm in arms:
         arm = dict(arm)

@@ -63,6 +63,11 @@ Damper::Damper(DamperDescription description) : description_(std::move(descripti
   }
 }
 
+std::string Damper::arm_label(std::size_t k) const {
+  const std::string& name = description_.arms[k].name;
+  return name.empty() ? arm_name(k) : "arm " + name;
+}
+
 std::string Damper::arm_name(std::size_t k) const {
   const std::string& name = description_.arms[k].name;
   return name.empty() ? fmt::format("arm {}", k + 1) : name;

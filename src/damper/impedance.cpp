@@ -164,7 +164,7 @@ ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
     if (const auto why = distrust(s, energy_tolerance)) {
       if (point.converged()) {  // the first failure says why
         point.termination = why->first;
-        point.failure = fmt::format("arm {}: {}", damper.arm_name(k), why->second);
+        point.failure = fmt::format("{}: {}", damper.arm_label(k), why->second);
       }
       continue;
     }
@@ -172,10 +172,10 @@ ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
     energy = std::max(energy, s.summary.energy_error);
     if (s.branches > 1) {
       point.non_unique = true;
-      point.note = fmt::format("arm {}: {} steady states at this frequency (the response curve folds back)",
-                               damper.arm_name(k), s.branches);
+      point.note = fmt::format("{}: {} steady states at this frequency (the response curve folds back)",
+                               damper.arm_label(k), s.branches);
     } else if (!s.note.empty() && point.note.empty()) {
-      point.note = fmt::format("arm {}: {}", damper.arm_name(k), s.note);
+      point.note = fmt::format("{}: {}", damper.arm_label(k), s.note);
     }
     z += arm_force_first_harmonic(s.period) / v;
     dissipated += s.period.dissipated;
@@ -193,6 +193,9 @@ ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
 Eigen::RowVectorXd shaker_force(const Damper& damper, const Excitation& excitation,
                                 const std::vector<const ArmSolution*>& arm_solutions) {
   const Eigen::Index n = arm_solutions.front()->period.loads.cols();
+  for (const ArmSolution* s : arm_solutions) {
+    if (s->period.loads.cols() != n) return Eigen::RowVectorXd();
+  }
   const double w = excitation.angular_frequency();
   Eigen::RowVectorXd force(n);
   for (Eigen::Index j = 0; j < n; ++j) {

@@ -85,13 +85,13 @@ std::vector<ArmSolution> continue_arm(const Arm& arm, const SweepSpec& spec, dou
 }
 
 /// Flags both ends of every interval where an arm's Jacobian sign changes.
-void flag_folds(const std::vector<ArmSolution>& arm, const std::string& arm_name, std::vector<ImpedancePoint>& points) {
+void flag_folds(const std::vector<ArmSolution>& arm, const std::string& arm_label, std::vector<ImpedancePoint>& points) {
   for (std::size_t i = 1; i < arm.size(); ++i) {
     const int a = arm[i - 1].jacobian_sign, b = arm[i].jacobian_sign;
     if (a != 0 && b != 0 && a != b) {
-      const std::string note = fmt::format("arm {}: the response curve folds between {:.4g} and {:.4g} Hz "
+      const std::string note = fmt::format("{}: the response curve folds between {:.4g} and {:.4g} Hz "
                                            "(Jacobian determinant changes sign): several steady states coexist",
-                                           arm_name, points[i - 1].frequency_hz, points[i].frequency_hz);
+                                           arm_label, points[i - 1].frequency_hz, points[i].frequency_hz);
       for (const std::size_t k : {i - 1, i}) {
         points[k].non_unique = true;
         if (points[k].note.empty()) points[k].note = note;
@@ -153,7 +153,7 @@ std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, con
           combine(damper, spec.excitation(spec.frequencies[i], spec.amplitudes[a]), per_arm, spec.solver.energy_tolerance));
     }
     for (std::size_t d = 0; d < distinct.size(); ++d) {
-      flag_folds(results[a * distinct.size() + d], damper.arm_name(distinct[d]), runs[a].points);
+      flag_folds(results[a * distinct.size() + d], damper.arm_label(distinct[d]), runs[a].points);
     }
   }
   return runs;

@@ -77,6 +77,8 @@ class Damper {
   const std::vector<Arm>& arms() const { return arms_; }
   /// The arm's name from the description, or "arm <k+1>" where it has none.
   std::string arm_name(std::size_t k) const;
+  /// How messages name the arm: "arm long", or "arm 2" where it has no name.
+  std::string arm_label(std::size_t k) const;
   /// For each arm, the index of the first arm with the same mechanics.
   const std::vector<std::size_t>& representative() const { return representative_; }
   /// The arms that represent themselves (solved; the others copy them).

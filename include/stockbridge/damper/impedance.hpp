@@ -104,7 +104,9 @@ struct ImpedancePoint {
 ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
                        const std::vector<const ArmSolution*>& arm_solutions, double energy_tolerance);
 
-/// The shaker force over one period at N samples (all arms sampled alike): m_c x_c'' - sum F_k.
+/// The shaker force over one period at N samples: m_c x_c'' - sum F_k (also for the
+/// last iterate of a point that did not converge); empty unless every arm has a
+/// period of the same N samples.
 Eigen::RowVectorXd shaker_force(const Damper& damper, const Excitation& excitation,
                                 const std::vector<const ArmSolution*>& arm_solutions);
 
