@@ -53,6 +53,7 @@ std::vector<double> model_output(const cable::CableDescription& description, dou
                                  const ExperimentMeasurement& m) {
   cable::Cantilever cantilever{cable::Cable(description)};
   std::vector<double> output;
+  output.reserve(m.prescribed.size());
   for (const cable::ExperimentSample& s : cable::run_path(cantilever, m.experiment, m.prescribed)) {
     const double value = m.experiment == cable::Experiment::a ? s.tip_force : s.clamp_moment;
     output.push_back(s.solve.converged ? value + output_offset : std::numeric_limits<double>::quiet_NaN());
