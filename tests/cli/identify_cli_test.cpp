@@ -48,8 +48,8 @@ TEST(IdentifyCli, LocalRecoversTheParametersOfALoopRecord) {
 
 /// What the global fits measure and how: the example cable (40 sections), cycles
 /// of `cycle`'s 400 samples, fits with `identify global`'s 40 sections. Under
-/// STOCKBRIDGE_TEST_SCALE=short: a copy of the cable with 12 sections, cycles of
-/// 200 samples, fits with 12 sections.
+/// STOCKBRIDGE_TEST_SCALE=short: a copy of the cable with 8 sections, cycles of
+/// 100 samples, fits with 8 sections.
 struct GlobalFitScale {
   std::string cable;          ///< the cable file `cycle` measures
   std::string cycle_options;  ///< added to `cycle`
@@ -63,8 +63,8 @@ GlobalFitScale global_fit_scale(const std::filesystem::path& dir) {
   const std::string sections = "sections = 40";
   const std::size_t at = text.find(sections);
   if (at == std::string::npos) throw std::runtime_error(example + " no longer holds '" + sections + "'");
-  text.replace(at, sections.size(), "sections = 12");
-  return {write_temp_file(dir, "cable_12_sections.toml", text).string(), " --points 200", " --sections 12"};
+  text.replace(at, sections.size(), "sections = 8");
+  return {write_temp_file(dir, "cable_8_sections.toml", text).string(), " --points 100", " --sections 8"};
 }
 
 // A cycle written by `cycle` goes through `identify global` and back into `cycle`.

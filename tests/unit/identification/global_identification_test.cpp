@@ -1,8 +1,8 @@
 // Global identification from synthetic cycles of experiments (a) and (b): the fit
 // recovers the cable exactly without noise and within 2 % with 1 % noise; the
 // four-step formulas stay within their documented bias. Under
-// STOCKBRIDGE_TEST_SCALE=short the fits run on a coarser cable and cycle (12 sections
-// rather than 40, measured and fitted alike; 200 samples per cycle rather than 400)
+// STOCKBRIDGE_TEST_SCALE=short the fits run on a coarser cable and cycle (8 sections
+// rather than 40, measured and fitted alike; 100 samples per cycle rather than 400)
 // and with one noise seed.
 
 #include <random>
@@ -23,7 +23,7 @@ struct Resolution {
   int points_per_cycle = 400;
 };
 
-Resolution scaled_resolution() { return stockbridge::testing::scaled(Resolution{}, Resolution{12, 200}); }
+Resolution scaled_resolution() { return stockbridge::testing::scaled(Resolution{}, Resolution{8, 100}); }
 
 /// The dissertation's cable (l = 0.3, ei 2.8, c 20, h 0.7; Table 4.2).
 cable::CableDescription truth(const Resolution& r) {
@@ -110,8 +110,9 @@ TEST(GlobalIdentification, FourStepWithinItsBias) {
 
 TEST(GlobalIdentification, RejectsUnusableRecords) {
   ExperimentMeasurement m = measure(cable::Experiment::a, 0.0);
-  m.prescribed.resize(150);  // less than one cycle after the first extreme
-  m.measured.resize(150);
+  const std::size_t kept = static_cast<std::size_t>(scaled_resolution().points_per_cycle) * 3 / 8;
+  m.prescribed.resize(kept);  // less than one cycle after the first extreme
+  m.measured.resize(kept);
   EXPECT_THROW(identify_fit(m, options()), InvalidParameter);
   GlobalIdentificationOptions bad = options();
   bad.length = 0.0;
