@@ -5,8 +5,8 @@
 #include <limits>
 
 #include <fmt/format.h>
-#include <nlopt.hpp>
 
+#include "fit_core.hpp"
 #include "record_features.hpp"
 #include "stockbridge/core/error.hpp"
 
@@ -22,50 +22,29 @@ void GlobalIdentificationOptions::validate() const {
 
 namespace {
 
+const fit_core::RecordNames record_names{"prescribed values", "measured", "the prescribed motion"};
+
 std::vector<std::size_t> checked_reversals(const ExperimentMeasurement& m) {
-  if (m.prescribed.size() != m.measured.size()) {
-    throw InvalidParameter(fmt::format("record: {} prescribed values but {} measured", m.prescribed.size(), m.measured.size()));
-  }
-  const std::vector<std::size_t> turns = reversals(m.prescribed);
-  if (turns.size() < 3) {
-    throw InvalidParameter(fmt::format("record: {} reversals of the prescribed motion: expected at least one full "
-                                       "cycle after the first extreme (3 reversals)",
-                                       turns.size()));
-  }
-  return turns;
+  return fit_core::checked_reversals(m.prescribed, m.measured, record_names);
 }
 
-/// The L1 sums of the simulated output against the measured one, from sample `from`.
-struct Sums {
-  double error = std::numeric_limits<double>::infinity();
-  double reference = 1.0;
-};
-
-Sums simulate(const cable::CableDescription& description, double offset, const ExperimentMeasurement& m,
-              std::size_t from) {
-  cable::Cantilever cantilever{cable::Cable(description)};
-  const std::vector<cable::ExperimentSample> samples = cable::run_path(cantilever, m.experiment, m.prescribed);
-  Sums sums{0.0, 0.0};
-  double previous = 0.0;
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    if (!samples[k].solve.converged()) return {};
-    const double output = m.experiment == cable::Experiment::a ? samples[k].tip_force : samples[k].clamp_moment;
-    const double residual = output + offset - m.measured[k];
-    if (k > from) {
-      const double dx = std::abs(m.prescribed[k] - m.prescribed[k - 1]);
-      sums.error += 0.5 * (std::abs(residual) + std::abs(previous)) * dx;
-      sums.reference += 0.5 * (std::abs(m.measured[k]) + std::abs(m.measured[k - 1])) * dx;
-    }
-    previous = residual;
-  }
-  return sums;
-}
-
-cable::CableDescription constant_cable(const GlobalIdentificationOptions& options, double ei,
-                                       const std::vector<section::Jenkin>& jenkin) {
+cable::CableDescription constant_cable(double length, int sections, const section::MasingParameters& p) {
   std::vector<std::pair<double, double>> c_h;
-  for (const section::Jenkin& e : jenkin) c_h.emplace_back(e.c, e.h);
-  return cable::CableDescription::uniform(options.length, options.sections, ei, c_h);
+  for (const section::Jenkin& e : p.jenkin) c_h.emplace_back(e.c, e.h);
+  return cable::CableDescription::uniform(length, sections, p.ei, c_h);
+}
+
+/// The four-step result and variations of it (noise can throw the four steps' local
+/// slopes off by tens of percent), its element spread over the elements, no offset.
+std::vector<std::vector<double>> starts(const cable::CableDescription& four_step, int elements,
+                                        const fit_core::LogParameters& packing) {
+  const double ei = four_step.ei.at(0.0), c = four_step.jenkin[0].c.at(0.0), h = four_step.jenkin[0].h.at(0.0);
+  std::vector<std::vector<double>> x;
+  for (const auto& [ei_factor, h_factor] : {std::pair{1.0, 1.0}, std::pair{1.4, 0.6}, std::pair{0.7, 1.5},
+                                            std::pair{1.0, 0.6}, std::pair{1.4, 1.0}}) {
+    x.push_back(packing.pack(fit_core::spread_over_elements(ei * ei_factor, c, h * h_factor, elements), 0.0));
+  }
+  return x;
 }
 
 }  // namespace
@@ -74,6 +53,7 @@ std::vector<double> model_output(const cable::CableDescription& description, dou
                                  const ExperimentMeasurement& m) {
   cable::Cantilever cantilever{cable::Cable(description)};
   std::vector<double> output;
+  output.reserve(m.prescribed.size());
   for (const cable::ExperimentSample& s : cable::run_path(cantilever, m.experiment, m.prescribed)) {
     const double value = m.experiment == cable::Experiment::a ? s.tip_force : s.clamp_moment;
     output.push_back(s.solve.converged() ? value + output_offset : std::numeric_limits<double>::quiet_NaN());
@@ -83,8 +63,9 @@ std::vector<double> model_output(const cable::CableDescription& description, dou
 
 double relative_l1_error(const cable::CableDescription& cable, double output_offset,
                          const ExperimentMeasurement& measurement) {
-  const Sums s = simulate(cable, output_offset, measurement, checked_reversals(measurement).front());
-  return s.error / s.reference;
+  const std::size_t from = checked_reversals(measurement).front();
+  return fit_core::relative_l1_misfit(measurement.prescribed, measurement.measured,
+                                      model_output(cable, output_offset, measurement), from);
 }
 
 GlobalIdentification identify_four_step(const ExperimentMeasurement& m, const GlobalIdentificationOptions& options) {
@@ -104,114 +85,47 @@ GlobalIdentification identify_four_step(const ExperimentMeasurement& m, const Gl
   }
   // Step 3: the offset from the all-slip line at the extremes, half the difference
   // between the maxima and the minima of the prescribed motion.
-  const auto [lo, hi] = std::minmax_element(m.prescribed.begin(), m.prescribed.end());
-  const double middle = 0.5 * (*hi + *lo);
-  double upper = 0.0, lower = 0.0;
-  int n_upper = 0, n_lower = 0;
-  for (const std::size_t r : turns) {
+  const ExtremeMeans offsets = extreme_means(m.prescribed, turns, [&](std::size_t r) {
     const double u = m.prescribed[r];
-    const double h = a ? 2.0 * l / 3.0 * (m.measured[r] - 3.0 * ei * u / (l * l * l))
-                       : -m.measured[r] - 2.0 * ei * u / l;
-    if (u > middle) {
-      upper += h;
-      ++n_upper;
-    } else {
-      lower += h;
-      ++n_lower;
-    }
-  }
-  const double h = 0.5 * (upper / std::max(n_upper, 1) - lower / std::max(n_lower, 1));
+    return a ? 2.0 * l / 3.0 * (m.measured[r] - 3.0 * ei * u / (l * l * l)) : -m.measured[r] - 2.0 * ei * u / l;
+  });
+  const double h = 0.5 * (offsets.upper - offsets.lower);
   if (!(h > 0.0)) {
     throw InvalidParameter(fmt::format("record: the loop's offset at the extremes gives h = {}: expected > 0",
                                        format_value(h)));
   }
   GlobalIdentification result;
-  result.cable = constant_cable(options, ei, {{stick - ei, h}});  // step 4: c = (ei + c) - ei
+  result.cable = constant_cable(options.length, options.sections, {ei, {{stick - ei, h}}});  // step 4: c = (ei + c) - ei
   result.error = relative_l1_error(result.cable, 0.0, m);
   return result;
 }
 
 GlobalIdentification identify_fit(const ExperimentMeasurement& m, const GlobalIdentificationOptions& options) {
-  const GlobalIdentification start = identify_four_step(m, options);
-  const std::vector<std::size_t> turns = checked_reversals(m);
-  const int elements = options.elements;
-  const int n = 2 + 2 * elements;
-  const double ei0 = start.cable.ei.at(0.0), c0 = start.cable.jenkin[0].c.at(0.0), h0 = start.cable.jenkin[0].h.at(0.0);
-  const double output_scale = *std::max_element(m.measured.begin(), m.measured.end(),
-                                                [](double x, double y) { return std::abs(x) < std::abs(y); });
-  struct Problem {
-    const ExperimentMeasurement& m;
-    GlobalIdentificationOptions options;
-    std::size_t from;
-    double output_scale;
-    int evaluations = 0;
-    cable::CableDescription cable(const std::vector<double>& x) const {
-      std::vector<section::Jenkin> jenkin;
-      for (int j = 0; j < options.elements; ++j) jenkin.push_back({std::exp(x[1 + 2 * j]), std::exp(x[2 + 2 * j])});
-      return constant_cable(options, std::exp(x[0]), jenkin);
-    }
-    double objective(const std::vector<double>& x) {
-      ++evaluations;
-      for (const double v : x) {
-        if (!std::isfinite(v) || std::abs(v) > 60.0) return 1e300;
-      }
-      const Sums s = simulate(cable(x), x.back() * std::abs(output_scale), m, from);
-      return std::isfinite(s.error) ? s.error / s.reference : 1e300;
-    }
-  } problem{m, options, turns.front(), output_scale};
-  // Starts: the four-step result and variations of it (noise can throw the four
-  // steps' local slopes off by tens of percent), then a restart from the best.
-  auto start_at = [&](double ei_factor, double h_factor) {
-    std::vector<double> x(n);
-    x[0] = std::log(ei0 * ei_factor);
-    for (int j = 0; j < elements; ++j) {  // spread the four-step element over the elements
-      x[1 + 2 * j] = std::log(c0 / elements);
-      x[2 + 2 * j] = std::log(h0 * h_factor * (j + 1) * 2.0 / (elements * (elements + 1)));
-    }
-    x[n - 1] = 0.0;
-    return x;
-  };
-  const nlopt::algorithm algorithm = options.optimizer == Optimizer::subplex ? nlopt::LN_SBPLX : nlopt::LN_NELDERMEAD;
-  std::vector<double> x;
-  double best = std::numeric_limits<double>::infinity();
-  auto run = [&](std::vector<double> from, int max_evaluations) {
-    nlopt::opt opt(algorithm, static_cast<unsigned>(n));
-    opt.set_min_objective(
-        [](const std::vector<double>& v, std::vector<double>&, void* data) { return static_cast<Problem*>(data)->objective(v); },
-        &problem);
-    opt.set_xtol_rel(options.tolerance);
-    opt.set_maxeval(max_evaluations);
-    opt.set_initial_step(0.1);
-    double value = problem.objective(from);
-    try {
-      opt.optimize(from, value);
-    } catch (const std::exception&) {
-      value = problem.objective(from);  // stopped on round-off: `from` is its best point
-    }
-    if (value < best) {
-      best = value;
-      x = from;
-    }
+  const GlobalIdentification four_step = identify_four_step(m, options);
+  const std::size_t from = checked_reversals(m).front();
+  const double output_scale = std::abs(*std::max_element(
+      m.measured.begin(), m.measured.end(), [](double x, double y) { return std::abs(x) < std::abs(y); }));
+  const fit_core::LogParameters packing(options.elements, output_scale);
+  auto objective_on = [&](int sections) {
+    return [&, sections](const std::vector<double>& x) {
+      const cable::CableDescription cable = constant_cable(options.length, sections, packing.parameters(x));
+      return fit_core::relative_l1_misfit(m.prescribed, m.measured, model_output(cable, packing.offset(x), m), from);
+    };
   };
   // The starts are explored on a coarse cable (12 sections: 0.5 % off, a third of the
-  // cost), the best is then polished on the full one.
-  problem.options.sections = std::min(options.sections, 12);
-  for (const auto& [ei_factor, h_factor] : {std::pair{1.0, 1.0}, std::pair{1.4, 0.6}, std::pair{0.7, 1.5},
-                                            std::pair{1.0, 0.6}, std::pair{1.4, 1.0}}) {
-    run(start_at(ei_factor, h_factor), options.max_evaluations / 4);
-  }
-  problem.options.sections = options.sections;
-  best = std::numeric_limits<double>::infinity();
-  run(x, options.max_evaluations);
-  run(x, options.max_evaluations);  // a restart escapes a collapsed simplex
+  // cost), the best is then polished on the full one, twice.
+  fit_core::Search coarse(objective_on(std::min(options.sections, 12)));
+  fit_core::Search fine(objective_on(options.sections));
+  fit_core::SearchSettings settings{options.optimizer, options.tolerance, options.max_evaluations / 4, 0.1};
+  const fit_core::Minimum explored = coarse.from_each(starts(four_step.cable, options.elements, packing), settings);
+  settings.max_evaluations = options.max_evaluations;
+  const fit_core::Minimum best = fine.restarted({explored.x}, 2, settings);
   GlobalIdentification result;
-  result.cable = problem.cable(x);
-  std::sort(result.cable.jenkin.begin(), result.cable.jenkin.end(), [](const auto& p, const auto& q) {
-    return p.h.at(0.0) / p.c.at(0.0) < q.h.at(0.0) / q.c.at(0.0);
-  });
-  result.output_offset = x[n - 1] * std::abs(output_scale);
-  result.error = best;
-  result.evaluations = problem.evaluations;
+  result.cable =
+      constant_cable(options.length, options.sections, fit_core::sorted_by_slip_curvature(packing.parameters(best.x)));
+  result.output_offset = packing.offset(best.x);
+  result.error = best.value;
+  result.evaluations = coarse.evaluations() + fine.evaluations();
   return result;
 }
 

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <utility>
 
 #include <fmt/format.h>
-#include <nlopt.hpp>
 
+#include "fit_core.hpp"
 #include "record_features.hpp"
 #include "stockbridge/core/error.hpp"
 
@@ -54,68 +54,55 @@ std::vector<std::size_t> reversals(const std::vector<double>& curvature) {
 
 namespace {
 
-/// Sum of |r| |d kappa| (trapezoid) from `from` on; r_k = model + offset - measured.
-struct L1Sums {
-  double error = 0.0;
-  double reference = 0.0;
+const fit_core::RecordNames record_names{"curvatures", "moments", "the curvature"};
+
+/// Starting values from the record: ei from the slope before the reversals (all
+/// slip), sum c from the slope after them (all stick) less ei, sum h and the moment
+/// offset from the all-slip line's offsets at the upper and lower extremes.
+struct RecordEstimates {
+  double ei = 0.0;
+  double c_total = 0.0;
+  double h_total = 0.0;
+  double offset = 0.0;
 };
 
-L1Sums l1_sums(const section::MasingParameters& p, double offset, const MomentCurvatureRecord& record,
-               std::size_t from, std::size_t to) {
-  section::SectionState state = section::SectionState::virgin(p), next = state;
-  L1Sums sums;
-  double previous_residual = 0.0;
-  for (std::size_t k = 0; k < to; ++k) {
-    section::curvature_update(p, state, record.curvature[k], next);
-    std::swap(state, next);
-    const double residual = state.moment + offset - record.moment[k];
-    if (k > from) {
-      const double dk = std::abs(record.curvature[k] - record.curvature[k - 1]);
-      sums.error += 0.5 * (std::abs(residual) + std::abs(previous_residual)) * dk;
-      sums.reference += 0.5 * (std::abs(record.moment[k]) + std::abs(record.moment[k - 1])) * dk;
-    }
-    previous_residual = residual;
-  }
-  return sums;
+RecordEstimates record_estimates(const MomentCurvatureRecord& record, const std::vector<std::size_t>& turns) {
+  const LoopSlopes slopes = loop_slopes(record.curvature, record.moment, turns);
+  const double k_max = slopes.after;
+  double ei = slopes.before;
+  if (!(ei > 0.0) || !(k_max > ei)) ei = std::isfinite(k_max) && k_max > 0.0 ? 0.2 * k_max : 1.0;
+  const ExtremeMeans h = extreme_means(record.curvature, turns,
+                                       [&](std::size_t r) { return record.moment[r] - ei * record.curvature[r]; });
+  const auto [lo, hi] = std::minmax_element(record.curvature.begin(), record.curvature.end());
+  RecordEstimates estimates;
+  estimates.ei = ei;
+  estimates.c_total = std::max(k_max - ei, 0.2 * ei);
+  estimates.h_total = std::max(0.5 * (h.upper - h.lower), 1e-6 * std::abs(k_max * (*hi - *lo)) + 1e-300);
+  estimates.offset = 0.5 * (h.upper + h.lower);
+  return estimates;
 }
 
-void check(const MomentCurvatureRecord& record, const std::vector<std::size_t>& turns) {
-  if (record.curvature.size() != record.moment.size()) {
-    throw InvalidParameter(fmt::format("record: {} curvatures but {} moments", record.curvature.size(),
-                                       record.moment.size()));
+/// Every start's ei and offset are the estimates'; sum c and sum h are scaled.
+std::vector<std::vector<double>> starts(const RecordEstimates& e, int elements, const fit_core::LogParameters& packing) {
+  std::vector<std::vector<double>> x;
+  for (const auto& [c_factor, h_factor] :
+       {std::pair{1.0, 1.0}, std::pair{0.5, 1.0}, std::pair{2.0, 1.0}, std::pair{1.0, 0.7}, std::pair{1.0, 1.4}}) {
+    x.push_back(packing.pack(fit_core::spread_over_elements(e.ei, c_factor * e.c_total, h_factor * e.h_total, elements),
+                             e.offset));
   }
-  if (turns.size() < 3) {
-    throw InvalidParameter(fmt::format("record: {} reversals of the curvature: expected at least one full cycle after "
-                                       "the first extreme (3 reversals)",
-                                       turns.size()));
-  }
+  return x;
 }
 
-struct Problem {
-  const MomentCurvatureRecord& record;
-  std::size_t from;
-  int elements;
-  double moment_scale;
-  int evaluations = 0;
-
-  section::MasingParameters parameters(const std::vector<double>& x) const {
-    section::MasingParameters p{std::exp(x[0]), {}};
-    for (int j = 0; j < elements; ++j) p.jenkin.push_back({std::exp(x[1 + 2 * j]), std::exp(x[2 + 2 * j])});
-    return p;
+/// The relative error of each cycle, between every second reversal (the last to the end).
+std::vector<double> cycle_errors(const MomentCurvatureRecord& record, const std::vector<double>& model,
+                                 const std::vector<std::size_t>& turns) {
+  std::vector<double> errors;
+  for (std::size_t i = 0; i < turns.size(); i += 2) {
+    const std::size_t to = i + 2 < turns.size() ? turns[i + 2] + 1 : record.curvature.size();
+    const fit_core::L1Sums sums = fit_core::l1_sums(record.curvature, record.moment, model, turns[i], to);
+    errors.push_back(sums.reference > 0.0 ? sums.relative() : 0.0);
   }
-  double offset(const std::vector<double>& x) const { return x.back() * moment_scale; }
-  double objective(const std::vector<double>& x) {
-    ++evaluations;
-    for (const double v : x) {
-      if (!std::isfinite(v) || std::abs(v) > 60.0) return 1e300;
-    }
-    const L1Sums s = l1_sums(parameters(x), offset(x), record, from, record.curvature.size());
-    return s.error / s.reference;
-  }
-};
-
-double nlopt_objective(const std::vector<double>& x, std::vector<double>& /*gradient*/, void* data) {
-  return static_cast<Problem*>(data)->objective(x);
+  return errors;
 }
 
 }  // namespace
@@ -135,95 +122,31 @@ std::vector<double> model_moments(const section::MasingParameters& parameters, d
 
 double relative_l1_error(const section::MasingParameters& parameters, double moment_offset,
                          const MomentCurvatureRecord& record) {
-  const std::vector<std::size_t> turns = reversals(record.curvature);
-  check(record, turns);
-  const L1Sums s = l1_sums(parameters, moment_offset, record, turns.front(), record.curvature.size());
-  return s.error / s.reference;
+  const std::vector<std::size_t> turns = fit_core::checked_reversals(record.curvature, record.moment, record_names);
+  return fit_core::relative_l1_misfit(record.curvature, record.moment, model_moments(parameters, moment_offset, record),
+                                      turns.front());
 }
 
 LocalIdentification identify_local(const MomentCurvatureRecord& record, const LocalIdentificationOptions& options) {
   options.validate();
-  const std::vector<std::size_t> turns = reversals(record.curvature);
-  check(record, turns);
-  const auto [lo, hi] = std::minmax_element(record.curvature.begin(), record.curvature.end());
-  const double middle = 0.5 * (*hi + *lo);
-
-  // Starting values from the record.
-  const LoopSlopes slopes = loop_slopes(record.curvature, record.moment, turns);
-  const double k_max = slopes.after;
-  double ei = slopes.before;
-  if (!(ei > 0.0) || !(k_max > ei)) ei = std::isfinite(k_max) && k_max > 0.0 ? 0.2 * k_max : 1.0;
-  const double c_total = std::max(k_max - ei, 0.2 * ei);
-  double upper = 0.0, lower = 0.0;
-  int n_upper = 0, n_lower = 0;
-  for (const std::size_t r : turns) {
-    const double h = record.moment[r] - ei * record.curvature[r];
-    if (record.curvature[r] > middle) {
-      upper += h;
-      ++n_upper;
-    } else {
-      lower += h;
-      ++n_lower;
-    }
-  }
-  upper /= std::max(n_upper, 1);
-  lower /= std::max(n_lower, 1);
-  const double h_total = std::max(0.5 * (upper - lower), 1e-6 * std::abs(k_max * (*hi - *lo)) + 1e-300);
-  const double offset = 0.5 * (upper + lower);
-
-  Problem problem{record, turns.front(), options.elements, h_total};
-  const int n = 2 + 2 * options.elements;
-  auto start = [&](double c_factor, double h_factor) {
-    std::vector<double> x(n);
-    x[0] = std::log(ei);
-    double weight_sum = 0.0;
-    for (int j = 0; j < options.elements; ++j) weight_sum += j + 1;
-    for (int j = 0; j < options.elements; ++j) {
-      x[1 + 2 * j] = std::log(c_factor * c_total / options.elements);
-      x[2 + 2 * j] = std::log(h_factor * h_total * (j + 1) / weight_sum);
-    }
-    x[n - 1] = offset / h_total;
-    return x;
-  };
-  LocalIdentification best;
-  best.error = std::numeric_limits<double>::infinity();
-  std::vector<double> best_x;
-  const nlopt::algorithm algorithm = options.optimizer == Optimizer::subplex ? nlopt::LN_SBPLX : nlopt::LN_NELDERMEAD;
-  auto run = [&](std::vector<double> x) {
-    nlopt::opt opt(algorithm, static_cast<unsigned>(n));
-    opt.set_min_objective(nlopt_objective, &problem);
-    opt.set_xtol_rel(options.tolerance);
-    opt.set_ftol_abs(0.0);
-    opt.set_maxeval(options.max_evaluations);
-    opt.set_initial_step(0.2);
-    double value = problem.objective(x);
-    try {
-      opt.optimize(x, value);
-    } catch (const std::exception&) {
-      value = problem.objective(x);  // NLopt stops on round-off: x is still its best point
-    }
-    ++best.starts;
-    if (value < best.error) {
-      best.error = value;
-      best_x = x;
-    }
-  };
-  for (const auto& [c_factor, h_factor] :
-       {std::pair{1.0, 1.0}, std::pair{0.5, 1.0}, std::pair{2.0, 1.0}, std::pair{1.0, 0.7}, std::pair{1.0, 1.4}}) {
-    run(start(c_factor, h_factor));
-  }
-  run(best_x);  // a restart from the best point escapes a collapsed simplex
-  best.parameters = problem.parameters(best_x);
-  std::sort(best.parameters.jenkin.begin(), best.parameters.jenkin.end(),
-            [](const section::Jenkin& a, const section::Jenkin& b) { return a.h / a.c < b.h / b.c; });
-  best.moment_offset = problem.offset(best_x);
-  best.evaluations = problem.evaluations;
-  for (std::size_t i = 0; i < turns.size(); i += 2) {  // cycles from every second reversal
-    const std::size_t to = i + 2 < turns.size() ? turns[i + 2] + 1 : record.curvature.size();
-    const L1Sums all = l1_sums(best.parameters, best.moment_offset, record, turns[i], to);
-    best.cycle_errors.push_back(all.reference > 0.0 ? all.error / all.reference : 0.0);
-  }
-  return best;
+  const std::vector<std::size_t> turns = fit_core::checked_reversals(record.curvature, record.moment, record_names);
+  const RecordEstimates estimates = record_estimates(record, turns);
+  const fit_core::LogParameters packing(options.elements, estimates.h_total);
+  fit_core::Search search([&](const std::vector<double>& x) {
+    const std::vector<double> model = model_moments(packing.parameters(x), packing.offset(x), record);
+    return fit_core::relative_l1_misfit(record.curvature, record.moment, model, turns.front());
+  });
+  const fit_core::SearchSettings settings{options.optimizer, options.tolerance, options.max_evaluations, 0.2};
+  const fit_core::Minimum best =
+      search.restarted(search.from_each(starts(estimates, options.elements, packing), settings), 1, settings);
+  LocalIdentification fit;
+  fit.parameters = fit_core::sorted_by_slip_curvature(packing.parameters(best.x));
+  fit.moment_offset = packing.offset(best.x);
+  fit.error = best.value;
+  fit.cycle_errors = cycle_errors(record, model_moments(fit.parameters, fit.moment_offset, record), turns);
+  fit.evaluations = search.evaluations();
+  fit.starts = search.runs();
+  return fit;
 }
 
 }  // namespace stockbridge::identification

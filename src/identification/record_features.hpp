@@ -1,6 +1,7 @@
 #pragma once
 // Features of a measured loop y(x) used to start identifications: slopes just after
-// and just before the reversals of x, and a robust average (private to the library).
+// and just before the reversals of x, a robust average, and averages over the upper
+// and the lower extremes (private to the library).
 
 #include <algorithm>
 #include <cmath>
@@ -54,6 +55,33 @@ inline LoopSlopes loop_slopes(const std::vector<double>& x, const std::vector<do
     before.push_back(slope_near(x, y, r, -1, span));
   }
   return {median(after), median(before)};
+}
+
+/// Means of value(r) over the reversals r at the upper extremes of x (above its
+/// mid-range) and over those at the lower extremes (0 where there are none).
+struct ExtremeMeans {
+  double upper = 0.0;
+  double lower = 0.0;
+};
+
+template <class Value>
+ExtremeMeans extreme_means(const std::vector<double>& x, const std::vector<std::size_t>& turns, Value value) {
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  const double middle = 0.5 * (*hi + *lo);
+  ExtremeMeans means;
+  int n_upper = 0, n_lower = 0;
+  for (const std::size_t r : turns) {
+    if (x[r] > middle) {
+      means.upper += value(r);
+      ++n_upper;
+    } else {
+      means.lower += value(r);
+      ++n_lower;
+    }
+  }
+  means.upper /= std::max(n_upper, 1);
+  means.lower /= std::max(n_lower, 1);
+  return means;
 }
 
 }  // namespace stockbridge::identification

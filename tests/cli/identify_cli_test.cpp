@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <tuple>
 #include <vector>
 #include <filesystem>
@@ -13,6 +14,7 @@
 
 #include "support/cli_runner.hpp"
 #include "support/temp_file.hpp"
+#include "support/test_scale.hpp"
 
 namespace stockbridge::testing {
 namespace {
@@ -44,15 +46,40 @@ TEST(IdentifyCli, LocalRecoversTheParametersOfALoopRecord) {
   EXPECT_EQ(cycle.exit_code, 0) << cycle.err;
 }
 
+/// What the global fits measure and how: the example cable (40 sections), cycles
+/// of `cycle`'s 400 samples, fits with `identify global`'s 40 sections. Under
+/// STOCKBRIDGE_TEST_SCALE=short: a copy of the cable with 8 sections, cycles of
+/// 100 samples, fits with 8 sections.
+struct GlobalFitScale {
+  std::string cable;          ///< the cable file `cycle` measures
+  std::string cycle_options;  ///< added to `cycle`
+  std::string fit_options;    ///< added to `identify global`
+};
+
+GlobalFitScale global_fit_scale(const std::filesystem::path& dir) {
+  const std::string example = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/cable_sauter2003.toml";
+  if (!short_tests()) return {example, "", ""};
+  std::string text = read_text(example);
+  const std::string sections = "sections = 40";
+  const std::size_t at = text.find(sections);
+  if (at == std::string::npos) throw std::runtime_error(example + " no longer holds '" + sections + "'");
+  text.replace(at, sections.size(), "sections = 8");
+  return {write_temp_file(dir, "cable_8_sections.toml", text).string(), " --points 100", " --sections 8"};
+}
+
 // A cycle written by `cycle` goes through `identify global` and back into `cycle`.
 TEST(IdentifyCli, GlobalFitOfACycleGivesACableFileCycleAccepts) {
   const auto dir = scratch_directory("identify-global");
-  const std::string cable = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/cable_sauter2003.toml";
+  const GlobalFitScale scale = global_fit_scale(dir);
   for (const char* experiment : {"a", "b"}) {
     const std::string amplitude = std::string(experiment) == "a" ? "0.03" : "0.15";
-    ASSERT_EQ(run_cli("cycle '" + cable + "' --experiment " + experiment + " --amplitude " + amplitude + " -o c.csv", dir).exit_code, 0);
+    ASSERT_EQ(run_cli("cycle '" + scale.cable + "' --experiment " + experiment + " --amplitude " + amplitude +
+                          scale.cycle_options + " -o c.csv",
+                      dir)
+                  .exit_code,
+              0);
     const CliResult r = run_cli(std::string("identify global --experiment ") + experiment +
-                                    " --length 0.3 --input c.csv --json -o identified.toml",
+                                    " --length 0.3 --input c.csv --json -o identified.toml" + scale.fit_options,
                                 dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NEAR(json_number(r.out, "ei"), 2.8, 1e-6) << r.out;
@@ -61,7 +88,8 @@ TEST(IdentifyCli, GlobalFitOfACycleGivesACableFileCycleAccepts) {
     const CliResult again = run_cli("cycle identified.toml --experiment a --amplitude 0.02 --cycles 1 -o c2.csv", dir);
     EXPECT_EQ(again.exit_code, 0) << again.err;
   }
-  const CliResult four = run_cli("identify global --experiment b --length 0.3 --input c.csv --method four-step --json", dir);
+  const CliResult four = run_cli(
+      "identify global --experiment b --length 0.3 --input c.csv --method four-step --json" + scale.fit_options, dir);
   ASSERT_EQ(four.exit_code, 0) << four.err;
   EXPECT_NE(four.out.find("\"method\": \"four-step\""), std::string::npos) << four.out;
 }
@@ -93,11 +121,17 @@ std::string noisy_copy(const std::string& csv, std::size_t column, unsigned seed
 
 TEST(IdentifyCli, GlobalFitOfNoisyCopiesOfCycles) {
   const auto dir = scratch_directory("identify-noisy");
-  const std::string cable = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/cable_sauter2003.toml";
+  const GlobalFitScale scale = global_fit_scale(dir);
   for (const auto& [experiment, amplitude, column] : {std::tuple{"a", "0.03", 3u}, std::tuple{"b", "0.15", 4u}}) {
-    ASSERT_EQ(run_cli(std::string("cycle '") + cable + "' --experiment " + experiment + " --amplitude " + amplitude + " -o c.csv", dir).exit_code, 0);
+    ASSERT_EQ(run_cli(std::string("cycle '") + scale.cable + "' --experiment " + experiment + " --amplitude " +
+                          amplitude + scale.cycle_options + " -o c.csv",
+                      dir)
+                  .exit_code,
+              0);
     write_temp_file(dir, "noisy.csv", noisy_copy(read_text(dir / "c.csv"), column, 11));
-    const CliResult r = run_cli(std::string("identify global --experiment ") + experiment + " --length 0.3 --input noisy.csv --json", dir);
+    const CliResult r = run_cli(std::string("identify global --experiment ") + experiment +
+                                    " --length 0.3 --input noisy.csv --json" + scale.fit_options,
+                                dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NEAR(json_number(r.out, "ei"), 2.8, 0.02 * 2.8) << experiment << ": " << r.out;
     // c from (b) is weakly determined at 1 % noise (docs/identification.md): 5 %.

@@ -1,15 +1,19 @@
 // Local identification recovers the parameters of synthetic records: exact without
 // noise, within 2 % with 1 % noise, for one and two elements and varying amplitudes,
-// with a moment offset and with uneven sampling.
+// with a moment offset and with uneven sampling. Under STOCKBRIDGE_TEST_SCALE=short
+// the long fits run on shorter records (three cycles, 100 or 200 samples each) and
+// one noise seed.
 
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/identification/local_identification.hpp"
+#include "support/test_scale.hpp"
 
 namespace stockbridge::identification {
 namespace {
@@ -19,15 +23,17 @@ struct Synthetic {
   double offset = 0.0;         // added to every measured moment, N m
   bool uneven = false;         // phase steps alternately 0.4 and 1.6 times the nominal
   unsigned seed = 1;
+  int cycles = 5;
+  int points_per_cycle = 400;
 };
 
-/// Five cycles of growing amplitude (0.05 -> 0.1 1/m), 400 samples per cycle.
+/// `cycles` cycles of growing amplitude (0.05 -> 0.1 1/m), `points_per_cycle` samples each.
 MomentCurvatureRecord synthesise(const section::MasingParameters& p, const Synthetic& how) {
   MomentCurvatureRecord record;
   section::SectionState state = section::SectionState::virgin(p), next = state;
   std::mt19937 rng(how.seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
-  const int per = 400, cycles = 5;
+  const int per = how.points_per_cycle, cycles = how.cycles;
   double largest = 0.0;
   double phase = 0.0;
   for (int k = 0; k <= per * cycles; ++k) {
@@ -61,7 +67,10 @@ TEST(LocalIdentification, NoiseFreeRecordsAreRecoveredExactly) {
   for (const auto& truth : {kOne, kTwo}) {
     LocalIdentificationOptions options;
     options.elements = static_cast<int>(truth.jenkin.size());
-    const LocalIdentification fit = identify_local(synthesise(truth, {}), options);
+    Synthetic how;
+    how.cycles = stockbridge::testing::scaled(5, 3);
+    how.points_per_cycle = stockbridge::testing::scaled(400, 100);
+    const LocalIdentification fit = identify_local(synthesise(truth, how), options);
     expect_parameters(fit, truth, 1e-6);
     EXPECT_LT(fit.error, 1e-9);
   }
@@ -69,12 +78,14 @@ TEST(LocalIdentification, NoiseFreeRecordsAreRecoveredExactly) {
 
 TEST(LocalIdentification, OnePercentNoiseWithinTwoPercent) {
   for (const auto& truth : {kOne, kTwo}) {
-    for (const unsigned seed : {1u, 2u, 3u}) {
+    for (const unsigned seed : stockbridge::testing::scaled<std::vector<unsigned>>({1, 2, 3}, {1})) {
       LocalIdentificationOptions options;
       options.elements = static_cast<int>(truth.jenkin.size());
       Synthetic how;
       how.noise = 0.01;
       how.seed = seed;
+      how.cycles = stockbridge::testing::scaled(5, 3);
+      how.points_per_cycle = stockbridge::testing::scaled(400, 200);
       const LocalIdentification fit = identify_local(synthesise(truth, how), options);
       expect_parameters(fit, truth, 0.02);
       EXPECT_GT(fit.error, 0.0);
