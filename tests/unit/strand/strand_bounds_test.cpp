@@ -44,7 +44,6 @@ void expect_relative(double actual, double expected, double tolerance) {
 TEST(StrandBounds, MinimumOfNineteenWiresIsNineteenFreeWires) {
   // 19 E pi r^4 / 4 with r = 1 mm, E = 210 GPa: 3.1337 N m^2, whatever the lay.
   const double expected = 19.0 * kE * kPi * std::pow(0.001, 4) / 4.0;
-  EXPECT_NEAR(expected, 3.1337, 1e-4);
   expect_relative(strand_bounds(nineteen_wire()).ei_min, expected, 1e-9);
   expect_relative(strand_bounds(nineteen_wire(0.03, 0.06)).ei_min, expected, 1e-9);  // lay angles 23 degrees
 }
@@ -78,19 +77,25 @@ TEST(StrandBounds, StraightMaximumEqualsWireByWireSteinerSum) {
   }
 }
 
+// Lay lengths chosen for exact lay angles: lambda = 2 pi R sqrt(3) gives tan alpha =
+// 1/sqrt(3), alpha = 30 degrees, cos^3 alpha = 3 sqrt(3) / 8; lambda = 2 pi R 4/3 gives
+// tan alpha = 3/4, cos alpha = 4/5, cos^3 alpha = 64/125. Each layer adds its straight
+// share E N (pi r^4/4 + pi r^2 R^2 / 2) (the parallel-axis sum above) times cos^3 alpha.
 TEST(StrandBounds, MaximumOfHelicalLayersCarriesCosCubedOfTheLayAngle) {
-  // Lay angle through the trigonometric route, alpha = atan(2 pi R / lambda).
-  const Strand strand = nineteen_wire();
-  double sum = kPi * std::pow(0.001, 4) / 4.0;
-  for (const StrandLayer& layer : strand.layers) {
-    const double alpha = std::atan(2.0 * kPi * layer.pitch_radius / layer.lay_length);
-    EXPECT_DOUBLE_EQ(lay_angle(layer), alpha);
-    const double r = layer.wire_radius;
-    sum += layer.count / 2.0 * kPi * r * r * (r * r / 2.0 + layer.pitch_radius * layer.pitch_radius) *
-           std::pow(std::cos(alpha), 3);
-  }
-  expect_relative(strand_bounds(strand).ei_max, kE * sum, 1e-12);
-  expect_relative(strand_bounds(strand).ei_max, 68.09624780759316, 1e-9);  // the docs' figure
+  const double lay1 = 2.0 * kPi * 0.002 * std::sqrt(3.0), lay2 = 2.0 * kPi * 0.004 * 4.0 / 3.0;
+  const Strand helical = nineteen_wire(lay1, lay2);
+  EXPECT_NEAR(lay_angle(helical.layers[0]), kPi / 6.0, 1e-15);
+  EXPECT_NEAR(lay_angle(helical.layers[1]), std::atan2(3.0, 4.0), 1e-15);
+  const double r = 0.001;
+  auto straight_share = [&](int count, double pitch_radius) {
+    return kE * count * (kPi * std::pow(r, 4) / 4.0 + kPi * r * r * pitch_radius * pitch_radius / 2.0);
+  };
+  const double core = kE * kPi * std::pow(r, 4) / 4.0;
+  const double inner = straight_share(6, 0.002) * 3.0 * std::sqrt(3.0) / 8.0;
+  const double outer = straight_share(12, 0.004) * 64.0 / 125.0;
+  expect_relative(strand_bounds(Strand{r, kE, {{6, r, 0.002, lay1}}}).ei_max, core + inner, 1e-12);
+  expect_relative(strand_bounds(helical).ei_max, core + inner + outer, 1e-12);
+  expect_relative(strand_bounds(helical).ei_min, 19.0 * core, 1e-12);  // the minimum does not see the lay
 }
 
 TEST(StrandBounds, MaximumExceedsMinimum) {
