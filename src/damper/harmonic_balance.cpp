@@ -162,10 +162,17 @@ HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation
 }
 
 Eigen::MatrixXd HarmonicBalance::jacobian(const Excitation& excitation, const Eigen::MatrixXd& force_jacobian) const {
+  Eigen::MatrixXd jacobian;
+  assemble_jacobian(excitation, force_jacobian, jacobian);
+  return jacobian;
+}
+
+void HarmonicBalance::assemble_jacobian(const Excitation& excitation, const Eigen::MatrixXd& force_jacobian,
+                                        Eigen::MatrixXd& jacobian) const {
   const int c_count = 2 * options_.harmonics + 1;
   const double w = excitation.angular_frequency();
   const Eigen::Matrix2d& mass = arm_.mass_matrix();
-  Eigen::MatrixXd jacobian = force_jacobian;
+  jacobian = force_jacobian;
   for (int c = 0; c < c_count; ++c) {
     const double k = harmonic_of(c);
     if (!options_.collocation) {
@@ -174,7 +181,6 @@ Eigen::MatrixXd HarmonicBalance::jacobian(const Excitation& excitation, const Ei
       for (int j = 0; j < samples_; ++j) jacobian.block<2, 2>(2 * j, 2 * c) += -k * k * w * w * basis_(j, c) * mass;
     }
   }
-  return jacobian;
 }
 
 namespace {
@@ -250,10 +256,10 @@ bool NewtonSolve::adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::st
                 fmt::format("{}: {}", stage, brief_report(e.cable)));
   }
   if (exact) memory_.force_jacobian = std::move(e.force_jacobian);
-  start_ = e.end_state;
+  start_ = std::move(e.end_state);
   current_ = std::move(e);
   norm_ = norm_of(current_);
-  jacobian_ = model_.jacobian(excitation_, memory_.force_jacobian);
+  model_.assemble_jacobian(excitation_, memory_.force_jacobian, jacobian_);
   exact_ = exact;
   if (!current_.residual.allFinite()) return fail(Termination::non_finite, fmt::format("in the residual {}", stage));
   return true;
@@ -307,7 +313,7 @@ NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
     if (trial.ok() && (trial.residual.norm() <= (1.0 - 1e-4 * alpha) * norm2 ||
                        norm_of(trial) <= options_.tolerance)) {
       q = q_try;
-      start_ = trial.end_state;
+      start_ = std::move(trial.end_state);
       current_ = std::move(trial);
       return StepOutcome::accepted;
     }
@@ -344,7 +350,7 @@ bool NewtonSolve::run(Eigen::VectorXd& q) {
     if (refresh) {
       if (!adopt_evaluation(q, true, "refreshing the Jacobian")) return false;
     } else {
-      jacobian_ = model_.jacobian(excitation_, memory_.force_jacobian);
+      model_.assemble_jacobian(excitation_, memory_.force_jacobian, jacobian_);
       exact_ = false;
     }
   }

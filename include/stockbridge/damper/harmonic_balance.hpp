@@ -109,6 +109,9 @@ class HarmonicBalance {
                                                    HarmonicBalanceWorkspace& workspace) const;
   /// J = the force Jacobian + the inertia terms at this frequency.
   Eigen::MatrixXd jacobian(const Excitation& excitation, const Eigen::MatrixXd& force_jacobian) const;
+  /// The same into `jacobian`, reusing its storage (Newton's inner loop).
+  void assemble_jacobian(const Excitation& excitation, const Eigen::MatrixXd& force_jacobian,
+                         Eigen::MatrixXd& jacobian) const;
 
   /// Newton from `initial` (unknown_count() coefficients, m and rad), starting the
   /// cable from memory.cable_state and reusing memory.force_jacobian where stored.
