@@ -213,9 +213,15 @@ class NewtonSolve {
   /// matrix, exact when `exact` or else from the stored force Jacobian.
   bool adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::string_view stage);
   bool fail(Termination termination, std::string where = {});
-  /// Both criteria met: records the determinant sign (confirmed exactly if it
-  /// changed since the last solution) and ends.
-  bool finish(const Eigen::VectorXd& q);
+  /// The residual and the periodicity defect of the current evaluation both within tolerance.
+  bool criteria_met() const {
+    return norm_ <= options_.tolerance && current_.cable.periodicity_defect <= options_.periodicity_tolerance;
+  }
+  enum class Finish { converged, not_yet, failed };
+  /// Both criteria met: records the determinant sign and ends; where the sign
+  /// changed since the last solution it is confirmed with an exact evaluation,
+  /// whose criteria must hold too (not_yet: Newton goes on).
+  Finish finish(const Eigen::VectorXd& q);
   /// The equations hold but the memory has not settled: more periods, no step.
   bool settle(const Eigen::VectorXd& q);
   enum class StepOutcome { accepted, retry_with_exact_jacobian, failed };
@@ -251,30 +257,33 @@ bool NewtonSolve::adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::st
   ++summary_.evaluations;
   summary_.jacobians += exact;
   summary_.periods += options_.periods;
-  if (!e.ok()) {
-    return fail(e.cable.termination == Termination::non_finite ? Termination::non_finite : Termination::inner_failure,
-                fmt::format("{}: {}", stage, brief_report(e.cable)));
+  if (e.cable.termination == Termination::non_finite) {
+    return fail(Termination::non_finite, fmt::format("{} {}", stage, e.cable.where));
   }
+  if (!e.ok()) return fail(Termination::inner_failure, fmt::format("{}: {}", stage, brief_report(e.cable)));
   if (exact) memory_.force_jacobian = std::move(e.force_jacobian);
   start_ = std::move(e.end_state);
   current_ = std::move(e);
   norm_ = norm_of(current_);
   model_.assemble_jacobian(excitation_, memory_.force_jacobian, jacobian_);
   exact_ = exact;
-  if (!current_.residual.allFinite()) return fail(Termination::non_finite, fmt::format("in the residual {}", stage));
+  if (!current_.residual.allFinite()) return fail(Termination::non_finite, fmt::format("{} in the residual", stage));
   return true;
 }
 
-bool NewtonSolve::finish(const Eigen::VectorXd& q) {
+NewtonSolve::Finish NewtonSolve::finish(const Eigen::VectorXd& q) {
   int sign = determinant_sign(jacobian_);
   if (!exact_ && sign != memory_.jacobian_sign) {
     // A fold is suspected: confirm the sign with the exact Jacobian.
-    if (!adopt_evaluation(q, true, "confirming the Jacobian's sign")) return false;
+    if (!adopt_evaluation(q, true, "confirming the Jacobian's sign")) return Finish::failed;
+    if (!criteria_met()) return Finish::not_yet;
     sign = determinant_sign(jacobian_);
   }
   memory_.jacobian_sign = sign;
+  summary_.residual = norm_;
+  summary_.periodicity_defect = current_.cable.periodicity_defect;
   summary_.termination = Termination::converged;
-  return true;
+  return Finish::converged;
 }
 
 bool NewtonSolve::settle(const Eigen::VectorXd& q) {
@@ -328,9 +337,12 @@ bool NewtonSolve::run(Eigen::VectorXd& q) {
   while (true) {
     summary_.residual = norm_;
     summary_.periodicity_defect = current_.cable.periodicity_defect;
-    const bool equations_hold = norm_ <= options_.tolerance;
-    if (equations_hold && current_.cable.periodicity_defect <= options_.periodicity_tolerance) return finish(q);
-    if (equations_hold) {
+    if (criteria_met()) {
+      const Finish outcome = finish(q);
+      if (outcome == Finish::not_yet) continue;
+      return outcome == Finish::converged;
+    }
+    if (norm_ <= options_.tolerance) {
       if (!settle(q)) return false;
       continue;
     }
