@@ -28,13 +28,18 @@ def _from_values(build, text, source):
         raise InvalidParameter(str(error)) from None
 
 
+def _pair(element):
+    c, h = element  # a (c, h) pair; more or fewer values is an error, not silently dropped
+    return c, h
+
+
 def make_cable(length, sections=40, ei=None, jenkin=(), **keys):
     """A cable with the keys of a cable file's [cable] table: length (m), ei (N m^2),
     jenkin = [(c, h), ...] or [{"c": ..., "h": ..., "k0": ...}, ...] (N m^2, N m),
     sections, and optionally mirror_length, lever_arm_cap; any value may be a profile
     {"s": [...], "value": [...]}. Checked exactly as a cable file is (a misspelt or
     missing key, a bad value: InvalidParameter naming it)."""
-    elements = [e if isinstance(e, dict) else {"c": e[0], "h": e[1]} for e in jenkin]
+    elements = [e if isinstance(e, dict) else dict(zip(("c", "h"), _pair(e))) for e in jenkin]
     entries = {"length": length, "sections": sections, "jenkin": elements, **keys}
     if ei is not None:
         entries["ei"] = ei

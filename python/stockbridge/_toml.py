@@ -4,22 +4,24 @@ built in Python is validated exactly as one written in a file."""
 
 import json
 import math
+import numbers
 
 
 def value(v):
-    """A TOML value: numbers, strings, booleans, lists and (inline) dicts."""
-    if isinstance(v, bool):
+    """A TOML value: numbers (numpy's too), strings, booleans, lists and (inline) dicts."""
+    if isinstance(v, bool) or type(v).__name__ == "bool_":
         return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
+    if isinstance(v, numbers.Integral):
+        return str(int(v))
+    if isinstance(v, numbers.Real):
+        v = float(v)
         if math.isnan(v):
             return "nan"
         if math.isinf(v):
             return "inf" if v > 0 else "-inf"
         return repr(v)
     if isinstance(v, str):
-        return json.dumps(v)  # a TOML basic string
+        return json.dumps(v, ensure_ascii=False)  # a TOML basic string (no surrogate escapes)
     if isinstance(v, dict):
         return "{ " + ", ".join(f"{key(k)} = {value(x)}" for k, x in v.items()) + " }"
     if hasattr(v, "toml"):  # a Cable
@@ -27,13 +29,8 @@ def value(v):
     try:
         items = list(v)
     except TypeError:
-        items = None
-    if items is not None:
-        return "[ " + ", ".join(value(x) for x in items) + " ]"
-    try:
-        return value(float(v))  # numpy scalars
-    except (TypeError, ValueError):
         raise TypeError(f"{v!r}: expected a number, a string, a list or a dict") from None
+    return "[ " + ", ".join(value(x) for x in items) + " ]"
 
 
 def key(k):

@@ -64,6 +64,10 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
   HarmonicBalanceArmSolver(const Arm& arm, const HarmonicBalanceOptions& options)
       : model_(arm, options), workspace_(model_.make_workspace()) {}
 
+  // A failed solve clears the path's memory (its cable state and Jacobian): the
+  // smaller steps and arclength that follow start from the virgin cable at the last
+  // converged unknowns. (Keeping the last converged state there was tried: one point
+  // of SweepRobustness.TinyAmplitudeNearTheStickResonance then fails at 39.6 Hz.)
   ArmSolution solve(const Excitation& excitation, Continuation& path) override {
     ArmSolution solution = path.empty() ? model_.solve(excitation, model_.linear_guess(excitation), path.memory, workspace_)
                                         : model_.solve(excitation, path.predictor(excitation), path.memory, workspace_);
@@ -170,17 +174,22 @@ ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
     }
     residual = std::max(residual, s.summary.residual);
     energy = std::max(energy, s.summary.energy_error);
+    std::string note;
     if (s.branches > 1) {
       point.non_unique = true;
-      point.note = fmt::format("{}: {} steady states at this frequency (the response curve folds back)",
-                               damper.arm_label(k), s.branches);
-    } else if (!s.note.empty() && point.note.empty()) {
-      point.note = fmt::format("{}: {}", damper.arm_label(k), s.note);
+      note = fmt::format("{}: {} steady states at this frequency (the response curve folds back)", damper.arm_label(k),
+                         s.branches);
+    } else if (!s.note.empty()) {
+      note = fmt::format("{}: {}", damper.arm_label(k), s.note);
     }
+    if (!note.empty()) point.note += (point.note.empty() ? "" : "; ") + note;
     z += arm_force_first_harmonic(s.period) / v;
     dissipated += s.period.dissipated;
   }
-  if (point.converged()) {
+  if (!point.converged()) {  // notes speak of solutions, and there is none
+    point.note.clear();
+    point.non_unique = false;
+  } else {
     point.impedance = z;
     point.power = 0.5 * v * v * z.real();
     point.dissipated_power = dissipated / excitation.period();

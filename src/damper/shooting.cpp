@@ -119,6 +119,7 @@ bool ShootingNewton::more_pre_periods(const Eigen::Vector4d& z, double measure, 
                             pre_periods_, defect, options_.periodicity_tolerance, measure));
   }
   pre_periods_ = std::min(2 * pre_periods_, options_.max_pre_periods);
+  jacobian_fresh_ = false;  // its differences were taken with fewer pre-periods: a failure retakes them
   return fire(z, shot_);
 }
 
@@ -194,6 +195,7 @@ bool ShootingNewton::run(Eigen::Vector4d& z) {
     summary_.periodicity_defect = defect;
     if (measure <= options_.tolerance && defect <= options_.periodicity_tolerance) {
       summary_.termination = Termination::converged;
+      summary_.where.clear();  // failed trial shots on the way are not the result
       return true;
     }
     // Solving S = 0 more precisely than the cable's memory has settled is wasted: more pre-periods first.

@@ -43,6 +43,8 @@ std::vector<double> log_spaced(double fmin, double fmax, int points) {
   for (int i = 0; i < points; ++i) {
     f[i] = points == 1 ? fmin : std::exp(std::log(fmin) + (std::log(fmax) - std::log(fmin)) * i / (points - 1));
   }
+  f.front() = fmin;  // the ends exactly as given, not as exp(log(.)) returns them
+  if (points > 1) f.back() = fmax;
   return f;
 }
 
@@ -93,6 +95,7 @@ void flag_folds(const std::vector<ArmSolution>& arm, const std::string& arm_labe
                                            "(Jacobian determinant changes sign): several steady states coexist",
                                            arm_label, points[i - 1].frequency_hz, points[i].frequency_hz);
       for (const std::size_t k : {i - 1, i}) {
+        if (!points[k].converged()) continue;
         points[k].non_unique = true;
         if (points[k].note.empty()) points[k].note = note;
       }
@@ -149,8 +152,11 @@ std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, con
     for (std::size_t i = 0; i < spec.frequencies.size(); ++i) {
       std::vector<const ArmSolution*> per_arm(task_column.size());
       for (std::size_t k = 0; k < per_arm.size(); ++k) per_arm[k] = &results[a * distinct.size() + task_column[k]][i];
-      runs[a].points.push_back(
-          combine(damper, spec.excitation(spec.frequencies[i], spec.amplitudes[a]), per_arm, spec.solver.energy_tolerance));
+      ImpedancePoint point =
+          combine(damper, spec.excitation(spec.frequencies[i], spec.amplitudes[a]), per_arm, spec.solver.energy_tolerance);
+      // The amplitude the user gave, as given (V = W X computed back may differ in the last bit).
+      (spec.constant_displacement ? point.displacement_amplitude : point.velocity_amplitude) = spec.amplitudes[a];
+      runs[a].points.push_back(std::move(point));
     }
     for (std::size_t d = 0; d < distinct.size(); ++d) {
       flag_folds(results[a * distinct.size() + d], damper.arm_label(distinct[d]), runs[a].points);

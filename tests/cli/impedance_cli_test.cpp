@@ -70,14 +70,20 @@ TEST(ImpedanceCli, SingularJacobianPointsAreFlaggedNotPrinted) {
              "[clamp]\nmass = 0.7\n[[arm]]\nname = \"elastic\"\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n"
              "[arm.cable]\nlength = 0.1875\nsections = 40\nei = 22.8\njenkin = []\n");
   const CliResult r =
-      run_cli("impedance linear.toml --velocity 0.2 --frequencies 20,21.1726198299174,68.2076467330761 -o z.csv", dir);
+      run_cli("impedance linear.toml --velocity 0.2 --frequencies 20,21.1726198299174,68.2076467330761 --json -o z.csv", dir);
   ASSERT_EQ(r.exit_code, 3) << r.err;
   const auto lines = lines_of(read_text(dir / "z.csv"));
   ASSERT_EQ(lines.size(), 4u);
   EXPECT_NE(lines[1].find(",1,"), std::string::npos) << lines[1];
   for (const int row : {2, 3}) EXPECT_NE(lines[row].find(",,,,,,0,"), std::string::npos) << lines[row];
   EXPECT_NE(r.err.find("f = 21.17 Hz"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("singular Jacobian"), std::string::npos) << r.err;
+  // The reason by its termination, not its words: both failed points.
+  std::size_t singular = 0;
+  for (std::size_t at = r.out.find("\"termination\": \"singular_jacobian\""); at != std::string::npos;
+       at = r.out.find("\"termination\": \"singular_jacobian\"", at + 1)) {
+    ++singular;
+  }
+  EXPECT_EQ(singular, 2u) << r.out;
 }
 
 /// The number after "key": in a JSON text.

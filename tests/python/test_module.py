@@ -151,3 +151,14 @@ def test_values_from_python_are_checked_as_a_file_is():
     z = sb.impedance(from_python, [15.0], velocity=0.2)
     assert z["re_z_n_s_m"][0, 0] == pytest.approx(sb.impedance(sb.load_damper(EXAMPLE), [15.0], velocity=0.2)["re_z_n_s_m"][0, 0],
                                                   rel=1e-12)
+
+
+def test_numpy_values_and_any_text_go_through_make_cable_and_make_damper():
+    cable = sb.make_cable(np.float64(0.1875), sections=np.int64(40), ei=np.float64(2.8),
+                          jenkin=[(np.float64(20.0), np.float32(0.7))])
+    assert cable.sections == 40 and cable.ei == pytest.approx(2.8)
+    damper = sb.make_damper(np.float64(0.7), [dict(name="bras \U0001F600", mass=np.float64(0.856), inertia=0.001814,
+                                                   offset=0.0325, cable=cable)])
+    assert damper.arms == ["bras \U0001F600"]
+    with pytest.raises(ValueError):
+        sb.make_cable(0.3, ei=2.8, jenkin=[(20.0, 0.7, 5.0)])  # a third value is not silently dropped
