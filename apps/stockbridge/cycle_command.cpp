@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "option_parsing.hpp"
 #include "stockbridge/cable/experiment.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/cable_file.hpp"
@@ -62,6 +63,7 @@ io::JsonObject cycle_json(const cable::ExperimentSummary& s, const CycleOptions&
 }
 
 int run_cycle_command(const CycleOptions& options) {
+  require_outputs_apart({{"-o", options.output}}, {{"the cable file", options.cable_file}});
   cable::ExperimentDrive drive;
   drive.experiment = cable::parse_experiment(options.experiment);
   drive.amplitude = options.amplitude;

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "option_parsing.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/identification/global_identification.hpp"
 #include "stockbridge/identification/local_identification.hpp"
@@ -44,6 +45,7 @@ std::string parameters_toml(const identification::LocalIdentification& fit, cons
 }
 
 int run_local(const LocalOptions& options) {
+  require_outputs_apart({{"-o", options.output}, {"--fitted", options.fitted}}, {{"the --input record", options.input}});
   identification::LocalIdentificationOptions fit_options;
   fit_options.elements = options.elements;
   fit_options.optimizer = identification::parse_optimizer(options.optimizer);
@@ -105,6 +107,7 @@ std::string cable_toml(const identification::GlobalIdentification& fit, const Gl
 }
 
 int run_global(const GlobalOptions& options) {
+  require_outputs_apart({{"-o", options.output}, {"--fitted", options.fitted}}, {{"the --input record", options.input}});
   identification::GlobalIdentificationOptions fit_options;
   fit_options.length = options.length;
   fit_options.sections = options.sections;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,12 +31,12 @@ constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 struct ImpedanceOptions {
   std::string damper_file;
-  std::string velocity;
-  std::string displacement;
+  std::optional<std::string> velocity;  // lists as typed: given but empty is an error
+  std::optional<std::string> displacement;
   double fmin = 1.0;
   double fmax = 100.0;
   int points = 200;
-  std::string frequencies;
+  std::optional<std::string> frequencies;
   SolverFlags solver;
   int threads = 1;
   bool json = false;
@@ -44,12 +45,12 @@ struct ImpedanceOptions {
 
 damper::SweepSpec sweep_spec(const ImpedanceOptions& options) {
   requests::SweepRequest request;
-  if (!options.velocity.empty()) request.velocities = parse_number_list(options.velocity, "--velocity");
-  if (!options.displacement.empty()) request.displacements = parse_number_list(options.displacement, "--displacement");
-  if (request.velocities.empty() == request.displacements.empty()) {  // named by the flags
+  if (options.velocity.has_value() == options.displacement.has_value()) {  // named by the flags
     throw InvalidParameter("give either --velocity V[,V...] (m/s) or --displacement X[,X...] (m)");
   }
-  if (!options.frequencies.empty()) request.frequencies = parse_number_list(options.frequencies, "--frequencies");
+  if (options.velocity) request.velocities = parse_number_list(*options.velocity, "--velocity");
+  if (options.displacement) request.displacements = parse_number_list(*options.displacement, "--displacement");
+  if (options.frequencies) request.frequencies = parse_number_list(*options.frequencies, "--frequencies");
   request.grid = {options.fmin, options.fmax, options.points};
   request.solver = options.solver.settings();
   request.threads = options.threads;
@@ -72,6 +73,7 @@ void draw_progress(int done, int total) {
 }
 
 int run_impedance_command(const ImpedanceOptions& options) {
+  require_outputs_apart({{"-o", options.output}}, {{"the damper file", options.damper_file}});
   const damper::SweepSpec spec = sweep_spec(options);
   const damper::Damper damper = io::read_damper_file(options.damper_file);
   const auto start = std::chrono::steady_clock::now();

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "misspellings.hpp"
 #include "stockbridge/core/error.hpp"
 
 namespace {
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   using namespace stockbridge;
   CLI::App app{"stockbridge: nonlinear impedance of Stockbridge dampers (Masing cable model)", "stockbridge"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "stockbridge " STOCKBRIDGE_VERSION);
   int exit_code = cli::kSuccess;
   cli::add_loop_command(app, exit_code);
   cli::add_cycle_command(app, exit_code);
@@ -37,9 +39,13 @@ int main(int argc, char** argv) {
   cli::add_response_command(app, exit_code);
   cli::add_strand_command(app, exit_code);
   try {
+    cli::reject_misspellings(app, argc, argv);
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     std::fputs(app.help().c_str(), stdout);
+    return cli::kSuccess;
+  } catch (const CLI::CallForVersion&) {
+    std::fputs((app.version() + "\n").c_str(), stdout);
     return cli::kSuccess;
   } catch (const CLI::CallForAllHelp&) {
     std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);

@@ -1,6 +1,7 @@
 #include "option_parsing.hpp"
 
 #include <charconv>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -31,16 +32,67 @@ section::Jenkin parse_jenkin_pair(std::string_view text, std::string_view what) 
   return element;
 }
 
+namespace {
+std::string_view trimmed(std::string_view text) {
+  const std::size_t first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+}  // namespace
+
 std::vector<double> parse_number_list(std::string_view text, std::string_view what) {
+  if (trimmed(text).empty()) {
+    throw InvalidParameter(fmt::format("{} = '{}': expected a comma-separated list of numbers, such as 0.2,0.05", what, text));
+  }
   std::vector<double> values;
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = text.find(',', start);
-    values.push_back(parse_number(text.substr(start, comma - start), what));
+    const std::string_view item = trimmed(text.substr(start, comma - start));
+    try {
+      values.push_back(parse_number(item, what));
+    } catch (const InvalidParameter&) {
+      throw InvalidParameter(fmt::format("{} = '{}': item {} ('{}') is not a number; expected a comma-separated list "
+                                         "of numbers, such as 0.2,0.05",
+                                         what, text, values.size() + 1, item));
+    }
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
   return values;
+}
+
+namespace {
+/// Whether two paths name one file: the same inode where both exist (links
+/// included), else the same normalised absolute path.
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec)) {
+    const bool same = std::filesystem::equivalent(a, b, ec);
+    if (!ec) return same;
+  }
+  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+}
+}  // namespace
+
+void require_outputs_apart(const std::vector<CommandFile>& outputs, const std::vector<CommandFile>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const CommandFile& out = outputs[i];
+    if (out.path.empty()) continue;
+    for (const CommandFile& in : inputs) {
+      if (!in.path.empty() && same_file(out.path, in.path)) {
+        throw InvalidParameter(fmt::format("{} {}: is {} ({}); writing it would destroy that input, choose another "
+                                           "output name",
+                                           out.role, out.path, in.role, in.path));
+      }
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (!outputs[j].path.empty() && same_file(out.path, outputs[j].path)) {
+        throw InvalidParameter(fmt::format("{} {}: the same file as {} {}; expected two different output files", out.role,
+                                           out.path, outputs[j].role, outputs[j].path));
+      }
+    }
+  }
 }
 
 }  // namespace stockbridge::cli

@@ -13,7 +13,19 @@ namespace stockbridge::cli {
 double parse_number(std::string_view text, std::string_view what);
 /// Parses "c:h" into a Jenkin element (values validated by the library later).
 section::Jenkin parse_jenkin_pair(std::string_view text, std::string_view what);
-/// Parses a comma-separated list of numbers ("0.2,0.05").
+/// Parses a comma-separated list of numbers ("0.2,0.05", "0.2, 0.05"); an empty or
+/// malformed list is an error naming `what`.
 std::vector<double> parse_number_list(std::string_view text, std::string_view what);
+
+/// A file a command reads or writes, with how the user named it (flag or argument).
+struct CommandFile {
+  std::string role;  ///< "-o", "--fitted", "the damper file", ...
+  std::string path;  ///< empty: not given
+};
+
+/// Throws InvalidParameter if an output resolves to an input (the same file, also
+/// through links) or two outputs to one file: checked before anything is read or
+/// written, so the input stays untouched.
+void require_outputs_apart(const std::vector<CommandFile>& outputs, const std::vector<CommandFile>& inputs);
 
 }  // namespace stockbridge::cli

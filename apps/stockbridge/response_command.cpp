@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "option_parsing.hpp"
 #include "solver_options.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/damper/steady_state.hpp"
@@ -79,6 +80,7 @@ std::string response_csv(const damper::Damper& damper, const damper::Excitation&
 }
 
 int run_response_command(const ResponseOptions& options) {
+  require_outputs_apart({{"-o", options.output}}, {{"the damper file", options.damper_file}});
   if (options.velocity.has_value() == options.displacement.has_value()) {  // named by the flags
     throw InvalidParameter("give either --velocity V (m/s) or --displacement X (m)");
   }

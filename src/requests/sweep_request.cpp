@@ -42,18 +42,26 @@ const std::vector<std::string>& impedance_columns() {
   return columns;
 }
 
+namespace {
+/// A value that is round-off of zero relative to `scale` (|value| < 1e-12 scale) as 0.
+double without_round_off(double value, double scale) { return std::abs(value) < 1e-12 * scale ? 0.0 : value; }
+}  // namespace
+
 std::vector<double> impedance_row(const damper::ImpedancePoint& p) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   const bool ok = p.converged();
   const auto masked = [ok](double value) { return ok ? value : kNaN; };
-  const std::complex<double> z = p.impedance;
+  // Where nothing slips, Re Z and P are zero but for round-off (1e-16 of |Z|): shown as 0.
+  const double magnitude = std::abs(p.impedance);
+  const double apparent_power = 0.5 * p.velocity_amplitude * p.velocity_amplitude * magnitude;
+  const std::complex<double> z(without_round_off(p.impedance.real(), magnitude), p.impedance.imag());
   return {p.frequency_hz,
           p.velocity_amplitude,
           masked(z.real()),
           masked(z.imag()),
           masked(std::abs(z)),
           masked(std::arg(z) * 180.0 / std::numbers::pi),
-          masked(p.power),
+          masked(without_round_off(p.power, apparent_power)),
           ok ? 1.0 : 0.0,
           p.displacement_amplitude,
           masked(p.dissipated_power),

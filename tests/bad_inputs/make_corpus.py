@@ -126,6 +126,19 @@ cases = {
     "option_unknown": ("loop --ei 2.8 --amplitude 0.05 --colour red -o out.csv", None, None, "colour"),
     "option_missing_file": ("cycle missing.toml --experiment a --amplitude 0.01 -o out.csv", None, None, "missing.toml"),
     "option_output_is_directory": ("loop --ei 2.8 --amplitude 0.05 -o .", None, None, "directory"),
+    # What a new user hit (issue 13): misspelt words named with the closest valid one,
+    # empty or malformed lists, a setting the chosen method does not use.
+    "option_misspelt_command": ("impedence INPUT --velocity 0.1 -o out.csv", "damper.toml", DAMPER,
+                                "unknown command 'impedence' for 'stockbridge': did you mean 'impedance'?"),
+    "option_misspelt_subcommand": ("identify globl --input INPUT -o out.toml", "cycle.csv", CYCLE_A, "did you mean 'global'?"),
+    "option_misspelt_flag": ("response INPUT --frequncy 20 --velocity 0.2 -o out.csv", "damper.toml", DAMPER,
+                             "unknown option '--frequncy' for 'stockbridge response': did you mean '--frequency'?"),
+    "option_impedance_frequencies_empty": ('impedance INPUT --velocity 0.1 --frequencies "" -o out.csv', "damper.toml", DAMPER,
+                                           "--frequencies = '': expected a comma-separated list of numbers"),
+    "option_impedance_velocity_malformed": ("impedance INPUT --velocity 0.1,,0.2 --frequencies 10 -o out.csv", "damper.toml",
+                                            DAMPER, "item 2 ('') is not a number"),
+    "option_impedance_unused_setting": ("impedance INPUT --velocity 0.1 --frequencies 10 --steps 64 -o out.csv", "damper.toml",
+                                        DAMPER, "steps = 64: not used by this method"),
 }
 
 accepted = {
@@ -134,6 +147,7 @@ accepted = {
     "mk_bom_crlf": (LOCAL_CMD, "mk.csv", "\ufeff" + MK.replace("\n", "\r\n")),
     "cycle_bom_crlf": (GLOBAL_CMD.replace("-o out.toml", "--method four-step -o out.toml"), "cycle.csv",
                        "\ufeff" + open(os.path.join(HERE, "..", "..", "examples", "cycle_measured_a.csv")).read().replace("\n", "\r\n")),
+    "velocity_list_with_spaces": ('impedance INPUT --velocity "0.1, 0.05" --frequencies "10, 20" -o out.csv', "damper.toml", DAMPER),
 }
 
 for folder in ("cases", "accepted"):
