@@ -1,135 +1,339 @@
 """Plots of the stockbridge program's CSV files.
 
-    python3 -m stockbridge.plot impedance z.csv -o z.png [--re-im] [--linear]
+    python3 -m stockbridge.plot impedance z.csv [more.csv ...] [--label NAME ...] -o z.png
+                                [--re-im] [--linear] [--power]
     python3 -m stockbridge.plot loop cycle.csv -o loop.png      (cycle, response or loop CSV)
     python3 -m stockbridge.plot fit fitted.csv -o fit.png       (identify ... --fitted)
 
-Errors (a missing file or column) print one line on stderr and exit with status 2.
+Errors (a missing file or column, a cell that is not a number, nothing to plot, an
+output that cannot be written) print one line on stderr and exit with status 2,
+without writing the output file.
 """
 
 import argparse
 import csv
+import io
 import math
+import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
+from matplotlib.ticker import LogLocator, MaxNLocator, NullFormatter, ScalarFormatter  # noqa: E402
 
 FIGURE_SIZE = (8.0, 6.0)  # inches; at DPI this gives 800 x 600 pixels
 DPI = 100
+PROGRAM = "stockbridge.plot"
 
 
 class PlotError(Exception):
     """A file the plot cannot use: one line for the user."""
 
 
-def read_columns(path):
-    """The CSV's columns by name, as lists of floats (None for empty cells)."""
+# ---------------------------------------------------------------- reading CSV files
+
+class Table:
+    """A CSV file's header and rows (as text); numbers are converted per column when used."""
+
+    def __init__(self, path):
+        self.path = path
+        rows = _read_rows(path)
+        if not rows:
+            raise PlotError(f"{path}: empty file: expected a header row and data")
+        self.header = [name.strip() for name in rows[0]]
+        self.rows = [(line, row) for line, row in enumerate(rows[1:], start=2) if any(cell.strip() for cell in row)]
+        if not self.rows:
+            raise PlotError(f"{path}: no data rows: expected data below the header")
+        for line, row in self.rows:
+            if len(row) != len(self.header):
+                raise PlotError(f"{path}:{line}: {len(row)} cells: expected {len(self.header)} as in the header")
+
+    def __contains__(self, name):
+        return name in self.header
+
+    def column(self, name):
+        """The column's numbers, NaN for empty cells."""
+        if name not in self.header:
+            raise PlotError(f"{self.path}: missing column '{name}'")
+        index = self.header.index(name)
+        return [self._number(line, name, row[index]) for line, row in self.rows]
+
+    def required(self, name, rows=None):
+        """The column's numbers; a cell in `rows` (row numbers, default all) must not be empty."""
+        values = self.column(name)
+        for i in range(len(values)) if rows is None else rows:
+            if math.isnan(values[i]):
+                raise PlotError(f"{self.path}:{self.rows[i][0]}: column '{name}' is empty: expected a number")
+        return values
+
+    def _number(self, line, name, cell):
+        if not cell.strip():
+            return math.nan
+        try:
+            value = float(cell)
+        except ValueError:
+            value = math.nan
+        if not math.isfinite(value):
+            raise PlotError(f"{self.path}:{line}: column '{name}' = '{cell}': expected a finite number")
+        return value
+
+
+def _read_rows(path):
     try:
         with open(path, newline="", encoding="utf-8-sig") as handle:
-            rows = list(csv.reader(handle))
+            return list(csv.reader(handle))
     except OSError as error:
-        raise PlotError(f"{path}: cannot read ({error.strerror})") from error
-    if not rows:
-        raise PlotError(f"{path}: empty file: expected a header row and data")
-    header = [name.strip() for name in rows[0]]
-    columns = {name: [] for name in header}
-    for line, row in enumerate(rows[1:], start=2):
-        if not row:
-            continue
-        for name, cell in zip(header, row):
-            try:
-                columns[name].append(float(cell) if cell.strip() else None)
-            except ValueError as error:
-                raise PlotError(f"{path}:{line}: column '{name}' = '{cell}': expected a number") from error
-    return columns
+        raise PlotError(f"{path}: cannot read ({error.strerror or error})") from error
+    except UnicodeDecodeError as error:
+        raise PlotError(f"{path}: not UTF-8 text: expected a CSV file") from error
+    except csv.Error as error:
+        raise PlotError(f"{path}: not a CSV file ({error})") from error
 
 
-def need(columns, path, *names):
-    for name in names:
-        if name not in columns:
-            raise PlotError(f"{path}: missing column '{name}'")
-    return [columns[name] for name in names]
+def finite(*values):
+    return all(math.isfinite(v) for v in values)
 
 
-def finish(figure, output):
-    figure.tight_layout()
-    figure.savefig(output, dpi=DPI)
-    plt.close(figure)
+# ---------------------------------------------------------------- writing figures
+
+def save(figure, output):
+    """Write the figure to `output` (format from its extension, PNG without one); nothing
+    is left at `output` when this fails."""
+    extension = os.path.splitext(output)[1][1:].lower() or "png"
+    if extension not in figure.canvas.get_supported_filetypes():
+        plt.close(figure)
+        raise PlotError(f"{output}: unknown image format '.{extension}': expected .png, .pdf or .svg")
+    buffer = io.BytesIO()
+    try:
+        figure.savefig(buffer, format=extension, dpi=DPI)
+    except (ValueError, OverflowError) as error:
+        raise PlotError(f"{output}: cannot draw the data ({error})") from error
+    finally:
+        plt.close(figure)
+    write_file(output, buffer.getvalue())
 
 
-def plot_impedance(path, output, re_im=False, linear=False):
-    columns = read_columns(path)
-    frequency, velocity, re, im, converged = need(
-        columns, path, "frequency_hz", "velocity_m_s", "re_z_n_s_m", "im_z_n_s_m", "converged")
-    displacement = columns.get("displacement_m")
-    # One curve per amplitude: rows are grouped by run, in the order written.
-    constant_displacement = displacement is not None and len(set(v for v in velocity)) > len(set(displacement))
-    key = displacement if constant_displacement else velocity
-    runs = {}
-    for i, k in enumerate(key):
-        runs.setdefault(round(k, 12), []).append(i)
-    figure, (top, bottom) = plt.subplots(2, 1, figsize=FIGURE_SIZE, sharex=True)
-    for amplitude, rows in runs.items():
-        label = f"X = {amplitude:g} m" if constant_displacement else f"V = {amplitude:g} m/s"
-        good = [i for i in rows if converged[i] == 1.0]
-        f = [frequency[i] for i in good]
-        if re_im:
-            top.plot(f, [re[i] for i in good], label=label)
-            bottom.plot(f, [im[i] for i in good], label=label)
-        else:
-            top.plot(f, [math.hypot(re[i], im[i]) for i in good], label=label)
-            bottom.plot(f, [math.degrees(math.atan2(im[i], re[i])) for i in good], label=label)
-        failed = [frequency[i] for i in rows if converged[i] != 1.0]
-        if failed:
-            bottom.plot(failed, [0.0] * len(failed), "rx", label=f"{label}: not converged")
-    top.set_ylabel("Re Z (N s/m)" if re_im else "|Z| (N s/m)")
-    bottom.set_ylabel("Im Z (N s/m)" if re_im else "phase (deg)")
-    bottom.set_xlabel("frequency (Hz)")
-    if not linear:
-        top.set_xscale("log")
-        if not re_im:
-            top.set_yscale("log")
-    for axis in (top, bottom):
+def write_file(output, data):
+    existed = os.path.exists(output)
+    try:
+        with open(output, "wb") as handle:
+            handle.write(data)
+    except OSError as error:
+        if not existed and os.path.isfile(output):
+            os.remove(output)
+        raise PlotError(f"{output}: cannot write ({error.strerror or error})") from error
+
+
+def few_ticks(axis):
+    """At most five ticks per axis, so that long numbers do not run into each other."""
+    axis.xaxis.set_major_locator(MaxNLocator(nbins=4))
+    axis.yaxis.set_major_locator(MaxNLocator(nbins=5))
+    axis.ticklabel_format(style="sci", scilimits=(-3, 4), useMathText=True)
+
+
+def plotted(axes, which):
+    """The finite values the axes' lines draw along x or y."""
+    return [v for line in axes.get_lines() for v in (line.get_xdata() if which == "x" else line.get_ydata())
+            if math.isfinite(v)]
+
+
+def log_scale(axes, which):
+    """A log scale labelled in plain numbers: at 1 to 9 times the powers of ten over less
+    than a decade, at 1, 2 and 5 times them over two (the default would label one tick or
+    none), at the powers of ten over more."""
+    values = [v for v in plotted(axes, which) if v > 0]
+    decades = math.log10(max(values) / min(values)) if values else 3.0
+    subs = range(1, 10) if decades < 1 else (1.0, 2.0, 5.0) if decades <= 2 else (1.0,)
+    (axes.set_xscale if which == "x" else axes.set_yscale)("log")
+    axis = axes.xaxis if which == "x" else axes.yaxis
+    axis.set_major_locator(LogLocator(subs=subs))
+    axis.set_major_formatter(ScalarFormatter())
+    axis.set_minor_formatter(NullFormatter())
+
+
+def log_if_positive(axes):
+    """A log y scale when every plotted value is positive and they span a decade or more
+    (else it stays linear)."""
+    values = plotted(axes, "y")
+    if values and min(values) > 0 and max(values) >= 10 * min(values):
+        log_scale(axes, "y")
+
+
+# ---------------------------------------------------------------- impedance
+
+class Sweep:
+    """One impedance CSV: per row the frequency, the velocity amplitude, Z and whether it converged."""
+
+    def __init__(self, path, label=None):
+        table = Table(path)
+        self.path, self.label = path, label or os.path.basename(path)
+        self.frequency = table.required("frequency_hz")
+        self.velocity = table.required("velocity_m_s")
+        self.converged = self._converged(table)
+        good = [i for i, ok in enumerate(self.converged) if ok]
+        if not good:
+            raise PlotError(f"{path}: no converged point to plot (converged = 0 in every row)")
+        self.re = table.required("re_z_n_s_m", good)
+        self.im = table.required("im_z_n_s_m", good)
+        for i, f in enumerate(self.frequency):
+            if f <= 0:
+                raise PlotError(f"{path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
+        self.runs = self._runs(table)
+
+    @staticmethod
+    def _converged(table):
+        """Missing column: every row converged (a measured file)."""
+        if "converged" not in table:
+            return [True] * len(table.rows)
+        return [value == 1.0 for value in table.required("converged")]
+
+    def _runs(self, table):
+        """Rows grouped by amplitude (velocity, or displacement for constant-displacement sweeps)."""
+        displacement = table.column("displacement_m") if "displacement_m" in table else None
+        by_displacement = (displacement is not None and all(map(math.isfinite, displacement))
+                           and len(set(self.velocity)) > len(set(displacement)))
+        key, unit = (displacement, "X = {:g} m") if by_displacement else (self.velocity, "V = {:g} m/s")
+        runs = {}
+        for i, k in enumerate(key):
+            runs.setdefault(round(k, 12), []).append(i)
+        return [(unit.format(amplitude), rows) for amplitude, rows in runs.items()]
+
+    def abs_z(self, i):
+        return math.hypot(self.re[i], self.im[i])
+
+    def phase_deg(self, i):
+        return math.degrees(math.atan2(self.im[i], self.re[i]))
+
+    def power_w(self, i):
+        """The mean power into the damper, Re Z V^2 / 2 (what it dissipates in a steady state)."""
+        return 0.5 * self.re[i] * self.velocity[i] ** 2
+
+
+def impedance_panels(re_im, power):
+    """(y label, value of a Sweep's row, log scale wanted) per panel, top to bottom."""
+    if re_im:
+        panels = [("Re Z (N s/m)", lambda s, i: s.re[i], False), ("Im Z (N s/m)", lambda s, i: s.im[i], False)]
+    else:
+        panels = [("|Z| (N s/m)", Sweep.abs_z, True), ("phase (deg)", Sweep.phase_deg, False)]
+    if power:
+        panels.append(("dissipated power (W)", Sweep.power_w, True))
+    return panels
+
+
+LINE_STYLES = ["-", "--", ":", "-."]  # per file; the colour tells the amplitude
+
+
+def impedance_figure(sweeps, re_im=False, linear=False, power=False):
+    """The figure of one or more Sweeps: one curve per file and amplitude on every panel."""
+    panels = impedance_panels(re_im, power)
+    figure, axes = plt.subplots(len(panels), 1, figsize=FIGURE_SIZE, sharex=True, layout="constrained")
+    for number, sweep in enumerate(sweeps):
+        named = len(sweeps) > 1 or sweep.label != os.path.basename(sweep.path)
+        for run, (label, rows) in enumerate(sweep.runs):
+            style = {"linestyle": LINE_STYLES[number % len(LINE_STYLES)], "color": f"C{run % 10}"}
+            draw_run(axes, panels, sweep, rows, f"{sweep.label}: {label}" if named else label, style)
+    finish_impedance_axes(axes, panels, sweeps, linear)
+    return figure
+
+
+def draw_run(axes, panels, sweep, rows, name, style):
+    """One amplitude's converged points as a curve on every panel; the others as red
+    crosses at zero on the second panel."""
+    good = [i for i in rows if sweep.converged[i]]
+    f = [sweep.frequency[i] for i in good]
+    for axis, (_, value, _) in zip(axes, panels):
+        axis.plot(f, [value(sweep, i) for i in good], marker="." if len(good) < 30 else None, label=name, **style)
+    failed = [sweep.frequency[i] for i in rows if not sweep.converged[i]]
+    if failed:
+        axes[1].plot(failed, [0.0] * len(failed), "x", color="red", label=f"{name}: not converged")
+        axes[1].legend(fontsize="small")
+
+
+def finish_impedance_axes(axes, panels, sweeps, linear):
+    for axis, (ylabel, _, log) in zip(axes, panels):
+        axis.set_ylabel(ylabel)
+        if log and not linear:
+            log_if_positive(axis)
         axis.grid(True, which="both", alpha=0.3)
-        axis.legend(fontsize="small")
-    top.set_title(f"Impedance at the clamp ({path})")
-    finish(figure, output)
+    axes[0].legend(fontsize="small")
+    axes[-1].set_xlabel("frequency (Hz)")
+    if not linear:
+        log_scale(axes[0], "x")
+    names = ", ".join(sweep.path for sweep in sweeps)
+    axes[0].set_title(f"Impedance at the clamp ({names})", fontsize="medium")
+
+
+def plot_impedance(paths, output, labels=None, re_im=False, linear=False, power=False):
+    labels = labels or [None] * len(paths)
+    sweeps = [Sweep(path, label) for path, label in zip(paths, labels)]
+    save(impedance_figure(sweeps, re_im, linear, power), output)
+
+
+# ---------------------------------------------------------------- loops
+
+def closed(x, y):
+    """A periodic record's samples with the first appended at the end, so that the loop has no gap."""
+    return list(x) + list(x[:1]), list(y) + list(y[:1])
+
+
+def arm_prefixes(table):
+    """The arms of a response file, found by their '<arm>_x_m' columns, in file order."""
+    return [name[:-len("_x_m")] for name in table.header if name.endswith("_x_m") and len(name) > len("_x_m")]
+
+
+def loop_panels(table):
+    """[(x, y, x label, y label, title)] and whether the record is one period (to be closed)."""
+    prefixes = arm_prefixes(table)
+    if "time_s" in table and prefixes:
+        return [panel for prefix in prefixes for panel in response_panels(table, prefix)], True
+    if "x_m" in table and "force_n" in table:
+        return [(table.column("x_m"), table.column("force_n"), "tip deflection x (m)", "tip force F (N)",
+                 "experiment (a) loop"),
+                (table.column("phi_rad"), table.column("clamp_moment_n_m"), "tip rotation phi (rad)",
+                 "clamp moment T (N m)", "rotation and clamp moment")], False
+    if "curvature_per_m" in table and "moment_n_m" in table:
+        return [(table.column("curvature_per_m"), table.column("moment_n_m"), "curvature (1/m)", "moment (N m)",
+                 "section loop")], False
+    raise PlotError(f"{table.path}: expected the columns of a cycle (x_m, force_n), response (time_s, arm1_x_m, ...) "
+                    "or loop (curvature_per_m, moment_n_m) file")
+
+
+def response_panels(table, prefix):
+    name = prefix.replace("arm", "arm ", 1) if prefix[3:].isdigit() else prefix
+    return [(table.column(f"{prefix}_x_m"), table.column(f"{prefix}_force_n"), "tip deflection x (m)",
+             "tip force F (N)", f"{name}: force over deflection"),
+            (table.column(f"{prefix}_clamp_curvature_per_m"), table.column(f"{prefix}_clamp_section_moment_n_m"),
+             "curvature (1/m)", "moment (N m)", f"{name}: clamp section")]
+
+
+def loop_figure(path):
+    """The loops of a cycle, response or loop file; a response file's loops are closed."""
+    table = Table(path)
+    panels, periodic = loop_panels(table)
+    if not any(finite(a, b) for x, y, *_ in panels for a, b in zip(x, y)):
+        raise PlotError(f"{path}: no sample to plot (every cell of the loop columns is empty)")
+    rows = (len(panels) + 1) // 2 if len(panels) > 2 else 1
+    figure, axes = plt.subplots(rows, min(len(panels), 2), figsize=FIGURE_SIZE, squeeze=False, layout="constrained")
+    for axis, (x, y, xlabel, ylabel, title) in zip(axes.flat, panels):
+        axis.plot(*(closed(x, y) if periodic else (x, y)), linewidth=1.0)
+        axis.set(xlabel=xlabel, ylabel=ylabel)
+        axis.set_title(title, fontsize="medium")
+        axis.grid(True, alpha=0.3)
+        few_ticks(axis)
+    for axis in list(axes.flat)[len(panels):]:
+        axis.set_visible(False)
+    if "converged" in table and periodic and not all(v == 1.0 for v in table.column("converged")):
+        figure.suptitle(f"{path}: not converged (the solver's last iterate)", color="C3")
+    return figure
 
 
 def plot_loop(path, output):
-    columns = read_columns(path)
-    panels = []  # (x, y, x label, y label, title)
-    if "x_m" in columns and "force_n" in columns:
-        panels.append((columns["x_m"], columns["force_n"], "tip deflection x (m)", "tip force F (N)", "experiment (a) loop"))
-        panels.append((columns["phi_rad"], columns["clamp_moment_n_m"], "tip rotation phi (rad)", "clamp moment T (N m)",
-                       "rotation and clamp moment"))
-    elif "arm1_x_m" in columns:
-        arm = 1
-        while f"arm{arm}_x_m" in columns:
-            panels.append((columns[f"arm{arm}_x_m"], columns[f"arm{arm}_force_n"], "tip deflection x (m)",
-                           "tip force F (N)", f"arm {arm}: force over deflection"))
-            panels.append((columns[f"arm{arm}_clamp_curvature_per_m"], columns[f"arm{arm}_clamp_section_moment_n_m"],
-                           "curvature (1/m)", "moment (N m)", f"arm {arm}: clamp section"))
-            arm += 1
-    elif "curvature_per_m" in columns and "moment_n_m" in columns:
-        panels.append((columns["curvature_per_m"], columns["moment_n_m"], "curvature (1/m)", "moment (N m)",
-                       "section loop"))
-    else:
-        raise PlotError(f"{path}: expected the columns of a cycle (x_m, force_n), response (arm1_x_m, ...) "
-                        "or loop (curvature_per_m, moment_n_m) file")
-    figure, axes = plt.subplots(1, len(panels), figsize=FIGURE_SIZE, squeeze=False)
-    for axis, (x, y, xlabel, ylabel, title) in zip(axes[0], panels):
-        pairs = [(a, b) for a, b in zip(x, y) if a is not None and b is not None]
-        axis.plot([p[0] for p in pairs], [p[1] for p in pairs], linewidth=1.0)
-        axis.set_xlabel(xlabel)
-        axis.set_ylabel(ylabel)
-        axis.set_title(title, fontsize="medium")
-        axis.grid(True, alpha=0.3)
-    finish(figure, output)
+    save(loop_figure(path), output)
 
+
+# ---------------------------------------------------------------- fitted loops
 
 FIT_COLUMNS = [("curvature_per_m", "moment_n_m", "model_moment_n_m", "curvature (1/m)", "moment (N m)"),
                ("x_m", "force_n", "model_force_n", "tip deflection x (m)", "tip force F (N)"),
@@ -137,47 +341,70 @@ FIT_COLUMNS = [("curvature_per_m", "moment_n_m", "model_moment_n_m", "curvature 
 
 
 def plot_fit(path, output):
-    columns = read_columns(path)
+    table = Table(path)
     for x_name, y_name, model_name, xlabel, ylabel in FIT_COLUMNS:
-        if x_name in columns and model_name in columns:
-            x, measured, model = need(columns, path, x_name, y_name, model_name)
+        if x_name in table and model_name in table:
+            x, measured, model = (table.column(name) for name in (x_name, y_name, model_name))
             break
     else:
         raise PlotError(f"{path}: expected the columns written by identify --fitted (e.g. x_m, force_n, model_force_n)")
-    figure, axis = plt.subplots(figsize=FIGURE_SIZE)
+    if not any(finite(a, b) for a, b in zip(x, measured)):
+        raise PlotError(f"{path}: no sample to plot (every cell of {x_name}, {y_name} is empty)")
+    figure, axis = plt.subplots(figsize=FIGURE_SIZE, layout="constrained")
     axis.plot(x, measured, ".", markersize=2, color="0.5", label="measured")
     axis.plot(x, model, "-", linewidth=1.2, color="C3", label="fitted model")
-    axis.set_xlabel(xlabel)
-    axis.set_ylabel(ylabel)
+    axis.set(xlabel=xlabel, ylabel=ylabel)
     axis.set_title(f"Measured and fitted loops ({path})")
     axis.grid(True, alpha=0.3)
     axis.legend()
-    finish(figure, output)
+    save(figure, output)
 
 
-def main(argv=None):
-    parser = argparse.ArgumentParser(prog="python3 -m stockbridge.plot", description=__doc__.splitlines()[0])
-    commands = parser.add_subparsers(dest="command", required=True)
-    impedance = commands.add_parser("impedance", help="|Z| and phase (or Re and Im) over frequency")
-    impedance.add_argument("csv")
+# ---------------------------------------------------------------- command line
+
+class Parser(argparse.ArgumentParser):
+    """Usage errors in one line, exit status 2."""
+
+    def error(self, message):
+        self.exit(2, f"{PROGRAM}: {message} (see {self.prog} --help)\n")
+
+
+def parser():
+    result = Parser(prog="python3 -m stockbridge.plot", description=__doc__.splitlines()[0])
+    commands = result.add_subparsers(dest="command", required=True, parser_class=Parser)
+    impedance = commands.add_parser("impedance", help="|Z| and phase (or Re and Im) over frequency, of one or more "
+                                    "files")
+    impedance.add_argument("csv", nargs="+", help="impedance CSV files, drawn on one figure")
     impedance.add_argument("-o", "--output", required=True)
+    impedance.add_argument("--label", action="append", help="a file's name in the legend (once per file, in order)")
     impedance.add_argument("--re-im", action="store_true", help="plot Re Z and Im Z instead of |Z| and phase")
-    impedance.add_argument("--linear", action="store_true", help="linear frequency axis")
+    impedance.add_argument("--linear", action="store_true", help="linear axes")
+    impedance.add_argument("--power", action="store_true", help="add a panel: dissipated power Re Z V^2 / 2")
     for name, text in (("loop", "hysteresis loops of a cycle, response or loop file"),
                        ("fit", "measured and fitted loops (identify ... --fitted)")):
         command = commands.add_parser(name, help=text)
         command.add_argument("csv")
         command.add_argument("-o", "--output", required=True)
-    args = parser.parse_args(argv)
+    return result
+
+
+def run(args):
+    if args.command == "impedance":
+        if args.label and len(args.label) != len(args.csv):
+            raise PlotError(f"{len(args.label)} --label for {len(args.csv)} files: expected one per file")
+        plot_impedance(args.csv, args.output, args.label, args.re_im, args.linear, args.power)
+    elif args.command == "loop":
+        plot_loop(args.csv, args.output)
+    else:
+        plot_fit(args.csv, args.output)
+
+
+def main(argv=None):
+    args = parser().parse_args(argv)
     try:
-        if args.command == "impedance":
-            plot_impedance(args.csv, args.output, args.re_im, args.linear)
-        elif args.command == "loop":
-            plot_loop(args.csv, args.output)
-        else:
-            plot_fit(args.csv, args.output)
+        run(args)
     except PlotError as error:
-        print(f"stockbridge.plot: {error}", file=sys.stderr)
+        print(f"{PROGRAM}: {error}", file=sys.stderr)
         return 2
     return 0
 

@@ -2,6 +2,7 @@
 command writes a non-empty PNG of the expected size; bad files get one line and
 exit status 2."""
 
+import csv
 import os
 import struct
 import subprocess
@@ -61,6 +62,17 @@ def test_impedance_re_im_and_linear_axis(files):
 
 @pytest.mark.parametrize("command,contents,mention", [
     ("impedance", "frequency_hz,velocity_m_s\n1,0.2\n", "missing column 're_z_n_s_m'"),
+    ("impedance", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n", "no data rows"),
+    ("impedance", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.2,1\n", "bad.csv:2: 3 cells: expected 4"),
+    ("impedance", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.2,,1\n", "'re_z_n_s_m' is empty"),
+    ("impedance", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.2,inf,1\n", "expected a finite number"),
+    ("impedance", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n0,0.2,1,1\n", "expected a positive frequency"),
+    ("impedance", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m,converged\n10,0.2,,,0\n",
+     "no converged point to plot"),
+    ("loop", "time_s,arm1_x_m,arm1_force_n,arm1_clamp_curvature_per_m,arm1_clamp_section_moment_n_m\n0,,,,\n",
+     "no sample to plot"),
+    ("loop", "time_s,arm1_x_m\n0,1\n", "missing column 'arm1_force_n'"),
+    ("fit", "x_m,force_n,model_force_n\n1,,1\n", "no sample to plot"),
     ("fit", "a,b\n1,2\n", "expected the columns written by identify --fitted"),
     ("loop", "", "empty file"),
     ("loop", "curvature_per_m,moment_n_m\n0.1,abc\n", "'abc'")])
@@ -68,10 +80,233 @@ def test_bad_files_get_one_line_and_exit_two(tmp_path, command, contents, mentio
     (tmp_path / "bad.csv").write_text(contents)
     result = plot(command, "bad.csv", "-o", "bad.png", cwd=tmp_path)
     assert result.returncode == 2
-    assert result.stderr.count("\n") == 1 and mention in result.stderr, result.stderr
+    assert result.stderr.count("\n") == 1 and mention in result.stderr and "bad.csv" in result.stderr, result.stderr
     assert not (tmp_path / "bad.png").exists()
 
 
 def test_missing_file(tmp_path):
     result = plot("loop", "nowhere.csv", "-o", "x.png", cwd=tmp_path)
-    assert result.returncode == 2 and "nowhere.csv" in result.stderr
+    assert result.returncode == 2 and "nowhere.csv" in result.stderr and result.stderr.count("\n") == 1
+
+
+def test_not_utf8(tmp_path):
+    (tmp_path / "bad.csv").write_bytes(b"x_m,force_n\n\xff\xfe,1\n")
+    result = plot("loop", "bad.csv", "-o", "x.png", cwd=tmp_path)
+    assert result.returncode == 2 and "bad.csv" in result.stderr and result.stderr.count("\n") == 1
+
+
+# ---------------------------------------------------------------- in-process checks of the figures
+
+def plot_module():
+    """stockbridge.plot in this process (the package's compiled part is not needed)."""
+    import stockbridge.plot as module
+    return module
+
+
+def rewrite_csv(source, target, change):
+    """A copy of a CSV file with change(header, rows) applied to its rows (lists of cells)."""
+    with open(source, newline="") as handle:
+        rows = list(csv.reader(handle))
+    change(rows[0], rows[1:])
+    with open(target, "w", newline="") as handle:
+        csv.writer(handle).writerows(rows)
+
+
+def fail_row(header, row):
+    """Make a row look like a point that did not converge: numbers empty, converged = 0."""
+    for name in ("re_z_n_s_m", "im_z_n_s_m", "abs_z_n_s_m", "phase_deg", "power_w", "dissipated_power_w",
+                 "energy_error", "residual"):
+        row[header.index(name)] = ""
+    row[header.index("converged")] = "0"
+
+
+def assert_bad(result, directory, output, *mentions):
+    """Exit status 2, exactly one line on stderr naming what was expected, no output file."""
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.count("\n") == 1 and result.stderr.endswith("\n"), result.stderr
+    assert "Traceback" not in result.stderr
+    for mention in mentions:
+        assert mention in result.stderr, result.stderr
+    assert not (directory / output).exists()
+
+
+@pytest.fixture(scope="module")
+def more(files):
+    """Impedance files with failed points, a measured file, and response files."""
+    example = os.path.join(SOURCE, "examples", "sauter2003.toml")
+    subprocess.run([CLI, "impedance", example, "--velocity", "0.2", "--frequencies", "10,20", "--energy-tolerance",
+                    "1e-12", "-o", "all_failed.csv"], cwd=files, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    run_cli("impedance", example, "--velocity", "0.2,0.05", "--frequencies", "10,20,30", "-o", "z3.csv", cwd=files)
+    subprocess.run([CLI, "response", example, "--frequency", "20", "--velocity", "0.2", "--max-iterations", "2",
+                    "-o", "t_last.csv"], cwd=files, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    # measured: frequency, velocity and Z only; every third converged point of z.csv, Re Z a little off
+    with open(files / "z.csv", newline="") as handle:
+        rows = [row for row in csv.DictReader(handle) if row["converged"] == "1"][::3]
+    with open(files / "measured.csv", "w", newline="") as handle:
+        handle.write("frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n")
+        for row in rows:
+            handle.write(f"{row['frequency_hz']},{row['velocity_m_s']},{1.1 * float(row['re_z_n_s_m'])},"
+                         f"{row['im_z_n_s_m']}\n")
+    rewrite_csv(files / "t.csv", files / "t_named.csv", lambda header, rows: header.__setitem__(
+        slice(None), [n.replace("arm1_", "left_").replace("arm2_", "right_") for n in header]))
+    return files
+
+
+def test_all_points_failed_is_bad_input(more):
+    with open(more / "all_failed.csv") as handle:
+        assert [row["converged"] for row in csv.DictReader(handle)] == ["0", "0"]  # the premise
+    result = plot("impedance", "all_failed.csv", "-o", "all_failed.png", cwd=more)
+    assert_bad(result, more, "all_failed.png", "all_failed.csv", "no converged point to plot")
+    for extra in (["--power"], ["--re-im"], ["--linear"]):  # in this process: quicker
+        assert plot_module().main(["impedance", str(more / "all_failed.csv"), *extra,
+                                   "-o", str(more / "all_failed.png")]) == 2
+        assert not (more / "all_failed.png").exists()
+    # a file of one point that failed (the case a reviewer saw end in "Data has no positive values")
+    rewrite_csv(more / "z3.csv", more / "one_failed.csv", lambda header, rows: [fail_row(header, rows[0])])
+    with open(more / "one_failed.csv") as handle:
+        lines = handle.readlines()[:2]
+    (more / "one_failed.csv").write_text("".join(lines))
+    result = plot("impedance", "one_failed.csv", "-o", "all_failed.png", cwd=more)
+    assert_bad(result, more, "all_failed.png", "one_failed.csv", "no converged point to plot")
+    # and among other files
+    result = plot("impedance", "z.csv", "all_failed.csv", "-o", "all_failed.png", cwd=more)
+    assert_bad(result, more, "all_failed.png", "all_failed.csv", "no converged point to plot")
+
+
+@pytest.mark.parametrize("failed", [[1], [0], [2], [3, 4, 5], [0, 1, 2, 3, 4]])
+def test_some_failed_points_plot_the_converged_ones(more, failed):
+    """z3.csv has rows (0.2 m/s: 10, 20, 30 Hz), (0.05 m/s: 10, 20, 30 Hz): a failed point in
+    the middle, first, last, a whole run failed, or a single converged point left."""
+    name = f"failed_{'_'.join(map(str, failed))}.csv"
+    rewrite_csv(more / "z3.csv", more / name,
+                lambda header, rows: [fail_row(header, rows[i]) for i in failed])
+    result = plot("impedance", name, "--power", "-o", "some_failed.png", cwd=more)
+    assert result.returncode == 0, result.stderr
+    assert png_size(more / "some_failed.png") == (800, 600)
+    for extra in ([], ["--re-im", "--linear"]):  # in this process: quicker
+        assert plot_module().main(["impedance", str(more / name), *extra, "-o", str(more / "some_failed.png")]) == 0
+    figure = plot_module().impedance_figure([plot_module().Sweep(str(more / name))])
+    top, bottom = figure.axes
+    assert sum(len(line.get_xdata()) for line in top.get_lines()) == 6 - len(failed)
+    crosses = [line for line in bottom.get_lines() if line.get_marker() == "x"]
+    assert sum(len(line.get_xdata()) for line in crosses) == len(failed)
+
+
+@pytest.mark.parametrize("output,mention", [
+    ("nodir/x.png", "nodir/x.png: cannot write"), (".", "cannot write"), ("x.xyz", "x.xyz: unknown image format")])
+def test_unwritable_output_gets_one_line(files, output, mention):
+    for command, source in (("impedance", "z.csv"), ("loop", "t.csv"), ("fit", "fitted_local.csv")):
+        result = plot(command, source, "-o", output, cwd=files)
+        assert result.returncode == 2 and result.stderr.count("\n") == 1 and mention in result.stderr, result.stderr
+    assert not (files / "nodir").exists() and not (files / "x.xyz").exists()
+
+
+def test_a_failing_plot_leaves_an_existing_output_alone(files):
+    (files / "keep.png").write_bytes(b"old")
+    result = plot("impedance", "nowhere.csv", "-o", "keep.png", cwd=files)
+    assert result.returncode == 2 and (files / "keep.png").read_bytes() == b"old"
+
+
+def test_usage_errors_get_one_line(files):
+    for args in (["impedance"], ["nothing"], ["impedance", "z.csv", "z.csv", "--label", "a", "-o", "u.png"]):
+        result = plot(*args, cwd=files)
+        assert_bad(result, files, "u.png")
+
+
+def test_measured_file_with_z_only(more):
+    result = plot("impedance", "measured.csv", "--power", "-o", "measured.png", cwd=more)
+    assert result.returncode == 0, result.stderr
+    assert png_size(more / "measured.png") == (800, 600)
+    sweep = plot_module().Sweep(str(more / "measured.csv"))
+    assert all(sweep.converged) and len(sweep.re) > 3
+
+
+def test_abs_phase_and_power_agree_with_the_program(files):
+    """|Z|, phase and Re Z V^2 / 2 computed from Re and Im Z against the program's own columns."""
+    sweep = plot_module().Sweep(str(files / "z.csv"))
+    with open(files / "z.csv") as handle:
+        rows = list(csv.DictReader(handle))
+    checked = 0
+    for i, row in enumerate(rows):
+        if row["converged"] == "1":
+            assert sweep.abs_z(i) == pytest.approx(float(row["abs_z_n_s_m"]), rel=1e-12)
+            assert sweep.phase_deg(i) == pytest.approx(float(row["phase_deg"]), abs=1e-9)
+            assert sweep.power_w(i) == pytest.approx(float(row["power_w"]), rel=1e-12)
+            checked += 1
+    assert checked > 10
+
+
+def test_overlay_of_several_files(more):
+    result = plot("impedance", "z.csv", "measured.csv", "--label", "computed", "--label", "measured", "--power",
+                  "-o", "overlay.png", cwd=more)
+    assert result.returncode == 0, result.stderr
+    assert png_size(more / "overlay.png") == (800, 600)
+    module = plot_module()
+    sweeps = [module.Sweep(str(more / "z.csv"), "computed"), module.Sweep(str(more / "measured.csv"), "measured")]
+    figure = module.impedance_figure(sweeps, power=True)
+    assert len(figure.axes) == 3
+    for axis in figure.axes:
+        curves = [line for line in axis.get_lines() if line.get_marker() != "x"]
+        assert len(curves) == 4  # two files, two amplitudes each
+    legend = [text.get_text() for text in figure.axes[0].get_legend().get_texts()]
+    assert legend == ["computed: V = 0.2 m/s", "computed: V = 0.05 m/s", "measured: V = 0.2 m/s",
+                      "measured: V = 0.05 m/s"]
+    default = module.impedance_figure([module.Sweep(str(more / "z.csv")), module.Sweep(str(more / "measured.csv"))])
+    assert [t.get_text() for t in default.axes[0].get_legend().get_texts()][::2] == [
+        "z.csv: V = 0.2 m/s", "measured.csv: V = 0.2 m/s"]
+
+
+def test_closed_appends_the_first_sample():
+    assert plot_module().closed([1.0, 2.0, 3.0], [4.0, 5.0, 6.0]) == ([1.0, 2.0, 3.0, 1.0], [4.0, 5.0, 6.0, 4.0])
+
+
+def line_points(figure):
+    return [list(zip(axis.get_lines()[0].get_xdata(), axis.get_lines()[0].get_ydata()))
+            for axis in figure.axes if axis.get_visible()]
+
+
+@pytest.mark.parametrize("source,panels", [("t.csv", 4), ("t_named.csv", 4)])
+def test_response_loops_are_closed(more, source, panels):
+    rows = sum(1 for _ in open(more / source)) - 1
+    loops = line_points(plot_module().loop_figure(str(more / source)))
+    assert len(loops) == panels
+    for points in loops:
+        assert len(points) == rows + 1 and points[0] == points[-1]
+        assert points[0] != points[-2]  # the file's own last sample is not its first
+
+
+def test_response_arms_found_by_suffix(more):
+    titles = [axis.get_title() for axis in plot_module().loop_figure(str(more / "t_named.csv")).axes]
+    assert titles == ["left: force over deflection", "left: clamp section", "right: force over deflection",
+                      "right: clamp section"]
+
+
+@pytest.mark.parametrize("source", ["c.csv", "mk.csv"])
+def test_cycle_and_loop_files_are_not_closed(files, source):
+    rows = sum(1 for _ in open(files / source)) - 1
+    for points in line_points(plot_module().loop_figure(str(files / source))):
+        assert len(points) == rows and points[0] != points[-1]
+
+
+def test_unconverged_response_plots_and_says_so(more):
+    assert (more / "t_last.csv").exists()
+    result = plot("loop", "t_last.csv", "-o", "t_last.png", cwd=more)
+    assert result.returncode == 0, result.stderr
+    figure = plot_module().loop_figure(str(more / "t_last.csv"))
+    assert "not converged" in figure._suptitle.get_text()
+
+
+@pytest.mark.parametrize("source", ["t.csv", "c.csv"])
+def test_tick_labels_do_not_run_into_each_other(files, source):
+    """At least 20 pixels between neighbouring x tick labels (the four panels in one row
+    left 6 pixels between -0.0025 and 0.0000)."""
+    figure = plot_module().loop_figure(str(files / source))
+    figure.canvas.draw()
+    renderer = figure.canvas.get_renderer()
+    for axis in figure.axes:
+        low, high = sorted(axis.get_xlim())
+        boxes = sorted((label.get_window_extent(renderer) for tick, label in zip(axis.get_xticks(),
+                        axis.get_xticklabels()) if low <= tick <= high and label.get_text()), key=lambda b: b.x0)
+        assert len(boxes) >= 3
+        for left, right in zip(boxes, boxes[1:]):
+            assert right.x0 - left.x1 >= 20, (axis.get_title(), [label.get_text() for label in axis.get_xticklabels()])
