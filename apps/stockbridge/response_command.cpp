@@ -41,10 +41,10 @@ struct ResponseOptions {
 std::string response_csv(const damper::Damper& damper, const damper::Excitation& excitation,
                          const damper::DamperSteadyState& state) {
   std::vector<std::string> header{"time_s", "clamp_displacement_m", "clamp_velocity_m_s", "shaker_force_n"};
-  for (std::size_t k = 1; k <= damper.arms().size(); ++k) {
+  for (const std::string& arm : requests::arm_column_prefixes(damper)) {
     for (const char* column : {"x_m", "phi_rad", "force_n", "clamp_moment_n_m", "tip_moment_n_m",
                                "clamp_curvature_per_m", "clamp_section_moment_n_m"}) {
-      header.push_back(fmt::format("arm{}_{}", k, column));
+      header.push_back(fmt::format("{}_{}", arm, column));
     }
   }
   header.push_back("converged");

@@ -154,6 +154,7 @@ py::dict response(const damper::Damper& d, double frequency, std::optional<doubl
   out["clamp_section_moment_n_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) {
     return p.clamp_section_moment[static_cast<std::size_t>(j)];
   });
+  out["arms"] = requests::arm_column_prefixes(d);  // the rows of the per-arm arrays, named as the CSV's columns
   out["converged"] = point.converged();
   out["termination"] = std::string(termination_name(point.termination));
   out["message"] = point.converged() ? point.note : point.failure;

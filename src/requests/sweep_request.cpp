@@ -1,5 +1,7 @@
 #include "stockbridge/requests/sweep_request.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -70,6 +72,21 @@ std::vector<double> impedance_row(const damper::ImpedancePoint& p) {
           static_cast<double>(p.newton_iterations),
           static_cast<double>(p.periods),
           p.non_unique ? 1.0 : 0.0};
+}
+
+std::vector<std::string> arm_column_prefixes(const damper::Damper& damper) {
+  std::vector<std::string> names;
+  bool usable = true;
+  for (const damper::ArmDescription& arm : damper.description().arms) {
+    const bool word = !arm.name.empty() && std::all_of(arm.name.begin(), arm.name.end(), [](char ch) {
+      return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+    });
+    usable = usable && word && std::find(names.begin(), names.end(), arm.name) == names.end();
+    names.push_back(arm.name);
+  }
+  if (usable) return names;
+  for (std::size_t k = 0; k < names.size(); ++k) names[k] = "arm" + std::to_string(k + 1);
+  return names;
 }
 
 SweepTally tally(const std::vector<damper::SweepRun>& runs) {

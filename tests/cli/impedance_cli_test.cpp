@@ -139,8 +139,11 @@ TEST(ResponseCli, OneSteadyPeriod) {
   const CliResult r = run_cli("response '" + kExample + "' --frequency 20 --velocity 0.2 --json -o t.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto lines = lines_of(read_text(dir / "t.csv"));
-  EXPECT_EQ(lines[0].rfind("time_s,clamp_displacement_m,clamp_velocity_m_s,shaker_force_n,arm1_x_m,arm1_phi_rad,arm1_force_n", 0), 0u);
-  EXPECT_NE(lines[0].find("arm2_clamp_section_moment_n_m"), std::string::npos);
+  // The arms by their names in the example file (left, right).
+  EXPECT_EQ(lines[0].rfind("time_s,clamp_displacement_m,clamp_velocity_m_s,shaker_force_n,left_x_m,left_phi_rad,left_force_n", 0),
+            0u);
+  EXPECT_NE(lines[0].find(",right_x_m,"), std::string::npos);
+  EXPECT_NE(lines[0].find("right_clamp_section_moment_n_m"), std::string::npos);
   EXPECT_EQ(lines.size(), 1u + 128u);
   EXPECT_NE(r.out.find("\"re_z_n_s_m\": "), std::string::npos);
 }

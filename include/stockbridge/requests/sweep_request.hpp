@@ -42,6 +42,11 @@ const std::vector<std::string>& impedance_columns();
 /// a point that did not converge (the amplitude and frequency are always given).
 std::vector<double> impedance_row(const damper::ImpedancePoint& point);
 
+/// How tables name each arm's columns (`<prefix>_x_m`): its name from the damper
+/// file where every arm has one that is unique and made of letters, digits and
+/// '_', else arm1, arm2, ... for all.
+std::vector<std::string> arm_column_prefixes(const damper::Damper& damper);
+
 /// Summary figures of a sweep.
 struct SweepTally {
   int points = 0;

@@ -104,3 +104,32 @@ TEST(ImpedanceRow, ANonConvergedPointShowsOnlyWhereItWas) {
 
 }  // namespace
 }  // namespace stockbridge::requests
+
+namespace stockbridge::requests {
+namespace {
+
+damper::Damper damper_named(const std::vector<std::string>& names) {
+  damper::DamperDescription d;
+  d.clamp_mass = 0.7;
+  for (const std::string& name : names) {
+    damper::ArmDescription arm;
+    arm.name = name;
+    arm.mass = 0.856;
+    arm.inertia = 0.001814;
+    arm.offset = 0.0325;
+    arm.cable = cable::CableDescription::uniform(0.1875, 8, 2.8, {{20.0, 0.7}});
+    d.arms.push_back(arm);
+  }
+  return damper::Damper(d);
+}
+
+TEST(ArmColumns, NamedByTheArmsNamesWhereTheyMakeColumnNames) {
+  EXPECT_EQ(arm_column_prefixes(damper_named({"long", "short_2"})), (std::vector<std::string>{"long", "short_2"}));
+  // No name, a repeated name or one with a space or a comma: numbered, all of them.
+  EXPECT_EQ(arm_column_prefixes(damper_named({"long", ""})), (std::vector<std::string>{"arm1", "arm2"}));
+  EXPECT_EQ(arm_column_prefixes(damper_named({"a", "a"})), (std::vector<std::string>{"arm1", "arm2"}));
+  EXPECT_EQ(arm_column_prefixes(damper_named({"long arm", "b,c"})), (std::vector<std::string>{"arm1", "arm2"}));
+}
+
+}  // namespace
+}  // namespace stockbridge::requests
