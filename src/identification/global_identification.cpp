@@ -22,10 +22,10 @@ void GlobalIdentificationOptions::validate() const {
 
 namespace {
 
-const fit_core::RecordNames record_names{"prescribed values", "measured", "the prescribed motion"};
+const fit_core::RecordNames experiment_record_names{"prescribed values", "measured", "the prescribed motion"};
 
 std::vector<std::size_t> checked_reversals(const ExperimentMeasurement& m) {
-  return fit_core::checked_reversals(m.prescribed, m.measured, record_names);
+  return fit_core::checked_reversals(m.prescribed, m.measured, experiment_record_names);
 }
 
 cable::CableDescription constant_cable(double length, int sections, const section::MasingParameters& p) {

@@ -54,7 +54,7 @@ std::vector<std::size_t> reversals(const std::vector<double>& curvature) {
 
 namespace {
 
-const fit_core::RecordNames record_names{"curvatures", "moments", "the curvature"};
+const fit_core::RecordNames moment_curvature_names{"curvatures", "moments", "the curvature"};
 
 /// Starting values from the record: ei from the slope before the reversals (all
 /// slip), sum c from the slope after them (all stick) less ei, sum h and the moment
@@ -122,14 +122,14 @@ std::vector<double> model_moments(const section::MasingParameters& parameters, d
 
 double relative_l1_error(const section::MasingParameters& parameters, double moment_offset,
                          const MomentCurvatureRecord& record) {
-  const std::vector<std::size_t> turns = fit_core::checked_reversals(record.curvature, record.moment, record_names);
+  const std::vector<std::size_t> turns = fit_core::checked_reversals(record.curvature, record.moment, moment_curvature_names);
   return fit_core::relative_l1_misfit(record.curvature, record.moment, model_moments(parameters, moment_offset, record),
                                       turns.front());
 }
 
 LocalIdentification identify_local(const MomentCurvatureRecord& record, const LocalIdentificationOptions& options) {
   options.validate();
-  const std::vector<std::size_t> turns = fit_core::checked_reversals(record.curvature, record.moment, record_names);
+  const std::vector<std::size_t> turns = fit_core::checked_reversals(record.curvature, record.moment, moment_curvature_names);
   const RecordEstimates estimates = record_estimates(record, turns);
   const fit_core::LogParameters packing(options.elements, estimates.h_total);
   fit_core::Search search([&](const std::vector<double>& x) {
