@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -10,10 +11,10 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include "commands.hpp"
 #include "option_parsing.hpp"
+#include "progress.hpp"
 #include "solver_options.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/damper/sweep.hpp"
@@ -40,6 +41,7 @@ struct ImpedanceOptions {
   SolverFlags solver;
   int threads = 1;
   bool json = false;
+  bool quiet = false;
   std::string output;
 };
 
@@ -65,21 +67,13 @@ std::string impedance_csv(const std::vector<damper::SweepRun>& runs) {
   return csv.text();
 }
 
-void draw_progress(int done, int total) {
-  const int width = 40;
-  const int filled = total > 0 ? width * done / total : width;
-  fmt::print(stderr, "\r[{}{}] {}/{}", std::string(filled, '#'), std::string(width - filled, ' '), done, total);
-  if (done == total) fmt::print(stderr, "\r{}\r", std::string(width + 24, ' '));
-}
-
 int run_impedance_command(const ImpedanceOptions& options) {
   require_outputs_apart({{"-o", options.output}}, {{"the damper file", options.damper_file}});
   const damper::SweepSpec spec = sweep_spec(options);
   const damper::Damper damper = io::read_damper_file(options.damper_file);
   const auto start = std::chrono::steady_clock::now();
-  const bool terminal = ::isatty(STDERR_FILENO) == 1;
-  const std::vector<damper::SweepRun> runs =
-      damper::run_sweep(damper, spec, terminal ? damper::SweepProgress(draw_progress) : damper::SweepProgress());
+  ProgressReport progress("impedance", options.quiet);
+  const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   io::write_file_atomically(options.output, impedance_csv(runs));
 
@@ -136,6 +130,7 @@ void add_impedance_command(CLI::App& app, int& exit_code) {
   options->solver.add_to(*sub);
   sub->add_option("--threads", options->threads, "Parallel runs (amplitudes x distinct arms)")->capture_default_str();
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout");
+  sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   sub->callback([options, &exit_code] { exit_code = run_impedance_command(*options); });
 }

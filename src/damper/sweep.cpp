@@ -111,14 +111,18 @@ std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, con
   // Tasks: (amplitude, distinct arm).
   const std::size_t n_tasks = spec.amplitudes.size() * distinct.size();
   std::vector<std::vector<ArmSolution>> results(n_tasks);
-  const int total = static_cast<int>(n_tasks * spec.frequencies.size());
+  // Progress in points (amplitude x frequency), not arm solves: a point is counted
+  // once as many arm solves as it needs have been done in all.
+  const int total_points = static_cast<int>(spec.amplitudes.size() * spec.frequencies.size());
   std::atomic<std::size_t> next_task{0};
   std::mutex progress_mutex;
-  int done = 0;
+  std::size_t solves = 0;
+  int reported = 0;
   auto tick = [&] {
     if (!progress) return;
     const std::lock_guard<std::mutex> lock(progress_mutex);
-    progress(++done, total);
+    const int points = static_cast<int>(++solves / distinct.size());
+    while (reported < points) progress(++reported, total_points);
   };
   std::exception_ptr failure;
   auto worker = [&] {

@@ -103,3 +103,21 @@ TEST(NewUserCli, VersionComesFromTheProject) {
 
 }  // namespace
 }  // namespace stockbridge::testing
+
+namespace stockbridge::testing {
+namespace {
+
+// Progress goes to stderr only on a terminal or, elsewhere, for runs longer than 10 s:
+// a short run to a file says nothing but its summary; --quiet is accepted.
+TEST(NewUserCli, AShortRunToAFileSaysOnlyItsSummary) {
+  const auto dir = scratch_directory("progress");
+  for (const std::string quiet : {"", " --quiet"}) {
+    const CliResult r = run_cli("impedance '" + kExample + "' --velocity 0.2 --frequencies 10,20" + quiet + " -o z.csv", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("impedance: 2 points", 0), 0u) << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace stockbridge::testing

@@ -77,7 +77,7 @@ TEST(SweepThreads, ThreadsGiveExactlyTheSingleThreadResult) {
       last_done = done;
       last_total = total;
     });
-    EXPECT_EQ(calls, 3 * 2 * static_cast<int>(spec.frequencies.size()));  // amplitudes x distinct arms x frequencies
+    EXPECT_EQ(calls, 3 * static_cast<int>(spec.frequencies.size()));  // points: amplitudes x frequencies
     EXPECT_EQ(last_total, calls);
     ASSERT_EQ(parallel.size(), serial.size());
     for (std::size_t a = 0; a < serial.size(); ++a) {

@@ -33,7 +33,9 @@ struct SweepRun {
   std::vector<ImpedancePoint> points;  ///< one per frequency
 };
 
-/// Called after every solved point with (points done, points in all); calls are serialised.
+/// Called as points (amplitude x frequency) are done, with (points done, points in
+/// all): once per point, `done` counting up by one; calls are serialised. With
+/// several distinct arms a point counts when as many arm solves as it needs are done.
 using SweepProgress = std::function<void(int, int)>;
 
 /// Runs every amplitude over every frequency. Never throws for non-convergence:
