@@ -12,9 +12,7 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/csv_writer.hpp"
-#include "stockbridge/section/masing_section.hpp"
-#include "stockbridge/section/regularised_section.hpp"
-#include "stockbridge/section/sinusoidal_drive.hpp"
+#include "stockbridge/requests/section_loop.hpp"
 
 namespace stockbridge::cli {
 
@@ -34,15 +32,7 @@ int run_loop_command(const LoopOptions& options) {
   for (std::size_t j = 0; j < options.jenkin.size(); ++j) {
     parameters.jenkin.push_back(parse_jenkin_pair(options.jenkin[j], fmt::format("--jenkin #{}", j + 1)));
   }
-  std::unique_ptr<section::SectionLaw> law;
-  if (options.law == "exact") {
-    law = std::make_unique<section::MasingSection>(parameters);
-  } else {
-    section::RegularisedOptions regularised;
-    regularised.exponent = options.exponent;
-    law = std::make_unique<section::RegularisedSection>(parameters, regularised);
-  }
-  const section::LoopRecord record = section::run_loop(*law, options.drive);
+  const section::LoopRecord record = requests::section_loop(parameters, options.drive, options.law, options.exponent);
 
   io::CsvWriter csv({"step", "curvature_per_m", "moment_n_m", "dissipated_energy_j_per_m"});
   for (std::size_t k = 0; k < record.curvature.size(); ++k) {

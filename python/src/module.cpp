@@ -20,6 +20,8 @@
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/strand_file.hpp"
+#include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 #include "stockbridge/strand/strand_bounds.hpp"
 
@@ -201,6 +203,24 @@ py::dict cycle(const cable::Cable& cable, const std::string& experiment, double 
   return out;
 }
 
+py::dict loop(double ei, const std::vector<std::pair<double, double>>& jenkin, double amplitude, int cycles, int points,
+              const std::string& law, double exponent) {
+  section::MasingParameters parameters{ei, {}};
+  for (const auto& [c, h] : jenkin) parameters.jenkin.push_back({c, h});
+  const section::SinusoidalDrive drive{amplitude, cycles, points};
+  section::LoopRecord record;
+  {
+    py::gil_scoped_release release;
+    record = requests::section_loop(parameters, drive, law, exponent);
+  }
+  py::dict out;
+  out["curvature_per_m"] = array(record.curvature);
+  out["moment_n_m"] = array(record.moment);
+  out["dissipated_energy_j_per_m"] = array(record.dissipated);
+  out["last_cycle_dissipation_j_per_m"] = record.last_cycle_dissipation();
+  return out;
+}
+
 py::list jenkin_list(const std::vector<std::pair<double, double>>& c_h) {
   py::list list;
   for (const auto& [c, h] : c_h) {
@@ -336,6 +356,22 @@ PYBIND11_MODULE(_core, m) {
         py::arg("measured"), py::arg("method") = "fit", py::arg("sections") = 40, py::arg("elements") = 1,
         py::arg("optimizer") = "subplex",
         "Constant cable parameters from a cycle of experiment (a) or (b); 'cable' is a Cable ready for make_damper.");
+  m.def("loop", &loop, py::arg("ei"), py::arg("jenkin") = std::vector<std::pair<double, double>>{},
+        py::arg("amplitude"), py::arg("cycles") = section::SinusoidalDrive{}.cycles,
+        py::arg("points") = section::SinusoidalDrive{}.points, py::arg("law") = "exact", py::arg("exponent") = 10.0,
+        "One section driven by kappa = amplitude sin(2 pi k / points), as the loop command: jenkin = [(c, h), ...] in "
+        "N m^2 and N m; law 'exact' or 'regularised' (with exponent).");
+  m.def(
+      "load_strand",
+      [](const std::string& path) {
+        const strand::Strand s = io::read_strand_file(path);
+        const strand::StrandBounds b = strand::strand_bounds(s);
+        py::dict out;
+        out["ei_min_n_m2"] = b.ei_min;
+        out["ei_max_n_m2"] = b.ei_max;
+        return out;
+      },
+      py::arg("path"), "A strand file's bending-stiffness bounds, as the strand command: {ei_min_n_m2, ei_max_n_m2}.");
   m.def(
       "strand_bounds",
       [](double core_radius, const std::vector<std::tuple<int, double, double, double>>& layers, double youngs_modulus) {

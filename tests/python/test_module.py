@@ -3,6 +3,7 @@ Python exceptions with the library's message, arrays of the documented shapes an
 dtypes, and the example script."""
 
 import csv
+import json
 import os
 import subprocess
 import sys
@@ -162,3 +163,19 @@ def test_numpy_values_and_any_text_go_through_make_cable_and_make_damper():
     assert damper.arms == ["bras \U0001F600"]
     with pytest.raises(ValueError):
         sb.make_cable(0.3, ei=2.8, jenkin=[(20.0, 0.7, 5.0)])  # a third value is not silently dropped
+
+
+def test_loop_and_the_strand_loader_equal_the_program(tmp_path):
+    subprocess.run([CLI, "loop", "--ei", "2.8", "--jenkin", "20:0.7", "--amplitude", "0.05", "-o", "loop.csv"],
+                   cwd=tmp_path, check=True, capture_output=True)
+    rows = read_csv(tmp_path / "loop.csv")
+    loop = sb.loop(2.8, [(20.0, 0.7)], 0.05)
+    assert loop["moment_n_m"].shape == (len(rows),)
+    assert loop["moment_n_m"] == pytest.approx([float(r["moment_n_m"]) for r in rows], rel=1e-12, abs=1e-15)
+    # One element: 4 h (ka - h/c) per cycle (the section law's closed form).
+    assert loop["last_cycle_dissipation_j_per_m"] == pytest.approx(4 * 0.7 * (0.05 - 0.7 / 20.0), rel=1e-9)
+    strand_file = os.path.join(SOURCE, "examples", "strand_19wire.toml")
+    out = subprocess.run([CLI, "strand", strand_file, "--json"], check=True, capture_output=True, text=True).stdout
+    assert sb.load_strand(strand_file) == pytest.approx(json.loads(out), rel=1e-15)
+    with pytest.raises(sb.InvalidParameter, match="law = 'smooth'"):
+        sb.loop(2.8, [(20.0, 0.7)], 0.05, law="smooth")
