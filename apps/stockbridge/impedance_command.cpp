@@ -1,11 +1,9 @@
 // stockbridge impedance: Z(f, amplitude) of a damper over a frequency sweep.
 
 #include <chrono>
-#include <cmath>
 #include <functional>
 #include <limits>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
