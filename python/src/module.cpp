@@ -93,7 +93,12 @@ py::dict impedance(const damper::Damper& d, const std::optional<std::vector<doub
     messages.append(message_row);
   }
   py::dict out;
-  for (std::size_t c = 0; c < columns.size(); ++c) out[py::str(columns[c])] = arrays[c];
+  // frequency_hz (1-D), converged and non_unique (bool) have arrays of their own below.
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    if (columns[c] != "frequency_hz" && columns[c] != "converged" && columns[c] != "non_unique") {
+      out[py::str(columns[c])] = arrays[c];
+    }
+  }
   out["frequency_hz"] = array(spec.frequencies);
   out["amplitude"] = array(spec.amplitudes);
   out["converged"] = converged;
