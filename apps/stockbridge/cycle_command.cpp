@@ -8,10 +8,11 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "input_files.hpp"
 #include "option_parsing.hpp"
 #include "stockbridge/cable/experiment.hpp"
 #include "stockbridge/io/atomic_file.hpp"
-#include "stockbridge/io/cable_file.hpp"
+#include "stockbridge/core/error.hpp"
 #include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/json_writer.hpp"
 
@@ -62,15 +63,30 @@ io::JsonObject cycle_json(const cable::ExperimentSummary& s, const CycleOptions&
   return json;
 }
 
+/// The cantilever is a small-deflection model: a tip deflection beyond 0.3 of the
+/// length, or a rotation beyond 0.5 rad, is most often an amplitude in mm or degrees.
+void warn_large_drive(const cable::ExperimentDrive& drive, double length) {
+  if (drive.experiment == cable::Experiment::a && !typical::tip_deflection_ratio.contains(drive.amplitude / length)) {
+    print_warnings({fmt::format("--amplitude = {}: more than {} of the cable's length {} m, beyond the small deflections "
+                                "the model assumes (a unit mistake? the amplitude of experiment (a) is in m)",
+                                format_value(drive.amplitude), typical::tip_deflection_ratio.max, format_value(length))});
+  }
+  if (drive.experiment == cable::Experiment::b && !typical::tip_rotation.contains(drive.amplitude)) {
+    print_warnings({fmt::format("--amplitude = {}: outside the typical 0 to {} rad of a tip rotation (a unit mistake? "
+                                "the amplitude of experiment (b) is in rad)",
+                                format_value(drive.amplitude), typical::tip_rotation.max)});
+  }
+}
+
 int run_cycle_command(const CycleOptions& options) {
-  require_outputs_apart({{"-o", options.output}}, {{"the cable file", options.cable_file}});
   cable::ExperimentDrive drive;
   drive.experiment = cable::parse_experiment(options.experiment);
   drive.amplitude = options.amplitude;
   drive.cycles = options.cycles;
   drive.points = options.points;
   drive.validate();
-  cable::Cantilever cantilever{io::read_cable_file(options.cable_file)};
+  cable::Cantilever cantilever{read_cable_input(options.cable_file, {{"-o", options.output}})};
+  warn_large_drive(drive, cantilever.cable().length());
   const cable::ExperimentRecord record = cable::run_experiment(cantilever, drive);
   io::write_file_atomically(options.output, cycle_csv(record));
   const cable::ExperimentSummary& s = record.summary;

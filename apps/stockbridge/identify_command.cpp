@@ -2,6 +2,7 @@
 // moment-curvature record.
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "input_files.hpp"
 #include "option_parsing.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/identification/global_identification.hpp"
@@ -106,6 +108,41 @@ std::string cable_toml(const identification::GlobalIdentification& fit, const Gl
                                                     fit.output_offset));
 }
 
+/// A fit error above this is not a model of the record: worth a warning.
+constexpr double kLargeFitError = 0.1;
+
+/// Warnings for a global identification's inputs outside the typical ranges (the
+/// length, the record's deflections or rotations) and for a large fit error.
+void warn_global(const GlobalOptions& options, const identification::ExperimentMeasurement& measurement,
+                 const identification::GlobalIdentification& fit) {
+  std::vector<UnusualValue> options_found;
+  check_typical(options_found, "length", options.length, typical::cable_length);
+  warn_unusual_options(options_found);
+  double largest = 0.0;
+  for (const double p : measurement.prescribed) largest = std::max(largest, std::abs(p));
+  if (measurement.experiment == cable::Experiment::a && !typical::tip_deflection_ratio.contains(largest / options.length)) {
+    print_warnings({fmt::format("{}: x_m reaches {} m, more than {} of --length {} m: beyond the small deflections the "
+                                "model assumes (deflections in mm under an x_m header?)",
+                                options.input, format_value(largest), typical::tip_deflection_ratio.max,
+                                format_value(options.length))});
+  }
+  if (measurement.experiment == cable::Experiment::b && !typical::tip_rotation.contains(largest)) {
+    print_warnings({fmt::format("{}: phi_rad reaches {} rad, outside the typical 0 to {} rad (degrees under a phi_rad "
+                                "header?)",
+                                options.input, format_value(largest), typical::tip_rotation.max)});
+  }
+  if (fit.error > kLargeFitError) {
+    print_warnings({options.method == "four-step"
+                        ? fmt::format("the four-step result's relative L1 error {:.3g} is large (above {}): its "
+                                      "formulas are biased where the cable never slips all along "
+                                      "(docs/identification.md); --method fit fits the model to the whole record",
+                                      fit.error, kLargeFitError)
+                        : fmt::format("the fit's relative L1 error {:.3g} is large (above {}): the model does not "
+                                      "follow the record (check its units, the experiment and --length)",
+                                      fit.error, kLargeFitError)});
+  }
+}
+
 int run_global(const GlobalOptions& options) {
   require_outputs_apart({{"-o", options.output}, {"--fitted", options.fitted}}, {{"the --input record", options.input}});
   identification::GlobalIdentificationOptions fit_options;
@@ -128,6 +165,7 @@ int run_global(const GlobalOptions& options) {
   } catch (const InvalidParameter& e) {
     throw InputError(fmt::format("{}: {}", options.input, e.what()));
   }
+  warn_global(options, measurement, fit);
   if (!options.output.empty()) io::write_file_atomically(options.output, cable_toml(fit, options));
   if (!options.fitted.empty()) {
     const std::vector<double> model = identification::model_output(fit.cable, fit.output_offset, measurement);

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "input_files.hpp"
 #include "option_parsing.hpp"
 #include "progress.hpp"
 #include "solver_options.hpp"
@@ -18,8 +19,8 @@
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/csv_writer.hpp"
-#include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 
 namespace stockbridge::cli {
@@ -43,7 +44,7 @@ struct ImpedanceOptions {
   std::string output;
 };
 
-damper::SweepSpec sweep_spec(const ImpedanceOptions& options) {
+requests::SweepRequest sweep_request(const ImpedanceOptions& options) {
   requests::SweepRequest request;
   if (options.velocity.has_value() == options.displacement.has_value()) {  // named by the flags
     throw InvalidParameter("give either --velocity V[,V...] (m/s) or --displacement X[,X...] (m)");
@@ -54,7 +55,7 @@ damper::SweepSpec sweep_spec(const ImpedanceOptions& options) {
   request.grid = {options.fmin, options.fmax, options.points};
   request.solver = options.solver.settings();
   request.threads = options.threads;
-  return requests::sweep_spec(request);
+  return request;
 }
 
 std::string impedance_csv(const std::vector<damper::SweepRun>& runs) {
@@ -66,9 +67,10 @@ std::string impedance_csv(const std::vector<damper::SweepRun>& runs) {
 }
 
 int run_impedance_command(const ImpedanceOptions& options) {
-  require_outputs_apart({{"-o", options.output}}, {{"the damper file", options.damper_file}});
-  const damper::SweepSpec spec = sweep_spec(options);
-  const damper::Damper damper = io::read_damper_file(options.damper_file);
+  const requests::SweepRequest request = sweep_request(options);
+  const damper::SweepSpec spec = requests::sweep_spec(request);
+  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}});
+  warn_unusual_options(requests::unusual_values(request));
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress("impedance", options.quiet);
   const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));

@@ -10,14 +10,15 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "input_files.hpp"
 #include "option_parsing.hpp"
 #include "solver_options.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/damper/steady_state.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/csv_writer.hpp"
-#include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 
 namespace stockbridge::cli {
@@ -80,13 +81,13 @@ std::string response_csv(const damper::Damper& damper, const damper::Excitation&
 }
 
 int run_response_command(const ResponseOptions& options) {
-  require_outputs_apart({{"-o", options.output}}, {{"the damper file", options.damper_file}});
   if (options.velocity.has_value() == options.displacement.has_value()) {  // named by the flags
     throw InvalidParameter("give either --velocity V (m/s) or --displacement X (m)");
   }
   const damper::Excitation excitation = requests::excitation(options.frequency, options.velocity, options.displacement);
   const damper::SolverOptions solver = requests::solver_options(options.solver.settings());
-  const damper::Damper damper = io::read_damper_file(options.damper_file);
+  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}});
+  warn_unusual_options(requests::unusual_excitation(options.frequency, options.velocity, options.displacement));
   const damper::DamperSteadyState state = damper::solve_steady_state(damper, excitation, solver);
   const damper::ImpedancePoint& p = state.point;
   // Written even when not converged (the last iterate, marked), so that it can be inspected.

@@ -18,6 +18,7 @@
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/identification/global_identification.hpp"
 #include "stockbridge/identification/local_identification.hpp"
+#include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
@@ -31,6 +32,26 @@ using namespace stockbridge;
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Each warning line as a Python UnusualValueWarning (a UserWarning), where the CLI
+/// prints "warning: ..." (values outside the typical ranges: unit mistakes).
+void warn(const std::vector<std::string>& lines) {
+  // Kept for the interpreter's life (a static py::object would be released after it ends).
+  static const py::handle category = py::object(py::module_::import("stockbridge").attr("UnusualValueWarning")).release();
+  for (const std::string& line : lines) {
+    if (PyErr_WarnEx(category.ptr(), line.c_str(), 2) != 0) throw py::error_already_set();
+  }
+}
+
+template <class Loaded>
+auto warned(Loaded loaded) {
+  warn(loaded.warnings);
+  if constexpr (requires { loaded.damper; }) {
+    return std::move(loaded.damper);
+  } else {
+    return std::move(loaded.cable);
+  }
+}
 
 py::array_t<double> array(const std::vector<double>& values) { return py::array_t<double>(values.size(), values.data()); }
 
@@ -322,7 +343,23 @@ PYBIND11_MODULE(_core, m) {
           },
           "[{'c': N m^2, 'h': N m}, ...] (at the clamp)")
       .def("toml", [](const cable::Cable& c) { return io::cable_table_toml(c.description()); },
-           "The keys of a [cable] table for this cable (what cable and damper files accept).");
+           "The keys of a [cable] table for this cable (what cable and damper files accept).")
+      .def(
+          "with_length",
+          [](const cable::Cable& c, double length) {
+            cable::CableDescription d = c.description();
+            d.length = length;
+            return cable::Cable(std::move(d));
+          },
+          py::arg("length"), "A copy of this cable cut to another length, m (its parameters and sections kept).")
+      .def(
+          "save",
+          [](const cable::Cable& c, const std::string& path, const std::string& comment) {
+            io::write_file_atomically(path, io::cable_file_toml(c.description(), comment));
+          },
+          py::arg("path"), py::arg("comment") = "",
+          "Write this cable as a cable file (TOML) that load_cable, the cycle command and damper files' "
+          "[arm.cable] file = ... read; `comment` goes on top as TOML comments.");
   py::class_<damper::Damper>(m, "Damper", "A damper (clamp mass and arms), validated")
       .def_property_readonly("clamp_mass", &damper::Damper::clamp_mass, "kg")
       .def_property_readonly("arms", [](const damper::Damper& d) {
@@ -331,14 +368,16 @@ PYBIND11_MODULE(_core, m) {
         return names;
       });
 
-  m.def("load_cable", [](const std::string& path) { return io::read_cable_file(path); }, py::arg("path"),
-        "Read a cable TOML file.");
-  m.def("load_damper", [](const std::string& path) { return io::read_damper_file(path); }, py::arg("path"),
-        "Read a damper TOML file.");
-  m.def("_cable_from_toml", &io::read_cable_text, py::arg("text"), py::arg("source"),
-        "A cable from TOML text (make_cable builds it): the cable file reader's keys, checks and messages.");
-  m.def("_damper_from_toml", &io::read_damper_text, py::arg("text"), py::arg("source"),
-        "A damper from TOML text (make_damper builds it): the damper file reader's keys, checks and messages.");
+  m.def("load_cable", [](const std::string& path) { return warned(io::load_cable_file(path)); }, py::arg("path"),
+        "Read a cable TOML file (an UnusualValueWarning for each value outside the typical ranges).");
+  m.def("load_damper", [](const std::string& path) { return warned(io::load_damper_file(path)); }, py::arg("path"),
+        "Read a damper TOML file (an UnusualValueWarning for each value outside the typical ranges).");
+  m.def("_cable_from_toml", [](std::string_view text, std::string_view source) { return warned(io::load_cable_text(text, source)); },
+        py::arg("text"), py::arg("source"),
+        "A cable from TOML text (make_cable builds it): the cable file reader's keys, checks, messages and warnings.");
+  m.def("_damper_from_toml", [](std::string_view text, std::string_view source) { return warned(io::load_damper_text(text, source)); },
+        py::arg("text"), py::arg("source"),
+        "A damper from TOML text (make_damper builds it): the damper file reader's keys, checks, messages and warnings.");
   m.def("impedance", &impedance, py::arg("damper"), py::arg("frequencies") = py::none(), py::arg("velocity") = py::none(),
         py::arg("displacement") = py::none(), py::arg("fmin") = 1.0, py::arg("fmax") = 100.0, py::arg("points") = 200,
         py::arg("method") = "hb", py::arg("harmonics") = py::none(), py::arg("samples") = py::none(),

@@ -10,6 +10,13 @@ built by the CMake project) and adds plots (``python3 -m stockbridge.plot``).
 
 from . import _toml
 
+
+class UnusualValueWarning(UserWarning):
+    """A value outside the typical ranges of Stockbridge dampers and their tests
+    (docs/file-formats.md): accepted, but most often a unit mistake. The CLI prints
+    the same text as a "warning:" line."""
+
+
 try:
     from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, cycle,  # noqa: F401
                         identify_global, identify_local, impedance, load_cable, load_damper, load_strand, loop,
@@ -48,12 +55,20 @@ def make_cable(length, sections=40, ei=None, jenkin=(), **keys):
 
 def make_damper(clamp_mass, arms):
     """A damper from arms given as dicts {name, mass, inertia, offset, cable} (kg,
-    kg m^2, m; cable a Cable or a dict of a cable table's keys). Checked exactly as
-    a damper file is (a misspelt or missing key, a bad value: InvalidParameter naming it)."""
+    kg m^2, m; cable a Cable or a dict of a cable table's keys), and optionally
+    length (m): the arm's cable length, cutting the Cable (identified once, on any
+    length) to it. Checked exactly as a damper file is (a misspelt or missing key, a
+    bad value: InvalidParameter naming it)."""
     text = _toml.table("clamp", {"mass": clamp_mass})
     for arm in arms:
         arm = dict(arm)
         cable = arm.pop("cable", None)
+        if "length" in arm:
+            length = arm.pop("length")
+            if not hasattr(cable, "with_length"):
+                raise InvalidParameter(f"length = {length!r}: goes with cable = a Cable (in a dict of cable keys, "
+                                       "give the cable's own 'length')")
+            cable = cable.with_length(length)
         text += "[[arm]]\n" + "".join(f"{_toml.key(k)} = {_toml.value(v)}\n" for k, v in arm.items())
         if cable is not None:
             text += _toml.table("arm.cable", cable)

@@ -26,6 +26,22 @@ void CableDescription::validate() const {
   if (lever_arm_cap) require_plausible("lever_arm_cap", *lever_arm_cap, "m");
 }
 
+std::vector<UnusualValue> CableDescription::unusual_values() const {
+  std::vector<UnusualValue> found;
+  const auto check = [&found](const TypicalRange& range) {
+    return [&found, &range](std::string_view name, double v) { check_typical(found, std::string(name), v, range); };
+  };
+  check_typical(found, "length", length, typical::cable_length);
+  ei.check_values("ei", check(typical::ei));
+  for (std::size_t j = 0; j < jenkin.size(); ++j) {
+    const std::string name = fmt::format("jenkin[{}]", j);
+    jenkin[j].c.check_values(name + ".c", check(typical::jenkin_c));
+    jenkin[j].h.check_values(name + ".h", check(typical::jenkin_h));
+  }
+  if (mirror_length) check_typical(found, "mirror_length", *mirror_length, typical::cable_length);
+  return found;
+}
+
 double CableDescription::profile_position(double s) const {
   if (!mirror_length || s <= 0.5 * length) return s;
   return length - s;

@@ -43,6 +43,23 @@ Arm::Arm(ArmDescription description)
   load_vector_ << -m, m * b;
 }
 
+std::vector<UnusualValue> DamperDescription::unusual_values() const {
+  std::vector<UnusualValue> found;
+  if (clamp_mass != 0.0) check_typical(found, "clamp.mass", clamp_mass, typical::clamp_mass);
+  for (std::size_t k = 0; k < arms.size(); ++k) {
+    const ArmDescription& arm = arms[k];
+    const std::string name = fmt::format("arm[{}]", k);
+    check_typical(found, name + ".mass", arm.mass, typical::arm_mass);
+    check_typical(found, name + ".inertia", arm.inertia, typical::arm_inertia);
+    if (!typical::arm_offset.contains(std::abs(arm.offset))) found.push_back({name + ".offset", arm.offset, typical::arm_offset});
+    for (UnusualValue& u : arm.cable.unusual_values()) {
+      u.field = name + ".cable." + u.field;
+      found.push_back(std::move(u));
+    }
+  }
+  return found;
+}
+
 Damper::Damper(DamperDescription description) : description_(std::move(description)) {
   require_plausible_or_zero("clamp.mass", description_.clamp_mass, "kg");
   if (description_.arms.empty()) throw InvalidParameter("arm", ": expected at least one arm");

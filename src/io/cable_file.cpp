@@ -73,13 +73,19 @@ cable::CableDescription read_cable_table(const TomlTable& table) {
 
 namespace {
 
-cable::Cable build_cable(const toml::table& document, const TomlSource& source) {
-  return build_from_file(document, source, [&] {
+CableFile build_cable(const toml::table& document, const TomlSource& source) {
+  cable::Cable cable = build_from_file(document, source, [&] {
     const TomlTable top(document, source, "");
     cable::CableDescription description = read_cable_table(top.table("cable"));
     top.reject_unknown_keys();
     return within_field("cable", [&] { return cable::Cable(std::move(description)); });
   });
+  std::vector<std::string> warnings;
+  for (UnusualValue& u : cable.description().unusual_values()) {
+    u.field = "cable." + u.field;
+    warnings.push_back(field_location(document, source, u.field) + u.message());
+  }
+  return CableFile{std::move(cable), std::move(warnings)};
 }
 
 std::string profile_toml(const cable::Profile& p) {
@@ -94,14 +100,18 @@ std::string profile_toml(const cable::Profile& p) {
 
 }  // namespace
 
-cable::Cable read_cable_file(const std::filesystem::path& path) {
+CableFile load_cable_file(const std::filesystem::path& path) {
   return build_cable(parse_toml_file(path), TomlSource{path.string(), true});
 }
 
-cable::Cable read_cable_text(std::string_view text, std::string_view source) {
+cable::Cable read_cable_file(const std::filesystem::path& path) { return load_cable_file(path).cable; }
+
+CableFile load_cable_text(std::string_view text, std::string_view source) {
   const TomlSource where{std::string(source), false};
   return build_cable(parse_toml_text(text, source), where);
 }
+
+cable::Cable read_cable_text(std::string_view text, std::string_view source) { return load_cable_text(text, source).cable; }
 
 std::string cable_table_toml(const cable::CableDescription& c) {
   std::string text = fmt::format("length = {}   # m\nsections = {}\nei = {}   # N m^2\njenkin = [", format_value(c.length),

@@ -2,7 +2,6 @@
 // The [cable] table, shared by cable files and the [arm.cable] tables of damper files.
 
 #include "stockbridge/cable/cable_description.hpp"
-#include "stockbridge/damper/damper.hpp"
 #include "toml_reader.hpp"
 
 namespace stockbridge::io {
@@ -10,7 +9,5 @@ namespace stockbridge::io {
 /// Reads every key of a cable table, rejecting unknown ones; the values are the
 /// model's to validate (cable::Cable, inside build_from_file).
 cable::CableDescription read_cable_table(const TomlTable& table);
-/// Reads a damper file's top level (the [clamp] table and the [[arm]] array).
-damper::DamperDescription read_damper_table(const TomlTable& top);
 
 }  // namespace stockbridge::io

@@ -1,49 +1,150 @@
 #include "stockbridge/io/damper_file.hpp"
 
+#include <algorithm>
+#include <array>
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "cable_table.hpp"
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/io/cable_file.hpp"
 
 namespace stockbridge::io {
 
 namespace {
 
-damper::ArmDescription read_arm(const TomlTable& table) {
+/// The keys an [arm.cable] table may give beside `file`: how the referenced cable
+/// is cut and integrated, never its identified parameters.
+constexpr std::array<std::string_view, 4> kCableOverrides{"length", "sections", "mirror_length", "lever_arm_cap"};
+
+/// An arm's cable read from a referenced cable file.
+struct CableReference {
+  std::filesystem::path path;
+  std::vector<std::string> warnings;  ///< the cable file's own, located there
+};
+
+/// A damper file's contents before the model validates them.
+struct DamperReading {
+  damper::DamperDescription description;
+  std::vector<std::optional<CableReference>> references;  ///< per arm
+};
+
+std::filesystem::path resolve(const std::filesystem::path& file, const std::filesystem::path& base_directory) {
+  return file.is_absolute() ? file : base_directory / file;
+}
+
+/// `[arm.cable] file = "..."`: the referenced cable file's cable (validated and
+/// located there), then the overrides of this table.
+cable::CableDescription read_referenced_cable(const TomlTable& table, const std::filesystem::path& base_directory,
+                                              CableReference& reference) {
+  const std::string file = *table.optional_string("file");
+  reference.path = resolve(file, base_directory);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(reference.path, ec)) {
+    table.fail("file", fmt::format("\"{}\": expected an existing cable file (looked for {}, relative paths start "
+                                   "at the damper file's folder)",
+                                   printable(file), printable(reference.path.string())));
+  }
+  CableFile referenced = load_cable_file(reference.path);
+  reference.warnings = std::move(referenced.warnings);
+  cable::CableDescription description = referenced.cable.description();
+  for (const std::string_view parameter : {"ei", "jenkin"}) {
+    if (table.contains(parameter)) {
+      table.fail(parameter, fmt::format("given beside file = \"{}\": the cable's parameters come from that file; "
+                                        "beside it only length, sections, mirror_length and lever_arm_cap may be given",
+                                        printable(file)));
+    }
+  }
+  if (const auto length = table.optional_number("length")) description.length = *length;
+  if (const auto sections = table.optional_integer("sections", cable::min_sections, cable::max_sections)) {
+    description.sections = static_cast<int>(*sections);
+  }
+  if (const auto mirror = table.optional_number("mirror_length")) description.mirror_length = *mirror;
+  if (const auto cap = table.optional_number("lever_arm_cap")) description.lever_arm_cap = *cap;
+  table.reject_unknown_keys();
+  return description;
+}
+
+damper::ArmDescription read_arm(const TomlTable& table, const std::filesystem::path& base_directory,
+                                std::optional<CableReference>& reference) {
   damper::ArmDescription arm;
   arm.name = table.optional_string("name").value_or("");
   arm.mass = table.number("mass");
   arm.inertia = table.number("inertia");
   arm.offset = table.number("offset");
-  arm.cable = read_cable_table(table.table("cable"));
+  const TomlTable cable = table.table("cable");
+  if (cable.contains("file")) {
+    reference.emplace();
+    arm.cable = read_referenced_cable(cable, base_directory, *reference);
+  } else {
+    arm.cable = read_cable_table(cable);
+  }
   table.reject_unknown_keys();
   return arm;
 }
 
-}  // namespace
-
-damper::DamperDescription read_damper_table(const TomlTable& top) {
-  damper::DamperDescription damper;
+DamperReading read_damper_table(const TomlTable& top, const std::filesystem::path& base_directory) {
+  DamperReading reading;
   const TomlTable clamp = top.table("clamp");
-  damper.clamp_mass = clamp.number("mass");
+  reading.description.clamp_mass = clamp.number("mass");
   clamp.reject_unknown_keys();
   const std::vector<TomlTable> arms = top.table_array("arm", true);
   if (arms.empty()) top.fail("arm", "an empty array: expected at least one [[arm]]");
-  for (const TomlTable& arm : arms) damper.arms.push_back(read_arm(arm));
+  reading.references.resize(arms.size());
+  for (std::size_t k = 0; k < arms.size(); ++k) {
+    reading.description.arms.push_back(read_arm(arms[k], base_directory, reading.references[k]));
+  }
   top.reject_unknown_keys();
-  return damper;
+  return reading;
 }
 
-damper::Damper read_damper_file(const std::filesystem::path& path) {
-  const toml::table document = parse_toml_file(path);
-  const TomlSource source{path.string(), true};
-  return build_from_file(document, source, [&] { return damper::Damper(read_damper_table(TomlTable(document, source, ""))); });
+/// The warnings of a damper: those of each referenced cable file (once per file),
+/// then each unusual value the damper file itself holds, at its line. A referenced
+/// cable's values that this file does not override are the cable file's to report.
+std::vector<std::string> damper_warnings(const DamperReading& reading, const toml::table& document,
+                                         const TomlSource& source) {
+  std::vector<std::string> warnings;
+  const auto add = [&warnings](std::string line) {
+    if (std::find(warnings.begin(), warnings.end(), line) == warnings.end()) warnings.push_back(std::move(line));
+  };
+  for (const auto& reference : reading.references) {
+    if (reference) std::for_each(reference->warnings.begin(), reference->warnings.end(), add);
+  }
+  for (const UnusualValue& u : reading.description.unusual_values()) {
+    if (!document.at_path(u.field)) continue;  // in a referenced cable file
+    add(field_location(document, source, u.field) + u.message());
+  }
+  return warnings;
+}
+
+DamperFile build_damper(const toml::table& document, const TomlSource& source, const std::filesystem::path& base_directory) {
+  DamperReading reading = build_from_file(document, source, [&] {
+    return read_damper_table(TomlTable(document, source, ""), base_directory);
+  });
+  std::vector<std::string> warnings = damper_warnings(reading, document, source);
+  std::vector<std::filesystem::path> cable_files;
+  for (const auto& reference : reading.references) {
+    if (reference) cable_files.push_back(reference->path);
+  }
+  damper::Damper damper = build_from_file(document, source, [&] { return damper::Damper(std::move(reading.description)); });
+  return DamperFile{std::move(damper), std::move(cable_files), std::move(warnings)};
+}
+
+}  // namespace
+
+DamperFile load_damper_file(const std::filesystem::path& path) {
+  return build_damper(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path());
+}
+
+damper::Damper read_damper_file(const std::filesystem::path& path) { return load_damper_file(path).damper; }
+
+DamperFile load_damper_text(std::string_view text, std::string_view source) {
+  return build_damper(parse_toml_text(text, source), TomlSource{std::string(source), false}, std::filesystem::path());
 }
 
 damper::Damper read_damper_text(std::string_view text, std::string_view source) {
-  const toml::table document = parse_toml_text(text, source);
-  const TomlSource where{std::string(source), false};
-  return build_from_file(document, where, [&] { return damper::Damper(read_damper_table(TomlTable(document, where, ""))); });
+  return load_damper_text(text, source).damper;
 }
 
 }  // namespace stockbridge::io

@@ -74,6 +74,13 @@ cases = {
     "damper_missing_cable": (IMPEDANCE_CMD, "damper.toml", "[clamp]\nmass = 0.7\n[[arm]]\nmass = 1\ninertia = 0.001\noffset = 0.01\n", "'cable'"),
     "damper_bad_cable": (IMPEDANCE_CMD, "damper.toml", DAMPER.replace("ei = 2.8", "ei = -2.8"), "arm[0].cable.ei = -2.8"),
     "damper_arm_not_array": (IMPEDANCE_CMD, "damper.toml", "[clamp]\nmass = 0.7\n[arm]\nmass = 1\n", "arm"),
+    # A reused cable file (issue 13): it must exist; the damper file itself is not one.
+    "damper_cable_file_missing": (IMPEDANCE_CMD, "damper.toml", DAMPER.split("[arm.cable]")[0] + '[arm.cable]\nfile = "nope.toml"\n',
+                                  'arm[0].cable.file: "nope.toml": expected an existing cable file'),
+    "damper_cable_file_not_a_cable": (IMPEDANCE_CMD, "damper.toml",
+                                      DAMPER.split("[arm.cable]")[0] + '[arm.cable]\nfile = "damper.toml"\n', "'cable'"),
+    "damper_cable_file_not_a_string": (IMPEDANCE_CMD, "damper.toml", DAMPER.split("[arm.cable]")[0] + "[arm.cable]\nfile = 3\n",
+                                       "arm[0].cable.file"),
     # strand files
     # Fuzzing findings: a name with a line break (it goes into messages and files), and
     # wires wider than their pitch radius (ei_min came out above ei_max).

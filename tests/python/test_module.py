@@ -179,3 +179,45 @@ def test_loop_and_the_strand_loader_equal_the_program(tmp_path):
     assert sb.load_strand(strand_file) == pytest.approx(json.loads(out), rel=1e-15)
     with pytest.raises(sb.InvalidParameter, match="law = 'smooth'"):
         sb.loop(2.8, [(20.0, 0.7)], 0.05, law="smooth")
+
+
+ARM = {"mass": 0.856, "inertia": 0.001814, "offset": 0.0325}
+
+
+def test_one_identified_cable_cut_to_each_arms_length_through_python_and_files(tmp_path):
+    identified = sb.make_cable(0.3, ei=2.8, jenkin=[(20.0, 0.7)])
+    cut = identified.with_length(0.1875)
+    assert (cut.length, identified.length) == (0.1875, 0.3)  # a copy; the identified cable keeps its length
+    from_length = sb.make_damper(0.7, [dict(ARM, name="left", cable=identified, length=0.1875),
+                                       dict(ARM, name="right", cable=cut)])
+    identified.save(str(tmp_path / "identified.toml"), "identified on 0.3 m")
+    assert sb.load_cable(str(tmp_path / "identified.toml")).toml() == identified.toml()
+    arm = '[[arm]]\nname = "{}"\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n' \
+          '[arm.cable]\nfile = "identified.toml"\nlength = 0.1875\n'
+    (tmp_path / "damper.toml").write_text("[clamp]\nmass = 0.7\n" + arm.format("left") + arm.format("right"))
+    from_file = sb.load_damper(str(tmp_path / "damper.toml"))
+    frequencies = [8.0, 20.0, 40.0]
+    expected = sb.impedance(sb.load_damper(EXAMPLE), frequencies, velocity=0.2)["re_z_n_s_m"]
+    for damper in (from_length, from_file):
+        assert np.array_equal(sb.impedance(damper, frequencies, velocity=0.2)["re_z_n_s_m"], expected)
+    with pytest.raises(sb.InvalidParameter, match="length"):
+        sb.make_damper(0.7, [dict(ARM, cable={"length": 0.3, "ei": 2.8}, length=0.2)])
+    with pytest.raises(sb.InvalidParameter, match="length = -1"):
+        identified.with_length(-1.0)
+
+
+def test_values_outside_the_typical_ranges_warn_with_the_programs_words(tmp_path):
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the shipped files say nothing
+        sb.load_damper(EXAMPLE)
+        sb.load_cable(CABLE)
+    with pytest.warns(sb.UnusualValueWarning, match=r"arm\[0\]\.mass = 856: outside the typical 0.05 to 20 kg"):
+        sb.make_damper(0.7, [dict(ARM, mass=856, cable={"length": 0.1875, "sections": 40, "ei": 2.8})])
+    text = open(EXAMPLE).read().replace("length = 0.1875", "length = 187.5", 1)
+    (tmp_path / "mm.toml").write_text(text)
+    with pytest.warns(sb.UnusualValueWarning) as record:
+        sb.load_damper(str(tmp_path / "mm.toml"))
+    assert [str(w.message) for w in record] == [
+        f"{tmp_path / 'mm.toml'}:16: arm[0].cable.length = 187.5: outside the typical 0.03 to 1 m of the damper cable "
+        "length (a unit mistake?)"]

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stockbridge/cable/profile.hpp"
+#include "stockbridge/core/typical_ranges.hpp"
 
 namespace stockbridge::cable {
 
@@ -47,6 +48,9 @@ struct CableDescription {
   /// The lever-arm cap in force (m).
   double lever_arm_limit() const { return lever_arm_cap.value_or(length); }
   bool uses_modified_masing() const;
+  /// The values outside the typical ranges of damper cables (core/typical_ranges.hpp),
+  /// named as validate() names them ("ei", "jenkin[0].h.value[2]").
+  std::vector<UnusualValue> unusual_values() const;
 
   bool operator==(const CableDescription&) const = default;
 

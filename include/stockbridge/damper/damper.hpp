@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "stockbridge/cable/cable.hpp"
+#include "stockbridge/core/typical_ranges.hpp"
 
 namespace stockbridge::damper {
 
@@ -35,6 +36,11 @@ struct ArmDescription {
 struct DamperDescription {
   double clamp_mass = 0.0;  ///< m_c, kg, >= 0
   std::vector<ArmDescription> arms;
+
+  /// The values outside the typical ranges of Stockbridge dampers
+  /// (core/typical_ranges.hpp), named as a damper file spells them ("arm[1].mass",
+  /// "arm[0].cable.ei"); a clamp mass of 0 (left out on purpose) is not one.
+  std::vector<UnusualValue> unusual_values() const;
 };
 
 /// One arm: its constant model (mass matrix, load vector, discretised cable),

@@ -12,16 +12,27 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "stockbridge/cable/cable.hpp"
 
 namespace stockbridge::io {
 
+/// A cable file as read: the cable, and a warning line for each value outside the
+/// typical ranges ("<file>:<line>: cable.ei = 4.9e+06: outside the typical ...").
+struct CableFile {
+  cable::Cable cable;
+  std::vector<std::string> warnings;
+};
+
 /// Reads a cable file and builds the (validated, discretised) cable. Throws
 /// InputError with one line naming the file, line, key, value and what was expected.
+CableFile load_cable_file(const std::filesystem::path& path);
+/// load_cable_file's cable alone.
 cable::Cable read_cable_file(const std::filesystem::path& path);
 /// The same from TOML text a front end built from its own values (Python's
 /// make_cable): the same keys, checks and messages, naming `source`, no lines.
+CableFile load_cable_text(std::string_view text, std::string_view source);
 cable::Cable read_cable_text(std::string_view text, std::string_view source);
 
 /// The keys of a [cable] table for `description` (what cable and damper files accept).

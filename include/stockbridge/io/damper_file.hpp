@@ -11,19 +11,41 @@
 //   [arm.cable]           # the keys of a cable file's [cable] table
 //   length = 0.1875
 //   ...
+//
+// or, for a cable identified once and cut to each arm's length, a reference to a
+// cable file (relative to the damper file) with optional overrides:
+//
+//   [arm.cable]
+//   file = "cable.toml"
+//   length = 0.15         # also: sections, mirror_length, lever_arm_cap
 
 #include <filesystem>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "stockbridge/damper/damper.hpp"
 
 namespace stockbridge::io {
 
+/// A damper file as read: the damper, the cable files its arms reference (inputs a
+/// command must not overwrite), and a warning line for each value outside the
+/// typical ranges, located in the file that holds it.
+struct DamperFile {
+  damper::Damper damper;
+  std::vector<std::filesystem::path> cable_files;
+  std::vector<std::string> warnings;
+};
+
 /// Reads a damper file and builds the (validated) damper; InputError with file,
 /// line, key, value and expectation.
+DamperFile load_damper_file(const std::filesystem::path& path);
+/// load_damper_file's damper alone.
 damper::Damper read_damper_file(const std::filesystem::path& path);
 /// The same from TOML text a front end built from its own values (Python's
-/// make_damper): the same keys, checks and messages, naming `source`, no lines.
+/// make_damper): the same keys, checks and messages, naming `source`, no lines;
+/// referenced cable files are relative to the working directory.
+DamperFile load_damper_text(std::string_view text, std::string_view source);
 damper::Damper read_damper_text(std::string_view text, std::string_view source);
 
 }  // namespace stockbridge::io

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "support/temp_file.hpp"
 
@@ -60,6 +61,100 @@ TEST(DamperFile, TextFromAFrontEndIsCheckedAlikeAndNamedWithoutLines) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "make_damper: arm[0].cable.jenkin[0].h = -0.7: expected a finite value > 0 (N m)");
   }
+}
+
+std::filesystem::path reference_directory() {
+  return std::filesystem::temp_directory_path() / ("stockbridge-cable-reference-" + std::to_string(::getpid()));
+}
+
+/// One [[arm]] whose [arm.cable] holds `cable_keys`.
+std::string arm_keys(const std::string& cable_keys) {
+  return "[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\n" + cable_keys;
+}
+
+std::string heavy_arm_keys(const std::string& cable_keys) {
+  return "[[arm]]\nmass = 863\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\n" + cable_keys;
+}
+
+TEST(DamperFile, AnArmTakesAReferencedCableFileWithItsOverrides) {
+  const auto dir = reference_directory();
+  testing::write_temp_file(dir / "cables", "profiled.toml",
+                           "[cable]\nlength = 0.3\nsections = 12\nei = { s = [0, 0.3], value = [3.0, 2.6] }\n"
+                           "jenkin = [ { c = 20.0, h = 0.7, k0 = 0.5 } ]\n");
+  const auto path = testing::write_temp_file(
+      dir, "damper.toml",
+      "[clamp]\nmass = 0.7\n" + arm_keys("file = \"cables/profiled.toml\"\n") +
+          arm_keys("file = \"cables/profiled.toml\"\nlength = 0.15\nsections = 30\nmirror_length = 0.3\nlever_arm_cap = 0.1\n"));
+  const DamperFile file = load_damper_file(path);
+  const cable::CableDescription whole = read_cable_file(dir / "cables" / "profiled.toml").description();
+  EXPECT_EQ(file.damper.arms()[0].cable().description(), whole);
+  cable::CableDescription cut = whole;
+  cut.length = 0.15;
+  cut.sections = 30;
+  cut.mirror_length = 0.3;
+  cut.lever_arm_cap = 0.1;
+  EXPECT_EQ(file.damper.arms()[1].cable().description(), cut);
+  ASSERT_EQ(file.cable_files.size(), 2u);
+  EXPECT_EQ(file.cable_files[0], dir / "cables/profiled.toml");
+  EXPECT_TRUE(file.warnings.empty());
+}
+
+TEST(DamperFile, AReferencedCableFileIsCheckedWhereItsValuesAre) {
+  const auto dir = reference_directory();
+  testing::write_temp_file(dir, "cable.toml", "[cable]\nlength = 0.3\nsections = 8\nei = -2.8\n");
+  const auto bad = testing::write_temp_file(dir, "bad.toml", "[clamp]\nmass = 0.7\n" + arm_keys("file = \"cable.toml\"\n"));
+  EXPECT_THROW(
+      {
+        try {
+          load_damper_file(bad);
+        } catch (const InputError& e) {
+          EXPECT_EQ(std::string(e.what()), (dir / "cable.toml").string() + ":4: cable.ei = -2.8: expected a finite value > 0 (N m^2)");
+          throw;
+        }
+      },
+      InputError);
+  const auto missing = testing::write_temp_file(dir, "missing.toml", "[clamp]\nmass = 0.7\n" + arm_keys("file = \"nope.toml\"\n"));
+  try {
+    load_damper_file(missing);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing.toml:8: arm[0].cable.file: \"nope.toml\": expected an existing cable file"),
+              std::string::npos)
+        << e.what();
+  }
+  testing::write_temp_file(dir, "good.toml", "[cable]\nlength = 0.3\nsections = 8\nei = 2.8\n");
+  for (const std::string key : {"ei = 3.0", "jenkin = []", "colour = 1"}) {
+    const auto d = testing::write_temp_file(dir, "d.toml", "[clamp]\nmass = 0.7\n" + arm_keys("file = \"good.toml\"\n" + key + "\n"));
+    EXPECT_THROW(load_damper_file(d), InputError) << key;
+  }
+  // The overridden length is the damper file's own value, checked at its line.
+  const auto long_arm = testing::write_temp_file(
+      dir, "long.toml", "[clamp]\nmass = 0.7\n" + arm_keys("file = \"good.toml\"\nlength = -1\n"));
+  try {
+    load_damper_file(long_arm);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("long.toml:9: arm[0].cable.length = -1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(DamperFile, ValuesOutsideTheTypicalRangesWarnOnceAtTheirLines) {
+  const auto dir = reference_directory();
+  testing::write_temp_file(dir, "stiff.toml", "[cable]\nlength = 0.3\nsections = 8\nei = 4.9e6\n");
+  const auto path = testing::write_temp_file(
+      dir, "warned.toml",
+      "[clamp]\nmass = 0\n" + arm_keys("file = \"stiff.toml\"\nlength = 0.2\n") +
+          heavy_arm_keys("file = \"stiff.toml\"\nlength = 157\n"));
+  const DamperFile file = load_damper_file(path);
+  ASSERT_EQ(file.warnings.size(), 3u);  // the cable file's ei once, the mass and the length; not the clamp's 0
+  EXPECT_EQ(file.warnings[0], (dir / "stiff.toml").string() +
+                                  ":4: cable.ei = 4900000: outside the typical 0.1 to 1000 N m^2 of the cable bending "
+                                  "stiffness ei (a unit mistake?)");
+  EXPECT_EQ(file.warnings[1], path.string() + ":11: arm[1].mass = 863: outside the typical 0.05 to 20 kg of the arm mass "
+                                              "(a unit mistake?)");
+  EXPECT_NE(file.warnings[2].find(":16: arm[1].cable.length = 157: outside the typical 0.03 to 1 m"), std::string::npos)
+      << file.warnings[2];
+  EXPECT_TRUE(load_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml").warnings.empty());
 }
 
 TEST(InvalidParameter, CarriesTheFieldPathThroughNestedDescriptions) {

@@ -1,0 +1,28 @@
+#pragma once
+// Description files as the commands read them: the library's reader, its warnings
+// (values outside the typical ranges) printed on stderr one line each, and the
+// command's outputs checked apart from every file read, referenced ones included.
+
+#include <string>
+#include <vector>
+
+#include "option_parsing.hpp"
+#include "stockbridge/cable/cable.hpp"
+#include "stockbridge/core/typical_ranges.hpp"
+#include "stockbridge/damper/damper.hpp"
+
+namespace stockbridge::cli {
+
+/// The damper file at `path`; throws InvalidParameter if an output would overwrite
+/// it or a cable file it references.
+damper::Damper read_damper_input(const std::string& path, const std::vector<CommandFile>& outputs);
+/// The cable file at `path`; throws InvalidParameter if an output would overwrite it.
+cable::Cable read_cable_input(const std::string& path, const std::vector<CommandFile>& outputs);
+
+/// "warning: <line>" on stderr for each line.
+void print_warnings(const std::vector<std::string>& lines);
+/// A warning for each option value outside its typical range, the field named as
+/// the option ("--velocity = 100: outside the typical ...").
+void warn_unusual_options(const std::vector<UnusualValue>& values);
+
+}  // namespace stockbridge::cli

@@ -1,0 +1,150 @@
+// Issue 13: values outside the typical ranges warn (one line each, naming the value
+// and the range, exit 0), and a damper file's arms reuse a cable file cut to length.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+
+namespace stockbridge::testing {
+namespace {
+
+const std::string kSource = STOCKBRIDGE_SOURCE_DIR;
+const std::string kExample = kSource + "/examples/sauter2003.toml";
+const std::string kMeasured = kSource + "/examples/cycle_measured_a.csv";
+
+int count(const std::string& text, const std::string& word) {
+  int n = 0;
+  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
+  return n;
+}
+
+void write(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+const std::string kCable = "[cable]\nlength = 0.3\nsections = 40\nei = 2.8\njenkin = [ { c = 20.0, h = 0.7 } ]\n";
+
+std::string arm_with_cable_file(const std::string& name, const std::string& cable_keys) {
+  return "[[arm]]\nname = \"" + name + "\"\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\n" + cable_keys;
+}
+
+TEST(UnusualValuesCli, EachUnitMistakeInADamperFileWarnsOnItsLineAndTheRunGoesOn) {
+  const auto dir = scratch_directory("unusual-damper");
+  std::string text = read_text(kExample);
+  text.replace(text.find("mass = 0.856"), 12, "mass = 863");
+  text.replace(text.find("inertia = 0.001814"), 18, "inertia = 1815");
+  text.replace(text.find("ei = 2.8"), 8, "ei = 4.9e6");
+  write(dir / "d.toml", text);
+  const CliResult r = run_cli("impedance d.toml --velocity 0.1 --frequencies 10 -o z.csv --quiet", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(count(r.err, "warning: "), 3) << r.err;
+  EXPECT_NE(r.err.find("warning: d.toml:12: arm[0].mass = 863: outside the typical 0.05 to 20 kg"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("d.toml:13: arm[0].inertia = 1815: outside the typical 1e-06 to 0.5 kg m^2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("arm[0].cable.ei = 4900000: outside the typical 0.1 to 1000 N m^2"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "z.csv"));
+}
+
+TEST(UnusualValuesCli, TheShippedExampleAndItsSweepSayNothing) {
+  const auto dir = scratch_directory("usual");
+  const CliResult r = run_cli("impedance '" + kExample + "' --velocity 0.2,0.05 --frequencies 5,50 -o z.csv --quiet", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
+TEST(UnusualValuesCli, OptionsOutsideTheTypicalRangesWarnOncePerValue) {
+  const auto dir = scratch_directory("unusual-options");
+  const CliResult sweep = run_cli("impedance '" + kExample + "' --velocity 100,0.1 --frequencies 2000 -o z.csv --quiet", dir);
+  EXPECT_EQ(count(sweep.err, "warning: "), 2) << sweep.err;
+  EXPECT_NE(sweep.err.find("warning: --velocity = 100: outside the typical 0.001 to 2 m/s"), std::string::npos) << sweep.err;
+  EXPECT_NE(sweep.err.find("warning: --frequencies = 2000: outside the typical 0.5 to 500 Hz"), std::string::npos) << sweep.err;
+
+  const CliResult response = run_cli("response '" + kExample + "' --frequency 20 --displacement 2 -o t.csv", dir);
+  EXPECT_NE(response.err.find("warning: --displacement = 2: outside the typical 1e-06 to 0.05 m"), std::string::npos)
+      << response.err;
+
+  write(dir / "c.toml", kCable);
+  const CliResult cycle = run_cli("cycle c.toml --experiment a --amplitude 30 --cycles 1 --points 8 -o cycle.csv", dir);
+  EXPECT_NE(cycle.err.find("warning: --amplitude = 30: more than 0.3 of the cable's length 0.3 m"), std::string::npos)
+      << cycle.err;
+  const CliResult fine = run_cli("cycle c.toml --experiment a --amplitude 0.03 --cycles 1 --points 8 -o cycle.csv", dir);
+  EXPECT_EQ(fine.err.find("warning"), std::string::npos) << fine.err;
+}
+
+TEST(UnusualValuesCli, GlobalIdentificationWarnsOfTheLengthDeflectionsInMmAndALargeFourStepError) {
+  const auto dir = scratch_directory("unusual-identify");
+  const CliResult four_step =
+      run_cli("identify global --experiment a --length 0.3 --input '" + kMeasured + "' --method four-step", dir);
+  EXPECT_EQ(four_step.exit_code, 0) << four_step.err;
+  EXPECT_EQ(count(four_step.err, "warning: "), 1) << four_step.err;
+  EXPECT_NE(four_step.err.find("relative L1 error 0.457 is large"), std::string::npos) << four_step.err;
+  EXPECT_NE(four_step.err.find("--method fit"), std::string::npos) << four_step.err;
+
+  const CliResult length =
+      run_cli("identify global --experiment a --length 300 --input '" + kMeasured + "' --method four-step", dir);
+  EXPECT_NE(length.err.find("warning: --length = 300: outside the typical 0.03 to 1 m"), std::string::npos) << length.err;
+
+  // The measured cycle with its deflections written in mm under the x_m header.
+  std::istringstream in(read_text(kMeasured));
+  std::string line, mm;
+  std::getline(in, line);
+  mm = line + "\n";
+  while (std::getline(in, line)) {
+    const std::size_t a = line.find(','), b = line.find(',', a + 1);
+    mm += line.substr(0, a + 1) + std::to_string(1000.0 * std::stod(line.substr(a + 1, b - a - 1))) + line.substr(b) + "\n";
+  }
+  write(dir / "mm.csv", mm);
+  const CliResult in_mm = run_cli("identify global --experiment a --length 0.3 --input mm.csv --method four-step", dir);
+  EXPECT_NE(in_mm.err.find("warning: mm.csv: x_m reaches"), std::string::npos) << in_mm.err;
+  EXPECT_NE(in_mm.err.find("deflections in mm"), std::string::npos) << in_mm.err;
+}
+
+TEST(CableReferenceCli, ArmsCutOneCableFileToTheirLengthsAsIfWrittenOut) {
+  const auto dir = scratch_directory("cable-reference");
+  std::filesystem::create_directories(dir / "cables");
+  write(dir / "cables" / "identified.toml", kCable);
+  const std::string reference = "file = \"cables/identified.toml\"\nlength = 0.1875\n";
+  write(dir / "by_reference.toml", "[clamp]\nmass = 0.7\n" + arm_with_cable_file("left", reference) +
+                                       arm_with_cable_file("right", reference));
+  const CliResult copied = run_cli("impedance '" + kExample + "' --velocity 0.2 --frequencies 8,20,40 -o copied.csv --quiet", dir);
+  ASSERT_EQ(copied.exit_code, 0) << copied.err;
+  // From another working directory: the reference is relative to the damper file.
+  std::filesystem::create_directories(dir / "elsewhere");
+  const CliResult referenced = run_cli("impedance ../by_reference.toml --velocity 0.2 --frequencies 8,20,40 -o ../referenced.csv --quiet",
+                                       dir / "elsewhere");
+  ASSERT_EQ(referenced.exit_code, 0) << referenced.err;
+  EXPECT_EQ(read_text(dir / "referenced.csv"), read_text(dir / "copied.csv"));
+}
+
+TEST(CableReferenceCli, AReferencedCableIsAnInputAndItsParametersAreNotOverridden) {
+  const auto dir = scratch_directory("cable-reference-bad");
+  write(dir / "cable.toml", kCable);
+  write(dir / "d.toml", "[clamp]\nmass = 0.7\n" + arm_with_cable_file("a", "file = \"cable.toml\"\nlength = 0.15\n"));
+  const CliResult overwrite = run_cli("impedance d.toml --velocity 0.1 --frequencies 20 -o cable.toml", dir);
+  EXPECT_EQ(overwrite.exit_code, 2);
+  EXPECT_NE(overwrite.err.find("-o cable.toml: is a cable file the damper file references"), std::string::npos) << overwrite.err;
+  EXPECT_EQ(read_text(dir / "cable.toml"), kCable);
+
+  write(dir / "ei.toml", "[clamp]\nmass = 0.7\n" + arm_with_cable_file("a", "file = \"cable.toml\"\nei = 3.0\n"));
+  const CliResult ei = run_cli("impedance ei.toml --velocity 0.1 --frequencies 20 -o z.csv", dir);
+  EXPECT_EQ(ei.exit_code, 2);
+  EXPECT_EQ(ei.stderr_lines(), 1) << ei.err;
+  EXPECT_NE(ei.err.find("ei.toml:10: arm[0].cable.ei: given beside file = \"cable.toml\""), std::string::npos) << ei.err;
+
+  write(dir / "bad.toml", kCable + "colour = 1\n");
+  write(dir / "d2.toml", "[clamp]\nmass = 0.7\n" + arm_with_cable_file("a", "file = \"bad.toml\"\n"));
+  const CliResult bad = run_cli("impedance d2.toml --velocity 0.1 --frequencies 20 -o z.csv", dir);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("bad.toml:6: unknown key 'cable.colour'"), std::string::npos) << bad.err;  // located in the cable file
+  EXPECT_FALSE(std::filesystem::exists(dir / "z.csv"));
+
+  write(dir / "mm.toml", "[clamp]\nmass = 0.7\n" + arm_with_cable_file("a", "file = \"cable.toml\"\nlength = 150\n"));
+  const CliResult mm = run_cli("impedance mm.toml --velocity 0.1 --frequencies 20 -o z.csv --quiet", dir);
+  EXPECT_NE(mm.err.find("warning: mm.toml:10: arm[0].cable.length = 150: outside the typical 0.03 to 1 m"), std::string::npos)
+      << mm.err;
+}
+
+}  // namespace
+}  // namespace stockbridge::testing

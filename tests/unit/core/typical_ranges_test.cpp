@@ -1,0 +1,93 @@
+// The typical ranges behind the unit-mistake warnings: the code's table is the one
+// docs/file-formats.md shows, and a value warns exactly when it lies outside.
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/core/typical_ranges.hpp"
+#include "stockbridge/damper/damper.hpp"
+
+namespace stockbridge {
+namespace {
+
+std::vector<std::string> cells(std::string row) {
+  std::string unescaped;
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    if (row[i] == '\\' && i + 1 < row.size() && row[i + 1] == '|') {
+      unescaped += '\x01';  // an escaped pipe inside a cell
+      ++i;
+    } else {
+      unescaped += row[i];
+    }
+  }
+  std::vector<std::string> out;
+  std::stringstream in(unescaped);
+  for (std::string cell; std::getline(in, cell, '|');) {
+    const auto first = cell.find_first_not_of(' '), last = cell.find_last_not_of(' ');
+    cell = first == std::string::npos ? "" : cell.substr(first, last - first + 1);
+    for (char& ch : cell) ch = ch == '\x01' ? '|' : ch;
+    out.push_back(cell);
+  }
+  return out;
+}
+
+TEST(TypicalRanges, TheDocsTableIsTheCodes) {
+  std::ifstream docs(std::string(STOCKBRIDGE_SOURCE_DIR) + "/docs/file-formats.md");
+  std::vector<std::vector<std::string>> rows;
+  bool in_table = false;
+  for (std::string line; std::getline(docs, line);) {
+    if (line.rfind("| quantity | typical | unit |", 0) == 0) {
+      in_table = true;
+    } else if (in_table && line.rfind("|", 0) == 0) {
+      if (line.rfind("|---", 0) != 0) rows.push_back(cells(line));
+    } else {
+      in_table = false;
+    }
+  }
+  const std::vector<TypicalRange>& ranges = typical::all();
+  ASSERT_EQ(rows.size(), ranges.size());
+  for (std::size_t i = 0; i < ranges.size(); ++i) {
+    SCOPED_TRACE(ranges[i].quantity);
+    ASSERT_GE(rows[i].size(), 4u);
+    EXPECT_EQ(rows[i][1], ranges[i].quantity);
+    EXPECT_EQ(rows[i][2], format_value(ranges[i].min) + " to " + format_value(ranges[i].max));
+    EXPECT_EQ(rows[i][3], ranges[i].unit);
+    EXPECT_LT(ranges[i].min, ranges[i].max);
+  }
+}
+
+TEST(TypicalRanges, AValueWarnsExactlyOutsideItsRange) {
+  EXPECT_FALSE(unusual("m", 0.05, typical::arm_mass));
+  EXPECT_FALSE(unusual("m", 20.0, typical::arm_mass));
+  EXPECT_TRUE(unusual("m", 0.0499, typical::arm_mass));
+  EXPECT_TRUE(unusual("m", 20.01, typical::arm_mass));
+  EXPECT_EQ(unusual("arm[0].mass", 863, typical::arm_mass)->message(),
+            "arm[0].mass = 863: outside the typical 0.05 to 20 kg of the arm mass (a unit mistake?)");
+}
+
+TEST(TypicalRanges, TheDissertationsDamperIsTypicalAndEachUnitMistakeIsNamed) {
+  damper::ArmDescription arm;
+  arm.mass = 0.856;
+  arm.inertia = 0.001814;
+  arm.offset = 0.0325;
+  arm.cable = cable::CableDescription::uniform(0.1875, 40, 2.8, {{20.0, 0.7}});
+  damper::DamperDescription d{0.7, {arm, arm}};
+  EXPECT_TRUE(d.unusual_values().empty());
+  d.arms[1].offset = -32.5;      // mm
+  d.arms[1].cable.length = 187.5;  // mm
+  d.arms[1].cable.jenkin[0].h = cable::Profile::constant(700);  // N mm
+  const std::vector<UnusualValue> found = d.unusual_values();
+  ASSERT_EQ(found.size(), 3u);
+  EXPECT_EQ(found[0].field, "arm[1].offset");
+  EXPECT_EQ(found[0].value, -32.5);
+  EXPECT_EQ(found[1].field, "arm[1].cable.length");
+  EXPECT_EQ(found[2].field, "arm[1].cable.jenkin[0].h");
+}
+
+}  // namespace
+}  // namespace stockbridge
