@@ -65,5 +65,26 @@ TEST(SweepRobustness, ArclengthRescuesAPointNaturalContinuationMisses) {
   EXPECT_EQ(converged_points(testing::damper_of({arm, arm}), frequencies, 0.1), static_cast<int>(frequencies.size()));
 }
 
+// The dissertation's damper asked at one frequency, 20 Hz at 0.1 m/s (a new user's
+// first command): from a cold start, just below the stick resonance, Newton's line
+// search failed at iteration 22. Now a first point that fails cold is approached
+// from a decade below along the branch, and agrees with a sweep that reaches it.
+TEST(SweepRobustness, ALonePointNearAResonanceIsReachedAsASweepReachesIt) {
+  const Damper damper = testing::damper_of({testing::sauter_arm(), testing::sauter_arm()});
+  for (const double f : {15.0, 20.0, 21.0, 22.0, 60.0, 68.0}) {
+    SCOPED_TRACE(f);
+    SweepSpec alone;
+    alone.frequencies = {f};
+    alone.amplitudes = {0.1};
+    const ImpedancePoint lone = run_sweep(damper, alone).front().points.front();
+    ASSERT_TRUE(lone.converged()) << lone.failure;
+    SweepSpec sweep = alone;
+    sweep.frequencies = log_spaced(f / 4.0, f, 40);
+    const ImpedancePoint swept = run_sweep(damper, sweep).front().points.back();
+    ASSERT_TRUE(swept.converged()) << swept.failure;
+    EXPECT_NEAR(std::abs(lone.impedance - swept.impedance), 0.0, 1e-6 * std::abs(swept.impedance));
+  }
+}
+
 }  // namespace
 }  // namespace stockbridge::damper
