@@ -58,8 +58,8 @@ requests::SweepRequest sweep_request(const ImpedanceOptions& options) {
   return request;
 }
 
-std::string impedance_csv(const std::vector<damper::SweepRun>& runs) {
-  io::CsvWriter csv(requests::impedance_columns());
+std::string impedance_csv(const damper::Damper& damper, const std::vector<damper::SweepRun>& runs) {
+  io::CsvWriter csv(requests::impedance_columns(damper));
   for (const damper::SweepRun& run : runs) {
     for (const damper::ImpedancePoint& p : run.points) csv.add_row(requests::impedance_row(p));
   }
@@ -75,7 +75,7 @@ int run_impedance_command(const ImpedanceOptions& options) {
   ProgressReport progress("impedance", options.quiet);
   const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  io::write_file_atomically(options.output, impedance_csv(runs));
+  io::write_file_atomically(options.output, impedance_csv(damper, runs));
 
   const requests::SweepTally tally = requests::tally(runs);
   std::vector<std::string> failures;

@@ -92,19 +92,23 @@ int run_response_command(const ResponseOptions& options) {
   const damper::ImpedancePoint& p = state.point;
   // Written even when not converged (the last iterate, marked), so that it can be inspected.
   io::write_file_atomically(options.output, response_csv(damper, excitation, state));
+  // The design figures by the impedance CSV's names, through the same function.
+  const std::vector<std::string> figure_names = requests::figure_columns(damper);
+  const std::vector<double> figures = requests::figure_values(p);
   if (options.json) {
-    fmt::print("{}\n", io::JsonObject()
-                           .add("frequency_hz", p.frequency_hz)
-                           .add("velocity_m_s", p.velocity_amplitude)
-                           .add("displacement_m", p.displacement_amplitude)
-                           .add("converged", p.converged())
-                           .add("termination", termination_name(p.termination))
-                           .add("re_z_n_s_m", p.converged() ? p.impedance.real() : kNoValue)
-                           .add("im_z_n_s_m", p.converged() ? p.impedance.imag() : kNoValue)
-                           .add("power_w", p.converged() ? p.power : kNoValue)
-                           .add("dissipated_power_w", p.converged() ? p.dissipated_power : kNoValue)
-                           .add("energy_error", p.energy_error)
-                           .str());
+    io::JsonObject json;
+    json.add("frequency_hz", p.frequency_hz)
+        .add("velocity_m_s", p.velocity_amplitude)
+        .add("displacement_m", p.displacement_amplitude)
+        .add("converged", p.converged())
+        .add("termination", termination_name(p.termination))
+        .add("re_z_n_s_m", p.converged() ? p.impedance.real() : kNoValue)
+        .add("im_z_n_s_m", p.converged() ? p.impedance.imag() : kNoValue)
+        .add("power_w", p.converged() ? p.power : kNoValue)
+        .add("dissipated_power_w", p.converged() ? p.dissipated_power : kNoValue)
+        .add("energy_error", p.energy_error);
+    for (std::size_t i = 0; i < figure_names.size(); ++i) json.add(figure_names[i], figures[i]);
+    fmt::print("{}\n", json.str());
   }
   if (!p.converged()) {
     fmt::print(stderr, "response: no steady state at {} Hz: {}; {} holds the last iterate, not a solution\n",
@@ -113,6 +117,13 @@ int run_response_command(const ResponseOptions& options) {
   }
   fmt::print(stderr, "response: {} Hz, V = {:.4g} m/s: Z = {:.5g} {:+.5g}i N s/m, P = {:.4g} W (sliders {:.4g} W)\n",
              p.frequency_hz, p.velocity_amplitude, p.impedance.real(), p.impedance.imag(), p.power, p.dissipated_power);
+  // figures: the messenger's curvature, then (power, mass amplitude) per arm.
+  std::string arms;
+  for (std::size_t k = 0; k < damper.arms().size(); ++k) {
+    arms += fmt::format("; {}: P = {:.4g} W, mass amplitude {:.4g} mm", damper.arm_label(k), figures[1 + 2 * k],
+                        1e3 * figures[2 + 2 * k]);
+  }
+  fmt::print(stderr, "response: messenger curvature amplitude {:.4g} 1/m (the largest at the arms' clamps){}\n", figures[0], arms);
   return kSuccess;
 }
 

@@ -22,6 +22,7 @@
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
+#include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 #include "stockbridge/strand/strand_bounds.hpp"
@@ -41,6 +42,12 @@ void warn(const std::vector<std::string>& lines) {
   for (const std::string& line : lines) {
     if (PyErr_WarnEx(category.ptr(), line.c_str(), 2) != 0) throw py::error_already_set();
   }
+}
+
+std::vector<std::string> unusual_messages(const std::vector<UnusualValue>& values) {
+  std::vector<std::string> lines;
+  for (const UnusualValue& u : values) lines.push_back(u.message());
+  return lines;
 }
 
 template <class Loaded>
@@ -86,12 +93,13 @@ py::dict impedance(const damper::Damper& d, const std::optional<std::vector<doub
       solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance);
   request.threads = threads;
   const damper::SweepSpec spec = requests::sweep_spec(request);
+  warn(unusual_messages(requests::unusual_values(request)));
   std::vector<damper::SweepRun> runs;
   {
     py::gil_scoped_release release;
     runs = damper::run_sweep(d, spec);
   }
-  const std::vector<std::string>& columns = requests::impedance_columns();
+  const std::vector<std::string> columns = requests::impedance_columns(d);
   const std::size_t na = runs.size(), nf = spec.frequencies.size();
   std::vector<py::array_t<double>> arrays;
   for (std::size_t c = 0; c < columns.size(); ++c) arrays.emplace_back(std::vector<std::size_t>{na, nf});
@@ -122,6 +130,7 @@ py::dict impedance(const damper::Damper& d, const std::optional<std::vector<doub
   }
   out["frequency_hz"] = array(spec.frequencies);
   out["amplitude"] = array(spec.amplitudes);
+  out["arms"] = requests::arm_column_prefixes(d);  // the <arm> of the per-arm columns, as the CSV's
   out["converged"] = converged;
   out["non_unique"] = non_unique;
   out["termination"] = terminations;
@@ -148,6 +157,7 @@ py::dict response(const damper::Damper& d, double frequency, std::optional<doubl
                   std::optional<int> steps, std::optional<int> max_iterations, std::optional<int> max_periods,
                   std::optional<double> energy_tolerance) {
   const damper::Excitation e = requests::excitation(frequency, velocity, displacement);
+  warn(unusual_messages(requests::unusual_excitation(frequency, velocity, displacement)));
   const damper::SolverOptions options = requests::solver_options(
       solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance));
   damper::DamperSteadyState state;
@@ -190,6 +200,10 @@ py::dict response(const damper::Damper& d, double frequency, std::optional<doubl
   out["power_w"] = point.converged() ? point.power : kNaN;
   out["dissipated_power_w"] = point.converged() ? point.dissipated_power : kNaN;
   out["energy_error"] = point.energy_error;
+  // The design figures by the impedance CSV's names, as the response command's --json.
+  const std::vector<std::string> figure_names = requests::figure_columns(d);
+  const std::vector<double> figures = requests::figure_values(point);
+  for (std::size_t i = 0; i < figure_names.size(); ++i) out[py::str(figure_names[i])] = figures[i];
   return out;
 }
 
@@ -384,14 +398,16 @@ PYBIND11_MODULE(_core, m) {
         py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(), py::arg("max_periods") = py::none(),
         py::arg("energy_tolerance") = py::none(), py::arg("threads") = 1,
         "Z(f, amplitude) over `frequencies` (or fmin..fmax, `points` log-spaced): arrays of shape (amplitudes, "
-        "frequencies) named as the impedance CSV's columns; NaN where a point did not converge (see 'converged', "
+        "frequencies) named as the impedance CSV's columns (the design figures per arm as '<arm>_power_w' and "
+        "'<arm>_mass_amplitude_m', the arms named in 'arms'); NaN where a point did not converge (see 'converged', "
         "'termination' and 'messages'). Solver settings left None take the method's default.");
   m.def("response", &response, py::arg("damper"), py::arg("frequency"), py::arg("velocity") = py::none(),
         py::arg("displacement") = py::none(), py::arg("method") = "hb", py::arg("harmonics") = py::none(),
         py::arg("samples") = py::none(), py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(),
         py::arg("max_periods") = py::none(), py::arg("energy_tolerance") = py::none(),
         "One steady period; per-arm arrays have shape (arms, samples). A point that did not converge is returned "
-        "as its last iterate with converged = False, its termination and message (NaN where nothing was computed).");
+        "as its last iterate with converged = False, its termination and message (NaN where nothing was computed). "
+        "The point's design figures are numbers named as the impedance CSV's columns.");
   m.def("cycle", &cycle, py::arg("cable"), py::arg("experiment"), py::arg("amplitude"), py::arg("cycles") = 2,
         py::arg("points") = 400, "Experiment 'a' (tip force) or 'b' (tip rotation) on a cable.");
   m.def("identify_local", &identify_local, py::arg("curvature"), py::arg("moment"), py::arg("elements") = 1,

@@ -157,9 +157,11 @@ ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
   point.velocity_amplitude = excitation.velocity_amplitude();
   point.displacement_amplitude = excitation.displacement_amplitude;
   point.termination = Termination::converged;
+  point.arms.resize(arm_solutions.size());
   const double v = point.velocity_amplitude;
   std::complex<double> z(0.0, excitation.angular_frequency() * damper.clamp_mass());
-  double dissipated = 0.0, residual = 0.0, energy = 0.0;
+  double dissipated = 0.0, residual = 0.0, energy = 0.0, curvature = 0.0;
+  std::vector<ArmFigures> figures(arm_solutions.size());
   for (std::size_t k = 0; k < arm_solutions.size(); ++k) {
     const ArmSolution& s = *arm_solutions[k];
     point.newton_iterations = std::max(point.newton_iterations, s.summary.newton_iterations);
@@ -183,7 +185,9 @@ ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
       note = fmt::format("{}: {}", damper.arm_label(k), s.note);
     }
     if (!note.empty()) point.note += (point.note.empty() ? "" : "; ") + note;
-    z += arm_force_first_harmonic(s.period) / v;
+    figures[k] = arm_figures(s.period, damper.arms()[k], excitation);
+    z += figures[k].impedance;
+    curvature = std::max(curvature, figures[k].clamp_curvature_amplitude);
     dissipated += s.period.dissipated;
   }
   if (!point.converged()) {  // notes speak of solutions, and there is none
@@ -191,6 +195,8 @@ ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
     point.non_unique = false;
   } else {
     point.impedance = z;
+    point.arms = std::move(figures);
+    point.messenger_curvature_max = curvature;
     point.power = 0.5 * v * v * z.real();
     point.dissipated_power = dissipated / excitation.period();
     point.residual = residual;

@@ -1,5 +1,6 @@
 #include "stockbridge/damper/periodic_solution.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -40,6 +41,28 @@ std::complex<double> first_harmonic(const Eigen::Ref<const Eigen::RowVectorXd>& 
 
 std::complex<double> arm_force_first_harmonic(const ArmPeriod& period) {
   return -first_harmonic(period.loads.row(0));
+}
+
+namespace {
+
+/// Half the range of `values`: the amplitude of their oscillation about its centre.
+template <class Values>
+double half_range(const Values& values) {
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  return low == values.end() ? 0.0 : 0.5 * (*high - *low);
+}
+
+}  // namespace
+
+ArmFigures arm_figures(const ArmPeriod& period, const Arm& arm, const Excitation& excitation) {
+  const double v = excitation.velocity_amplitude();
+  ArmFigures figures;
+  figures.impedance = arm_force_first_harmonic(period) / v;
+  figures.power = 0.5 * v * v * figures.impedance.real();
+  const Eigen::RowVectorXd mass = period.kinematics.row(0) - arm.description().offset * period.kinematics.row(1);
+  figures.mass_amplitude = half_range(mass);
+  figures.clamp_curvature_amplitude = half_range(period.clamp_curvature);
+  return figures;
 }
 
 double energy_error(const ArmPeriod& period, const Excitation& excitation) {

@@ -1,5 +1,6 @@
 // `stockbridge impedance` and `stockbridge response` as users run them.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -39,6 +40,47 @@ TEST(ImpedanceCli, SweepOfTheShippedExample) {
   EXPECT_NE(lines[1].find(",1,"), std::string::npos);  // converged
 }
 
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t from = 0;
+  for (std::size_t comma = line.find(','); comma != std::string::npos; comma = line.find(',', from)) {
+    cells.push_back(line.substr(from, comma - from));
+    from = comma + 1;
+  }
+  cells.push_back(line.substr(from));
+  return cells;
+}
+
+const std::vector<std::string> kAsymmetricFigures{"messenger_curvature_max_per_m", "long_power_w", "long_mass_amplitude_m",
+                                                  "short_power_w", "short_mass_amplitude_m"};
+
+// The design figures close each row, per arm named by the arms of the file.
+TEST(ImpedanceCli, DesignFiguresNamedByTheArms) {
+  const auto dir = scratch_directory("impedance-figures");
+  const std::string asymmetric = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/asymmetric_damper.toml";
+  const CliResult r = run_cli("impedance '" + asymmetric + "' --velocity 0.1 --frequencies 10,30 -o z.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto lines = lines_of(read_text(dir / "z.csv"));
+  ASSERT_EQ(lines.size(), 3u);
+  const std::vector<std::string> header = cells_of(lines[0]);
+  ASSERT_GT(header.size(), kAsymmetricFigures.size());
+  EXPECT_EQ(std::vector<std::string>(header.end() - 5, header.end()), kAsymmetricFigures) << lines[0];
+  for (const int row : {1, 2}) {
+    const std::vector<std::string> cells = cells_of(lines[row]);
+    ASSERT_EQ(cells.size(), header.size()) << lines[row];
+    for (std::size_t c = header.size() - 5; c < header.size(); ++c) {
+      ASSERT_FALSE(cells[c].empty()) << header[c] << " in " << lines[row];
+      const double value = std::strtod(cells[c].c_str(), nullptr);
+      // The short arm sticks at 10 Hz: its power is 0; the amplitudes are never.
+      if (header[c].ends_with("_power_w")) {
+        EXPECT_GE(value, 0.0) << header[c] << " in " << lines[row];
+      } else {
+        EXPECT_GT(value, 0.0) << header[c] << " in " << lines[row];
+      }
+    }
+  }
+}
+
 TEST(ImpedanceCli, ExplicitFrequenciesAndConstantDisplacement) {
   const auto dir = scratch_directory("impedance-disp");
   const CliResult r = run_cli("impedance '" + kExample + "' --displacement 0.001 --frequencies 8,12.5,20 -o z.csv", dir);
@@ -56,6 +98,10 @@ TEST(ImpedanceCli, NonConvergedPointsAreFlaggedAndExitThree) {
   const auto lines = lines_of(read_text(dir / "z.csv"));
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_NE(lines[1].find(",,,,,,0,"), std::string::npos) << lines[1];  // numbers empty, converged 0
+  const std::vector<std::string> header = cells_of(lines[0]), cells = cells_of(lines[1]);
+  ASSERT_EQ(cells.size(), header.size());
+  EXPECT_EQ(header[header.size() - 5], "messenger_curvature_max_per_m");
+  for (std::size_t c = header.size() - 5; c < header.size(); ++c) EXPECT_EQ(cells[c], "") << header[c];  // figures too
   EXPECT_NE(r.err.find("did not converge"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("f = 10 Hz"), std::string::npos) << r.err;
 }
@@ -146,6 +192,30 @@ TEST(ResponseCli, OneSteadyPeriod) {
   EXPECT_NE(lines[0].find("right_clamp_section_moment_n_m"), std::string::npos);
   EXPECT_EQ(lines.size(), 1u + 128u);
   EXPECT_NE(r.out.find("\"re_z_n_s_m\": "), std::string::npos);
+}
+
+// `response` reports the design figures of its point by the impedance CSV's names,
+// from the same library function: a one-frequency sweep and the response agree.
+TEST(ResponseCli, DesignFiguresAgreeWithTheImpedanceSweep) {
+  const auto dir = scratch_directory("response-figures");
+  const std::string asymmetric = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/asymmetric_damper.toml";
+  const CliResult z = run_cli("impedance '" + asymmetric + "' --velocity 0.1 --frequencies 30 -o z.csv", dir);
+  ASSERT_EQ(z.exit_code, 0) << z.err;
+  const CliResult r = run_cli("response '" + asymmetric + "' --frequency 30 --velocity 0.1 --json -o t.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto lines = lines_of(read_text(dir / "z.csv"));
+  ASSERT_EQ(lines.size(), 2u);
+  const std::vector<std::string> header = cells_of(lines[0]), cells = cells_of(lines[1]);
+  ASSERT_EQ(cells.size(), header.size());
+  for (const std::string& figure : kAsymmetricFigures) {
+    const auto at = std::find(header.begin(), header.end(), figure);
+    ASSERT_NE(at, header.end()) << figure;
+    const double swept = std::strtod(cells[static_cast<std::size_t>(at - header.begin())].c_str(), nullptr);
+    ASSERT_GT(swept, 0.0) << figure;
+    EXPECT_NEAR(json_number(r.out, figure), swept, 1e-9 * swept) << figure;
+  }
+  EXPECT_NE(r.err.find("messenger curvature amplitude"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("arm short: P = "), std::string::npos) << r.err;
 }
 
 struct BadRun {

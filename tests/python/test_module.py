@@ -5,6 +5,7 @@ dtypes, and the example script."""
 import csv
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -32,6 +33,36 @@ def test_impedance_equals_the_program_for_the_same_file(tmp_path):
         assert z["re_z_n_s_m"][a, i] == pytest.approx(float(row["re_z_n_s_m"]), rel=1e-12)
         assert z["im_z_n_s_m"][a, i] == pytest.approx(float(row["im_z_n_s_m"]), rel=1e-12)
         assert z["power_w"][a, i] == pytest.approx(float(row["power_w"]), rel=1e-12, abs=1e-15)
+        for column in ("abs_z_n_s_m", "phase_deg", "iterations", "messenger_curvature_max_per_m", "left_power_w",
+                       "left_mass_amplitude_m", "right_power_w", "right_mass_amplitude_m"):
+            assert z[column][a, i] == pytest.approx(float(row[column]), rel=1e-12, abs=1e-15), column
+    assert z["arms"] == ["left", "right"]
+
+
+def documented_keys(function, arms):
+    """The keys docs/python.md gives for what `function` returns: every name in
+    backticks in its row's second cell, <arm> standing for each of `arms`."""
+    with open(os.path.join(SOURCE, "docs", "python.md")) as handle:
+        row = next(line for line in handle if line.startswith(f"| `{function}("))
+    cell = row.split("|")[2]
+    names = [name.strip() for span in re.findall(r"`([^`]*)`", cell) for name in span.split(",")]
+    return {name.replace("<arm>", arm) for name in names for arm in arms}
+
+
+def test_impedance_and_response_return_the_documented_keys_only():
+    damper = sb.load_damper(os.path.join(SOURCE, "examples", "asymmetric_damper.toml"))
+    z = sb.impedance(damper, [10.0, 30.0], velocity=0.1)
+    assert set(z) == documented_keys("impedance", ["long", "short"])
+    assert {"abs_z_n_s_m", "phase_deg", "iterations", "messenger_curvature_max_per_m", "short_mass_amplitude_m"} <= set(z)
+    r = sb.response(damper, 30.0, velocity=0.1)
+    assert set(r) == documented_keys("response", ["long", "short"])
+    # The response's figures are the sweep's at its frequency (the same library function), though
+    # the sweep reached 30 Hz from 10 Hz and the response started cold: to the solver's tolerance.
+    for key in ("messenger_curvature_max_per_m", "long_power_w", "long_mass_amplitude_m", "short_power_w",
+                "short_mass_amplitude_m"):
+        assert z[key].shape == (1, 2) and z[key][0, 1] > 0, key
+        assert r[key] == pytest.approx(z[key][0, 1], rel=1e-6), key
+    assert r["long_power_w"] + r["short_power_w"] == pytest.approx(r["power_w"], rel=1e-9)
 
 
 def test_arrays_have_the_documented_shapes_and_dtypes():
@@ -69,7 +100,8 @@ def test_a_point_without_a_periodic_solution_is_nan_with_the_reason():
     arm = {"mass": 0.856, "inertia": 0.001814, "offset": 0.0325, "cable": elastic}
     z = sb.impedance(sb.make_damper(0.7, [arm]), [20.0, 21.1726198299174], velocity=0.2)
     assert z["converged"].tolist() == [[True, False]]
-    for key in ("re_z_n_s_m", "im_z_n_s_m", "power_w", "energy_error", "residual"):
+    for key in ("re_z_n_s_m", "im_z_n_s_m", "power_w", "energy_error", "residual", "messenger_curvature_max_per_m",
+                "arm1_power_w", "arm1_mass_amplitude_m"):
         assert np.isfinite(z[key][0, 0]) and np.isnan(z[key][0, 1]), key
     assert "singular Jacobian" in z["messages"][0][1]
 
@@ -221,3 +253,11 @@ def test_values_outside_the_typical_ranges_warn_with_the_programs_words(tmp_path
     assert [str(w.message) for w in record] == [
         f"{tmp_path / 'mm.toml'}:16: arm[0].cable.length = 187.5: outside the typical 0.03 to 1 m of the damper cable "
         "length (a unit mistake?)"]
+
+
+def test_unusual_sweep_and_response_values_warn_as_the_program_does():
+    damper = sb.load_damper(EXAMPLE)
+    with pytest.warns(sb.UnusualValueWarning, match=r"^velocity = 100: outside the typical 0.001 to 2 m/s"):
+        sb.impedance(damper, [20.0], velocity=100.0)
+    with pytest.warns(sb.UnusualValueWarning, match=r"^frequency = 2000: outside the typical 0.5 to 500 Hz"):
+        sb.response(damper, 2000.0, velocity=0.1)

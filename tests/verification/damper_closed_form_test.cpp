@@ -93,6 +93,77 @@ TEST(DamperClosedForm, PowerFromImpedanceEqualsSliderDissipation) {
   }
 }
 
+// The design figures of a linear arm (elements that never slip, EI = 22.8) from the
+// closed-form steady state: with x_c = X sin(W t), u = (x, phi) = U sin(W t),
+// (K - W^2 M) U = -W^2 X L (K the classical beam's tip stiffness, M and L from m,
+// Theta, b). The mass's centre of gravity moves by x - b phi relative to the clamp;
+// the curvature of a tip-loaded cantilever is linear in s, kappa = k0 + k1 s, with
+// x = k0 l^2/2 + k1 l^3/6 and phi = k0 l + k1 l^2/2 (MODEL.md section 3). Both
+// peak at t = T/4, a sample of the period (N = 128).
+TEST(DamperClosedForm, DesignFiguresOfALinearArm) {
+  const ArmDescription arm = linear_arm(22.8, true);
+  const Damper damper = damper_of({arm}, 0.7);
+  const double l = arm.cable.length, b = arm.offset;
+  const double s0 = damper.arms()[0].cable().positions().front();  // the clamp section's integration point
+  for (const double f : {3.0, 15.0, 40.0, 90.0}) {
+    const Excitation e = Excitation::from_velocity(f, 0.2);
+    const DamperSteadyState s = solve_steady_state(damper, e, hb_options());
+    ASSERT_TRUE(s.point.converged()) << s.point.failure;
+    const double w = e.angular_frequency();
+    const Eigen::Vector2d u = (testing::beam_tip_stiffness(22.8, l) - w * w * testing::arm_mass_matrix(arm)).inverse() *
+                              testing::arm_load_vector(arm) * (-w * w * e.displacement_amplitude);
+    Eigen::Matrix2d curvature_to_tip;  // (x, phi) over (k0, k1)
+    curvature_to_tip << l * l / 2.0, l * l * l / 6.0, l, l * l / 2.0;
+    const Eigen::Vector2d k = curvature_to_tip.inverse() * u;
+    ASSERT_EQ(s.point.arms.size(), 1u);
+    const ArmFigures& figures = s.point.arms[0];
+    EXPECT_NEAR(figures.mass_amplitude, std::abs(u(0) - b * u(1)), 1e-8 * std::abs(u(0) - b * u(1))) << "f = " << f;
+    EXPECT_NEAR(s.point.messenger_curvature_max, std::abs(k(0) + k(1) * s0), 1e-8 * std::abs(k(0))) << "f = " << f;
+    EXPECT_EQ(figures.clamp_curvature_amplitude, s.point.messenger_curvature_max);
+    EXPECT_LT(std::abs(figures.power), 1e-12 * e.velocity_amplitude() * e.velocity_amplitude() * std::abs(figures.impedance));
+  }
+}
+
+// Each arm's power is what its own sliders dissipate per period (to the sampled
+// energy balance), and the arms' powers add up to the damper's: two different arms
+// (those of examples/asymmetric_damper.toml), a clamp mass that takes no power.
+TEST(DamperClosedForm, ArmPowersAreTheirSlidersAndAddUpToTheDampers) {
+  ArmDescription long_arm = sauter_arm(), short_arm = sauter_arm();
+  long_arm.name = "long";
+  long_arm.mass = 1.4;
+  long_arm.inertia = 0.0035;
+  long_arm.offset = 0.04;
+  long_arm.cable = cable::CableDescription::uniform(0.22, 40, 2.8, {{20.0, 0.7}});
+  short_arm.name = "short";
+  short_arm.mass = 0.7;
+  short_arm.inertia = 0.0012;
+  short_arm.offset = 0.025;
+  short_arm.cable = cable::CableDescription::uniform(0.14, 40, 2.8, {{20.0, 0.7}});
+  const Damper damper = damper_of({long_arm, short_arm}, 0.6);
+  for (const auto& [f, v] : {std::pair{8.0, 0.2}, std::pair{15.0, 0.1}, std::pair{30.0, 0.1}, std::pair{60.0, 0.1}}) {
+    const Excitation e = Excitation::from_velocity(f, v);
+    const DamperSteadyState s = solve_steady_state(damper, e, hb_options());
+    ASSERT_TRUE(s.point.converged()) << s.point.failure;
+    ASSERT_EQ(s.point.arms.size(), 2u);
+    double sum = 0.0, largest_curvature = 0.0;
+    for (std::size_t k = 0; k < 2; ++k) {
+      const ArmFigures& arm = s.point.arms[k];
+      const double sliders = s.arms[k].period.dissipated / e.period();
+      ASSERT_GT(sliders, 0.0) << "f = " << f << ", arm " << k;
+      const double apparent = 0.5 * v * v * std::abs(arm.impedance);  // what the energy error is relative to
+      EXPECT_NEAR(arm.power, sliders, 1e-3 * apparent) << "f = " << f << ", arm " << k;
+      sum += arm.power;
+      largest_curvature = std::max(largest_curvature, arm.clamp_curvature_amplitude);
+    }
+    EXPECT_NEAR(sum, s.point.power, 1e-9 * s.point.power) << "f = " << f;
+    EXPECT_NEAR(sum, s.point.dissipated_power, SolverOptions{}.energy_tolerance * s.point.dissipated_power) << "f = " << f;
+    EXPECT_EQ(s.point.messenger_curvature_max, largest_curvature);
+    // The arms move differently: each has its own figures.
+    EXPECT_NE(s.point.arms[0].power, s.point.arms[1].power);
+    EXPECT_NE(s.point.arms[0].mass_amplitude, s.point.arms[1].mass_amplitude);
+  }
+}
+
 // Two identical arms give twice one arm plus i W m_c.
 TEST(DamperClosedForm, TwoIdenticalArmsAreTwiceOneArm) {
   const Damper one = damper_of({sauter_arm()}, 0.0);

@@ -87,6 +87,12 @@ struct ImpedancePoint {
   double dissipated_power = 0.0;        ///< sliders' energy per period / T, W
   double energy_error = std::numeric_limits<double>::quiet_NaN();  ///< largest over the arms (NaN unless converged)
   double residual = std::numeric_limits<double>::quiet_NaN();      ///< largest over the arms (NaN unless converged)
+  /// The largest over the arms of the clamp section's curvature amplitude
+  /// (ArmFigures), 1/m: the damper cable's own fatigue load (NaN unless converged).
+  double messenger_curvature_max = std::numeric_limits<double>::quiet_NaN();
+  /// One per arm of the damper, in its order: each arm's power, mass amplitude and
+  /// clamp curvature amplitude (all NaN unless the point converged).
+  std::vector<ArmFigures> arms;
   int newton_iterations = 0;            ///< largest over the arms
   int periods = 0;                      ///< largest over the arms, periods integrated
   double seconds = 0.0;
@@ -99,8 +105,8 @@ struct ImpedancePoint {
 };
 
 /// Combines the arms' periodic solutions (one per arm of the damper) with the
-/// clamp mass into the impedance; a point is converged only if every arm converged
-/// within `energy_tolerance`.
+/// clamp mass into the impedance and the design figures (arm_figures); a point is
+/// converged only if every arm converged within `energy_tolerance`.
 ImpedancePoint combine(const Damper& damper, const Excitation& excitation,
                        const std::vector<const ArmSolution*>& arm_solutions, double energy_tolerance);
 

@@ -64,4 +64,27 @@ std::complex<double> first_harmonic(const Eigen::Ref<const Eigen::RowVectorXd>& 
 std::complex<double> arm_force_first_harmonic(const ArmPeriod& period);
 double energy_error(const ArmPeriod& period, const Excitation& excitation);
 
+/// One arm's design figures over its steady period (MODEL.md sections 4 and 5).
+/// Amplitudes are half the range of the period's samples (zero to peak about the
+/// centre): a static offset that friction can lock into the cable is left out, since
+/// it depends on how the steady state was reached (the sweep's path, the solver's
+/// start), not on the excitation; where there is none they are the largest |value|.
+struct ArmFigures {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  /// Z_k = F1_k / V, the arm's part of the damper's impedance (F1_k the first
+  /// harmonic of -F_k): Z = i W m_c + sum_k Z_k. N s/m.
+  std::complex<double> impedance{kNaN, kNaN};
+  /// V^2 Re(Z_k) / 2: the mean power the arm takes from the clamp, W. The arms'
+  /// powers add up to the damper's (Re Z does not depend on the clamp mass).
+  double power = kNaN;
+  /// The amplitude of x - b phi: how far the mass's centre of gravity G moves
+  /// relative to the clamp (y_G - x_c), m; what the mass needs as clearance.
+  double mass_amplitude = kNaN;
+  /// The amplitude of the clamp section's curvature (ArmPeriod::clamp_curvature), 1/m.
+  double clamp_curvature_amplitude = kNaN;
+};
+
+/// The design figures of `arm`'s period at `excitation`.
+ArmFigures arm_figures(const ArmPeriod& period, const Arm& arm, const Excitation& excitation);
+
 }  // namespace stockbridge::damper

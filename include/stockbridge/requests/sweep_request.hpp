@@ -36,15 +36,27 @@ damper::SweepSpec sweep_spec(const SweepRequest& request);
 /// and a displacement amplitude (m), validated.
 damper::Excitation excitation(double frequency_hz, std::optional<double> velocity, std::optional<double> displacement);
 
-/// The columns of a point as the impedance CSV and Python's arrays name them.
-const std::vector<std::string>& impedance_columns();
+/// The columns of a point of `damper` as the impedance CSV and Python's arrays name
+/// them: frequency, amplitudes, Z, powers and the solver's figures, then the design
+/// figures (figure_columns).
+std::vector<std::string> impedance_columns(const damper::Damper& damper);
 /// A point's values in impedance_columns() order: NaN for every computed number of
 /// a point that did not converge (the amplitude and frequency are always given).
+/// `point.arms` has one entry per arm (as combine makes it).
 std::vector<double> impedance_row(const damper::ImpedancePoint& point);
 
+/// The design figures' names, the last columns of impedance_columns() and the keys
+/// `response` reports them by: messenger_curvature_max_per_m, then per arm
+/// <prefix>_power_w and <prefix>_mass_amplitude_m (prefixes: arm_column_prefixes).
+std::vector<std::string> figure_columns(const damper::Damper& damper);
+/// Their values for a point in that order: NaN unless it converged; an arm's power
+/// that is round-off of zero (an arm that does not slip) as 0.
+std::vector<double> figure_values(const damper::ImpedancePoint& point);
+
 /// How tables name each arm's columns (`<prefix>_x_m`): its name from the damper
-/// file where every arm has one that is unique and made of letters, digits and
-/// '_', else arm1, arm2, ... for all.
+/// file where every arm has one that is unique, made of letters, digits and '_',
+/// and makes no column the table has already (not `dissipated` or `shaker`), else
+/// arm1, arm2, ... for all.
 std::vector<std::string> arm_column_prefixes(const damper::Damper& damper);
 
 /// Summary figures of a sweep.

@@ -1,6 +1,7 @@
 // The request layer: each method's own defaults, settings applied where the method
 // uses them and rejected (by name) where it does not; non-converged points masked.
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -14,6 +15,22 @@ namespace stockbridge::requests {
 namespace {
 
 using damper::Method;
+
+/// A damper of D. Sauter's arms with these names.
+damper::Damper damper_named(const std::vector<std::string>& names) {
+  damper::DamperDescription d;
+  d.clamp_mass = 0.7;
+  for (const std::string& name : names) {
+    damper::ArmDescription arm;
+    arm.name = name;
+    arm.mass = 0.856;
+    arm.inertia = 0.001814;
+    arm.offset = 0.0325;
+    arm.cable = cable::CableDescription::uniform(0.1875, 8, 2.8, {{20.0, 0.7}});
+    d.arms.push_back(arm);
+  }
+  return damper::Damper(d);
+}
 
 TEST(SolverSettings, UnsetSettingsTakeTheMethodsOwnDefaults) {
   const damper::SolverOptions hb = solver_options({});
@@ -82,8 +99,10 @@ TEST(ImpedanceRow, ANonConvergedPointShowsOnlyWhereItWas) {
   p.termination = Termination::line_search_failed;
   p.impedance = {1.0, 2.0};
   p.power = 3.0;
+  p.messenger_curvature_max = 0.1;  // as if computed: the mask, not the NaN, must hide them
+  p.arms = {damper::ArmFigures{{1.0, 2.0}, 0.04, 0.002, 0.1}, damper::ArmFigures{{1.0, 2.0}, 0.04, 0.002, 0.1}};
   const std::vector<double> row = impedance_row(p);
-  const std::vector<std::string>& columns = impedance_columns();
+  const std::vector<std::string> columns = impedance_columns(damper_named({"long", "short"}));
   ASSERT_EQ(row.size(), columns.size());
   for (std::size_t c = 0; c < columns.size(); ++c) {
     const std::string& name = columns[c];
@@ -102,25 +121,28 @@ TEST(ImpedanceRow, ANonConvergedPointShowsOnlyWhereItWas) {
   EXPECT_FALSE(t.max_energy_error.has_value());  // none, not 0
 }
 
-}  // namespace
-}  // namespace stockbridge::requests
-
-namespace stockbridge::requests {
-namespace {
-
-damper::Damper damper_named(const std::vector<std::string>& names) {
-  damper::DamperDescription d;
-  d.clamp_mass = 0.7;
-  for (const std::string& name : names) {
-    damper::ArmDescription arm;
-    arm.name = name;
-    arm.mass = 0.856;
-    arm.inertia = 0.001814;
-    arm.offset = 0.0325;
-    arm.cable = cable::CableDescription::uniform(0.1875, 8, 2.8, {{20.0, 0.7}});
-    d.arms.push_back(arm);
-  }
-  return damper::Damper(d);
+// The design figures close the row, per arm by the arms' column names; an arm's
+// power that is round-off of zero against its own |Z_k| is 0, as the damper's.
+TEST(ImpedanceRow, DesignFiguresFollowPerArm) {
+  const std::vector<std::string> columns = impedance_columns(damper_named({"long", "short"}));
+  const std::vector<std::string> last(columns.end() - 5, columns.end());
+  EXPECT_EQ(last, (std::vector<std::string>{"messenger_curvature_max_per_m", "long_power_w", "long_mass_amplitude_m",
+                                            "short_power_w", "short_mass_amplitude_m"}));
+  EXPECT_EQ(figure_columns(damper_named({"long", "short"})), last);
+  damper::ImpedancePoint p;
+  p.frequency_hz = 20.0;
+  p.velocity_amplitude = 0.2;
+  p.termination = Termination::converged;
+  p.impedance = {0.5, 40.0};
+  p.power = 0.01;
+  p.messenger_curvature_max = 0.25;
+  p.arms = {damper::ArmFigures{{1e-15, 20.0}, 1e-17, 0.003, 0.25},  // sticks: 1e-17 W is round-off of 0.4 W apparent
+            damper::ArmFigures{{0.5, 20.0}, 0.01, 0.002, 0.125}};
+  const std::vector<double> row = impedance_row(p);
+  ASSERT_EQ(row.size(), columns.size());
+  const std::vector<double> figures(row.end() - 5, row.end());
+  EXPECT_EQ(figures, (std::vector<double>{0.25, 0.0, 0.003, 0.01, 0.002}));
+  EXPECT_EQ(figure_values(p), figures);
 }
 
 TEST(ArmColumns, NamedByTheArmsNamesWhereTheyMakeColumnNames) {
@@ -129,6 +151,14 @@ TEST(ArmColumns, NamedByTheArmsNamesWhereTheyMakeColumnNames) {
   EXPECT_EQ(arm_column_prefixes(damper_named({"long", ""})), (std::vector<std::string>{"arm1", "arm2"}));
   EXPECT_EQ(arm_column_prefixes(damper_named({"a", "a"})), (std::vector<std::string>{"arm1", "arm2"}));
   EXPECT_EQ(arm_column_prefixes(damper_named({"long arm", "b,c"})), (std::vector<std::string>{"arm1", "arm2"}));
+  // A name that makes a table's own column (dissipated_power_w, shaker_force_n): numbered.
+  EXPECT_EQ(arm_column_prefixes(damper_named({"dissipated", "b"})), (std::vector<std::string>{"arm1", "arm2"}));
+  EXPECT_EQ(arm_column_prefixes(damper_named({"a", "shaker"})), (std::vector<std::string>{"arm1", "arm2"}));
+  for (const auto& names : {std::vector<std::string>{"dissipated", "power"}, std::vector<std::string>{"messenger", "x"}}) {
+    std::vector<std::string> columns = impedance_columns(damper_named(names));
+    std::sort(columns.begin(), columns.end());
+    EXPECT_EQ(std::adjacent_find(columns.begin(), columns.end()), columns.end()) << names[0];
+  }
 }
 
 }  // namespace
