@@ -1,0 +1,47 @@
+#pragma once
+// The nonlinear dampers of one span end at a given antinode amplitude Y: each
+// damper's impedance depends on its own clamp velocity amplitude v_j = w |Y_j|,
+// which depends on every damper's impedance (travelling_wave.hpp). A fixed point
+// in v: for one damper at a time (Gauss-Seidel over the end's dampers), the root in
+// log v of g(v) = log(w |Y_j(Z_j(v))|) - log v, bracketed outward from the last
+// value and closed by regula falsi (Illinois). g > 0 for small v (Z tends to the
+// all-stick value, Y_j stays finite) and g < 0 for large v, so a root exists.
+
+#include <complex>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stockbridge/span/travelling_wave.hpp"
+
+namespace stockbridge::span {
+
+/// Z (N s/m) of the end's damper j at clamp velocity amplitude v (m/s); none where
+/// it is not known (a table without converged nodes there).
+using ClampImpedance = std::function<std::optional<std::complex<double>>(std::size_t damper, double velocity)>;
+
+struct FixedPointOptions {
+  double tolerance = 1e-10;  ///< relative change of every velocity between Gauss-Seidel sweeps
+  int max_sweeps = 200;
+  double velocity_floor = 1e-9;  ///< m/s: below it a damper is taken as still
+
+  void validate() const;
+};
+
+struct EndSolution {
+  EndResponse response;                      ///< at the fixed point
+  std::vector<double> velocities;            ///< v_j, m/s
+  std::vector<std::complex<double>> impedances;  ///< Z_j(v_j), N s/m
+  int sweeps = 0;
+  bool converged = false;
+  std::string failure;                       ///< where and by how much, if not converged
+};
+
+/// The end's dampers at `positions` (m from the end, ascending) at antinode amplitude
+/// `antinode` (m). `start`: velocities to start from (empty: those of the undamped
+/// string, w Y |sin(k a_j)|).
+EndSolution solve_end(const StringWave& wave, const std::vector<double>& positions, const ClampImpedance& impedance,
+                      double antinode, const FixedPointOptions& options, std::vector<double> start = {});
+
+}  // namespace stockbridge::span

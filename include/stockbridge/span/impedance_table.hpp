@@ -1,0 +1,61 @@
+#pragma once
+// A damper's clamp impedance Z(f, v) for the span balance: the balance asks for Z
+// at its frequencies and at whatever clamp velocity amplitude the fixed point
+// tries, many times over. The table solves the damper once per (frequency,
+// velocity) node by this project's sweeps (warm-started harmonic balance along the
+// frequencies at each velocity of a log grid) and interpolates in log v at each
+// frequency: monotone cubic (Fritsch-Carlson) in Re Z and Im Z between converged
+// nodes, held at the grid's ends (below its lowest velocity the cable sticks
+// throughout and Z no longer depends on v). How close that is to solving the
+// damper directly is tested (tests/unit/span) and given in docs/span.md.
+
+#include <complex>
+#include <optional>
+#include <vector>
+
+#include "stockbridge/damper/sweep.hpp"
+
+namespace stockbridge::span {
+
+struct ImpedanceTableOptions {
+  double velocity_min = 1e-3;  ///< m/s, lowest node
+  double velocity_max = 3.0;   ///< m/s, highest node
+  int velocities = 25;         ///< log-spaced nodes, >= 2
+  damper::SolverOptions solver;
+  int threads = 1;
+
+  void validate() const;
+};
+
+class ImpedanceTable {
+ public:
+  /// Solves the damper at every frequency (Hz, strictly increasing) and node velocity.
+  ImpedanceTable(const damper::Damper& damper, std::vector<double> frequencies, const ImpedanceTableOptions& options,
+                 const damper::SweepProgress& progress = {});
+
+  const std::vector<double>& frequencies() const { return frequencies_; }
+  const std::vector<double>& velocities() const { return velocities_; }
+  /// Z (N s/m) at frequency `frequencies()[i]` and clamp velocity amplitude v (m/s);
+  /// none where fewer than two nodes of that frequency converged, or v lies between
+  /// two converged nodes with a failed node between them.
+  std::optional<std::complex<double>> at(std::size_t i, double velocity) const;
+  /// Nodes that did not converge, of all.
+  int failed_nodes() const { return failed_; }
+  int nodes() const { return static_cast<int>(frequencies_.size() * velocities_.size()); }
+
+ private:
+  struct Column {  // one frequency: the converged nodes in log v, with their slopes
+    std::vector<double> log_v;
+    std::vector<std::complex<double>> z;
+    std::vector<std::complex<double>> slope;
+    std::vector<bool> gap_after;  ///< a failed node lies between node i and i + 1
+  };
+  static Column make_column(const std::vector<double>& log_v, const std::vector<std::optional<std::complex<double>>>& z);
+
+  std::vector<double> frequencies_;
+  std::vector<double> velocities_;
+  std::vector<Column> columns_;
+  int failed_ = 0;
+};
+
+}  // namespace stockbridge::span

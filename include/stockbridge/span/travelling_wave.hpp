@@ -1,0 +1,42 @@
+#pragma once
+// Dampers on a span end, by travelling waves (MODEL.md section 9): the conductor
+// is a taut string of wave impedance Z0 = sqrt(T m) and wavenumber k = w / c. From
+// the fixed end (x = 0) the deflection is Y = S sin(k x) up to the first damper;
+// at a damper at x = a with clamp impedance Z the slope jumps,
+//     T (Y'(a+) - Y'(a-)) = j w Z Y(a),   i.e.  Y'(a+) = Y'(a-) + j k (Z / Z0) Y(a),
+// and past the last damper the wave is A e^{-jkx} + B e^{jkx}: B comes in from
+// the span, A goes back out. The span's antinode amplitude is Y = |A| + |B|; the
+// end absorbs P_d = Z0 w^2 (|B|^2 - |A|^2) / 2, which equals the dampers' own
+// sum Re Z_j w^2 |Y_j|^2 / 2 (an identity the balance checks at every point).
+
+#include <complex>
+#include <vector>
+
+namespace stockbridge::span {
+
+/// The taut string at one frequency.
+struct StringWave {
+  double angular_frequency = 0.0;  ///< w, rad/s
+  double wavenumber = 0.0;         ///< k = w / c, 1/m
+  double wave_impedance = 0.0;     ///< Z0 = sqrt(T m), N s/m
+};
+
+/// One span end at antinode amplitude Y, its dampers at `positions` (m from the end, ascending).
+struct EndResponse {
+  double loop_amplitude = 0.0;  ///< S: the loop between the end's clamp and its first damper, m
+  std::vector<std::complex<double>> damper_displacement;  ///< Y_j, complex amplitude at each damper, m
+  double outgoing = 0.0;        ///< |A|, m
+  double incoming = 0.0;        ///< |B|, m
+  double absorbed_power = 0.0;  ///< P_d = Z0 w^2 (|B|^2 - |A|^2) / 2, W
+  double damper_power = 0.0;    ///< sum Re Z_j w^2 |Y_j|^2 / 2, W (the same, an identity)
+
+  /// The clamp velocity amplitude w |Y_j| of each damper, m/s.
+  std::vector<double> damper_velocities(double angular_frequency) const;
+};
+
+/// The end's standing wave scaled to antinode amplitude `antinode`, with the dampers'
+/// impedances `impedances` (N s/m, one per position). Without dampers S = Y.
+EndResponse end_response(const StringWave& wave, const std::vector<double>& positions,
+                         const std::vector<std::complex<double>>& impedances, double antinode);
+
+}  // namespace stockbridge::span

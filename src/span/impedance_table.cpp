@@ -1,0 +1,108 @@
+#include "stockbridge/span/impedance_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::span {
+
+void ImpedanceTableOptions::validate() const {
+  require_positive("velocity_min", velocity_min, "m/s");
+  if (!(velocity_max > velocity_min)) throw_invalid("velocity_max", velocity_max, "a value > velocity_min (m/s)");
+  require_in_range("velocities", velocities, 2, 1000);
+  require_in_range("threads", threads, 1, 256);
+  solver.validate();
+}
+
+namespace {
+
+/// Fritsch-Carlson slope at an interior node of one real component: zero at a local
+/// extremum, else the weighted harmonic mean of the neighbouring secants (no overshoot).
+double monotone_slope(double h0, double d0, double h1, double d1) {
+  if (d0 * d1 <= 0.0) return 0.0;
+  const double w0 = 2.0 * h1 + h0, w1 = h1 + 2.0 * h0;
+  return (w0 + w1) / (w0 / d0 + w1 / d1);
+}
+
+double table_hermite(double t, double h, double y0, double y1, double m0, double m1) {
+  const double t2 = t * t, t3 = t2 * t;
+  return (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * h * m0 + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * h * m1;
+}
+
+}  // namespace
+
+ImpedanceTable::Column ImpedanceTable::make_column(const std::vector<double>& log_v,
+                                                   const std::vector<std::optional<std::complex<double>>>& z) {
+  Column c;
+  bool gap = false;
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    if (!z[i]) {
+      gap = !c.log_v.empty();
+      continue;
+    }
+    if (!c.log_v.empty()) c.gap_after.push_back(gap);
+    gap = false;
+    c.log_v.push_back(log_v[i]);
+    c.z.push_back(*z[i]);
+  }
+  const std::size_t n = c.log_v.size();
+  c.slope.assign(n, 0.0);
+  if (n < 2) return c;
+  std::vector<double> h(n - 1);
+  std::vector<std::complex<double>> d(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    h[i] = c.log_v[i + 1] - c.log_v[i];
+    d[i] = (c.z[i + 1] - c.z[i]) / h[i];
+  }
+  c.slope.front() = d.front();
+  c.slope.back() = d.back();
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    c.slope[i] = {monotone_slope(h[i - 1], d[i - 1].real(), h[i], d[i].real()),
+                  monotone_slope(h[i - 1], d[i - 1].imag(), h[i], d[i].imag())};
+  }
+  return c;
+}
+
+ImpedanceTable::ImpedanceTable(const damper::Damper& damper, std::vector<double> frequencies,
+                               const ImpedanceTableOptions& options, const damper::SweepProgress& progress)
+    : frequencies_(std::move(frequencies)) {
+  options.validate();
+  velocities_ = damper::log_spaced(options.velocity_min, options.velocity_max, options.velocities);
+  damper::SweepSpec spec;
+  spec.frequencies = frequencies_;
+  spec.amplitudes = velocities_;
+  spec.solver = options.solver;
+  spec.threads = options.threads;
+  const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, progress);
+  std::vector<double> log_v(velocities_.size());
+  std::transform(velocities_.begin(), velocities_.end(), log_v.begin(), [](double v) { return std::log(v); });
+  for (std::size_t i = 0; i < frequencies_.size(); ++i) {
+    std::vector<std::optional<std::complex<double>>> z(velocities_.size());
+    for (std::size_t a = 0; a < runs.size(); ++a) {
+      const damper::ImpedancePoint& p = runs[a].points[i];
+      if (p.converged()) {
+        z[a] = p.impedance;
+      } else {
+        ++failed_;
+      }
+    }
+    columns_.push_back(make_column(log_v, z));
+  }
+}
+
+std::optional<std::complex<double>> ImpedanceTable::at(std::size_t i, double velocity) const {
+  const Column& c = columns_.at(i);
+  const std::size_t n = c.log_v.size();
+  if (n < 2) return std::nullopt;
+  const double u = std::log(velocity);
+  if (u <= c.log_v.front()) return c.z.front();
+  if (u >= c.log_v.back()) return c.z.back();
+  const std::size_t k = static_cast<std::size_t>(std::upper_bound(c.log_v.begin(), c.log_v.end(), u) - c.log_v.begin()) - 1;
+  if (c.gap_after[k]) return std::nullopt;
+  const double h = c.log_v[k + 1] - c.log_v[k], t = (u - c.log_v[k]) / h;
+  return std::complex<double>(table_hermite(t, h, c.z[k].real(), c.z[k + 1].real(), c.slope[k].real(), c.slope[k + 1].real()),
+                              table_hermite(t, h, c.z[k].imag(), c.z[k + 1].imag(), c.slope[k].imag(), c.slope[k + 1].imag()));
+}
+
+}  // namespace stockbridge::span

@@ -1,0 +1,57 @@
+#include "stockbridge/span/travelling_wave.hpp"
+
+#include <cassert>
+#include <cmath>
+
+namespace stockbridge::span {
+
+namespace {
+
+/// (Y, Y') of the string carried over a distance d without loads.
+void propagate(std::complex<double>& y, std::complex<double>& slope, double k, double d) {
+  const double c = std::cos(k * d), s = std::sin(k * d);
+  const std::complex<double> y_next = y * c + slope * s / k;
+  slope = -y * k * s + slope * c;
+  y = y_next;
+}
+
+}  // namespace
+
+std::vector<double> EndResponse::damper_velocities(double angular_frequency) const {
+  std::vector<double> v;
+  v.reserve(damper_displacement.size());
+  for (const std::complex<double>& y : damper_displacement) v.push_back(angular_frequency * std::abs(y));
+  return v;
+}
+
+EndResponse end_response(const StringWave& wave, const std::vector<double>& positions,
+                         const std::vector<std::complex<double>>& impedances, double antinode) {
+  assert(positions.size() == impedances.size());
+  const double k = wave.wavenumber;
+  const std::complex<double> jk(0.0, k);
+  // Unit slope at the fixed end: Y = sin(k x) / k up to the first damper.
+  std::complex<double> y = 0.0, slope = 1.0;
+  double x = 0.0;
+  std::vector<std::complex<double>> at_dampers;
+  for (std::size_t j = 0; j < positions.size(); ++j) {
+    propagate(y, slope, k, positions[j] - x);
+    x = positions[j];
+    at_dampers.push_back(y);
+    slope += jk * (impedances[j] / wave.wave_impedance) * y;
+  }
+  const std::complex<double> b = 0.5 * (y + slope / jk), a = 0.5 * (y - slope / jk);
+  const double scale = antinode / (std::abs(a) + std::abs(b));
+  EndResponse r;
+  r.loop_amplitude = scale / k;
+  r.outgoing = scale * std::abs(a);
+  r.incoming = scale * std::abs(b);
+  const double w2 = wave.angular_frequency * wave.angular_frequency;
+  r.absorbed_power = 0.5 * wave.wave_impedance * w2 * (r.incoming * r.incoming - r.outgoing * r.outgoing);
+  for (std::size_t j = 0; j < at_dampers.size(); ++j) {
+    r.damper_displacement.push_back(scale * at_dampers[j]);
+    r.damper_power += 0.5 * impedances[j].real() * w2 * std::norm(r.damper_displacement.back());
+  }
+  return r;
+}
+
+}  // namespace stockbridge::span

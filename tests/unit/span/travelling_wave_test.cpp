@@ -1,0 +1,99 @@
+// Dampers on a span end by travelling waves: the closed-form limits of MODEL.md
+// section 9 and the energy identity P_d = sum Re Z_j w^2 |Y_j|^2 / 2.
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "stockbridge/span/travelling_wave.hpp"
+
+namespace stockbridge::span {
+namespace {
+
+using namespace std::complex_literals;
+constexpr double kPi = std::numbers::pi;
+
+/// ASTER570 at 15 % RTS, 20 Hz: T = 27795 N, m = 1.571 kg/m.
+StringWave aster_wave(double f = 20.0) {
+  const double tension = 0.15 * 185300.0, m = 1.571;
+  const double c = std::sqrt(tension / m), w = 2.0 * kPi * f;
+  return {w, w / c, std::sqrt(tension * m)};
+}
+
+TEST(TravellingWave, WithoutDampersTheLoopIsTheAntinode) {
+  const EndResponse r = end_response(aster_wave(), {}, {}, 0.01);
+  EXPECT_NEAR(r.loop_amplitude, 0.01, 1e-15);
+  EXPECT_NEAR(r.incoming, 0.005, 1e-15);
+  EXPECT_NEAR(r.outgoing, 0.005, 1e-15);
+  EXPECT_NEAR(r.absorbed_power, 0.0, 1e-12);
+}
+
+TEST(TravellingWave, ADamperAtANodeAbsorbsNothing) {
+  const StringWave wave = aster_wave();
+  const EndResponse r = end_response(wave, {kPi / wave.wavenumber}, {150.0 + 40.0i}, 0.01);
+  EXPECT_NEAR(std::abs(r.damper_displacement[0]), 0.0, 1e-15);
+  EXPECT_NEAR(r.absorbed_power, 0.0, 1e-9);
+  EXPECT_NEAR(r.loop_amplitude, 0.01, 1e-14);
+}
+
+TEST(TravellingWave, AMatchedDamperAtAQuarterWaveAbsorbsTheWholeIncomingWave) {
+  const StringWave wave = aster_wave();
+  const EndResponse r = end_response(wave, {0.5 * kPi / wave.wavenumber}, {wave.wave_impedance}, 0.01);
+  EXPECT_NEAR(r.outgoing, 0.0, 1e-15);
+  EXPECT_NEAR(r.incoming, 0.01, 1e-15);
+  const double w = wave.angular_frequency;
+  EXPECT_NEAR(r.absorbed_power, 0.5 * wave.wave_impedance * w * w * 1e-4, 1e-12 * r.absorbed_power);
+}
+
+TEST(TravellingWave, AWeakDamperGivesTheClassicWeakForm) {
+  const StringWave wave = aster_wave();
+  const double a = 1.2, w = wave.angular_frequency, y = 0.01;
+  for (const double scale : {1e-2, 1e-3, 1e-4}) {
+    const std::complex<double> z = scale * wave.wave_impedance * (1.0 + 0.5i);
+    const EndResponse r = end_response(wave, {a}, {z}, y);
+    const double weak = 0.5 * z.real() * w * w * y * y * std::pow(std::sin(wave.wavenumber * a), 2);
+    EXPECT_NEAR(r.absorbed_power, weak, 3.0 * scale * weak) << scale;  // first order in |Z| / Z0
+  }
+}
+
+TEST(TravellingWave, APureMassIsTheClosedFormOfAStringWithAPointMass) {
+  // Left of the mass S sin(k x); right a standing wave C sin(k (x - a) + theta) of
+  // antinode |C| = Y. Continuity and the jump T (Y'+ - Y'-) = -w^2 M Y(a) give
+  // S / Y = 1 / sqrt(sin^2(k a) + (cos(k a) - mu sin(k a))^2), mu = w^2 M / (T k).
+  const StringWave wave = aster_wave();
+  const double w = wave.angular_frequency, k = wave.wavenumber, mass = 2.5;
+  const double tension = wave.wave_impedance * w / k;  // Z0 = T / c = T k / w
+  const double mu = w * w * mass / (tension * k);
+  for (const double a : {0.3, 1.0, 2.2, 4.0}) {
+    const EndResponse r = end_response(wave, {a}, {1i * w * mass}, 0.02);
+    const double ka = k * a;
+    const double expected = 1.0 / std::sqrt(std::pow(std::sin(ka), 2) + std::pow(std::cos(ka) - mu * std::sin(ka), 2));
+    EXPECT_NEAR(r.loop_amplitude / 0.02, expected, 1e-12 * expected) << a;
+    EXPECT_NEAR(r.absorbed_power, 0.0, 1e-9) << a;
+  }
+}
+
+TEST(TravellingWave, TheEndAbsorbsWhatItsDampersDissipate) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const StringWave wave = aster_wave(5.0 + 100.0 * u(random));
+    std::vector<double> positions;
+    std::vector<std::complex<double>> z;
+    double a = 0.0;
+    for (int j = 0; j < 1 + trial % 3; ++j) {
+      a += 0.2 + 2.0 * u(random);
+      positions.push_back(a);
+      z.emplace_back(400.0 * u(random), 600.0 * (u(random) - 0.5));
+    }
+    const EndResponse r = end_response(wave, positions, z, 0.005 + 0.02 * u(random));
+    EXPECT_NEAR(r.absorbed_power, r.damper_power, 1e-10 * std::max(1.0, r.damper_power)) << trial;
+    EXPECT_GE(r.damper_power, 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace stockbridge::span
