@@ -14,6 +14,7 @@
 
 #include "stockbridge/cable/experiment.hpp"
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/damper/modes.hpp"
 #include "stockbridge/damper/steady_state.hpp"
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/identification/global_identification.hpp"
@@ -321,6 +322,61 @@ py::dict identify_global(const std::string& experiment, double length, const std
   return out;
 }
 
+/// The modes command's JSON as a dict (the same keys), arms named as the CSV's columns.
+py::dict modes(const damper::Damper& d) {
+  damper::DamperModes result;
+  {
+    py::gil_scoped_release release;
+    result = damper::damper_modes(d);
+  }
+  const std::vector<std::string> names = requests::arm_column_prefixes(d);
+  auto whole = [&](const std::vector<damper::DamperMode>& modes) {
+    py::list hz, shapes;
+    for (const damper::DamperMode& mode : modes) {
+      py::list arms;
+      for (std::size_t k = 0; k < names.size(); ++k) {
+        py::dict arm;
+        arm["name"] = names[k];
+        arm["x"] = mode.arms[k](0);
+        arm["phi"] = mode.arms[k](1);
+        arm["energy_share"] = mode.arm_energy_share[k];
+        arms.append(arm);
+      }
+      py::dict shape;
+      shape["frequency_hz"] = mode.frequency_hz;
+      shape["dominant_arm"] = names[mode.dominant_arm];
+      shape["clamp_x"] = mode.clamp_deflection;
+      shape["clamp_energy_share"] = mode.clamp_energy_share;
+      shape["arms"] = arms;
+      hz.append(mode.frequency_hz);
+      shapes.append(shape);
+    }
+    return std::make_pair(hz, shapes);
+  };
+  py::list arms;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    py::dict arm;
+    arm["name"] = names[k];
+    const Eigen::Vector2d& stick = result.stick.arms[k].frequencies_hz;
+    const Eigen::Vector2d& slip = result.slip.arms[k].frequencies_hz;
+    arm["stick_hz"] = std::vector<double>{stick(0), stick(1)};
+    arm["slip_hz"] = std::vector<double>{slip(0), slip(1)};
+    arms.append(arm);
+  }
+  const auto [stick_hz, stick_modes] = whole(result.stick.damper);
+  const auto [slip_hz, slip_modes] = whole(result.slip.damper);
+  py::dict damper_out;
+  damper_out["clamp_mass_kg"] = d.clamp_mass();
+  damper_out["stick_hz"] = stick_hz;
+  damper_out["slip_hz"] = slip_hz;
+  damper_out["stick_modes"] = stick_modes;
+  damper_out["slip_modes"] = slip_modes;
+  py::dict out;
+  out["arms"] = arms;
+  out["damper"] = damper_out;
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -408,6 +464,10 @@ PYBIND11_MODULE(_core, m) {
         "One steady period; per-arm arrays have shape (arms, samples). A point that did not converge is returned "
         "as its last iterate with converged = False, its termination and message (NaN where nothing was computed). "
         "The point's design figures are numbers named as the impedance CSV's columns.");
+  m.def("modes", &modes, py::arg("damper"),
+        "Linear natural frequencies (Hz), every element sticking and every one slipping, as the modes command's "
+        "JSON: 'arms' (each arm, clamp held: name, stick_hz, slip_hz) and 'damper' (clamp free, the rigid-body "
+        "mode left out: stick_hz, slip_hz, and stick_modes/slip_modes with each arm's share of the energy).");
   m.def("cycle", &cycle, py::arg("cable"), py::arg("experiment"), py::arg("amplitude"), py::arg("cycles") = 2,
         py::arg("points") = 400, "Experiment 'a' (tip force) or 'b' (tip rotation) on a cable.");
   m.def("identify_local", &identify_local, py::arg("curvature"), py::arg("moment"), py::arg("elements") = 1,

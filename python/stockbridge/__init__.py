@@ -20,7 +20,7 @@ class UnusualValueWarning(UserWarning):
 try:
     from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, cycle,  # noqa: F401
                         identify_global, identify_local, impedance, load_cable, load_damper, load_strand, loop,
-                        response, strand_bounds)
+                        modes, response, strand_bounds)
     from ._core import _cable_from_toml, _damper_from_toml
 except ImportError:  # the plots work from the source tree without the compiled module
     pass

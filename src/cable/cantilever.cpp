@@ -66,7 +66,9 @@ CableState CableState::virgin(const Cable& cable) {
   return state;
 }
 
-Eigen::Matrix2d CableState::tip_stiffness(double length) const {
+Eigen::Matrix2d CableState::tip_stiffness(double length) const { return cable::tip_stiffness(flexibility, length); }
+
+Eigen::Matrix2d tip_stiffness(const Eigen::Matrix2d& flexibility, double length) {
   const Eigen::Matrix2d k = flexibility.inverse();  // d(T, F)/d(phi, x)
   Eigen::Matrix2d out;  // d(F, Q)/d(x, phi), Q = T - F l
   out(0, 0) = k(1, 1);

@@ -261,3 +261,27 @@ def test_unusual_sweep_and_response_values_warn_as_the_program_does():
         sb.impedance(damper, [20.0], velocity=100.0)
     with pytest.warns(sb.UnusualValueWarning, match=r"^frequency = 2000: outside the typical 0.5 to 500 Hz"):
         sb.response(damper, 2000.0, velocity=0.1)
+
+
+def test_modes_equal_the_programs_json():
+    out = subprocess.run([CLI, "modes", EXAMPLE, "--json"], check=True, capture_output=True, text=True).stdout
+    modes = sb.modes(sb.load_damper(EXAMPLE))
+    assert modes == json.loads(out)  # the same keys and, in shortest round-trip form, the same numbers
+    # MODEL.md section 4: each arm 21.2 / 68.2 Hz sticking, 7.4 / 23.9 Hz slipping.
+    assert [arm["name"] for arm in modes["arms"]] == ["left", "right"]
+    for arm in modes["arms"]:
+        assert arm["stick_hz"] == pytest.approx([21.2, 68.2], abs=0.05)
+        assert arm["slip_hz"] == pytest.approx([7.4, 23.9], abs=0.05)
+    # The whole damper, clamp free: 2 x 2 elastic modes (the rigid-body one left out);
+    # the identical arms' antisymmetric modes keep the clamp still at the arm's frequencies.
+    whole = modes["damper"]
+    assert len(whole["stick_hz"]) == 4 and whole["stick_hz"] == sorted(whole["stick_hz"])
+    assert whole["stick_hz"][0] == pytest.approx(modes["arms"][0]["stick_hz"][0], rel=1e-9)
+    assert whole["slip_hz"][2] == pytest.approx(modes["arms"][0]["slip_hz"][1], rel=1e-9)
+    assert whole["stick_modes"][0]["dominant_arm"] == "left"  # a tie between identical arms: the first
+    for mode in whole["slip_modes"]:
+        shares = mode["clamp_energy_share"] + sum(arm["energy_share"] for arm in mode["arms"])
+        assert shares == pytest.approx(1.0, rel=1e-12)
+    one_arm = sb.make_damper(0.0, [dict(name="a", mass=0.856, inertia=0.001814, offset=0.0325,
+                                        cable=dict(length=0.1875, sections=8, ei=2.8, jenkin=[{"c": 20.0, "h": 0.7}]))])
+    assert len(sb.modes(one_arm)["damper"]["slip_hz"]) == 1  # a massless clamp: one mode at infinity left out

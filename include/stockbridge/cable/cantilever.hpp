@@ -57,6 +57,9 @@ void apply_loads(const Cable& cable, const CableState& from, double clamp_moment
 
 /// d(phi, x)/d(T, F) for given section tangent stiffnesses.
 Eigen::Matrix2d tip_flexibility(const Cable& cable, std::span<const double> tangent);
+/// d(F, Q)/d(x, phi) from the flexibility d(phi, x)/d(T, F) of a cable of this
+/// length (Q = T - F l): the tip stiffness for the damper.
+Eigen::Matrix2d tip_stiffness(const Eigen::Matrix2d& flexibility, double length);
 
 struct CantileverOptions {
   int max_iterations = 50;    ///< Newton iterations per state determination

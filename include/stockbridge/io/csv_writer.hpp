@@ -19,6 +19,10 @@ class CsvWriter {
   /// Appends one row; it must have as many values as the header has names.
   void add_row(std::span<const double> values);
   void add_row(std::initializer_list<double> values) { add_row(std::span<const double>(values.begin(), values.size())); }
+  /// Appends one row of labels and numbers: `labels` fill the first columns (a cell
+  /// with ',', '"' or a line break is quoted, RFC 4180), `values` the rest, as add_row
+  /// writes them.
+  void add_row(std::span<const std::string> labels, std::span<const double> values);
 
   std::size_t columns() const { return columns_; }
   const std::string& text() const { return text_; }
