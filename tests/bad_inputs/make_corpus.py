@@ -79,6 +79,7 @@ cases = {
                                   'arm[0].cable.file: "nope.toml": expected an existing cable file'),
     "damper_cable_file_not_a_cable": (IMPEDANCE_CMD, "damper.toml",
                                       DAMPER.split("[arm.cable]")[0] + '[arm.cable]\nfile = "damper.toml"\n', "'cable'"),
+    "damper_modes_mass_zero": ("modes INPUT --json", "damper.toml", DAMPER.replace("mass = 0.856", "mass = 0"), "arm[0].mass = 0"),
     "damper_cable_file_not_a_string": (IMPEDANCE_CMD, "damper.toml", DAMPER.split("[arm.cable]")[0] + "[arm.cable]\nfile = 3\n",
                                        "arm[0].cable.file"),
     # strand files
