@@ -1,0 +1,73 @@
+#pragma once
+// The conductor of a span and its taut-string quantities (MODEL.md section 9).
+//
+// A span is a conductor of mass per length m and diameter D stretched by a tension
+// T between two clamps. For the wavelengths of aeolian vibration (0.3 to 30 m) the
+// conductor is a taut string:
+//     wave speed       c = sqrt(T / m)                       (m/s)
+//     wavenumber       k = 2 pi f / c                         (rad/m)
+//     wavelength       lambda = c / f                         (m)
+//     wave impedance   Z0 = sqrt(T m)                         (N s/m)
+// Its bending stiffness matters only within a few 1/p = sqrt(EI_min / T) of a
+// clamp or a point force, where the stresses are (span/fatigue.hpp). There the
+// tensioned beam EI y'''' - T y'' - m w^2 y = 0 has the wavenumbers of
+// beam_wavenumbers: a travelling k1 (-> k as EI -> 0) and a decaying p1 (-> p).
+//
+// Units: SI throughout (kg/m, m, N, N m^2, Pa, Hz).
+
+#include <string>
+
+namespace stockbridge::span {
+
+/// What a span file's [conductor] table says; validate() checks it once.
+struct Conductor {
+  std::string name;                     ///< for reports only (e.g. "ASTER570")
+  double mass_per_length = 0.0;         ///< m, kg/m
+  double diameter = 0.0;                ///< D, outer diameter, m
+  double rated_tensile_strength = 0.0;  ///< RTS, N
+  double ei_min = 0.0;                  ///< bending stiffness of the free wires, N m^2
+  double ei_max = 0.0;                  ///< no-slip bending stiffness, N m^2; 0: not given (only Foti's self-damping needs it)
+  double outer_wire_diameter = 0.0;     ///< d_a, diameter of an outer-layer wire, m
+  double outer_wire_modulus = 0.0;      ///< E_a, Young's modulus of the outer wires, Pa
+  int aluminium_layers = 1;             ///< picks the Safe Border Line: 1, or several (2..10)
+
+  /// Throws InvalidParameter naming the field as a span file spells it
+  /// ("mass_per_length = -1: expected a finite value > 0 (kg/m)"): every magnitude
+  /// plausible (core/error.hpp), ei_max 0 or >= ei_min, outer_wire_diameter < diameter,
+  /// aluminium_layers from 1 to 10.
+  void validate() const;
+};
+
+/// Throws InvalidParameter naming `field` unless 0 < tension < RTS (a conductor
+/// stretched to its rated strength breaks).
+void check_tension(const Conductor& conductor, double tension, const std::string& field = "tension");
+
+/// T = fraction RTS; throws InvalidParameter naming `field` unless 0 < fraction < 1.
+double tension_from_fraction(const Conductor& conductor, double fraction,
+                             const std::string& field = "tension_fraction");
+
+/// c = sqrt(T / m), m/s.
+double wave_speed(const Conductor& conductor, double tension);
+/// k = 2 pi f / c, rad/m.
+double wavenumber(const Conductor& conductor, double tension, double frequency);
+/// lambda = c / f, m.
+double wavelength(const Conductor& conductor, double tension, double frequency);
+/// Z0 = sqrt(T m), N s/m: the force per velocity of a travelling wave.
+double wave_impedance(const Conductor& conductor, double tension);
+/// p = sqrt(T / EI_min), 1/m: the inverse length over which a clamp bends the conductor.
+double bending_decay(const Conductor& conductor, double tension);
+
+/// Lilien's default factor of the self-damping power law, k = D[mm] / sqrt(m[kg/m] RTS[kN])
+/// (ASTER570: 31.05 / sqrt(1.571 * 185.3) = 1.82).
+double lilien_k(const Conductor& conductor);
+
+/// The two wavenumbers of the tensioned beam at w = 2 pi f:
+///     k1^2 = (sqrt(T^2 + 4 EI m w^2) - T) / (2 EI),  p1^2 = (sqrt(T^2 + 4 EI m w^2) + T) / (2 EI),
+/// so that sin(k1 x), cos(k1 x), exp(-p1 x) solve EI y'''' - T y'' - m w^2 y = 0 (EI = EI_min).
+struct BeamWavenumbers {
+  double travelling = 0.0;  ///< k1, rad/m
+  double decaying = 0.0;    ///< p1, 1/m
+};
+BeamWavenumbers beam_wavenumbers(const Conductor& conductor, double tension, double frequency);
+
+}  // namespace stockbridge::span

@@ -1,0 +1,78 @@
+#include "stockbridge/span/undamped.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+#include <boost/math/tools/toms748_solve.hpp>
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::span {
+
+namespace {
+
+/// The root of `f` in [a, b], where f(a) > 0 >= f(b), by TOMS 748 (Alefeld, Potra, Shi);
+/// none if `f` turns non-finite inside (Boost's errors for it are not let out).
+std::optional<double> refine_stable_root(const std::function<double(double)>& f, double a, double b, double fa,
+                                         double fb, const RootSearchOptions& options) {
+  if (fb == 0.0) return b;
+  const double tolerance = options.relative_tolerance;
+  auto close_enough = [tolerance](double lo, double hi) { return std::abs(hi - lo) <= tolerance * std::min(lo, hi); };
+  std::uintmax_t iterations = static_cast<std::uintmax_t>(options.max_iterations);
+  try {
+    const auto [lo, hi] = boost::math::tools::toms748_solve(f, a, b, fa, fb, close_enough, iterations);
+    return 0.5 * (lo + hi);
+  } catch (const boost::math::evaluation_error&) {
+    return std::nullopt;
+  } catch (const std::domain_error&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+void RootSearchOptions::validate() const {
+  require_in_range("points_per_decade", points_per_decade, 1, 100000);
+  require_positive("relative_tolerance", relative_tolerance, "");
+  require_in_range("max_iterations", max_iterations, 1, 100000);
+}
+
+std::optional<double> smallest_stable_root(const std::function<double(double)>& net_power, double y_min,
+                                           double y_max, const RootSearchOptions& options) {
+  options.validate();
+  require_positive("y_min", y_min, "m");
+  if (!(y_max > y_min && std::isfinite(y_max))) {
+    throw_invalid("y_max", y_max, fmt::format("a finite value > y_min = {}", format_value(y_min)));
+  }
+  const int steps = std::max(1, static_cast<int>(std::ceil(options.points_per_decade * std::log10(y_max / y_min))));
+  const double ratio = std::pow(y_max / y_min, 1.0 / steps);
+  double a = y_min;
+  double fa = net_power(a);
+  if (!std::isfinite(fa)) return std::nullopt;
+  if (fa <= 0.0) return 0.0;
+  for (int i = 1; i <= steps; ++i) {
+    const double b = i == steps ? y_max : y_min * std::pow(ratio, i);
+    const double fb = net_power(b);
+    if (!std::isfinite(fb)) return std::nullopt;
+    if (fb <= 0.0) return refine_stable_root(net_power, a, b, fa, fb, options);
+    a = b;
+    fa = fb;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> undamped_amplitude(const WindModel& wind, const SelfDampingModel& self_damping,
+                                         const Conductor& conductor, double tension, double span_length,
+                                         double frequency) {
+  auto net_power = [&](double y) {
+    return wind.power(y, frequency, conductor.diameter, span_length) -
+           self_damping.power(y, frequency, conductor, tension, span_length);
+  };
+  return smallest_stable_root(net_power, undamped_search_min * conductor.diameter,
+                              undamped_search_max * conductor.diameter);
+}
+
+}  // namespace stockbridge::span
