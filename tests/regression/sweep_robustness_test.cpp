@@ -73,7 +73,10 @@ TEST(SweepRobustness, ArclengthRescuesAPointNaturalContinuationMisses) {
 // from a decade below along the branch, and agrees with a sweep that reaches it.
 TEST(SweepRobustness, ALonePointNearAResonanceIsReachedAsASweepReachesIt) {
   const Damper damper = testing::damper_of({testing::sauter_arm(), testing::sauter_arm()});
-  for (const double f : {15.0, 20.0, 21.0, 22.0, 60.0, 68.0}) {
+  // Under the short scale (sanitizers) the two points that failed cold, on a shorter sweep.
+  const std::vector<double> frequencies =
+      testing::short_tests() ? std::vector<double>{20.0, 68.0} : std::vector<double>{15.0, 20.0, 21.0, 22.0, 60.0, 68.0};
+  for (const double f : frequencies) {
     SCOPED_TRACE(f);
     SweepSpec alone;
     alone.frequencies = {f};
@@ -81,7 +84,7 @@ TEST(SweepRobustness, ALonePointNearAResonanceIsReachedAsASweepReachesIt) {
     const ImpedancePoint lone = run_sweep(damper, alone).front().points.front();
     ASSERT_TRUE(lone.converged()) << lone.failure;
     SweepSpec sweep = alone;
-    sweep.frequencies = log_spaced(f / 4.0, f, 40);
+    sweep.frequencies = log_spaced(f / 4.0, f, scaled(40, 10));
     const ImpedancePoint swept = run_sweep(damper, sweep).front().points.back();
     ASSERT_TRUE(swept.converged()) << swept.failure;
     EXPECT_NEAR(std::abs(lone.impedance - swept.impedance), 0.0, 1e-6 * std::abs(swept.impedance));
