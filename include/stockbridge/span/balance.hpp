@@ -88,6 +88,15 @@ struct BalanceOptions {
   ImpedanceTableOptions table;
   FixedPointOptions fixed_point;
   RootSearchOptions root;
+  /// Polish with harmonic balance solved directly: the balance found with the
+  /// tables is corrected by Z_direct(v*) - Z_table(v*) at each damper's clamp
+  /// velocity v* and solved again, until v* moves by less than `polish_tolerance`
+  /// (relative); then every damper's Z is the directly solved one at its v*.
+  /// Without it the table's interpolation error stands (up to tens of percent in Z
+  /// where a resonance passes the frequency as v grows: docs/span.md).
+  bool polish = true;
+  double polish_tolerance = 1e-3;
+  int max_polish_iterations = 30;
   /// The amplitudes searched, as fractions of the conductor diameter.
   double amplitude_min_over_diameter = 1e-6;
   double amplitude_max_over_diameter = 10.0;
@@ -164,7 +173,9 @@ SpanBalance run_balance(const Span& span, const std::vector<double>& frequencies
 
 /// The position (m from the span end) in [position_min, position_max] minimising the
 /// largest fymax stress over the band, every damper moved together: a scan of
-/// `scan_points` positions, then a golden-section refinement around the best.
+/// `scan_points` positions, then a golden-section refinement around the best; the
+/// balances of the search use the tables without the polish (max_stress_fymax is
+/// theirs), so balance the position found with the caller's options.
 struct PositionSearch {
   double position = 0.0;
   double max_stress_fymax = 0.0;  ///< Pa, at the position found
