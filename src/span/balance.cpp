@@ -267,6 +267,7 @@ void fill_balanced(const Span& span, FrequencyBalance& balance, double y, Balanc
     sum_dampers += s.response.damper_power;
     for (std::size_t j = 0; j < s.velocities.size(); ++j) {
       DamperAtBalance d;
+      d.damper = balance.layouts()[e].damper[j];
       d.end = static_cast<int>(e) + 1;
       d.clamp_velocity = s.velocities[j];
       d.impedance = s.impedances[j];
@@ -310,7 +311,7 @@ std::optional<double> balanced_amplitude(const Span& span, FrequencyBalance& bal
 
 /// Solves every damper of `at` directly at its clamp velocity and shifts its table there.
 bool correct_at_velocities(const Span& span, FrequencyBalance& balance, const BalanceOptions& options,
-                           const EndsAtAmplitude& at, std::string& failure) {
+                           const std::vector<std::vector<double>>& velocities, std::string& failure) {
   const double f = balance.wave().angular_frequency / (2.0 * std::numbers::pi);
   struct Solved {
     std::size_t damper;
@@ -318,9 +319,9 @@ bool correct_at_velocities(const Span& span, FrequencyBalance& balance, const Ba
     std::complex<double> z;
   };
   std::vector<Solved> solved;  // the ends of a symmetric span ask for the same point twice
-  for (std::size_t e = 0; e < at.ends.size(); ++e) {
-    for (std::size_t j = 0; j < at.ends[e].velocities.size(); ++j) {
-      const double v = at.ends[e].velocities[j];
+  for (std::size_t e = 0; e < velocities.size(); ++e) {
+    for (std::size_t j = 0; j < velocities[e].size(); ++j) {
+      const double v = velocities[e][j];
       const std::size_t which = balance.layouts()[e].damper[j];
       auto known = std::find_if(solved.begin(), solved.end(), [&](const Solved& s) {
         return s.damper == which && std::abs(s.velocity - v) <= 1e-12 * v;
@@ -346,33 +347,73 @@ bool correct_at_velocities(const Span& span, FrequencyBalance& balance, const Ba
   return true;
 }
 
-/// Defect correction (BalanceOptions::polish): solve each damper directly at its
-/// clamp velocity, shift the table there, balance again, until the velocities stay.
+std::vector<std::vector<double>> velocities_of(const EndsAtAmplitude& at) {
+  std::vector<std::vector<double>> v;
+  for (const EndSolution& end : at.ends) v.push_back(end.velocities);
+  return v;
+}
+
+/// Defect correction (BalanceOptions::polish) as a root in the clamp velocities: at
+/// trial velocities v, each damper is solved directly there and its table shifted to
+/// that value; the balance with these impedances gives velocities G(v). The root of
+/// h(u) = log G(v) - u, u = log v, is found by the secant method for each damper
+/// (plain substitution oscillates where the table's slope in v is far off: a
+/// resonance passing the frequency). At the root every damper's Z is the directly
+/// solved one at its own clamp velocity.
 std::optional<double> polish(const Span& span, FrequencyBalance& balance, const BalanceOptions& options, double y,
                              std::string& failure) {
-  double moved = std::numeric_limits<double>::infinity();
+  const EndsAtAmplitude first = balance.dampers(y);
+  if (!first.known) {
+    failure = first.failure;
+    return std::nullopt;
+  }
+  std::vector<std::vector<double>> u = velocities_of(first), u_prev, h_prev;
+  for (auto& end : u) {
+    for (double& x : end) x = std::log(x);
+  }
+  // Per damper, the trial velocities (log) known to give h > 0 and h < 0: once both
+  // are known, a secant step that leaves the bracket is replaced by its midpoint.
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::vector<double>> above = u, below = u;
+  for (auto& end : above) std::fill(end.begin(), end.end(), kNone);
+  for (auto& end : below) std::fill(end.begin(), end.end(), kNone);
+  double worst = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration < options.max_polish_iterations; ++iteration) {
-    const EndsAtAmplitude at = balance.dampers(y);
-    if (!at.known || !correct_at_velocities(span, balance, options, at, failure)) {
-      if (failure.empty()) failure = at.failure;
-      return std::nullopt;
+    std::vector<std::vector<double>> v = u;
+    for (auto& end : v) {
+      for (double& x : end) x = std::exp(x);
     }
+    if (!correct_at_velocities(span, balance, options, v, failure)) return std::nullopt;
     const auto next = balanced_amplitude(span, balance, options, failure);
     if (!next) return std::nullopt;
     const EndsAtAmplitude after = balance.dampers(*next);
-    moved = 0.0;
-    for (std::size_t e = 0; e < after.ends.size() && e < at.ends.size(); ++e) {
-      for (std::size_t j = 0; j < after.ends[e].velocities.size(); ++j) {
-        const double v0 = at.ends[e].velocities[j], v1 = after.ends[e].velocities[j];
-        moved = std::max(moved, std::abs(v1 - v0) / v0);
+    std::vector<std::vector<double>> h = u, u_next = u;
+    worst = 0.0;
+    for (std::size_t e = 0; e < u.size(); ++e) {
+      for (std::size_t j = 0; j < u[e].size(); ++j) {
+        h[e][j] = std::log(after.ends[e].velocities[j]) - u[e][j];
+        worst = std::max(worst, std::abs(h[e][j]));
+        (h[e][j] > 0.0 ? above : below)[e][j] = u[e][j];
+        double step = h[e][j];
+        if (!h_prev.empty() && h_prev[e][j] != h[e][j]) {
+          const double secant = -h[e][j] * (u[e][j] - u_prev[e][j]) / (h[e][j] - h_prev[e][j]);
+          step = std::isfinite(secant) && std::abs(secant) <= 1.0 ? secant : 0.5 * h[e][j];
+        }
+        u_next[e][j] = u[e][j] + step;
+        const double a = above[e][j], b = below[e][j];
+        if (!std::isnan(a) && !std::isnan(b) && !(u_next[e][j] > std::min(a, b) && u_next[e][j] < std::max(a, b))) {
+          u_next[e][j] = 0.5 * (a + b);
+        }
       }
     }
-    y = *next;
-    if (moved <= options.polish_tolerance) return y;
+    if (worst <= options.polish_tolerance) return *next;
+    u_prev = std::move(u);
+    h_prev = std::move(h);
+    u = std::move(u_next);
   }
   failure = fmt::format("the polish with directly solved impedances still moved the clamp velocities by {:.3g} after {} "
                         "iterations (tolerance {:.3g})",
-                        moved, options.max_polish_iterations, options.polish_tolerance);
+                        worst, options.max_polish_iterations, options.polish_tolerance);
   return std::nullopt;
 }
 

@@ -88,14 +88,14 @@ struct BalanceOptions {
   ImpedanceTableOptions table;
   FixedPointOptions fixed_point;
   RootSearchOptions root;
-  /// Polish with harmonic balance solved directly: the balance found with the
-  /// tables is corrected by Z_direct(v*) - Z_table(v*) at each damper's clamp
-  /// velocity v* and solved again, until v* moves by less than `polish_tolerance`
-  /// (relative); then every damper's Z is the directly solved one at its v*.
+  /// Polish with harmonic balance solved directly: each damper's table is shifted
+  /// to Z_direct(v) at a trial clamp velocity v and the balance solved again; the
+  /// velocities that reproduce themselves are found by the secant method in log v,
+  /// to `polish_tolerance`; then every damper's Z is the directly solved one at its v*.
   /// Without it the table's interpolation error stands (up to tens of percent in Z
   /// where a resonance passes the frequency as v grows: docs/span.md).
   bool polish = true;
-  double polish_tolerance = 1e-3;
+  double polish_tolerance = 1e-6;
   int max_polish_iterations = 30;
   /// The amplitudes searched, as fractions of the conductor diameter.
   double amplitude_min_over_diameter = 1e-6;
@@ -106,6 +106,7 @@ struct BalanceOptions {
 
 /// One damper at one frequency's balance.
 struct DamperAtBalance {
+  std::size_t damper = 0;               ///< its index in Span::dampers()
   int end = 1;                          ///< 1 or 2
   double clamp_velocity = 0.0;          ///< v_j, m/s
   std::complex<double> impedance;       ///< Z_j(f, v_j), N s/m
@@ -127,7 +128,7 @@ struct BalancePoint {
   double stress_poffenberger_swart = 0.0;  ///< Pa
   double damper_clamp_stress = 0.0;     ///< largest over the dampers, Pa
   double identity_error = 0.0;          ///< |P_d - sum Re Z w^2 |Y_j|^2 / 2| relative to P_d
-  std::vector<DamperAtBalance> dampers; ///< end 1's in the span's order, then end 2's
+  std::vector<DamperAtBalance> dampers; ///< end 1's by position from the end, then end 2's
   double undamped_amplitude = 0.0;      ///< m
   double undamped_stress_fymax = 0.0;   ///< Pa
   Termination termination = Termination::not_run;
