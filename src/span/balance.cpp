@@ -1,0 +1,555 @@
+#include "stockbridge/span/balance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::span {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+void require_one_of(const std::optional<double>& a, std::string_view a_name, const std::optional<double>& b,
+                    std::string_view b_name) {
+  if (a.has_value() == b.has_value()) {
+    throw InvalidParameter(std::string(a.has_value() ? a_name : b_name),
+                           fmt::format(": give exactly one of {} and {}", a_name, b_name));
+  }
+}
+
+}  // namespace
+
+void FatigueSpec::validate() const {
+  require_one_of(cycles, "cycles", endurance_limit, "endurance_limit");
+  if (cycles) require_plausible("cycles", *cycles, "");
+  if (endurance_limit) require_plausible("endurance_limit", *endurance_limit, "Pa");
+  if (life) life->validate();
+}
+
+Span::Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
+           std::vector<SpanDamper> dampers, FatigueSpec fatigue)
+    : conductor_(std::move(conductor)),
+      length_(length),
+      tension_(tension),
+      wind_(std::move(wind)),
+      self_damping_(std::move(self_damping)),
+      dampers_(std::move(dampers)),
+      fatigue_(std::move(fatigue)) {
+  within_field("conductor", [&] { conductor_.validate(); });
+  require_plausible("span.length", length_, "m");
+  check_tension(conductor_, tension_, "span.tension");
+  within_field("wind", [&] { wind_.validate(); });
+  within_field("self_damping", [&] { self_damping_.validate(); });
+  self_damping_.validate_with(conductor_);  // names conductor.ei_max itself
+  for (std::size_t j = 0; j < dampers_.size(); ++j) {
+    const double a = dampers_[j].position;
+    if (!(a > 0.0 && a < 0.5 * length_)) {
+      throw_invalid(fmt::format("damper[{}].position", j), a,
+                    fmt::format("a distance from the span end > 0 and < half the span, {} m", 0.5 * length_));
+    }
+  }
+  within_field("fatigue", [&] { fatigue_.validate(); });
+}
+
+double Span::endurance_limit() const {
+  if (fatigue_.endurance_limit) return *fatigue_.endurance_limit;
+  return safe_border_line(conductor_.aluminium_layers).endurance_limit(*fatigue_.cycles);
+}
+
+Span Span::with_dampers_at(double position) const {
+  std::vector<SpanDamper> moved = dampers_;
+  const double shift = dampers_.empty() ? 0.0 : position - dampers_.front().position;
+  for (SpanDamper& d : moved) d.position += shift;
+  return Span(conductor_, length_, tension_, wind_, self_damping_, std::move(moved), fatigue_);
+}
+
+Span Span::without_dampers() const { return Span(conductor_, length_, tension_, wind_, self_damping_, {}, fatigue_); }
+
+DamperModel parse_damper_model(std::string_view name) {
+  if (name == "travelling") return DamperModel::travelling;
+  if (name == "weak") return DamperModel::weak;
+  throw InvalidParameter("damper_model", fmt::format(" = '{}': expected travelling or weak", name));
+}
+
+std::string_view damper_model_name(DamperModel model) { return model == DamperModel::weak ? "weak" : "travelling"; }
+
+void BalanceOptions::validate() const {
+  within_field("table", [&] { table.validate(); });
+  within_field("fixed_point", [&] { fixed_point.validate(); });
+  within_field("root", [&] { root.validate(); });
+  require_positive("polish_tolerance", polish_tolerance, "");
+  require_in_range("max_polish_iterations", max_polish_iterations, 1, 1000);
+  require_positive("amplitude_min_over_diameter", amplitude_min_over_diameter, "");
+  if (!(amplitude_max_over_diameter > amplitude_min_over_diameter)) {
+    throw_invalid("amplitude_max_over_diameter", amplitude_max_over_diameter, "a value > amplitude_min_over_diameter");
+  }
+}
+
+std::vector<double> band_frequencies(const Span& span, int points) {
+  const Interval band = span.wind().frequency_band(span.conductor().diameter);
+  return damper::log_spaced(band.lo, band.hi, points);
+}
+
+std::vector<ImpedanceTable> impedance_tables(const Span& span, const std::vector<double>& frequencies,
+                                             const BalanceOptions& options, const damper::SweepProgress& progress) {
+  options.validate();
+  std::vector<ImpedanceTable> tables;
+  const int total = static_cast<int>(span.dampers().size() * frequencies.size() * options.table.velocities);
+  int done_before = 0;
+  for (const SpanDamper& d : span.dampers()) {
+    const damper::SweepProgress per_table = [&](int done, int) {
+      if (progress) progress(done_before + done, total);
+    };
+    tables.emplace_back(d.damper, frequencies, options.table, per_table);
+    done_before += tables.back().nodes();
+  }
+  return tables;
+}
+
+namespace {
+
+/// The dampers of one end: their positions and which of the span's dampers each is.
+struct EndLayout {
+  std::vector<double> positions;
+  std::vector<std::size_t> damper;
+};
+
+/// End 1 holds every damper; end 2 those mounted at both ends.
+std::vector<EndLayout> end_layouts(const Span& span) {
+  std::vector<EndLayout> ends(2);
+  std::vector<std::size_t> order(span.dampers().size());
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return span.dampers()[a].position < span.dampers()[b].position; });
+  for (const std::size_t j : order) {
+    for (int e = 0; e < 2; ++e) {
+      if (e == 1 && !span.dampers()[j].both_ends) continue;
+      ends[e].positions.push_back(span.dampers()[j].position);
+      ends[e].damper.push_back(j);
+    }
+  }
+  if (ends[1].positions.empty()) ends.pop_back();
+  if (ends[0].positions.empty()) ends.clear();  // no dampers: the string's own standing wave, S = Y
+  return ends;
+}
+
+/// What the dampers of all ends do at one amplitude.
+struct EndsAtAmplitude {
+  std::vector<EndSolution> ends;
+  double absorbed = 0.0;  ///< P_d of all ends, W
+  bool known = true;
+  std::string failure;
+};
+
+class FrequencyBalance {
+ public:
+  FrequencyBalance(const Span& span, std::size_t index, double frequency, const std::vector<ImpedanceTable>& tables,
+                   const BalanceOptions& options)
+      : span_(span), index_(index), frequency_(frequency), tables_(tables), options_(options), layouts_(end_layouts(span)) {
+    const Conductor& c = span.conductor();
+    wave_.angular_frequency = 2.0 * std::numbers::pi * frequency;
+    wave_.wavenumber = wavenumber(c, span.tension(), frequency);
+    wave_.wave_impedance = wave_impedance(c, span.tension());
+    last_velocities_.resize(layouts_.size());
+    offsets_.resize(layouts_.size());
+    for (std::size_t e = 0; e < layouts_.size(); ++e) offsets_[e].assign(layouts_[e].positions.size(), 0.0);
+  }
+
+  double wind(double y) const {
+    return span_.wind().power(y, frequency_, span_.conductor().diameter, span_.length());
+  }
+  double self_damping(double y) const {
+    return span_.self_damping().power(y, frequency_, span_.conductor(), span_.tension(), span_.length());
+  }
+
+  /// The ends' dampers at antinode amplitude y (the fixed point from the last one solved).
+  EndsAtAmplitude dampers(double y) {
+    EndsAtAmplitude out;
+    for (std::size_t e = 0; e < layouts_.size(); ++e) {
+      const EndLayout& layout = layouts_[e];
+      const ClampImpedance z = [&](std::size_t j, double v) -> std::optional<std::complex<double>> {
+        const auto table = tables_[layout.damper[j]].at(index_, v);
+        if (!table) return std::nullopt;
+        return *table + offsets_[e][j];
+      };
+      EndSolution s = options_.damper_model == DamperModel::travelling
+                          ? solve_end(wave_, layout.positions, z, y, options_.fixed_point, last_velocities_[e])
+                          : weak_end(layout, z, y);
+      if (!s.converged) {
+        out.known = false;
+        out.failure = fmt::format("end {}: {}", e + 1, s.failure);
+        return out;
+      }
+      last_velocities_[e] = s.velocities;
+      out.absorbed += s.response.absorbed_power;
+      out.ends.push_back(std::move(s));
+    }
+    return out;
+  }
+
+  const StringWave& wave() const { return wave_; }
+  const std::vector<EndLayout>& layouts() const { return layouts_; }
+
+  /// Makes damper j of end e's impedance `direct` at clamp velocity v (the table's
+  /// shape kept, shifted by the difference there).
+  bool correct(std::size_t e, std::size_t j, double v, std::complex<double> direct) {
+    const auto table = tables_[layouts_[e].damper[j]].at(index_, v);
+    if (!table) return false;
+    offsets_[e][j] = direct - *table;
+    return true;
+  }
+
+ private:
+  /// The weak-damper form: the string's own standing wave, Y_j = Y sin(k a_j), each
+  /// damper absorbing Re Z w^2 |Y_j|^2 / 2 at v_j = w |Y_j|; no fixed point.
+  EndSolution weak_end(const EndLayout& layout, const ClampImpedance& z, double y) const {
+    EndSolution s;
+    s.response.loop_amplitude = y;
+    const double w = wave_.angular_frequency;
+    for (std::size_t j = 0; j < layout.positions.size(); ++j) {
+      const double yj = y * std::abs(std::sin(wave_.wavenumber * layout.positions[j]));
+      const auto zj = z(j, w * yj);
+      if (!zj) {
+        s.failure = fmt::format("damper {}: its impedance is not known near {:.3g} m/s", j + 1, w * yj);
+        return s;
+      }
+      s.velocities.push_back(w * yj);
+      s.impedances.push_back(*zj);
+      s.response.damper_displacement.emplace_back(yj);
+      const double p = 0.5 * zj->real() * w * w * yj * yj;
+      s.response.damper_power += p;
+      s.response.absorbed_power += p;
+    }
+    s.converged = true;
+    return s;
+  }
+
+  const Span& span_;
+  std::size_t index_;
+  double frequency_;
+  const std::vector<ImpedanceTable>& tables_;
+  const BalanceOptions& options_;
+  std::vector<EndLayout> layouts_;
+  StringWave wave_;
+  std::vector<std::vector<double>> last_velocities_;
+  std::vector<std::vector<std::complex<double>>> offsets_;  ///< per end and damper: Z_direct - Z_table at the last v*
+};
+
+void fill_undamped(const Span& span, double f, BalancePoint& p) {
+  const auto y = undamped_amplitude(span.wind(), span.self_damping(), span.conductor(), span.tension(), span.length(), f);
+  p.undamped_amplitude = y.value_or(kNaN);
+  p.undamped_stress_fymax = y ? fymax_stress(span.conductor(), f, *y) : kNaN;
+}
+
+/// The figures at the balance amplitude y.
+void fill_balanced(const Span& span, FrequencyBalance& balance, double y, BalancePoint& p) {
+  const Conductor& c = span.conductor();
+  const double f = p.frequency_hz;
+  const EndsAtAmplitude at = balance.dampers(y);
+  p.amplitude = y;
+  p.wind_power = balance.wind(y);
+  p.self_damping_power = balance.self_damping(y);
+  p.damper_power = at.absorbed;
+  p.clamp_loop_amplitude = at.ends.empty() ? y : at.ends.front().response.loop_amplitude;
+  p.stress_fymax = fymax_stress(c, f, p.clamp_loop_amplitude);
+  p.stress_poffenberger_swart =
+      poffenberger_swart_stress(c, span.tension(), bending_amplitude(c, span.tension(), f, p.clamp_loop_amplitude));
+  double sum_dampers = 0.0;
+  p.damper_clamp_stress = 0.0;
+  for (std::size_t e = 0; e < at.ends.size(); ++e) {
+    const EndSolution& s = at.ends[e];
+    sum_dampers += s.response.damper_power;
+    for (std::size_t j = 0; j < s.velocities.size(); ++j) {
+      DamperAtBalance d;
+      d.damper = balance.layouts()[e].damper[j];
+      d.end = static_cast<int>(e) + 1;
+      d.clamp_velocity = s.velocities[j];
+      d.impedance = s.impedances[j];
+      const double w = balance.wave().angular_frequency;
+      d.power = 0.5 * d.impedance.real() * w * w * std::norm(s.response.damper_displacement[j]);
+      d.clamp_stress = point_force_stress(c, span.tension(), std::abs(d.impedance) * d.clamp_velocity);
+      p.damper_clamp_stress = std::max(p.damper_clamp_stress, d.clamp_stress);
+      p.dampers.push_back(d);
+    }
+  }
+  p.identity_error = p.damper_power > 0.0 ? std::abs(p.damper_power - sum_dampers) / p.damper_power : 0.0;
+}
+
+void mask(BalancePoint& p) {
+  for (double* x : {&p.amplitude, &p.wind_power, &p.self_damping_power, &p.damper_power, &p.clamp_loop_amplitude,
+                    &p.stress_fymax, &p.stress_poffenberger_swart, &p.damper_clamp_stress, &p.identity_error}) {
+    *x = kNaN;
+  }
+  p.dampers.clear();
+}
+
+/// A point's energy identity must hold to round-off: P_d of the ends (travelling
+/// waves) equals what their dampers dissipate.
+constexpr double kIdentityTolerance = 1e-8;
+
+/// The smallest stable amplitude with the dampers' current impedances.
+std::optional<double> balanced_amplitude(const Span& span, FrequencyBalance& balance, const BalanceOptions& options,
+                                         std::string& failure) {
+  const auto net = [&](double y) {
+    const EndsAtAmplitude at = balance.dampers(y);
+    if (!at.known) {
+      if (failure.empty()) failure = fmt::format("at Y = {:.3g} m: {}", y, at.failure);
+      return kNaN;
+    }
+    return balance.wind(y) - balance.self_damping(y) - at.absorbed;
+  };
+  const double d = span.conductor().diameter;
+  return smallest_stable_root(net, options.amplitude_min_over_diameter * d, options.amplitude_max_over_diameter * d,
+                              options.root);
+}
+
+/// Solves every damper of `at` directly at its clamp velocity and shifts its table there.
+bool correct_at_velocities(const Span& span, FrequencyBalance& balance, const BalanceOptions& options,
+                           const std::vector<std::vector<double>>& velocities, std::string& failure) {
+  const double f = balance.wave().angular_frequency / (2.0 * std::numbers::pi);
+  struct Solved {
+    std::size_t damper;
+    double velocity;
+    std::complex<double> z;
+  };
+  std::vector<Solved> solved;  // the ends of a symmetric span ask for the same point twice
+  for (std::size_t e = 0; e < velocities.size(); ++e) {
+    for (std::size_t j = 0; j < velocities[e].size(); ++j) {
+      const double v = velocities[e][j];
+      const std::size_t which = balance.layouts()[e].damper[j];
+      auto known = std::find_if(solved.begin(), solved.end(), [&](const Solved& s) {
+        return s.damper == which && std::abs(s.velocity - v) <= 1e-12 * v;
+      });
+      if (known == solved.end()) {
+        damper::SweepSpec lone;
+        lone.frequencies = {f};
+        lone.amplitudes = {v};
+        lone.solver = options.table.solver;
+        const damper::ImpedancePoint direct = damper::run_sweep(span.dampers()[which].damper, lone).front().points.front();
+        if (!direct.converged()) {
+          failure = fmt::format("end {}, damper {} solved directly at {:.4g} m/s: {}", e + 1, j + 1, v, direct.failure);
+          return false;
+        }
+        known = solved.insert(solved.end(), Solved{which, v, direct.impedance});
+      }
+      if (!balance.correct(e, j, v, known->z)) {
+        failure = fmt::format("end {}, damper {}: the table has no impedance near {:.4g} m/s", e + 1, j + 1, v);
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+std::vector<std::vector<double>> velocities_of(const EndsAtAmplitude& at) {
+  std::vector<std::vector<double>> v;
+  for (const EndSolution& end : at.ends) v.push_back(end.velocities);
+  return v;
+}
+
+/// Defect correction (BalanceOptions::polish) as a root in the clamp velocities: at
+/// trial velocities v, each damper is solved directly there and its table shifted to
+/// that value; the balance with these impedances gives velocities G(v). The root of
+/// h(u) = log G(v) - u, u = log v, is found by the secant method for each damper
+/// (plain substitution oscillates where the table's slope in v is far off: a
+/// resonance passing the frequency). At the root every damper's Z is the directly
+/// solved one at its own clamp velocity.
+std::optional<double> polish(const Span& span, FrequencyBalance& balance, const BalanceOptions& options, double y,
+                             std::string& failure) {
+  const EndsAtAmplitude first = balance.dampers(y);
+  if (!first.known) {
+    failure = first.failure;
+    return std::nullopt;
+  }
+  std::vector<std::vector<double>> u = velocities_of(first), u_prev, h_prev;
+  for (auto& end : u) {
+    for (double& x : end) x = std::log(x);
+  }
+  // Per damper, the trial velocities (log) known to give h > 0 and h < 0: once both
+  // are known, a secant step that leaves the bracket is replaced by its midpoint.
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::vector<double>> above = u, below = u;
+  for (auto& end : above) std::fill(end.begin(), end.end(), kNone);
+  for (auto& end : below) std::fill(end.begin(), end.end(), kNone);
+  double worst = std::numeric_limits<double>::infinity();
+  for (int iteration = 0; iteration < options.max_polish_iterations; ++iteration) {
+    std::vector<std::vector<double>> v = u;
+    for (auto& end : v) {
+      for (double& x : end) x = std::exp(x);
+    }
+    if (!correct_at_velocities(span, balance, options, v, failure)) return std::nullopt;
+    const auto next = balanced_amplitude(span, balance, options, failure);
+    if (!next) return std::nullopt;
+    const EndsAtAmplitude after = balance.dampers(*next);
+    std::vector<std::vector<double>> h = u, u_next = u;
+    worst = 0.0;
+    for (std::size_t e = 0; e < u.size(); ++e) {
+      for (std::size_t j = 0; j < u[e].size(); ++j) {
+        h[e][j] = std::log(after.ends[e].velocities[j]) - u[e][j];
+        worst = std::max(worst, std::abs(h[e][j]));
+        (h[e][j] > 0.0 ? above : below)[e][j] = u[e][j];
+        double step = h[e][j];
+        if (!h_prev.empty() && h_prev[e][j] != h[e][j]) {
+          const double secant = -h[e][j] * (u[e][j] - u_prev[e][j]) / (h[e][j] - h_prev[e][j]);
+          step = std::isfinite(secant) && std::abs(secant) <= 1.0 ? secant : 0.5 * h[e][j];
+        }
+        u_next[e][j] = u[e][j] + step;
+        const double a = above[e][j], b = below[e][j];
+        if (!std::isnan(a) && !std::isnan(b) && !(u_next[e][j] > std::min(a, b) && u_next[e][j] < std::max(a, b))) {
+          u_next[e][j] = 0.5 * (a + b);
+        }
+      }
+    }
+    if (worst <= options.polish_tolerance) return *next;
+    u_prev = std::move(u);
+    h_prev = std::move(h);
+    u = std::move(u_next);
+  }
+  failure = fmt::format("the polish with directly solved impedances still moved the clamp velocities by {:.3g} after {} "
+                        "iterations (tolerance {:.3g})",
+                        worst, options.max_polish_iterations, options.polish_tolerance);
+  return std::nullopt;
+}
+
+BalancePoint balance_at(const Span& span, std::size_t i, double f, const std::vector<ImpedanceTable>& tables,
+                        const BalanceOptions& options) {
+  BalancePoint p;
+  p.frequency_hz = f;
+  p.wind_speed = span.wind().wind_speed(f, span.conductor().diameter);
+  p.wavelength = wavelength(span.conductor(), span.tension(), f);
+  fill_undamped(span, f, p);
+  FrequencyBalance balance(span, i, f, tables, options);
+  std::string failure;
+  auto y = balanced_amplitude(span, balance, options, failure);
+  if (y && options.polish && !span.dampers().empty()) y = polish(span, balance, options, *y, failure);
+  if (!y) {
+    const double y_max = options.amplitude_max_over_diameter * span.conductor().diameter;
+    p.termination = failure.empty() ? Termination::max_iterations : Termination::inner_failure;
+    p.failure = failure.empty() ? fmt::format("no balance: the wind's power exceeds the dissipation up to Y = {:.3g} m", y_max)
+                                : failure;
+    mask(p);
+    return p;
+  }
+  fill_balanced(span, balance, *y, p);
+  if (!(p.identity_error <= kIdentityTolerance)) {
+    p.termination = Termination::energy_mismatch;
+    p.failure = fmt::format("the ends absorb {:.6g} W but their dampers dissipate {:.6g} (relative error {:.3g})",
+                            p.damper_power, p.damper_power * (1.0 - p.identity_error), p.identity_error);
+    mask(p);
+    return p;
+  }
+  p.termination = Termination::converged;
+  return p;
+}
+
+BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& points, const std::vector<ImpedanceTable>& tables) {
+  BalanceSummary s;
+  s.points = static_cast<int>(points.size());
+  s.endurance_limit = span.endurance_limit();
+  std::vector<double> frequencies, stresses, undamped;
+  for (const BalancePoint& p : points) {
+    frequencies.push_back(p.frequency_hz);
+    undamped.push_back(std::isfinite(p.undamped_stress_fymax) ? p.undamped_stress_fymax : 0.0);
+    if (std::isfinite(p.undamped_stress_fymax) && p.undamped_stress_fymax > s.undamped_max_stress_fymax) {
+      s.undamped_max_stress_fymax = p.undamped_stress_fymax;
+      s.undamped_max_stress_frequency_hz = p.frequency_hz;
+    }
+    stresses.push_back(p.converged() ? p.stress_fymax : 0.0);
+    if (!p.converged()) continue;
+    ++s.converged;
+    if (p.stress_fymax > s.max_stress_fymax) {
+      s.max_stress_fymax = p.stress_fymax;
+      s.max_stress_frequency_hz = p.frequency_hz;
+    }
+    s.max_damper_clamp_stress = std::max(s.max_damper_clamp_stress, p.damper_clamp_stress);
+  }
+  s.safe = s.converged == s.points && s.max_stress_fymax <= s.endurance_limit;
+  if (span.fatigue().life && !points.empty()) {
+    const SafeBorderLine line = safe_border_line(span.conductor().aluminium_layers);
+    const double d = span.conductor().diameter;
+    s.life = estimate_life(frequencies, stresses, span.wind(), d, *span.fatigue().life, line);
+    s.undamped_life = estimate_life(frequencies, undamped, span.wind(), d, *span.fatigue().life, line);
+  }
+  for (const ImpedanceTable& t : tables) {
+    s.impedance_nodes += t.nodes();
+    s.failed_impedance_nodes += t.failed_nodes();
+  }
+  return s;
+}
+
+}  // namespace
+
+SpanBalance run_balance(const Span& span, const std::vector<double>& frequencies, const std::vector<ImpedanceTable>& tables,
+                        const BalanceOptions& options) {
+  options.validate();
+  if (tables.size() != span.dampers().size()) {
+    throw InvalidParameter("tables", fmt::format(": {} impedance tables for {} dampers", tables.size(), span.dampers().size()));
+  }
+  for (const ImpedanceTable& t : tables) {
+    if (t.frequencies() != frequencies) throw InvalidParameter("tables", ": made for other frequencies");
+  }
+  SpanBalance out;
+  for (std::size_t i = 0; i < frequencies.size(); ++i) out.points.push_back(balance_at(span, i, frequencies[i], tables, options));
+  out.summary = summarise(span, out.points, tables);
+  return out;
+}
+
+PositionSearch optimise_position(const Span& span, const std::vector<double>& frequencies,
+                                 const std::vector<ImpedanceTable>& tables, const BalanceOptions& options,
+                                 double position_min, double position_max, int scan_points) {
+  require_positive("position_min", position_min, "m");
+  if (!(position_max > position_min)) throw_invalid("position_max", position_max, "a value > position_min (m)");
+  require_in_range("scan_points", scan_points, 3, 10000);
+  if (span.dampers().empty()) throw InvalidParameter("damper: a position search needs at least one [[damper]]");
+  PositionSearch best;
+  // The search compares positions on the tables alone (the polish would cost direct
+  // solves at every trial); the chosen position is then balanced with the caller's options.
+  BalanceOptions scan = options;
+  scan.polish = false;
+  const auto largest_stress = [&](double a) {
+    ++best.balances;
+    const SpanBalance b = run_balance(span.with_dampers_at(a), frequencies, tables, scan);
+    // A point that did not converge counts as the worst: never chosen for it.
+    return b.summary.converged == b.summary.points ? b.summary.max_stress_fymax : std::numeric_limits<double>::infinity();
+  };
+  // The scan finds the best basin (the stress over position has a local minimum near
+  // every node of the shortest waves); golden sections then refine within it.
+  const double step = (position_max - position_min) / (scan_points - 1);
+  std::vector<double> stress(static_cast<std::size_t>(scan_points));
+  std::size_t k_best = 0;
+  for (int k = 0; k < scan_points; ++k) {
+    stress[static_cast<std::size_t>(k)] = largest_stress(position_min + k * step);
+    if (stress[static_cast<std::size_t>(k)] < stress[k_best]) k_best = static_cast<std::size_t>(k);
+  }
+  double lo = std::max(position_min, position_min + (static_cast<double>(k_best) - 1.0) * step);
+  double hi = std::min(position_max, position_min + (static_cast<double>(k_best) + 1.0) * step);
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
+  double f1 = largest_stress(x1), f2 = largest_stress(x2);
+  while (hi - lo > 1e-3 * step) {
+    if (f1 <= f2) {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - ratio * (hi - lo);
+      f1 = largest_stress(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + ratio * (hi - lo);
+      f2 = largest_stress(x2);
+    }
+  }
+  best.position = f1 <= f2 ? x1 : x2;
+  best.max_stress_fymax = std::min(f1, f2);
+  if (stress[k_best] < best.max_stress_fymax) {
+    best.position = position_min + static_cast<double>(k_best) * step;
+    best.max_stress_fymax = stress[k_best];
+  }
+  return best;
+}
+
+}  // namespace stockbridge::span
