@@ -95,7 +95,7 @@ cases = {
     "span_diameter_negative": (SPAN_CMD, "span.toml", SPAN.replace("diameter = 0.03105", "diameter = -1"), "conductor.diameter = -1"),
     "span_diameter_in_mm": (SPAN_CMD, "span.toml", SPAN.replace("outer_wire_diameter = 0.00345", "outer_wire_diameter = 3.45"),
                             "conductor.outer_wire_diameter = 3.45"),
-    "span_layers_zero": (SPAN_CMD, "span.toml", SPAN.replace("aluminium_layers = 4", "aluminium_layers = 0"), "conductor.aluminium_layers = 0"),
+    "span_layers_zero": (SPAN_CMD, "span.toml", SPAN.replace("aluminium_layers = 4", "aluminium_layers = 0"), "conductor.aluminium_layers: 0: expected an integer from 1 to 10"),
     "span_layers_float": (SPAN_CMD, "span.toml", SPAN.replace("aluminium_layers = 4", "aluminium_layers = 4.5"), "conductor.aluminium_layers"),
     "span_length_1e307": (SPAN_CMD, "span.toml", SPAN.replace("length = 400", "length = 1e307"), "span.length = 1e+307"),
     "span_both_tensions": (SPAN_CMD, "span.toml", SPAN.replace("tension_fraction = 0.15", "tension_fraction = 0.15\ntension = 30000"),
