@@ -17,5 +17,6 @@ void add_impedance_command(CLI::App& app, int& exit_code);
 void add_response_command(CLI::App& app, int& exit_code);
 void add_strand_command(CLI::App& app, int& exit_code);
 void add_modes_command(CLI::App& app, int& exit_code);
+void add_span_command(CLI::App& app, int& exit_code);
 
 }  // namespace stockbridge::cli

@@ -4,6 +4,7 @@
 
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/span_file.hpp"
 
 namespace stockbridge::cli {
 
@@ -15,6 +16,16 @@ damper::Damper read_damper_input(const std::string& path, const std::vector<Comm
   require_outputs_apart(outputs, inputs);
   print_warnings(file.warnings);
   return std::move(file.damper);
+}
+
+span::Span read_span_input(const std::string& path, const std::vector<CommandFile>& outputs) {
+  require_outputs_apart(outputs, {{"the span file", path}});
+  io::SpanFile file = io::load_span_file(path);
+  std::vector<CommandFile> inputs;
+  for (const auto& input : file.inputs) inputs.push_back({"a file the span file references", input.string()});
+  require_outputs_apart(outputs, inputs);
+  print_warnings(file.warnings);
+  return std::move(file.span);
 }
 
 cable::Cable read_cable_input(const std::string& path, const std::vector<CommandFile>& outputs) {

@@ -10,12 +10,16 @@
 #include "stockbridge/cable/cable.hpp"
 #include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/damper/damper.hpp"
+#include "stockbridge/span/balance.hpp"
 
 namespace stockbridge::cli {
 
 /// The damper file at `path`; throws InvalidParameter if an output would overwrite
 /// it or a cable file it references.
 damper::Damper read_damper_input(const std::string& path, const std::vector<CommandFile>& outputs);
+/// The span file at `path`; throws InvalidParameter if an output would overwrite it
+/// or a file it references (damper files, their cable files, a wind table).
+span::Span read_span_input(const std::string& path, const std::vector<CommandFile>& outputs);
 /// The cable file at `path`; throws InvalidParameter if an output would overwrite it.
 cable::Cable read_cable_input(const std::string& path, const std::vector<CommandFile>& outputs);
 

@@ -22,9 +22,11 @@
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/span_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
 #include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/section_loop.hpp"
+#include "stockbridge/requests/span_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 #include "stockbridge/strand/strand_bounds.hpp"
 
@@ -322,6 +324,63 @@ py::dict identify_global(const std::string& experiment, double length, const std
   return out;
 }
 
+/// The span command's CSV columns as arrays (one value per frequency) and its --json
+/// summary as JSON text (the package's span() parses it into a dict).
+py::dict span_balance(const std::optional<std::string>& path, const std::optional<std::string>& text,
+                      const std::optional<std::vector<double>>& frequencies, int points, bool no_dampers,
+                      const std::string& damper_model, const std::optional<std::pair<double, double>>& optimize_position,
+                      int threads) {
+  if (path.has_value() == text.has_value()) {
+    throw InvalidParameter("give either file (a span file's path) or text (a span file's contents), one of the two");
+  }
+  requests::SpanRequest request;
+  if (frequencies) {
+    if (frequencies->empty()) throw InvalidParameter("frequencies", ": an empty list, expected at least one frequency (Hz)");
+    request.frequencies = *frequencies;
+  }
+  request.points = points;
+  request.no_dampers = no_dampers;
+  request.damper_model = damper_model;
+  if (optimize_position) {
+    request.position_min = optimize_position->first;
+    request.position_max = optimize_position->second;
+  }
+  request.threads = threads;
+  requests::validate(request);
+  io::SpanFile file = path ? io::load_span_file(*path) : io::load_span_text(*text, "span(text=...)");
+  warn(file.warnings);
+  std::optional<requests::SpanResult> result;
+  {
+    py::gil_scoped_release release;
+    result.emplace(requests::run_span(file.span, request));
+  }
+  const std::vector<std::string> columns = requests::span_columns(result->span);
+  const std::size_t n = result->balance.points.size();
+  std::vector<std::vector<double>> values(columns.size(), std::vector<double>(n));
+  py::array_t<bool> converged(n);
+  auto ok = converged.mutable_unchecked<1>();
+  py::list terminations, messages;
+  for (std::size_t i = 0; i < n; ++i) {
+    const span::BalancePoint& p = result->balance.points[i];
+    const std::vector<double> row = requests::span_row(result->span, p);
+    for (std::size_t c = 0; c < columns.size(); ++c) values[c][i] = row[c];
+    ok(i) = p.converged();
+    terminations.append(std::string(termination_name(p.termination)));
+    messages.append(p.failure);
+  }
+  py::dict out;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    if (columns[c] != "converged") out[py::str(columns[c])] = array(values[c]);
+  }
+  out["converged"] = converged;
+  out["termination"] = terminations;
+  out["messages"] = messages;
+  out["dampers"] = requests::span_damper_prefixes(result->span);  // the <name> of the per-damper columns
+  out["columns"] = columns;
+  out["summary_json"] = requests::span_summary(*result).str();
+  return out;
+}
+
 /// The modes command's JSON as a dict (the same keys), arms named as the CSV's columns.
 py::dict modes(const damper::Damper& d) {
   damper::DamperModes result;
@@ -464,6 +523,12 @@ PYBIND11_MODULE(_core, m) {
         "One steady period; per-arm arrays have shape (arms, samples). A point that did not converge is returned "
         "as its last iterate with converged = False, its termination and message (NaN where nothing was computed). "
         "The point's design figures are numbers named as the impedance CSV's columns.");
+  m.def("_span", &span_balance, py::arg("file") = py::none(), py::arg("text") = py::none(),
+        py::arg("frequencies") = py::none(), py::arg("points") = requests::SpanRequest{}.points,
+        py::arg("no_dampers") = false, py::arg("damper_model") = requests::SpanRequest{}.damper_model,
+        py::arg("optimize_position") = py::none(), py::arg("threads") = 1,
+        "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
+        "'converged', 'termination', 'messages', 'dampers', 'columns' and the --json summary as 'summary_json'.");
   m.def("modes", &modes, py::arg("damper"),
         "Linear natural frequencies (Hz), every element sticking and every one slipping, as the modes command's "
         "JSON: 'arms' (each arm, clamp held: name, stick_hz, slip_hz) and 'damper' (clamp free, the rigid-body "

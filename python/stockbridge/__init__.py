@@ -6,7 +6,10 @@ built by the CMake project) and adds plots (``python3 -m stockbridge.plot``).
     import stockbridge as sb
     damper = sb.load_damper("examples/sauter2003.toml")
     z = sb.impedance(damper, [10.0, 20.0], velocity=[0.2, 0.05])
+    s = sb.span("examples/aster570_400m.toml", points=50)
 """
+
+import json
 
 from . import _toml
 
@@ -21,7 +24,7 @@ try:
     from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, cycle,  # noqa: F401
                         identify_global, identify_local, impedance, load_cable, load_damper, load_strand, loop,
                         modes, response, strand_bounds)
-    from ._core import _cable_from_toml, _damper_from_toml
+    from ._core import _cable_from_toml, _damper_from_toml, _span
 except ImportError:  # the plots work from the source tree without the compiled module
     pass
 
@@ -73,3 +76,24 @@ def make_damper(clamp_mass, arms):
         if cable is not None:
             text += _toml.table("arm.cable", cable)
     return _from_values(_damper_from_toml, text, "make_damper")
+
+
+def span(file=None, frequencies=None, points=100, no_dampers=False, damper_model="travelling",
+         optimize_position=None, threads=1, text=None):
+    """The energy balance of a span over the wind band, as ``stockbridge span``: a span
+    file's path (`file`) or its contents (`text`, damper files relative to the working
+    directory); `frequencies` (Hz, increasing) or `points` log-spaced over the band;
+    `no_dampers`; `damper_model` "travelling" or "weak"; `optimize_position` = (amin,
+    amax) in m to search the dampers' position first; `threads` for the dampers'
+    impedance tables.
+
+    Returns a dict: one array per column of the span CSV, by the CSV's names (stresses
+    in MPa; NaN where a point did not converge), 'converged' (bool array),
+    'termination' and 'messages' (per point), 'dampers' (the <name> of the per-damper
+    columns), 'columns' (the CSV's order) and 'summary': the --json summary's keys
+    (None where the JSON has null)."""
+    out = _span(file=None if file is None else str(file), text=text, frequencies=frequencies, points=points,
+                no_dampers=no_dampers, damper_model=damper_model,
+                optimize_position=None if optimize_position is None else tuple(optimize_position), threads=threads)
+    out["summary"] = json.loads(out.pop("summary_json"))
+    return out

@@ -4,6 +4,7 @@
                                 [--re-im] [--linear] [--power]
     python3 -m stockbridge.plot loop cycle.csv -o loop.png      (cycle, response or loop CSV)
     python3 -m stockbridge.plot fit fitted.csv -o fit.png       (identify ... --fitted)
+    python3 -m stockbridge.plot span span.csv -o span.png       (span: damped and undamped)
 
 Errors (a missing file or column, a cell that is not a number, nothing to plot, an
 output that cannot be written) print one line on stderr and exit with status 2,
@@ -21,7 +22,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
-from matplotlib.ticker import LogLocator, MaxNLocator, NullFormatter, ScalarFormatter  # noqa: E402
+from matplotlib.ticker import FuncFormatter, LogLocator, MaxNLocator, NullFormatter  # noqa: E402
 
 FIGURE_SIZE = (8.0, 6.0)  # inches; at DPI this gives 800 x 600 pixels
 DPI = 100
@@ -142,14 +143,15 @@ def plotted(axes, which):
 def log_scale(axes, which):
     """A log scale labelled in plain numbers: at 1 to 9 times the powers of ten over less
     than a decade, at 1, 2 and 5 times them over two (the default would label one tick or
-    none), at the powers of ten over more."""
+    none), at the powers of ten over more; each label the tick's value in its shortest
+    form (a fixed number of decimals would print 0.1 as "0")."""
     values = [v for v in plotted(axes, which) if v > 0]
     decades = math.log10(max(values) / min(values)) if values else 3.0
     subs = range(1, 10) if decades < 1 else (1.0, 2.0, 5.0) if decades <= 2 else (1.0,)
     (axes.set_xscale if which == "x" else axes.set_yscale)("log")
     axis = axes.xaxis if which == "x" else axes.yaxis
     axis.set_major_locator(LogLocator(subs=subs))
-    axis.set_major_formatter(ScalarFormatter())
+    axis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
     axis.set_minor_formatter(NullFormatter())
 
 
@@ -360,6 +362,55 @@ def plot_fit(path, output):
     save(figure, output)
 
 
+# ---------------------------------------------------------------- span
+
+def span_figure(path):
+    """The span's balance: the antinode amplitude and the fymax stress at the span clamp
+    over frequency, with dampers and without, and the endurance limit (the CSV's
+    endurance_limit_mpa column) as a horizontal line; non-converged frequencies as red
+    crosses."""
+    table = Table(path)
+    frequency = table.required("frequency_hz")
+    for i, f in enumerate(frequency):
+        if f <= 0:
+            raise PlotError(f"{path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
+    converged = [value == 1.0 for value in table.required("converged")]
+    good = [i for i, ok in enumerate(converged) if ok]
+    if not good:
+        raise PlotError(f"{path}: no converged point to plot (converged = 0 in every row)")
+    columns = {name: table.required(name, good) for name in
+               ("amplitude_m", "undamped_amplitude_m", "stress_fymax_mpa", "undamped_stress_fymax_mpa")}
+    limit = table.required("endurance_limit_mpa")
+    if len({round(v, 9) for v in limit}) != 1:
+        raise PlotError(f"{path}: endurance_limit_mpa differs between rows: expected one value (a span CSV)")
+    damped = any(name.endswith("_end1_velocity_m_s") for name in table.header)
+    f = [frequency[i] for i in good]
+    figure, axes = plt.subplots(2, 1, figsize=FIGURE_SIZE, sharex=True, layout="constrained")
+    panels = [(axes[0], "amplitude_m", 1e3, "antinode amplitude Y (mm)"),
+              (axes[1], "stress_fymax_mpa", 1.0, "fymax stress at the clamp (MPa)")]
+    for axis, name, scale, ylabel in panels:
+        axis.plot(f, [scale * columns["undamped_" + name][i] for i in good], "--", color="0.4", label="undamped")
+        axis.plot(f, [scale * columns[name][i] for i in good], "-", color="C0",
+                  marker="." if len(good) < 30 else None, label="with dampers" if damped else "balance")
+        axis.set_ylabel(ylabel)
+        axis.grid(True, which="both", alpha=0.3)
+    axes[1].axhline(limit[0], color="C3", linewidth=1.0, label=f"endurance limit {limit[0]:.3g} MPa")
+    failed = [frequency[i] for i, ok in enumerate(converged) if not ok]
+    if failed:
+        axes[1].plot(failed, [0.0] * len(failed), "x", color="red", label="not converged")
+    for axis in axes:
+        log_if_positive(axis)
+        axis.legend(fontsize="small")
+    log_scale(axes[0], "x")  # shared; axes[1] also holds the limit line, drawn across in axes units
+    axes[1].set_xlabel("frequency (Hz)")
+    axes[0].set_title(f"Span energy balance ({path})", fontsize="medium")
+    return figure
+
+
+def plot_span(path, output):
+    save(span_figure(path), output)
+
+
 # ---------------------------------------------------------------- command line
 
 class Parser(argparse.ArgumentParser):
@@ -381,7 +432,8 @@ def parser():
     impedance.add_argument("--linear", action="store_true", help="linear axes")
     impedance.add_argument("--power", action="store_true", help="add a panel: dissipated power Re Z V^2 / 2")
     for name, text in (("loop", "hysteresis loops of a cycle, response or loop file"),
-                       ("fit", "measured and fitted loops (identify ... --fitted)")):
+                       ("fit", "measured and fitted loops (identify ... --fitted)"),
+                       ("span", "amplitude and fymax stress over frequency, damped and undamped, of a span CSV")):
         command = commands.add_parser(name, help=text)
         command.add_argument("csv")
         command.add_argument("-o", "--output", required=True)
@@ -395,6 +447,8 @@ def run(args):
         plot_impedance(args.csv, args.output, args.label, args.re_im, args.linear, args.power)
     elif args.command == "loop":
         plot_loop(args.csv, args.output)
+    elif args.command == "span":
+        plot_span(args.csv, args.output)
     else:
         plot_fit(args.csv, args.output)
 

@@ -18,12 +18,18 @@ MK = "curvature_per_m,moment_n_m\n" + "".join(f"{0.08 * s:.6f},{0.5 * s:.6f}\n" 
                                              [0, 0.5, 1, 0.5, 0, -0.5, -1, -0.5, 0, 0.5, 1, 0.5, 0, -0.5, -1])
 CYCLE_A = "x_m,force_n\n" + "".join(f"{0.03 * s:.6f},{10 * s:.6f}\n" for s in
                                     [0, 0.5, 1, 0.5, 0, -0.5, -1, -0.5, 0, 0.5, 1, 0.5, 0, -0.5, -1])
+SPAN = ("[conductor]\nname = \"ASTER570\"\nmass_per_length = 1.571\ndiameter = 0.03105\nrated_tensile_strength = 185300\n"
+        "ei_min = 28.28\nouter_wire_diameter = 0.00345\nouter_wire_modulus = 68e9\naluminium_layers = 4\n"
+        "[span]\nlength = 400\ntension_fraction = 0.15\n[wind]\nlaw = \"cigre\"\nspeed_min = 1.0\nspeed_max = 7.0\n"
+        "[self_damping]\nlaw = \"noiseux-1991\"\n[fatigue]\ncycles = 5e8\n")
+SPAN_DAMPER = "[[damper]]\nfile = \"nope.toml\"\nposition = 1.0\nends = \"both\"\n"
 
 CYCLE_CMD = "cycle INPUT --experiment a --amplitude 0.01 --cycles 1 --points 8 -o out.csv"
 IMPEDANCE_CMD = "impedance INPUT --velocity 0.1 --frequencies 10 -o out.csv"
 STRAND_CMD = "strand INPUT"
 LOCAL_CMD = "identify local --input INPUT -o out.toml"
 GLOBAL_CMD = "identify global --experiment a --length 0.3 --input INPUT -o out.toml"
+SPAN_CMD = "span INPUT --frequencies 10,20 -o out.csv"
 LOOP_CMD = "loop --ei 2.8 --jenkin 20:0.7 --amplitude 0.05 -o out.csv"
 
 cases = {
@@ -82,6 +88,48 @@ cases = {
     "damper_modes_mass_zero": ("modes INPUT --json", "damper.toml", DAMPER.replace("mass = 0.856", "mass = 0"), "arm[0].mass = 0"),
     "damper_cable_file_not_a_string": (IMPEDANCE_CMD, "damper.toml", DAMPER.split("[arm.cable]")[0] + "[arm.cable]\nfile = 3\n",
                                        "arm[0].cable.file"),
+    # span files (issue 14)
+    "span_syntax": (SPAN_CMD, "span.toml", "[conductor\n", "syntax error"),
+    "span_empty": (SPAN_CMD, "span.toml", "", "'conductor'"),
+    "span_missing_diameter": (SPAN_CMD, "span.toml", SPAN.replace("diameter = 0.03105\n", ""), "missing key 'diameter' in [conductor]"),
+    "span_diameter_negative": (SPAN_CMD, "span.toml", SPAN.replace("diameter = 0.03105", "diameter = -1"), "conductor.diameter = -1"),
+    "span_diameter_in_mm": (SPAN_CMD, "span.toml", SPAN.replace("outer_wire_diameter = 0.00345", "outer_wire_diameter = 3.45"),
+                            "conductor.outer_wire_diameter = 3.45"),
+    "span_layers_zero": (SPAN_CMD, "span.toml", SPAN.replace("aluminium_layers = 4", "aluminium_layers = 0"), "conductor.aluminium_layers: 0: expected an integer from 1 to 10"),
+    "span_layers_float": (SPAN_CMD, "span.toml", SPAN.replace("aluminium_layers = 4", "aluminium_layers = 4.5"), "conductor.aluminium_layers"),
+    "span_length_1e307": (SPAN_CMD, "span.toml", SPAN.replace("length = 400", "length = 1e307"), "span.length = 1e+307"),
+    "span_both_tensions": (SPAN_CMD, "span.toml", SPAN.replace("tension_fraction = 0.15", "tension_fraction = 0.15\ntension = 30000"),
+                           "span.tension_fraction: given beside span.tension"),
+    "span_no_tension": (SPAN_CMD, "span.toml", SPAN.replace("tension_fraction = 0.15\n", ""), "missing key 'tension' in [span]"),
+    "span_fraction_above_one": (SPAN_CMD, "span.toml", SPAN.replace("tension_fraction = 0.15", "tension_fraction = 1.5"),
+                                "span.tension_fraction = 1.5"),
+    "span_tension_above_rts": (SPAN_CMD, "span.toml", SPAN.replace("tension_fraction = 0.15", "tension = 2e5"), "span.tension = 200000"),
+    "span_wind_law_unknown": (SPAN_CMD, "span.toml", SPAN.replace('law = "cigre"', 'law = "cigr"'), "wind.law = 'cigr'"),
+    "span_wind_law_number": (SPAN_CMD, "span.toml", SPAN.replace('law = "cigre"', "law = 1"), "wind.law: the integer 1"),
+    "span_speed_max_below_min": (SPAN_CMD, "span.toml", SPAN.replace("speed_max = 7.0", "speed_max = 0.5"), "wind.speed_max = 0.5"),
+    "span_turbulence_without_foti": (SPAN_CMD, "span.toml", SPAN.replace("speed_max = 7.0", "speed_max = 7.0\nturbulence_intensity = 0.1"),
+                                     "wind.turbulence_intensity = 0.1"),
+    "span_table_missing_csv": (SPAN_CMD, "span.toml", SPAN.replace('law = "cigre"', 'law = "table"\ntable = "fnc.csv"'),
+                               'wind.table: "fnc.csv": expected an existing CSV file'),
+    "span_table_law_without_table": (SPAN_CMD, "span.toml", SPAN.replace('law = "cigre"', 'law = "table"'), "missing key 'table' in [wind]"),
+    "span_self_damping_unknown": (SPAN_CMD, "span.toml", SPAN.replace('law = "noiseux-1991"', 'law = "noiseux"'), "self_damping.law = 'noiseux'"),
+    "span_claren_diana_without_n": (SPAN_CMD, "span.toml", SPAN.replace('law = "noiseux-1991"', 'law = "claren-diana-1969"'),
+                                    "self_damping.n"),
+    "span_foti_without_ei_max": (SPAN_CMD, "span.toml", SPAN.replace('law = "noiseux-1991"', 'law = "foti"\nlimit_curvature = 0.02'),
+                                 "ei_max"),
+    "span_damper_file_missing": (SPAN_CMD, "span.toml", SPAN + SPAN_DAMPER, 'damper[0].file: "nope.toml": expected an existing damper file'),
+    "span_damper_file_is_the_span_file": (SPAN_CMD, "span.toml", SPAN + SPAN_DAMPER.replace("nope.toml", "span.toml"), "'clamp'"),
+    "span_damper_ends_unknown": (SPAN_CMD, "span.toml", SPAN + SPAN_DAMPER.replace('"both"', '"three"'), "damper[0].ends"),
+    "span_damper_not_array": (SPAN_CMD, "span.toml", SPAN + "[damper]\nposition = 1\n", "damper"),
+    "span_unknown_key": (SPAN_CMD, "span.toml", SPAN.replace("speed_max = 7.0", "speed_max = 7.0\ncolour = 1"), "wind.colour"),
+    "span_unknown_table": (SPAN_CMD, "span.toml", SPAN + "[extra]\n", "'extra'"),
+    "span_cycles_negative": (SPAN_CMD, "span.toml", SPAN.replace("cycles = 5e8", "cycles = -5"), "fatigue.cycles = -5"),
+    "span_weibull_without_fraction": (SPAN_CMD, "span.toml", SPAN + "wind_weibull = { shape = 2.0, scale = 4.0 }\n",
+                                      "missing key 'aeolian_fraction' in [fatigue]"),
+    "span_weibull_shape_negative": (SPAN_CMD, "span.toml",
+                                    SPAN + "wind_weibull = { shape = -2.0, scale = 4.0 }\naeolian_fraction = 0.3\n",
+                                    "fatigue.wind_weibull.shape = -2"),
+    "span_name_line_break": (SPAN_CMD, "span.toml", SPAN.replace('name = "ASTER570"', 'name = "A\\nB"'), "conductor.name"),
     # strand files
     # Fuzzing findings: a name with a line break (it goes into messages and files), and
     # wires wider than their pitch radius (ei_min came out above ei_max).
@@ -131,6 +179,15 @@ cases = {
     "option_response_velocity": ("response INPUT --frequency 20 --velocity -0.2 -o out.csv", "damper.toml", DAMPER, "velocity"),
     "option_identify_elements": ("identify local --input INPUT --elements 9 -o out.toml", "mk.csv", MK, "elements = 9"),
     "option_global_length": ("identify global --experiment a --length 0 --input INPUT -o out.toml", "cycle.csv", CYCLE_A, "length = 0"),
+    "option_span_frequencies_decreasing": ("span INPUT --frequencies 20,10 -o out.csv", "span.toml", SPAN, "frequencies[1] = 10"),
+    "option_span_points_one": ("span INPUT --points 1 -o out.csv", "span.toml", SPAN, "points = 1"),
+    "option_span_damper_model": ("span INPUT --damper-model linear -o out.csv", "span.toml", SPAN, "linear"),
+    "option_span_position_reversed": ("span INPUT --optimize-position 3:0.5 -o out.csv", "span.toml", SPAN,
+                                      "optimize_position = 3:0.5"),
+    "option_span_position_malformed": ("span INPUT --optimize-position 2 -o out.csv", "span.toml", SPAN, "AMIN:AMAX"),
+    "option_span_position_without_dampers": ("span INPUT --optimize-position 0.5:3 -o out.csv", "span.toml", SPAN,
+                                             "no [[damper]] to place"),
+    "option_span_threads": ("span INPUT --threads 0 -o out.csv", "span.toml", SPAN, "threads = 0"),
     "option_unknown": ("loop --ei 2.8 --amplitude 0.05 --colour red -o out.csv", None, None, "colour"),
     "option_missing_file": ("cycle missing.toml --experiment a --amplitude 0.01 -o out.csv", None, None, "missing.toml"),
     "option_output_is_directory": ("loop --ei 2.8 --amplitude 0.05 -o .", None, None, "directory"),
@@ -155,6 +212,7 @@ accepted = {
     "mk_bom_crlf": (LOCAL_CMD, "mk.csv", "\ufeff" + MK.replace("\n", "\r\n")),
     "cycle_bom_crlf": (GLOBAL_CMD.replace("-o out.toml", "--method four-step -o out.toml"), "cycle.csv",
                        "\ufeff" + open(os.path.join(HERE, "..", "..", "examples", "cycle_measured_a.csv")).read().replace("\n", "\r\n")),
+    "span_crlf": (SPAN_CMD, "span.toml", SPAN.replace("\n", "\r\n")),
     "velocity_list_with_spaces": ('impedance INPUT --velocity "0.1, 0.05" --frequencies "10, 20" -o out.csv', "damper.toml", DAMPER),
 }
 

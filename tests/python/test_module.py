@@ -285,3 +285,59 @@ def test_modes_equal_the_programs_json():
     one_arm = sb.make_damper(0.0, [dict(name="a", mass=0.856, inertia=0.001814, offset=0.0325,
                                         cable=dict(length=0.1875, sections=8, ei=2.8, jenkin=[{"c": 20.0, "h": 0.7}]))])
     assert len(sb.modes(one_arm)["damper"]["slip_hz"]) == 1  # a massless clamp: one mode at infinity left out
+
+
+SPAN = os.path.join(SOURCE, "examples", "aster570_400m.toml")
+
+
+def test_span_equals_the_programs_csv_and_json(tmp_path):
+    out = subprocess.run([CLI, "span", SPAN, "--points", "12", "--json", "-o", "span.csv"], cwd=tmp_path, check=True,
+                         capture_output=True, text=True).stdout
+    rows = read_csv(tmp_path / "span.csv")
+    s = sb.span(SPAN, points=12)
+    assert s["columns"] == list(rows[0].keys())
+    assert s["dampers"] == ["sauter2003"]
+    assert s["converged"].dtype == bool and s["converged"].all()
+    for column in s["columns"]:
+        values = [float(row[column]) if row[column] else float("nan") for row in rows]
+        expected = np.array(values)
+        got = s[column].astype(float)
+        assert got.shape == (12,), column
+        assert np.allclose(got, expected, rtol=1e-12, atol=0, equal_nan=True), column
+    summary = json.loads(out)
+    del summary["seconds"]  # the program's wall time
+    assert s["summary"] == summary
+    assert s["summary"]["max_stress_fymax_mpa"] < s["summary"]["undamped_max_stress_fymax_mpa"]
+
+
+def test_span_returns_the_documented_keys_and_takes_the_cli_options(tmp_path):
+    s = sb.span(SPAN, frequencies=[10.0, 20.0, 30.0, 40.0], no_dampers=True)
+    assert set(s) == set(s["columns"]) | {"termination", "messages", "dampers", "columns", "summary"}
+    documented = documented_keys("span", ["sauter2003"])
+    assert {"converged", "termination", "messages", "dampers", "columns", "summary"} <= documented
+    # MODEL.md section 9's undamped check numbers.
+    assert s["amplitude_m"] == pytest.approx([26.5e-3, 10.6e-3, 3.04e-3, 1.58e-3], rel=0.005)
+    assert np.array_equal(s["amplitude_m"], s["undamped_amplitude_m"])
+    assert s["summary"]["dampers"] == 0 and s["summary"]["position_m"] is None
+    subprocess.run([CLI, "span", SPAN, "--frequencies", "12,25", "--damper-model", "weak", "--threads", "2", "-o",
+                    "weak.csv"], cwd=tmp_path, check=True, capture_output=True)
+    weak = sb.span(SPAN, frequencies=[12.0, 25.0], damper_model="weak", threads=2)
+    rows = read_csv(tmp_path / "weak.csv")
+    assert weak["stress_fymax_mpa"].tolist() == pytest.approx([float(r["stress_fymax_mpa"]) for r in rows], rel=1e-12)
+    assert weak["summary"]["damper_model"] == "weak"
+
+
+def test_span_from_text_and_its_errors(tmp_path):
+    text = open(SPAN).read().replace('file = "sauter2003.toml"', f'file = "{os.path.join(SOURCE, "examples", "sauter2003.toml")}"')
+    s = sb.span(text=text, frequencies=[15.0])
+    assert s["converged"].tolist() == [True]
+    with pytest.raises(sb.InputError, match=r"^span\(text=\.\.\.\): span\.length = -400"):
+        sb.span(text=text.replace("length = 400", "length = -400"), frequencies=[15.0])
+    with pytest.raises(sb.InputError, match="none.toml: no such file"):
+        sb.span(os.path.join(tmp_path, "none.toml"))
+    with pytest.raises(sb.InvalidParameter, match=r"frequencies\[1\] = 10"):
+        sb.span(SPAN, frequencies=[20.0, 10.0])
+    with pytest.raises(sb.InvalidParameter, match="either file"):
+        sb.span()
+    with pytest.raises(sb.InvalidParameter, match="optimize_position = 3:0.5"):
+        sb.span(SPAN, optimize_position=(3.0, 0.5))

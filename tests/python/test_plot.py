@@ -310,3 +310,79 @@ def test_tick_labels_do_not_run_into_each_other(files, source):
         assert len(boxes) >= 3
         for left, right in zip(boxes, boxes[1:]):
             assert right.x0 - left.x1 >= 20, (axis.get_title(), [label.get_text() for label in axis.get_xticklabels()])
+
+
+# ---------------------------------------------------------------- span
+
+@pytest.fixture(scope="module")
+def span_files(tmp_path_factory):
+    d = tmp_path_factory.mktemp("span")
+    run_cli("span", os.path.join(SOURCE, "examples", "aster570_400m.toml"), "--points", "15", "-o", "span.csv", cwd=d)
+    return d
+
+
+def test_span_plot_writes_a_png(span_files):
+    result = plot("span", "span.csv", "-o", "span.png", cwd=span_files)
+    assert result.returncode == 0, result.stderr
+    assert os.path.getsize(span_files / "span.png") > 10000
+    assert png_size(span_files / "span.png") == (800, 600)
+
+
+def test_span_plot_draws_damped_undamped_and_the_endurance_limit(span_files):
+    module = plot_module()
+    with open(span_files / "span.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    figure = module.span_figure(str(span_files / "span.csv"))
+    amplitude, stress = figure.axes
+    labels = [line.get_label() for line in stress.get_lines()]
+    assert labels[:2] == ["undamped", "with dampers"]
+    limit = float(rows[0]["endurance_limit_mpa"])
+    assert labels[2] == f"endurance limit {limit:.3g} MPa"
+    assert list(stress.get_lines()[2].get_ydata()) == [limit, limit]
+    assert list(stress.get_lines()[1].get_ydata()) == pytest.approx([float(r["stress_fymax_mpa"]) for r in rows])
+    assert list(amplitude.get_lines()[0].get_ydata()) == pytest.approx([1e3 * float(r["undamped_amplitude_m"]) for r in rows])
+    assert stress.get_xscale() == "log"
+    module.plt.close(figure)
+
+
+def test_span_plot_marks_points_that_did_not_converge(span_files, tmp_path):
+    def fail_second(header, rows):
+        for name in ("amplitude_m", "stress_fymax_mpa", "undamped_amplitude_m", "undamped_stress_fymax_mpa"):
+            rows[1][header.index(name)] = ""
+        rows[1][header.index("converged")] = "0"
+    rewrite_csv(span_files / "span.csv", tmp_path / "failed.csv", fail_second)
+    module = plot_module()
+    figure = module.span_figure(str(tmp_path / "failed.csv"))
+    assert "not converged" in [line.get_label() for line in figure.axes[1].get_lines()]
+    assert len(figure.axes[1].get_lines()[1].get_xdata()) == 14
+    module.plt.close(figure)
+
+
+SPAN_HEADER = "frequency_hz,amplitude_m,undamped_amplitude_m,stress_fymax_mpa,undamped_stress_fymax_mpa,converged,endurance_limit_mpa\n"
+
+
+@pytest.mark.parametrize("contents,mention", [
+    ("frequency_hz,amplitude_m,converged\n10,0.01,1\n", "missing column"),
+    (SPAN_HEADER + "10,,,,,0,8.7\n", "no converged point to plot"),
+    (SPAN_HEADER + "10,0.01,0.02,5,9,1,8.7\n20,0.01,0.02,5,9,1,9.7\n", "endurance_limit_mpa differs"),
+    (SPAN_HEADER + "10,0.01,0.02,5,9,1,\n", "'endurance_limit_mpa' is empty"),
+    (SPAN_HEADER + "0,0.01,0.02,5,9,1,8.7\n", "expected a positive frequency"),
+    (SPAN_HEADER + "10,0.01,0.02,abc,9,1,8.7\n", "'abc'")])
+def test_span_bad_files_get_one_line_and_exit_two(tmp_path, contents, mention):
+    (tmp_path / "bad.csv").write_text(contents)
+    result = plot("span", "bad.csv", "-o", "bad.png", cwd=tmp_path)
+    assert_bad(result, tmp_path, "bad.png", mention, "bad.csv")
+
+
+def test_log_axes_label_values_below_one(span_files):
+    """The damped amplitude falls below 1 mm: its log axis labels 0.1 as 0.1, never as 0."""
+    module = plot_module()
+    figure = module.span_figure(str(span_files / "span.csv"))
+    figure.canvas.draw()
+    amplitude = figure.axes[0]
+    low, high = sorted(amplitude.get_ylim())
+    labels = [label.get_text() for tick, label in zip(amplitude.get_yticks(), amplitude.get_yticklabels())
+              if low <= tick <= high and label.get_text()]
+    assert amplitude.get_yscale() == "log" and labels
+    assert all(float(text) > 0 for text in labels), labels
+    module.plt.close(figure)

@@ -1,0 +1,166 @@
+// stockbridge span: the energy balance of a span with its dampers over the wind
+// band (span/balance.hpp): amplitudes, powers, stresses against the endurance
+// limit, the undamped span beside it, the life when the span file gives the
+// climate, and optionally the dampers' best position.
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "input_files.hpp"
+#include "option_parsing.hpp"
+#include "progress.hpp"
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/atomic_file.hpp"
+#include "stockbridge/io/csv_writer.hpp"
+#include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/span_request.hpp"
+
+namespace stockbridge::cli {
+
+namespace {
+
+// Helper names here are unique among the program's files (unity batches).
+
+struct SpanOptions {
+  std::string span_file;
+  std::optional<std::string> frequencies;
+  int points = requests::SpanRequest{}.points;
+  bool no_dampers = false;
+  std::string damper_model = requests::SpanRequest{}.damper_model;
+  std::optional<std::string> optimize_position;
+  int threads = 1;
+  bool json = false;
+  bool quiet = false;
+  std::string output;
+};
+
+requests::SpanRequest span_request_of(const SpanOptions& options) {
+  requests::SpanRequest request;
+  if (options.frequencies) request.frequencies = parse_number_list(*options.frequencies, "--frequencies");
+  request.points = options.points;
+  request.no_dampers = options.no_dampers;
+  request.damper_model = options.damper_model;
+  if (options.optimize_position) {
+    const std::string& text = *options.optimize_position;
+    const std::size_t colon = text.find(':');
+    if (colon == std::string::npos) {
+      throw InvalidParameter(fmt::format("--optimize-position = '{}': expected AMIN:AMAX (m from the span end's clamp), "
+                                         "e.g. 0.5:3",
+                                         printable(text)));
+    }
+    request.position_min = parse_number(text.substr(0, colon), "--optimize-position AMIN");
+    request.position_max = parse_number(text.substr(colon + 1), "--optimize-position AMAX");
+  }
+  request.threads = options.threads;
+  requests::validate(request);
+  return request;
+}
+
+std::string span_csv(const requests::SpanResult& result) {
+  io::CsvWriter csv(requests::span_columns(result.span));
+  for (const span::BalancePoint& p : result.balance.points) csv.add_row(requests::span_row(result.span, p));
+  return csv.text();
+}
+
+std::string span_megapascal(double pascal) { return fmt::format("{:.3g} MPa", pascal / 1e6); }
+
+std::string span_years(const span::LifeEstimate& life) {
+  return std::isfinite(life.life_years) ? fmt::format("{:.3g} years", life.life_years) : "unlimited (no damage)";
+}
+
+void print_span_report(const requests::SpanResult& result) {
+  const span::Span& s = result.span;
+  const span::BalanceSummary& summary = result.balance.summary;
+  const std::vector<double>& f = result.frequencies;
+  fmt::print("span: {}{} m at {:.6g} N, {} frequencies from {:.4g} to {:.4g} Hz\n",
+             s.conductor().name.empty() ? "" : s.conductor().name + ", ", format_value(s.length()), s.tension(),
+             f.size(), f.front(), f.back());
+  if (s.dampers().empty()) {
+    fmt::print("dampers: none\n");
+  } else {
+    for (const span::SpanDamper& d : s.dampers()) {
+      fmt::print("damper {}: {:.4g} m from the clamp, {} ({} model)\n", d.name, d.position,
+                 d.both_ends ? "both ends" : "one end", span::damper_model_name(result.damper_model));
+    }
+  }
+  if (result.position) {
+    fmt::print("position: {:.4g} m minimises the largest fymax stress ({} balances)\n", result.position->position,
+               result.position->balances);
+  }
+  fmt::print("largest fymax stress: {} at {:.4g} Hz (undamped {} at {:.4g} Hz)\n", span_megapascal(summary.max_stress_fymax),
+             summary.max_stress_frequency_hz, span_megapascal(summary.undamped_max_stress_fymax),
+             summary.undamped_max_stress_frequency_hz);
+  if (!s.dampers().empty()) fmt::print("largest stress at a damper clamp: {}\n", span_megapascal(summary.max_damper_clamp_stress));
+  fmt::print("endurance limit: {}: {} (undamped: {})\n", span_megapascal(summary.endurance_limit),
+             summary.safe ? "safe" : "unsafe",
+             summary.undamped_max_stress_fymax <= summary.endurance_limit ? "safe" : "unsafe");
+  if (summary.life && summary.undamped_life) {
+    fmt::print("life: {} (undamped {})\n", span_years(*summary.life), span_years(*summary.undamped_life));
+  }
+}
+
+int run_span_command(const SpanOptions& options) {
+  const requests::SpanRequest request = span_request_of(options);
+  const span::Span span = read_span_input(options.span_file, {{"-o", options.output}});
+  const auto start = std::chrono::steady_clock::now();
+  ProgressReport progress("span: impedance tables", options.quiet);
+  const requests::SpanResult result = requests::run_span(span, request, std::ref(progress));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  io::write_file_atomically(options.output, span_csv(result));
+
+  const span::BalanceSummary& summary = result.balance.summary;
+  if (options.json) {
+    fmt::print("{}\n", requests::span_summary(result).add("seconds", seconds).str());
+  } else {
+    print_span_report(result);
+  }
+  fmt::print(stderr, "span: {} points in {:.2f} s, {} converged\n", summary.points, seconds, summary.converged);
+  const int failed = summary.points - summary.converged;
+  if (failed == 0) return kSuccess;
+  fmt::print(stderr, "span: {} points did not converge (converged = 0, numbers left empty in {}):\n", failed,
+             options.output);
+  int shown = 0;
+  for (const span::BalancePoint& p : result.balance.points) {
+    if (p.converged()) continue;
+    if (++shown > 10) break;
+    fmt::print(stderr, "  f = {:.4g} Hz: {}\n", p.frequency_hz, p.failure);
+  }
+  if (failed > 10) fmt::print(stderr, "  ... and {} more\n", failed - 10);
+  return kNotConverged;
+}
+
+}  // namespace
+
+void add_span_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<SpanOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "span", "Energy balance of a span with its dampers over the wind band: amplitudes, stresses, endurance, life");
+  sub->add_option("span", options->span_file, "Span description (TOML)")->required();
+  CLI::Option* frequencies = sub->add_option(
+      "--frequencies", options->frequencies, "Frequencies, Hz, comma-separated, increasing (instead of --points)");
+  sub->add_option("--points", options->points, "Frequencies log-spaced over the wind band St U / D")
+      ->capture_default_str()
+      ->excludes(frequencies);
+  sub->add_flag("--no-dampers", options->no_dampers, "Balance the span without its dampers");
+  sub->add_option("--damper-model", options->damper_model,
+                  "travelling (the dampers' standing wave, MODEL.md 9) or weak (|Z| << Z0)")
+      ->capture_default_str();
+  sub->add_option("--optimize-position", options->optimize_position,
+                  "AMIN:AMAX, m: search the dampers' position (all moved together) minimising the largest fymax "
+                  "stress, then balance there");
+  sub->add_option("--threads", options->threads, "Parallel runs for the dampers' impedance tables")->capture_default_str();
+  sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
+  sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
+  sub->add_option("-o,--output", options->output, "Output CSV file")->required();
+  sub->callback([options, &exit_code] { exit_code = run_span_command(*options); });
+}
+
+}  // namespace stockbridge::cli

@@ -1,0 +1,65 @@
+#pragma once
+// Reading span description files (TOML, format in docs/file-formats.md and
+// docs/span.md): the conductor, the span, the wind, the self-damping, the dampers
+// and the fatigue criterion of `stockbridge span`.
+//
+//   [conductor]
+//   name = "ASTER570"
+//   mass_per_length = 1.571          # kg/m
+//   diameter = 0.03105               # m
+//   rated_tensile_strength = 185300  # N
+//   ei_min = 28.28                   # N m^2
+//   ei_max = 2155                    # N m^2 (optional: Foti's self-damping)
+//   outer_wire_diameter = 0.00345    # m
+//   outer_wire_modulus = 68e9        # Pa
+//   aluminium_layers = 4
+//   [span]
+//   length = 400                     # m
+//   tension_fraction = 0.15          # or tension = N: exactly one
+//   [wind]
+//   law = "cigre"                    # strouhal, speed_min, speed_max optional;
+//                                    # turbulence_intensity (foti); table = "fnc.csv" (table)
+//   [self_damping]
+//   law = "noiseux-1991"             # k, l, m, n, limit_curvature as the law needs
+//   [[damper]]                       # zero or more
+//   file = "sauter2003.toml"         # a damper file, relative to the span file
+//   position = 1.0                   # m from the span end's clamp
+//   ends = "both"                    # both (default) | one
+//   [fatigue]
+//   cycles = 5e8                     # or endurance_limit = Pa
+//   wind_weibull = { shape = 2.0, scale = 4.0 }  # optional, with aeolian_fraction
+//   aeolian_fraction = 0.3
+//
+// The reader checks types and keys (a misspelt or unknown key is an error); the
+// span model validates the values (span::Span), and its InvalidParameter, named
+// by the field's path ("conductor.diameter", "damper[1].position"), is reported at
+// that key's line.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "stockbridge/span/balance.hpp"
+
+namespace stockbridge::io {
+
+/// A span file as read: the (validated) span, the files it references (damper
+/// files, the cable files those reference, a wind table: inputs a command must not
+/// overwrite; the span file itself is not listed), and a located warning line for
+/// each value outside the typical ranges (those of the damper files).
+struct SpanFile {
+  span::Span span;
+  std::vector<std::filesystem::path> inputs;
+  std::vector<std::string> warnings;
+};
+
+/// Reads a span file and builds the span; InputError naming the file, line, key,
+/// value and expectation. Damper files and the wind table are relative to the span
+/// file's folder.
+SpanFile load_span_file(const std::filesystem::path& path);
+/// The same from TOML text a front end holds (Python's span(text=...)): messages
+/// name `source` and no lines; referenced files are relative to the working directory.
+SpanFile load_span_text(std::string_view text, std::string_view source);
+
+}  // namespace stockbridge::io

@@ -1,0 +1,84 @@
+#pragma once
+// The request layer for the span's energy balance (`stockbridge span`, Python's
+// span): what a user asks for (frequencies or a number of points over the wind
+// band, dampers or not, the damper model, a position search, threads) turned into
+// the balance's inputs and run, and the balance's points as the rows every front
+// end shows (CSV columns, Python arrays) with the numbers of a point that did not
+// converge masked (NaN), and the summary (the --json keys).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stockbridge/damper/sweep.hpp"
+#include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/span/balance.hpp"
+
+namespace stockbridge::requests {
+
+struct SpanRequest {
+  std::vector<double> frequencies;  ///< Hz, strictly increasing; empty: `points` over the wind band
+  int points = 100;                 ///< log-spaced over the wind band (span::band_frequencies), >= 2
+  bool no_dampers = false;          ///< balance the span without its dampers
+  std::string damper_model = "travelling";  ///< travelling | weak (span::parse_damper_model)
+  /// Search the dampers' position in [min, max] (m from the span end's clamp), every
+  /// damper moved together, then balance the span there (span::optimise_position).
+  std::optional<double> position_min, position_max;
+  int threads = 1;                  ///< for the dampers' impedance tables
+};
+
+/// Checks what can be checked without the span (InvalidParameter naming the
+/// setting: "frequencies[1]", "points", "damper_model", "optimize_position", "threads").
+void validate(const SpanRequest& request);
+
+/// The balance's options for a request (validated).
+span::BalanceOptions balance_options(const SpanRequest& request);
+
+/// What a span request computed.
+struct SpanResult {
+  span::Span span;                  ///< as balanced: without dampers, or with them at the position found
+  std::vector<double> frequencies;  ///< Hz
+  span::SpanBalance balance;
+  std::optional<span::PositionSearch> position;  ///< with a position search
+  span::DamperModel damper_model = span::DamperModel::travelling;
+};
+
+/// Validates the request against the span (a position search needs dampers), builds
+/// the dampers' impedance tables (`progress` counts their nodes), searches the
+/// position if asked, and balances the span at every frequency. Non-convergence is
+/// in the points, never an exception.
+SpanResult run_span(const span::Span& span, const SpanRequest& request, const damper::SweepProgress& progress = {});
+
+/// How the per-damper columns name each damper: the span's names (the damper files'
+/// stems) where every one is unique and made of letters, digits and '_', else
+/// damper1, damper2, ... for all.
+std::vector<std::string> span_damper_prefixes(const span::Span& span);
+
+/// The columns of a balance point as the span CSV and Python's arrays name them:
+///   frequency_hz, wind_speed_m_s, wavelength_m, amplitude_m, amplitude_over_diameter,
+///   wind_power_w, self_damping_power_w, damper_power_w, clamp_loop_amplitude_m,
+///   damper_clamp_velocity_m_s, stress_fymax_mpa, stress_ps_mpa, damper_clamp_stress_mpa,
+///   undamped_amplitude_m, undamped_stress_fymax_mpa, converged, endurance_limit_mpa,
+///   energy_identity_error,
+/// then for each damper and each end it is at (k = 1, 2):
+///   <prefix>_end<k>_velocity_m_s, <prefix>_end<k>_re_z_n_s_m, <prefix>_end<k>_im_z_n_s_m,
+///   <prefix>_end<k>_power_w, <prefix>_end<k>_clamp_stress_mpa.
+/// Stresses in MPa. damper_clamp_velocity_m_s is the clamp velocity of the damper
+/// nearest the span clamp at end 1.
+std::vector<std::string> span_columns(const span::Span& span);
+/// A point's values in span_columns(span) order (`span`: the span as balanced): NaN
+/// for every computed number of a point that did not converge (frequency, wind
+/// speed, wavelength and the endurance limit are always given), and for the damper
+/// columns of a span without dampers.
+std::vector<double> span_row(const span::Span& span, const span::BalancePoint& point);
+
+/// The summary, as `stockbridge span --json` prints it and Python returns it:
+/// points, converged, damper_model, dampers, endurance_limit_mpa, verdict,
+/// max_stress_fymax_mpa, max_stress_frequency_hz, max_damper_clamp_stress_mpa,
+/// undamped_max_stress_fymax_mpa, undamped_max_stress_frequency_hz, undamped_verdict,
+/// position_m, position_optimized, [life_years, damage_per_year, undamped_life_years,
+/// undamped_damage_per_year when the span file gives the climate], impedance_nodes,
+/// failed_impedance_nodes, max_energy_identity_error, failed.
+io::JsonObject span_summary(const SpanResult& result);
+
+}  // namespace stockbridge::requests

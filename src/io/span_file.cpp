@@ -1,0 +1,239 @@
+#include "stockbridge/io/span_file.hpp"
+
+#include <algorithm>
+#include <initializer_list>
+#include <optional>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/csv_reader.hpp"
+#include "stockbridge/io/damper_file.hpp"
+#include "toml_reader.hpp"
+
+namespace stockbridge::io {
+
+namespace {
+
+// Names in this unnamed namespace are unique across the library (the sanitizer
+// presets compile it in unity batches).
+
+/// A span file's contents before the model validates them.
+struct SpanReading {
+  span::Conductor conductor;
+  double length = 0.0;
+  std::optional<double> tension;
+  std::optional<double> tension_fraction;
+  span::WindModel wind;
+  span::SelfDampingModel self_damping;
+  std::vector<span::SpanDamper> dampers;
+  span::FatigueSpec fatigue;
+  std::vector<std::filesystem::path> inputs;
+  std::vector<std::string> warnings;
+};
+
+/// Rejects unknown keys before any value is read, so that a misspelt key is
+/// reported as such rather than as the missing key it was meant to be.
+void span_accept_only(const TomlTable& table, std::initializer_list<std::string_view> keys) {
+  for (const std::string_view key : keys) table.contains(key);
+  table.reject_unknown_keys();
+}
+
+std::filesystem::path span_resolve(const std::filesystem::path& file, const std::filesystem::path& base_directory) {
+  return file.is_absolute() ? file : base_directory / file;
+}
+
+/// A required string, with the readers' message when it is missing.
+std::string span_required_string(const TomlTable& table, std::string_view key, std::string_view expected) {
+  if (!table.contains(key)) {
+    throw InputError(fmt::format("{}missing key '{}' in [{}]: expected {}", table.location(key), key, table.key_path(),
+                                 expected));
+  }
+  return *table.optional_string(key);
+}
+
+/// A name the model parses (a law): its InvalidParameter at the key's line, named by the key's full path.
+template <class Parse>
+auto span_parsed_name(const TomlTable& table, std::string_view key, const std::string& text, Parse parse) {
+  try {
+    return parse(text);
+  } catch (const InvalidParameter& e) {
+    throw InputError(table.location(key) + e.within(table.key_path()).what());
+  }
+}
+
+span::Conductor read_conductor(const TomlTable& table) {
+  span_accept_only(table, {"name", "mass_per_length", "diameter", "rated_tensile_strength", "ei_min", "ei_max",
+                           "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers"});
+  span::Conductor c;
+  c.name = table.optional_string("name").value_or("");
+  c.mass_per_length = table.number("mass_per_length");
+  c.diameter = table.number("diameter");
+  c.rated_tensile_strength = table.number("rated_tensile_strength");
+  c.ei_min = table.number("ei_min");
+  c.ei_max = table.optional_number("ei_max").value_or(0.0);
+  c.outer_wire_diameter = table.number("outer_wire_diameter");
+  c.outer_wire_modulus = table.number("outer_wire_modulus");
+  c.aluminium_layers = static_cast<int>(table.integer("aluminium_layers", 1, 10));  // Conductor::validate's range
+  return c;
+}
+
+void read_span_table(const TomlTable& table, SpanReading& reading) {
+  span_accept_only(table, {"length", "tension", "tension_fraction"});
+  reading.length = table.number("length");
+  reading.tension = table.optional_number("tension");
+  reading.tension_fraction = table.optional_number("tension_fraction");
+  if (!reading.tension && !reading.tension_fraction) {
+    throw InputError(fmt::format("{}missing key 'tension' in [span]: expected tension (N) or tension_fraction (of the "
+                                 "rated tensile strength), one of the two",
+                                 table.location("tension")));
+  }
+  if (reading.tension && reading.tension_fraction) {
+    table.fail("tension_fraction", "given beside span.tension: expected one of tension (N) and tension_fraction");
+  }
+}
+
+void read_wind(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading) {
+  span_accept_only(table, {"law", "strouhal", "speed_min", "speed_max", "turbulence_intensity", "table"});
+  span::WindModel& wind = reading.wind;
+  const std::string law = span_required_string(
+      table, "law", "a string: cigre, foti, diana-falco, rawlins-1983, brika-laneville or table");
+  wind.law = span_parsed_name(table, "law", law, span::parse_wind_law);
+  if (const auto v = table.optional_number("strouhal")) wind.strouhal = *v;
+  if (const auto v = table.optional_number("speed_min")) wind.speed_min = *v;
+  if (const auto v = table.optional_number("speed_max")) wind.speed_max = *v;
+  if (const auto v = table.optional_number("turbulence_intensity")) wind.turbulence_intensity = *v;
+  const std::optional<std::string> file = table.optional_string("table");
+  if (wind.law != span::WindLaw::table) {
+    if (file) {
+      table.fail("table", fmt::format("\"{}\": only law = \"table\" uses a table (law is \"{}\")", printable(*file),
+                                      printable(law)));
+    }
+    return;
+  }
+  if (!file) {
+    throw InputError(fmt::format("{}missing key 'table' in [wind]: expected the CSV file of law = \"table\" "
+                                 "(columns y_over_d,fnc; relative paths start at the span file's folder)",
+                                 table.location("table")));
+  }
+  const std::filesystem::path path = span_resolve(*file, base_directory);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    table.fail("table", fmt::format("\"{}\": expected an existing CSV file (looked for {}, relative paths start at the "
+                                    "span file's folder)",
+                                    printable(*file), printable(path.string())));
+  }
+  const std::vector<std::vector<double>> columns = read_csv_columns(path, {"y_over_d", "fnc"}, 2);
+  for (std::size_t i = 0; i < columns[0].size(); ++i) wind.table.push_back({columns[0][i], columns[1][i]});
+  reading.inputs.push_back(path);
+}
+
+span::SelfDampingModel read_self_damping(const TomlTable& table) {
+  span_accept_only(table, {"law", "k", "l", "m", "n", "limit_curvature"});
+  span::SelfDampingModel model;
+  const std::string law = span_required_string(table, "law", "a string: a named law (noiseux-1991, ...), power or foti");
+  model.law = span_parsed_name(table, "law", law, span::parse_self_damping_law);
+  model.k = table.optional_number("k");
+  model.l = table.optional_number("l");
+  model.m = table.optional_number("m");
+  model.n = table.optional_number("n");
+  model.limit_curvature = table.optional_number("limit_curvature");
+  return model;
+}
+
+/// A span damper's name in tables and messages: its damper file's stem.
+span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem::path& base_directory,
+                                  SpanReading& reading) {
+  span_accept_only(table, {"file", "position", "ends"});
+  const std::string file = span_required_string(table, "file", "the damper file (relative to the span file)");
+  const double position = table.number("position");
+  bool both_ends = true;
+  if (const auto ends = table.optional_string("ends")) {
+    if (*ends != "both" && *ends != "one") {
+      table.fail("ends", fmt::format("\"{}\": expected \"both\" (a damper at each end of the span) or \"one\" "
+                                     "(at one end)",
+                                     printable(*ends)));
+    }
+    both_ends = *ends == "both";
+  }
+  const std::filesystem::path path = span_resolve(file, base_directory);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    table.fail("file", fmt::format("\"{}\": expected an existing damper file (looked for {}, relative paths start at "
+                                   "the span file's folder)",
+                                   printable(file), printable(path.string())));
+  }
+  DamperFile loaded = load_damper_file(path);
+  reading.inputs.push_back(path);
+  reading.inputs.insert(reading.inputs.end(), loaded.cable_files.begin(), loaded.cable_files.end());
+  for (std::string& warning : loaded.warnings) {
+    if (std::find(reading.warnings.begin(), reading.warnings.end(), warning) == reading.warnings.end()) {
+      reading.warnings.push_back(std::move(warning));
+    }
+  }
+  return span::SpanDamper{std::move(loaded.damper), position, both_ends, path.stem().string()};
+}
+
+span::FatigueSpec read_fatigue(const TomlTable& table) {
+  span_accept_only(table, {"cycles", "endurance_limit", "wind_weibull", "aeolian_fraction"});
+  span::FatigueSpec fatigue;
+  fatigue.cycles = table.optional_number("cycles");
+  fatigue.endurance_limit = table.optional_number("endurance_limit");
+  const std::optional<TomlTable> weibull = table.optional_table("wind_weibull");
+  const std::optional<double> fraction = table.optional_number("aeolian_fraction");
+  if (weibull.has_value() != fraction.has_value()) {
+    const std::string_view missing = weibull ? "aeolian_fraction" : "wind_weibull";
+    throw InputError(fmt::format("{}missing key '{}' in [fatigue]: the life estimate needs wind_weibull = {{ shape, "
+                                 "scale }} (m/s) and aeolian_fraction (the share of the year with steady low wind), "
+                                 "both or neither",
+                                 table.location(missing), missing));
+  }
+  if (weibull) {
+    span_accept_only(*weibull, {"shape", "scale"});
+    span::LifeModel life;
+    life.wind_weibull.shape = weibull->number("shape");
+    life.wind_weibull.scale = weibull->number("scale");
+    life.aeolian_fraction = *fraction;
+    fatigue.life = life;
+  }
+  return fatigue;
+}
+
+SpanReading read_span_document(const TomlTable& top, const std::filesystem::path& base_directory) {
+  span_accept_only(top, {"conductor", "span", "wind", "self_damping", "damper", "fatigue"});
+  SpanReading reading;
+  reading.conductor = read_conductor(top.table("conductor"));
+  read_span_table(top.table("span"), reading);
+  read_wind(top.table("wind"), base_directory, reading);
+  reading.self_damping = read_self_damping(top.table("self_damping"));
+  for (const TomlTable& table : top.table_array("damper", false)) {
+    reading.dampers.push_back(read_span_damper(table, base_directory, reading));
+  }
+  reading.fatigue = read_fatigue(top.table("fatigue"));
+  return reading;
+}
+
+SpanFile build_span(const toml::table& document, const TomlSource& source, const std::filesystem::path& base_directory) {
+  SpanReading reading = read_span_document(TomlTable(document, source, ""), base_directory);
+  span::Span built = build_from_file(document, source, [&] {
+    const double tension = reading.tension ? *reading.tension : within_field("span", [&] {
+      return span::tension_from_fraction(reading.conductor, *reading.tension_fraction);
+    });
+    return span::Span(std::move(reading.conductor), reading.length, tension, std::move(reading.wind),
+                      std::move(reading.self_damping), std::move(reading.dampers), std::move(reading.fatigue));
+  });
+  return SpanFile{std::move(built), std::move(reading.inputs), std::move(reading.warnings)};
+}
+
+}  // namespace
+
+SpanFile load_span_file(const std::filesystem::path& path) {
+  return build_span(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path());
+}
+
+SpanFile load_span_text(std::string_view text, std::string_view source) {
+  return build_span(parse_toml_text(text, source), TomlSource{std::string(source), false}, std::filesystem::path());
+}
+
+}  // namespace stockbridge::io

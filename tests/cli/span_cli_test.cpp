@@ -1,0 +1,250 @@
+// `stockbridge span` as users run it: the shipped example (CSV header and rows,
+// --json keys, the report), the undamped check numbers through the program,
+// --no-dampers, the position search, and bad input (exit 2, one line, no file
+// written or overwritten).
+
+#include <cmath>
+#include <cstdlib>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+
+namespace stockbridge::testing {
+namespace {
+
+const std::string kExamples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
+const std::string kSpanExample = kExamples + "aster570_400m.toml";
+
+const std::string kHeader =
+    "frequency_hz,wind_speed_m_s,wavelength_m,amplitude_m,amplitude_over_diameter,wind_power_w,self_damping_power_w,"
+    "damper_power_w,clamp_loop_amplitude_m,damper_clamp_velocity_m_s,stress_fymax_mpa,stress_ps_mpa,"
+    "damper_clamp_stress_mpa,undamped_amplitude_m,undamped_stress_fymax_mpa,converged";
+
+/// A CSV file as a header and rows of cells (empty cells as NaN).
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+
+  std::size_t index(const std::string& name) const {
+    for (std::size_t c = 0; c < header.size(); ++c) {
+      if (header[c] == name) return c;
+    }
+    ADD_FAILURE() << "no column " << name;
+    return 0;
+  }
+  std::vector<double> column(const std::string& name) const {
+    const std::size_t c = index(name);
+    std::vector<double> values;
+    for (const auto& row : rows) values.push_back(row.at(c));
+    return values;
+  }
+};
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+Csv read_csv(const std::filesystem::path& path) {
+  Csv csv;
+  std::istringstream in(read_text(path));
+  std::string line;
+  std::getline(in, line);
+  csv.header = split(line);
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    for (const std::string& cell : split(line)) row.push_back(cell.empty() ? std::nan("") : std::strtod(cell.c_str(), nullptr));
+    EXPECT_EQ(row.size(), csv.header.size()) << line;
+    csv.rows.push_back(row);
+  }
+  return csv;
+}
+
+/// The number after "key": in a JSON text (NaN for null or a missing key).
+double json_number(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "no key " << key << " in " << json;
+    return std::nan("");
+  }
+  const std::string value = json.substr(at + key.size() + 4);
+  return value.rfind("null", 0) == 0 ? std::nan("") : std::strtod(value.c_str(), nullptr);
+}
+
+/// A scratch folder holding a copy of the example span and its damper file.
+std::filesystem::path example_copy(const std::string& name) {
+  const auto dir = scratch_directory(name);
+  std::filesystem::copy_file(kSpanExample, dir / "span.toml");
+  std::filesystem::copy_file(kExamples + "sauter2003.toml", dir / "sauter2003.toml");
+  return dir;
+}
+
+TEST(SpanCli, RunsTheExampleAndWritesTheCsv) {
+  const auto dir = scratch_directory("span-example");
+  const CliResult r = run_cli("span '" + kSpanExample + "' --points 12 -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string text = read_text(dir / "span.csv");
+  EXPECT_EQ(text.rfind(kHeader + ",endurance_limit_mpa,energy_identity_error,sauter2003_end1_velocity_m_s,", 0), 0u)
+      << text.substr(0, text.find('\n'));
+  const Csv csv = read_csv(dir / "span.csv");
+  ASSERT_EQ(csv.rows.size(), 12u);
+  for (const char* column : {"sauter2003_end1_velocity_m_s", "sauter2003_end1_re_z_n_s_m", "sauter2003_end1_im_z_n_s_m",
+                             "sauter2003_end1_power_w", "sauter2003_end1_clamp_stress_mpa", "sauter2003_end2_velocity_m_s",
+                             "sauter2003_end2_power_w"}) {
+    csv.index(column);
+  }
+  const std::vector<double> f = csv.column("frequency_hz");
+  EXPECT_NEAR(f.front(), 0.185 * 1.0 / 0.03105, 1e-9);  // the wind band St U / D
+  EXPECT_NEAR(f.back(), 0.185 * 7.0 / 0.03105, 1e-9);
+  const auto converged = csv.column("converged");
+  const auto amplitude = csv.column("amplitude_m"), undamped = csv.column("undamped_amplitude_m");
+  const auto stress = csv.column("stress_fymax_mpa"), limit = csv.column("endurance_limit_mpa");
+  const auto damper_power = csv.column("damper_power_w"), end1 = csv.column("sauter2003_end1_power_w"),
+             end2 = csv.column("sauter2003_end2_power_w");
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    EXPECT_EQ(converged[i], 1.0) << "row " << i;
+    EXPECT_LE(amplitude[i], undamped[i] * (1 + 1e-9)) << "a damper lowers the amplitude, f = " << f[i];
+    EXPECT_GE(stress[i], 0.0);
+    EXPECT_NEAR(limit[i], 8.7, 0.05);  // the several-layer Safe Border Line at 5e8 cycles
+    EXPECT_NEAR(damper_power[i], end1[i] + end2[i], 1e-6 * (1.0 + damper_power[i])) << "f = " << f[i];
+  }
+  EXPECT_NE(r.out.find("endurance limit: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("life: "), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("span: 12 points in "), std::string::npos) << r.err;
+}
+
+TEST(SpanCli, JsonSummaryHasEveryKey) {
+  const auto dir = scratch_directory("span-json");
+  const CliResult r = run_cli("span '" + kSpanExample + "' --points 10 --json -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("{\"points\": 10, \"converged\": 10, \"damper_model\": \"travelling\", \"dampers\": 1, ", 0), 0u)
+      << r.out;
+  for (const char* key : {"endurance_limit_mpa", "max_stress_fymax_mpa", "max_stress_frequency_hz",
+                          "max_damper_clamp_stress_mpa", "undamped_max_stress_fymax_mpa",
+                          "undamped_max_stress_frequency_hz", "position_m", "life_years", "damage_per_year",
+                          "undamped_life_years", "undamped_damage_per_year", "impedance_nodes",
+                          "failed_impedance_nodes", "max_energy_identity_error", "seconds"}) {
+    EXPECT_NE(r.out.find(std::string("\"") + key + "\": "), std::string::npos) << key << " in " << r.out;
+  }
+  EXPECT_TRUE(r.out.find("\"verdict\": \"safe\"") != std::string::npos ||
+              r.out.find("\"verdict\": \"unsafe\"") != std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\"position_optimized\": false"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"failed\": []"), std::string::npos) << r.out;
+  EXPECT_EQ(json_number(r.out, "position_m"), 1.0);
+  EXPECT_LT(json_number(r.out, "max_stress_fymax_mpa"), json_number(r.out, "undamped_max_stress_fymax_mpa"));
+  EXPECT_GE(json_number(r.out, "life_years"), json_number(r.out, "undamped_life_years"));
+  EXPECT_LT(json_number(r.out, "max_energy_identity_error"), 1e-6);
+  // The largest stress is the CSV's largest.
+  const Csv csv = read_csv(dir / "span.csv");
+  double largest = 0.0;
+  for (double s : csv.column("stress_fymax_mpa")) largest = std::max(largest, s);
+  EXPECT_NEAR(json_number(r.out, "max_stress_fymax_mpa"), largest, 1e-9 * largest);
+}
+
+// MODEL.md section 9's undamped check numbers through the program.
+TEST(SpanCli, WithoutDampersTheColumnsAreTheUndampedOnes) {
+  const auto dir = scratch_directory("span-undamped");
+  const CliResult r = run_cli("span '" + kSpanExample + "' --frequencies 10,20,30,40 --no-dampers -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Csv csv = read_csv(dir / "span.csv");
+  EXPECT_EQ(csv.header.back(), "energy_identity_error");  // no damper columns
+  ASSERT_EQ(csv.rows.size(), 4u);
+  const auto amplitude = csv.column("amplitude_m"), undamped = csv.column("undamped_amplitude_m");
+  const auto stress = csv.column("stress_fymax_mpa"), undamped_stress = csv.column("undamped_stress_fymax_mpa");
+  const auto velocity = csv.column("damper_clamp_velocity_m_s"), power = csv.column("damper_power_w");
+  const double expected[] = {26.5e-3, 10.6e-3, 3.04e-3, 1.58e-3};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(amplitude[i], expected[i], 0.005 * expected[i]);
+    EXPECT_DOUBLE_EQ(amplitude[i], undamped[i]);
+    EXPECT_DOUBLE_EQ(stress[i], undamped_stress[i]);
+    EXPECT_TRUE(std::isnan(velocity[i])) << "no damper: empty";
+    EXPECT_EQ(power[i], 0.0);
+  }
+  EXPECT_NE(r.out.find("dampers: none"), std::string::npos) << r.out;
+}
+
+TEST(SpanCli, TheWeakDamperModelRuns) {
+  const auto dir = scratch_directory("span-weak");
+  const CliResult r = run_cli("span '" + kSpanExample + "' --frequencies 10,20,30 --damper-model weak --json -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"damper_model\": \"weak\""), std::string::npos) << r.out;
+}
+
+TEST(SpanCli, PositionSearchReportsAndBalancesAtThePositionFound) {
+  const auto dir = scratch_directory("span-position");
+  const CliResult at_file = run_cli("span '" + kSpanExample + "' --points 8 --json -o file.csv", dir);
+  ASSERT_EQ(at_file.exit_code, 0) << at_file.err;
+  const CliResult r = run_cli("span '" + kSpanExample + "' --points 8 --optimize-position 0.5:3 --json -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"position_optimized\": true"), std::string::npos) << r.out;
+  const double position = json_number(r.out, "position_m");
+  EXPECT_GE(position, 0.5);
+  EXPECT_LE(position, 3.0);
+  // 1.0 m (the file's) is one of the scan's positions: the optimum is no worse.
+  EXPECT_LE(json_number(r.out, "max_stress_fymax_mpa"), json_number(at_file.out, "max_stress_fymax_mpa") * (1 + 1e-9));
+  const CliResult report = run_cli("span '" + kSpanExample + "' --points 8 --optimize-position 0.5:3 -o span2.csv", dir);
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  EXPECT_NE(report.out.find("position: "), std::string::npos) << report.out;
+}
+
+/// Exit 2, one line on stderr containing `mention`, and no output file.
+void expect_bad(const std::string& arguments, const std::string& mention) {
+  const auto dir = example_copy("span-bad");
+  const CliResult r = run_cli(arguments, dir);
+  EXPECT_EQ(r.exit_code, 2) << arguments << "\n" << r.err;
+  EXPECT_EQ(r.stderr_lines(), 1) << arguments << "\n" << r.err;
+  EXPECT_NE(r.err.find(mention), std::string::npos) << arguments << "\n" << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv")) << arguments;
+}
+
+TEST(SpanCli, BadOptionsExitTwoWithOneLineAndNoFile) {
+  expect_bad("span span.toml --frequencies 20,10 -o out.csv", "frequencies[1] = 10");
+  expect_bad("span span.toml --frequencies 10,,20 -o out.csv", "--frequencies");
+  expect_bad("span span.toml --frequencies 10 --points 5 -o out.csv", "excludes");
+  expect_bad("span span.toml --points 1 -o out.csv", "points = 1");
+  expect_bad("span span.toml --damper-model linear -o out.csv", "linear");
+  expect_bad("span span.toml --optimize-position 3:0.5 -o out.csv", "optimize_position = 3:0.5");
+  expect_bad("span span.toml --optimize-position 2 -o out.csv", "--optimize-position = '2': expected AMIN:AMAX");
+  expect_bad("span span.toml --optimize-position 0.5:x -o out.csv", "--optimize-position AMAX = 'x'");
+  expect_bad("span span.toml --optimize-position 0.5:3 --no-dampers -o out.csv", "no_dampers");
+  expect_bad("span span.toml --threads 0 -o out.csv", "threads = 0");
+  expect_bad("span span.toml", "--output");
+  expect_bad("span missing.toml -o out.csv", "missing.toml: no such file");
+}
+
+TEST(SpanCli, BadSpanFilesExitTwoNamingFileLineAndValue) {
+  const auto dir = example_copy("span-bad-file");
+  std::string text = read_text(dir / "span.toml");
+  text.replace(text.find("length = 400"), 12, "length = -400");
+  std::ofstream(dir / "bad.toml") << text;
+  const CliResult r = run_cli("span bad.toml -o out.csv", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_NE(r.err.find("bad.toml:19: span.length = -400"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));
+}
+
+TEST(SpanCli, InputsAreNeverOverwritten) {
+  for (const std::string output : {"span.toml", "sauter2003.toml"}) {
+    const auto dir = example_copy("span-inputs");
+    const std::string before = read_text(dir / output);
+    const CliResult r = run_cli("span span.toml --points 4 -o " + output, dir);
+    EXPECT_EQ(r.exit_code, 2) << output;
+    EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+    EXPECT_EQ(read_text(dir / output), before) << output;
+  }
+}
+
+}  // namespace
+}  // namespace stockbridge::testing

@@ -1,0 +1,333 @@
+// Span files: the issue's form read as written; every required key missing named
+// with its table; bad values reported at their own line with the field's path;
+// tension given exactly once; the wind table's CSV and the damper files found
+// relative to the span file from any working directory; unknown keys rejected.
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/span_file.hpp"
+#include "support/temp_file.hpp"
+
+namespace stockbridge::io {
+namespace {
+
+const std::string kDamper =
+    "[clamp]\nmass = 0.7\n[[arm]]\nname = \"a\"\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n"
+    "[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\njenkin = [ { c = 20.0, h = 0.7 } ]\n";
+
+/// The issue's form, with a damper file in a sub-folder.
+const std::string kSpan = R"([conductor]
+name = "ASTER570"
+mass_per_length = 1.571
+diameter = 0.03105
+rated_tensile_strength = 185300
+ei_min = 28.28
+ei_max = 2155
+outer_wire_diameter = 0.00345
+outer_wire_modulus = 68e9
+aluminium_layers = 4
+
+[span]
+length = 400
+tension_fraction = 0.15
+
+[wind]
+law = "cigre"
+strouhal = 0.185
+speed_min = 1.0
+speed_max = 7.0
+
+[self_damping]
+law = "noiseux-1991"
+
+[[damper]]
+file = "dampers/stockbridge.toml"
+position = 1.0
+ends = "both"
+
+[fatigue]
+cycles = 5e8
+wind_weibull = { shape = 2.0, scale = 4.0 }
+aeolian_fraction = 0.3
+)";
+
+std::filesystem::path span_directory() {
+  return std::filesystem::temp_directory_path() / ("stockbridge-span-file-" + std::to_string(::getpid()));
+}
+
+std::filesystem::path write_span(const std::string& contents, const std::string& name = "span.toml") {
+  const auto dir = span_directory();
+  testing::write_temp_file(dir / "dampers", "stockbridge.toml", kDamper);
+  return testing::write_temp_file(dir, name, contents);
+}
+
+/// `text` with the first occurrence of `from` replaced by `to` (which must be there).
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The 1-based line of the first line of `text` starting with `start`.
+int line_of(const std::string& text, const std::string& start) {
+  int line = 1;
+  for (std::size_t at = 0; at < text.size(); ++line) {
+    if (text.compare(at, start.size(), start) == 0) return line;
+    const std::size_t next = text.find('\n', at);
+    if (next == std::string::npos) break;
+    at = next + 1;
+  }
+  ADD_FAILURE() << "no line starting with " << start;
+  return 0;
+}
+
+/// ":<line>: ", as messages locate a key.
+std::string at_line(int line) {
+  std::string text = ":";
+  text += std::to_string(line);
+  text += ": ";
+  return text;
+}
+
+/// The error's message after the file's path ("" + ":<line>: ..."), or "accepted".
+std::string error_of(const std::string& contents) {
+  const auto path = write_span(contents, "bad.toml");
+  try {
+    load_span_file(path);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    return what.rfind(path.string(), 0) == 0 ? what.substr(path.string().size()) : what;
+  }
+  return "accepted";
+}
+
+TEST(SpanFile, ReadsTheIssuesFormAsWritten) {
+  const auto path = write_span(kSpan);
+  const SpanFile file = load_span_file(path);
+  const span::Span& s = file.span;
+  EXPECT_EQ(s.conductor().name, "ASTER570");
+  EXPECT_DOUBLE_EQ(s.conductor().mass_per_length, 1.571);
+  EXPECT_DOUBLE_EQ(s.conductor().diameter, 0.03105);
+  EXPECT_DOUBLE_EQ(s.conductor().rated_tensile_strength, 185300.0);
+  EXPECT_DOUBLE_EQ(s.conductor().ei_min, 28.28);
+  EXPECT_DOUBLE_EQ(s.conductor().ei_max, 2155.0);
+  EXPECT_DOUBLE_EQ(s.conductor().outer_wire_diameter, 0.00345);
+  EXPECT_DOUBLE_EQ(s.conductor().outer_wire_modulus, 68e9);
+  EXPECT_EQ(s.conductor().aluminium_layers, 4);
+  EXPECT_DOUBLE_EQ(s.length(), 400.0);
+  EXPECT_NEAR(s.tension(), 0.15 * 185300.0, 1e-9);
+  EXPECT_EQ(s.wind().law, span::WindLaw::cigre);
+  EXPECT_DOUBLE_EQ(s.wind().strouhal, 0.185);
+  EXPECT_DOUBLE_EQ(s.wind().speed_min, 1.0);
+  EXPECT_DOUBLE_EQ(s.wind().speed_max, 7.0);
+  EXPECT_EQ(s.self_damping().law, span::SelfDampingLaw::noiseux_1991);
+  EXPECT_FALSE(s.self_damping().k.has_value());
+  ASSERT_EQ(s.dampers().size(), 1u);
+  EXPECT_EQ(s.dampers()[0].name, "stockbridge");
+  EXPECT_DOUBLE_EQ(s.dampers()[0].position, 1.0);
+  EXPECT_TRUE(s.dampers()[0].both_ends);
+  EXPECT_DOUBLE_EQ(s.dampers()[0].damper.clamp_mass(), 0.7);
+  ASSERT_TRUE(s.fatigue().cycles.has_value());
+  EXPECT_DOUBLE_EQ(*s.fatigue().cycles, 5e8);
+  EXPECT_FALSE(s.fatigue().endurance_limit.has_value());
+  ASSERT_TRUE(s.fatigue().life.has_value());
+  EXPECT_DOUBLE_EQ(s.fatigue().life->wind_weibull.shape, 2.0);
+  EXPECT_DOUBLE_EQ(s.fatigue().life->wind_weibull.scale, 4.0);
+  EXPECT_DOUBLE_EQ(s.fatigue().life->aeolian_fraction, 0.3);
+  ASSERT_EQ(file.inputs.size(), 1u);
+  EXPECT_EQ(file.inputs[0], span_directory() / "dampers/stockbridge.toml");
+  EXPECT_TRUE(file.warnings.empty());
+}
+
+TEST(SpanFile, TheShippedExampleReads) {
+  const SpanFile file = load_span_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/aster570_400m.toml");
+  ASSERT_EQ(file.span.dampers().size(), 1u);
+  EXPECT_EQ(file.span.dampers()[0].name, "sauter2003");
+  EXPECT_TRUE(file.warnings.empty());
+}
+
+TEST(SpanFile, OptionalKeysTakeTheModelsDefaults) {
+  std::string text = replaced(kSpan, "strouhal = 0.185\nspeed_min = 1.0\nspeed_max = 7.0\n", "");
+  text = replaced(text, "ends = \"both\"\n", "");
+  text = replaced(text, "ei_max = 2155\n", "");
+  text = replaced(text, "wind_weibull = { shape = 2.0, scale = 4.0 }\naeolian_fraction = 0.3\n", "");
+  const SpanFile file = load_span_file(write_span(text));
+  const span::WindModel defaults;
+  EXPECT_EQ(file.span.wind().strouhal, defaults.strouhal);
+  EXPECT_EQ(file.span.wind().speed_min, defaults.speed_min);
+  EXPECT_EQ(file.span.wind().speed_max, defaults.speed_max);
+  EXPECT_TRUE(file.span.dampers()[0].both_ends);
+  EXPECT_EQ(file.span.conductor().ei_max, 0.0);
+  EXPECT_FALSE(file.span.fatigue().life.has_value());
+  // No dampers at all, and a tension in N; one damper at one end.
+  std::string bare = replaced(kSpan, "[[damper]]\nfile = \"dampers/stockbridge.toml\"\nposition = 1.0\nends = \"both\"\n", "");
+  bare = replaced(bare, "tension_fraction = 0.15", "tension = 30000");
+  const SpanFile no_dampers = load_span_file(write_span(bare));
+  EXPECT_TRUE(no_dampers.span.dampers().empty());
+  EXPECT_TRUE(no_dampers.inputs.empty());
+  EXPECT_DOUBLE_EQ(no_dampers.span.tension(), 30000.0);
+  EXPECT_FALSE(load_span_file(write_span(replaced(kSpan, "ends = \"both\"", "ends = \"one\""))).span.dampers()[0].both_ends);
+}
+
+struct MissingKey {
+  std::string line;   ///< the line removed
+  std::string table;  ///< the table it belonged to (whose header line the message names)
+  std::string key;
+};
+
+class SpanFileMissingKey : public ::testing::TestWithParam<MissingKey> {};
+
+TEST_P(SpanFileMissingKey, IsNamedWithItsTable) {
+  const MissingKey& m = GetParam();
+  const std::string text = replaced(kSpan, m.line + "\n", "");
+  const std::string error = error_of(text);
+  const std::string where = m.table == "damper" ? "[[damper]]" : "[" + m.table + "]";
+  const std::string expected = at_line(line_of(text, where)) + "missing key '" + m.key + "' in [" +
+                               (m.table == "damper" ? "damper[0]" : m.table) + "]";
+  EXPECT_EQ(error.rfind(expected, 0), 0u) << error << "\nexpected: " << expected;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryRequiredKey, SpanFileMissingKey,
+    ::testing::Values(MissingKey{"mass_per_length = 1.571", "conductor", "mass_per_length"},
+                      MissingKey{"diameter = 0.03105", "conductor", "diameter"},
+                      MissingKey{"rated_tensile_strength = 185300", "conductor", "rated_tensile_strength"},
+                      MissingKey{"ei_min = 28.28", "conductor", "ei_min"},
+                      MissingKey{"outer_wire_diameter = 0.00345", "conductor", "outer_wire_diameter"},
+                      MissingKey{"outer_wire_modulus = 68e9", "conductor", "outer_wire_modulus"},
+                      MissingKey{"aluminium_layers = 4", "conductor", "aluminium_layers"},
+                      MissingKey{"length = 400", "span", "length"},
+                      MissingKey{"tension_fraction = 0.15", "span", "tension"},
+                      MissingKey{"law = \"cigre\"", "wind", "law"},
+                      MissingKey{"law = \"noiseux-1991\"", "self_damping", "law"},
+                      MissingKey{"file = \"dampers/stockbridge.toml\"", "damper", "file"},
+                      MissingKey{"position = 1.0", "damper", "position"},
+                      MissingKey{"aeolian_fraction = 0.3", "fatigue", "aeolian_fraction"}));
+
+TEST(SpanFile, AMissingTableIsNamed) {
+  for (const std::string table : {"conductor", "span", "wind", "self_damping", "fatigue"}) {
+    std::string text = replaced(kSpan, "[" + table + "]", "[" + table + "_]");
+    EXPECT_NE(error_of(text).find("unknown key '" + table + "_'"), std::string::npos) << error_of(text);
+  }
+  const std::string no_fatigue = kSpan.substr(0, kSpan.find("[fatigue]"));
+  EXPECT_NE(error_of(no_fatigue).find("missing key 'fatigue' in the top level"), std::string::npos)
+      << error_of(no_fatigue);
+}
+
+/// A bad value is reported at its own line, named by its full path: the line of
+/// `to` (of its last line where it holds several, unless `first` says otherwise).
+void expect_at_line(const std::string& from, const std::string& to, const std::string& message, bool first = false) {
+  const std::string text = replaced(kSpan, from, to);
+  const std::string key_line = first ? to.substr(0, to.find('\n')) : to.substr(to.rfind('\n') + 1);
+  const std::string expected = at_line(line_of(text, key_line)) + message;
+  const std::string error = error_of(text);
+  EXPECT_EQ(error.rfind(expected, 0), 0u) << error << "\nexpected the start: " << expected;
+}
+
+TEST(SpanFile, BadValuesAreReportedAtTheirLine) {
+  expect_at_line("diameter = 0.03105", "diameter = -1", "conductor.diameter = -1: expected a finite value > 0 (m)");
+  expect_at_line("ei_min = 28.28", "ei_min = 0", "conductor.ei_min = 0: expected a finite value > 0");
+  expect_at_line("aluminium_layers = 4", "aluminium_layers = 11", "conductor.aluminium_layers: 11: expected an integer from 1 to 10");
+  expect_at_line("aluminium_layers = 4", "aluminium_layers = 4.5", "conductor.aluminium_layers: the number 4.5: expected an integer from 1 to 10");
+  expect_at_line("length = 400", "length = -400", "span.length = -400");
+  expect_at_line("tension_fraction = 0.15", "tension_fraction = 1.5",
+                 "span.tension_fraction = 1.5: expected a fraction of the rated tensile strength > 0 and < 1");
+  expect_at_line("law = \"cigre\"", "law = \"cigr\"", "wind.law = 'cigr': expected cigre, foti");
+  expect_at_line("law = \"cigre\"", "law = 3", "wind.law: the integer 3: expected a string");
+  expect_at_line("speed_max = 7.0", "speed_max = 0.5", "wind.speed_max = 0.5: expected more than speed_min = 1 m/s");
+  expect_at_line("strouhal = 0.185", "strouhal = 1.85", "wind.strouhal = 1.85");
+  expect_at_line("law = \"noiseux-1991\"", "law = \"noiseux\"", "self_damping.law = 'noiseux': expected one of");
+  expect_at_line("law = \"noiseux-1991\"", "law = \"noiseux-1991\"\nk = -1", "self_damping.k = -1");
+  expect_at_line("law = \"noiseux-1991\"", "law = \"noiseux-1991\"\nn = 2.5", "self_damping.n");
+  expect_at_line("law = \"noiseux-1991\"", "law = \"foti\"\nlimit_curvature = -0.02", "self_damping.limit_curvature = -0.02");
+  expect_at_line("position = 1.0", "position = -1", "damper[0].position = -1");
+  expect_at_line("ends = \"both\"", "ends = \"three\"", "damper[0].ends: \"three\": expected \"both\"");
+  expect_at_line("cycles = 5e8", "cycles = -5", "fatigue.cycles = -5");
+  expect_at_line("aeolian_fraction = 0.3", "aeolian_fraction = 1.3", "fatigue.aeolian_fraction = 1.3");
+  expect_at_line("wind_weibull = { shape = 2.0, scale = 4.0 }", "wind_weibull = { shape = -2.0, scale = 4.0 }",
+                 "fatigue.wind_weibull.shape = -2");
+  expect_at_line("wind_weibull = { shape = 2.0, scale = 4.0 }", "wind_weibull = { shape = 2.0, scale = 4.0, k = 1 }",
+                 "unknown key 'fatigue.wind_weibull.k'");
+}
+
+TEST(SpanFile, TensionIsGivenExactlyOnce) {
+  expect_at_line("tension_fraction = 0.15", "tension_fraction = 0.15\ntension = 30000",
+                 "span.tension_fraction: given beside span.tension: expected one of", true);
+  EXPECT_NE(error_of(replaced(kSpan, "tension_fraction = 0.15", "tension = 185300")).find("span.tension = 185300"),
+            std::string::npos);
+  expect_at_line("tension_fraction = 0.15", "tension = -1", "span.tension = -1");
+}
+
+TEST(SpanFile, AWindTableIsReadFromItsCsvBesideTheSpanFile) {
+  const auto dir = span_directory();
+  testing::write_temp_file(dir / "wind", "fnc.csv", "y_over_d,fnc\n0,0\n0.1,1.2\n0.5,8\n1.0,-1\n");
+  const std::string text = replaced(kSpan, "law = \"cigre\"", "law = \"table\"\ntable = \"wind/fnc.csv\"");
+  const SpanFile file = load_span_file(write_span(text));
+  EXPECT_EQ(file.span.wind().law, span::WindLaw::table);
+  ASSERT_EQ(file.span.wind().table.size(), 4u);
+  EXPECT_DOUBLE_EQ(file.span.wind().table[1].y_over_d, 0.1);
+  EXPECT_DOUBLE_EQ(file.span.wind().table[1].fnc, 1.2);
+  EXPECT_NE(std::find(file.inputs.begin(), file.inputs.end(), dir / "wind/fnc.csv"), file.inputs.end());
+  // Missing, without the key, beside another law, a bad cell, a bad point.
+  expect_at_line("law = \"cigre\"", "law = \"table\"\ntable = \"nope.csv\"", "wind.table: \"nope.csv\": expected an existing CSV file");
+  EXPECT_NE(error_of(replaced(kSpan, "law = \"cigre\"", "law = \"table\"")).find("missing key 'table' in [wind]"),
+            std::string::npos);
+  expect_at_line("law = \"cigre\"", "law = \"cigre\"\ntable = \"wind/fnc.csv\"", "wind.table: \"wind/fnc.csv\": only law = \"table\"");
+  testing::write_temp_file(dir / "wind", "bad.csv", "y_over_d,fnc\n0,0\n0.1,abc\n");
+  EXPECT_NE(error_of(replaced(kSpan, "law = \"cigre\"", "law = \"table\"\ntable = \"wind/bad.csv\"")).find("bad.csv:3"),
+            std::string::npos);
+  testing::write_temp_file(dir / "wind", "unsorted.csv", "y_over_d,fnc\n0.2,1\n0.1,2\n");
+  const std::string unsorted = replaced(kSpan, "law = \"cigre\"", "law = \"table\"\ntable = \"wind/unsorted.csv\"");
+  const std::string error = error_of(unsorted);
+  EXPECT_EQ(error.rfind(at_line(line_of(unsorted, "table =")) + "wind.table[1].y_over_d = 0.1", 0), 0u)
+      << error;
+}
+
+TEST(SpanFile, DamperFilesAreFoundRelativeToTheSpanFileFromAnotherFolder) {
+  const auto path = write_span(kSpan);
+  const auto cwd = std::filesystem::current_path();
+  std::filesystem::current_path(std::filesystem::temp_directory_path());
+  const SpanFile file = load_span_file(path);
+  std::filesystem::current_path(cwd);
+  ASSERT_EQ(file.span.dampers().size(), 1u);
+  const std::string missing = replaced(kSpan, "dampers/stockbridge.toml", "dampers/none.toml");
+  const std::string error = error_of(missing);
+  EXPECT_EQ(error.rfind(at_line(line_of(missing, "file =")) +
+                            "damper[0].file: \"dampers/none.toml\": expected an existing damper file",
+                        0),
+            0u)
+      << error;
+  // An error inside the damper file is located there.
+  testing::write_temp_file(span_directory() / "dampers", "broken.toml", replaced(kDamper, "mass = 0.856", "mass = -1"));
+  const std::string broken = error_of(replaced(kSpan, "dampers/stockbridge.toml", "dampers/broken.toml"));
+  EXPECT_NE(broken.find("broken.toml:5: arm[0].mass = -1"), std::string::npos) << broken;
+}
+
+TEST(SpanFile, UnknownKeysAreRejected) {
+  expect_at_line("strouhal = 0.185", "colour = 1", "unknown key 'wind.colour'");
+  expect_at_line("ei_min = 28.28", "ei_min = 28.28\nei = 28.28", "unknown key 'conductor.ei'");
+  expect_at_line("position = 1.0", "position = 1.0\nname = \"x\"", "unknown key 'damper[0].name'");
+  EXPECT_NE(error_of(kSpan + "[extra]\n").find("unknown key 'extra'"), std::string::npos);
+}
+
+TEST(SpanFile, TextIsCheckedAlikeAndNamedWithoutLines) {
+  std::string text = replaced(kSpan, "[[damper]]\nfile = \"dampers/stockbridge.toml\"\nposition = 1.0\nends = \"both\"\n", "");
+  EXPECT_EQ(load_span_text(text, "span()").span.length(), 400.0);
+  try {
+    load_span_text(replaced(text, "diameter = 0.03105", "diameter = -1"), "span()");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "span(): conductor.diameter = -1: expected a finite value > 0 (m)");
+  }
+}
+
+}  // namespace
+}  // namespace stockbridge::io
