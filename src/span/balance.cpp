@@ -125,7 +125,7 @@ std::vector<EndLayout> end_layouts(const Span& span) {
   std::vector<EndLayout> ends(2);
   std::vector<std::size_t> order(span.dampers().size());
   for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
-  std::sort(order.begin(), order.end(),
+  std::stable_sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return span.dampers()[a].position < span.dampers()[b].position; });
   for (const std::size_t j : order) {
     for (int e = 0; e < 2; ++e) {

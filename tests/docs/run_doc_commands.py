@@ -8,7 +8,7 @@ examples/README.md (```text blocks are synopses, with placeholders, and are not
 run). They run in that order in one scratch folder laid out like a fresh clone
 after the README's first command (the sources copied, `build` the build tree), so
 a file one command writes is there for the next. Each must exit 0, or the status
-its trailing comment names (`# exit 3`). The README's first command runs from its
+its trailing comment names (`# exit 3`, maybe followed by why). The README's first command runs from its
 first `build/stockbridge` on (the build before it is the suite's own); the blocks
 in SKIPPED_BLOCKS are not run, for the reasons given there.
 Prints one line per failing command and exits 1 if any failed.
@@ -50,7 +50,7 @@ def commands(block):
 
 
 def expected_status(command):
-    match = re.search(r"#\s*exit (\d+)\s*$", command)
+    match = re.search(r"#\s*exit (\d+)\b", command)
     return int(match.group(1)) if match else 0
 
 

@@ -96,7 +96,7 @@ struct BalanceOptions {
   /// where a resonance passes the frequency as v grows: docs/span.md).
   bool polish = true;
   double polish_tolerance = 1e-6;
-  int max_polish_iterations = 30;
+  int max_polish_iterations = 60;
   /// The amplitudes searched, as fractions of the conductor diameter.
   double amplitude_min_over_diameter = 1e-6;
   double amplitude_max_over_diameter = 10.0;
