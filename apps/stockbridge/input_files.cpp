@@ -1,5 +1,7 @@
 #include "input_files.hpp"
 
+#include <filesystem>
+
 #include <fmt/format.h>
 
 #include "stockbridge/io/cable_file.hpp"
@@ -8,12 +10,22 @@
 
 namespace stockbridge::cli {
 
+namespace {
+
+/// The outputs apart from the files a description references, each named by `role`.
+void require_apart_from_references(const std::vector<CommandFile>& outputs, const std::string& role,
+                                   const std::vector<std::filesystem::path>& references) {
+  std::vector<CommandFile> inputs;
+  for (const auto& reference : references) inputs.push_back({role, reference.string()});
+  require_outputs_apart(outputs, inputs);
+}
+
+}  // namespace
+
 damper::Damper read_damper_input(const std::string& path, const std::vector<CommandFile>& outputs) {
   require_outputs_apart(outputs, {{"the damper file", path}});
   io::DamperFile file = io::load_damper_file(path);
-  std::vector<CommandFile> inputs;
-  for (const auto& cable_file : file.cable_files) inputs.push_back({"a cable file the damper file references", cable_file.string()});
-  require_outputs_apart(outputs, inputs);
+  require_apart_from_references(outputs, "a cable file the damper file references", file.cable_files);
   print_warnings(file.warnings);
   return std::move(file.damper);
 }
@@ -21,9 +33,7 @@ damper::Damper read_damper_input(const std::string& path, const std::vector<Comm
 span::Span read_span_input(const std::string& path, const std::vector<CommandFile>& outputs) {
   require_outputs_apart(outputs, {{"the span file", path}});
   io::SpanFile file = io::load_span_file(path);
-  std::vector<CommandFile> inputs;
-  for (const auto& input : file.inputs) inputs.push_back({"a file the span file references", input.string()});
-  require_outputs_apart(outputs, inputs);
+  require_apart_from_references(outputs, "a file the span file references", file.inputs);
   print_warnings(file.warnings);
   return std::move(file.span);
 }

@@ -373,10 +373,9 @@ std::optional<double> polish(const Span& span, FrequencyBalance& balance, const 
   }
   // Per damper, the trial velocities (log) known to give h > 0 and h < 0: once both
   // are known, a secant step that leaves the bracket is replaced by its midpoint.
-  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::vector<double>> above = u, below = u;
-  for (auto& end : above) std::fill(end.begin(), end.end(), kNone);
-  for (auto& end : below) std::fill(end.begin(), end.end(), kNone);
+  for (auto& end : above) std::fill(end.begin(), end.end(), kNaN);
+  for (auto& end : below) std::fill(end.begin(), end.end(), kNaN);
   double worst = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration < options.max_polish_iterations; ++iteration) {
     std::vector<std::vector<double>> v = u;
