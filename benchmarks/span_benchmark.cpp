@@ -29,9 +29,10 @@ void BM_SpanBalance(benchmark::State& state) {
   BalanceOptions options;
   options.polish = state.range(0) != 0;
   const std::vector<ImpedanceTable> tables = impedance_tables(span, f, options);
-  int converged = 0;
-  for (auto _ : state) converged = run_balance(span, f, tables, options).summary.converged;
-  state.counters["converged_points"] = converged;
+  BalanceSummary summary;
+  for (auto _ : state) summary = run_balance(span, f, tables, options).summary;
+  state.counters["converged_points"] = summary.converged;
+  state.counters["direct_solves"] = summary.direct_solves;
 }
 BENCHMARK(BM_SpanBalance)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/damper/tracker.hpp"
 
 namespace stockbridge::damper {
 
@@ -50,64 +51,14 @@ std::vector<double> log_spaced(double fmin, double fmax, int points) {
 
 namespace {
 
-/// Solves at `target` from `path`; a point that fails is approached again from the
-/// last converged frequency in smaller steps, then (at constant velocity) by
-/// arclength continuation.
-ArmSolution advance_to(ArmSolver& solver, const SweepSpec& spec, double amplitude, double f, Continuation& path) {
-  const Excitation target = spec.excitation(f, amplitude);
-  ArmSolution solution = solver.solve(target, path);
-  if (!solution.summary.converged() && !path.empty()) {
-    constexpr int kSubsteps = 8;
-    const double from = path.excitation.frequency_hz;
-    bool reached = true;
-    for (int k = 1; k < kSubsteps && reached; ++k) {
-      const double fk = from * std::pow(f / from, static_cast<double>(k) / kSubsteps);
-      reached = solver.solve(spec.excitation(fk, amplitude), path).summary.converged();
-    }
-    if (reached) {
-      ArmSolution retry = solver.solve(target, path);
-      if (retry.summary.converged()) solution = std::move(retry);
-    }
-  }
-  if (!solution.summary.converged() && !path.empty() && !spec.constant_displacement) {
-    // Natural continuation fails where the branch turns: follow it by arclength.
-    std::vector<ArmSolution> crossings = solver.continue_to(target, path);
-    if (!crossings.empty()) solution = std::move(crossings.back());
-  }
-  return solution;
-}
-
-/// A first point that fails from a cold start (near a resonance, where the linear
-/// guess lies far from the slipping solution) is approached as a sweep would reach
-/// it: from a decade below, where the cable slips all along (constant velocity) or
-/// moves quasi-statically (constant displacement) and a cold start converges, up in
-/// log steps along the branch. (Only for the methods that continue from a path:
-/// time integration and shooting start every point from the linear steady state.)
-ArmSolution lead_in(ArmSolver& solver, const SweepSpec& spec, double amplitude, double f, Continuation& path) {
-  constexpr int kLeadInSteps = 20;
-  constexpr double kLeadInDecades = 1.0;
-  for (int k = 0; k < kLeadInSteps; ++k) {
-    const double fk = f * std::pow(10.0, -kLeadInDecades * (kLeadInSteps - k) / kLeadInSteps);
-    advance_to(solver, spec, amplitude, fk, path);
-  }
-  return advance_to(solver, spec, amplitude, f, path);
-}
-
 /// One continuation run of one arm over all frequencies at one amplitude.
 std::vector<ArmSolution> continue_arm(const Arm& arm, const SweepSpec& spec, double amplitude,
                                       const std::function<void()>& tick) {
-  const std::unique_ptr<ArmSolver> solver = make_arm_solver(arm, spec.solver);
-  Continuation path;
+  ArmTracker tracker(arm, spec.solver, spec.constant_displacement ? HeldAmplitude::displacement : HeldAmplitude::velocity);
   std::vector<ArmSolution> solutions;
   solutions.reserve(spec.frequencies.size());
   for (const double f : spec.frequencies) {
-    ArmSolution solution = advance_to(*solver, spec, amplitude, f, path);
-    const bool continues = spec.solver.method == Method::harmonic_balance || spec.solver.method == Method::collocation;
-    if (!solution.summary.converged() && path.empty() && continues) {
-      ArmSolution led = lead_in(*solver, spec, amplitude, f, path);
-      if (led.summary.converged()) solution = std::move(led);
-    }
-    solutions.push_back(std::move(solution));
+    solutions.push_back(tracker.solve(spec.excitation(f, amplitude)));
     tick();
   }
   return solutions;

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/damper/tracker.hpp"
 
 namespace stockbridge::span {
 
@@ -100,7 +102,8 @@ std::vector<ImpedanceTable> impedance_tables(const Span& span, const std::vector
                                              const BalanceOptions& options, const damper::SweepProgress& progress) {
   options.validate();
   std::vector<ImpedanceTable> tables;
-  const int total = static_cast<int>(span.dampers().size() * frequencies.size() * options.table.velocities);
+  const std::size_t columns = ImpedanceTable::solved_frequencies(frequencies, options.table.column_ratio).size();
+  const int total = static_cast<int>(span.dampers().size() * columns * options.table.velocities);
   int done_before = 0;
   for (const SpanDamper& d : span.dampers()) {
     const damper::SweepProgress per_table = [&](int done, int) {
@@ -196,6 +199,18 @@ class FrequencyBalance {
   const StringWave& wave() const { return wave_; }
   const std::vector<EndLayout>& layouts() const { return layouts_; }
 
+  /// Per end and damper, Z_direct - Z_table at the last directly solved velocity.
+  const std::vector<std::vector<std::complex<double>>>& offsets() const { return offsets_; }
+  void set_offsets(std::vector<std::vector<std::complex<double>>> offsets) { offsets_ = std::move(offsets); }
+  /// The ends' fixed points start again from the undamped velocities (not the last
+  /// amplitude's): a scan over the amplitudes then gives the same balance each time.
+  void restart_fixed_points() {
+    for (auto& v : last_velocities_) v.clear();
+  }
+  void clear_offsets() {
+    for (auto& end : offsets_) std::fill(end.begin(), end.end(), 0.0);
+  }
+
   /// Makes damper j of end e's impedance `direct` at clamp velocity v (the table's
   /// shape kept, shifted by the difference there).
   bool correct(std::size_t e, std::size_t j, double v, std::complex<double> direct) {
@@ -278,7 +293,11 @@ void fill_balanced(const Span& span, FrequencyBalance& balance, double y, Balanc
       p.dampers.push_back(d);
     }
   }
-  p.identity_error = p.damper_power > 0.0 ? std::abs(p.damper_power - sum_dampers) / p.damper_power : 0.0;
+  // Relative to the power the waves bring to the ends, the scale of P_d's round-off
+  // (P_d = Z0 w^2 (|B|^2 - |A|^2) / 2 is a difference: near a node it is tiny).
+  double incoming = 0.0;
+  for (const EndSolution& s : at.ends) incoming += 0.5 * balance.wave().wave_impedance * std::norm(balance.wave().angular_frequency * s.response.incoming);
+  p.identity_error = incoming > 0.0 ? std::abs(p.damper_power - sum_dampers) / incoming : 0.0;
 }
 
 void mask(BalancePoint& p) {
@@ -293,10 +312,10 @@ void mask(BalancePoint& p) {
 /// waves) equals what their dampers dissipate.
 constexpr double kIdentityTolerance = 1e-8;
 
-/// The smallest stable amplitude with the dampers' current impedances.
-std::optional<double> balanced_amplitude(const Span& span, FrequencyBalance& balance, const BalanceOptions& options,
-                                         std::string& failure) {
-  const auto net = [&](double y) {
+/// The net power P_w - P_s - P_d at antinode amplitude y with the dampers' current
+/// impedances (NaN where the ends' fixed point fails; `failure` says the first).
+std::function<double(double)> net_power(FrequencyBalance& balance, std::string& failure) {
+  return [&balance, &failure](double y) {
     const EndsAtAmplitude at = balance.dampers(y);
     if (!at.known) {
       if (failure.empty()) failure = fmt::format("at Y = {:.3g} m: {}", y, at.failure);
@@ -304,47 +323,15 @@ std::optional<double> balanced_amplitude(const Span& span, FrequencyBalance& bal
     }
     return balance.wind(y) - balance.self_damping(y) - at.absorbed;
   };
-  const double d = span.conductor().diameter;
-  return smallest_stable_root(net, options.amplitude_min_over_diameter * d, options.amplitude_max_over_diameter * d,
-                              options.root);
 }
 
-/// Solves every damper of `at` directly at its clamp velocity and shifts its table there.
-bool correct_at_velocities(const Span& span, FrequencyBalance& balance, const BalanceOptions& options,
-                           const std::vector<std::vector<double>>& velocities, std::string& failure) {
-  const double f = balance.wave().angular_frequency / (2.0 * std::numbers::pi);
-  struct Solved {
-    std::size_t damper;
-    double velocity;
-    std::complex<double> z;
-  };
-  std::vector<Solved> solved;  // the ends of a symmetric span ask for the same point twice
-  for (std::size_t e = 0; e < velocities.size(); ++e) {
-    for (std::size_t j = 0; j < velocities[e].size(); ++j) {
-      const double v = velocities[e][j];
-      const std::size_t which = balance.layouts()[e].damper[j];
-      auto known = std::find_if(solved.begin(), solved.end(), [&](const Solved& s) {
-        return s.damper == which && std::abs(s.velocity - v) <= 1e-12 * v;
-      });
-      if (known == solved.end()) {
-        damper::SweepSpec lone;
-        lone.frequencies = {f};
-        lone.amplitudes = {v};
-        lone.solver = options.table.solver;
-        const damper::ImpedancePoint direct = damper::run_sweep(span.dampers()[which].damper, lone).front().points.front();
-        if (!direct.converged()) {
-          failure = fmt::format("end {}, damper {} solved directly at {:.4g} m/s: {}", e + 1, j + 1, v, direct.failure);
-          return false;
-        }
-        known = solved.insert(solved.end(), Solved{which, v, direct.impedance});
-      }
-      if (!balance.correct(e, j, v, known->z)) {
-        failure = fmt::format("end {}, damper {}: the table has no impedance near {:.4g} m/s", e + 1, j + 1, v);
-        return false;
-      }
-    }
-  }
-  return true;
+/// The smallest stable amplitude with the dampers' current impedances.
+std::optional<double> balanced_amplitude(const Span& span, FrequencyBalance& balance, const BalanceOptions& options,
+                                         std::string& failure) {
+  balance.restart_fixed_points();
+  const double d = span.conductor().diameter;
+  return smallest_stable_root(net_power(balance, failure), options.amplitude_min_over_diameter * d,
+                              options.amplitude_max_over_diameter * d, options.root);
 }
 
 std::vector<std::vector<double>> velocities_of(const EndsAtAmplitude& at) {
@@ -360,8 +347,98 @@ std::vector<std::vector<double>> velocities_of(const EndsAtAmplitude& at) {
 /// (plain substitution oscillates where the table's slope in v is far off: a
 /// resonance passing the frequency). At the root every damper's Z is the directly
 /// solved one at its own clamp velocity.
-std::optional<double> polish(const Span& span, FrequencyBalance& balance, const BalanceOptions& options, double y,
-                             std::string& failure) {
+///
+/// Along the band, each damper is followed by harmonic balance solved from its last
+/// solution (the trials of one frequency, then the next frequency's): a few Newton
+/// steps each, where a cold start takes many. And one frequency's polish hands the
+/// next its tables' shifts and the secant's slopes, which vary smoothly along the
+/// band: the next starts near its solution.
+class Polisher {
+ public:
+  Polisher(const Span& span, const BalanceOptions& options) : span_(span), options_(options) {
+    for (const SpanDamper& d : span.dampers()) trackers_.emplace_back(d.damper, options.table.solver);
+  }
+
+  /// Shifts a frequency's tables as the last polished frequency's were.
+  void prepare(FrequencyBalance& balance) const {
+    if (!offsets_.empty()) balance.set_offsets(offsets_);
+  }
+
+  /// The balance amplitude with directly solved impedances, from the tables' one, y.
+  std::optional<double> run(FrequencyBalance& balance, double y, std::string& failure);
+  /// Drops what the last frequencies handed on (after a failure: it may mislead).
+  void forget() {
+    offsets_.clear();
+    slopes_.clear();
+    history_.clear();
+  }
+
+  int direct_solves() const {
+    int n = 0;
+    for (const damper::DamperTracker& t : trackers_) n += t.solves();
+    return n;
+  }
+
+ private:
+  bool correct_at_velocities(FrequencyBalance& balance, const std::vector<std::vector<double>>& velocities,
+                             std::string& failure);
+
+  const Span& span_;
+  const BalanceOptions& options_;
+  std::vector<damper::DamperTracker> trackers_;  ///< one per damper of the span
+  std::vector<std::optional<damper::DamperTracker::Checkpoint>> anchors_;  ///< per damper: this frequency's first solution
+  std::vector<std::vector<std::complex<double>>> offsets_;  ///< the last polished frequency's, per end and damper
+  std::vector<std::vector<double>> slopes_;  ///< dh/du there, per end and damper (NaN: unknown)
+  struct Solution {
+    double log_f;
+    std::vector<std::vector<double>> u;  ///< log v* per end and damper
+  };
+  std::vector<Solution> history_;  ///< the frequencies polished
+};
+
+/// Solves every damper directly at its clamp velocity and shifts its table there.
+bool Polisher::correct_at_velocities(FrequencyBalance& balance, const std::vector<std::vector<double>>& velocities,
+                                     std::string& failure) {
+  const double f = balance.wave().angular_frequency / (2.0 * std::numbers::pi);
+  struct Solved {
+    std::size_t damper;
+    double velocity;
+    std::complex<double> z;
+  };
+  std::vector<Solved> solved;  // the ends of a symmetric span ask for the same point twice
+  for (std::size_t e = 0; e < velocities.size(); ++e) {
+    for (std::size_t j = 0; j < velocities[e].size(); ++j) {
+      const double v = velocities[e][j];
+      const std::size_t which = balance.layouts()[e].damper[j];
+      auto known = std::find_if(solved.begin(), solved.end(), [&](const Solved& s) {
+        return s.damper == which && std::abs(s.velocity - v) <= 1e-12 * v;
+      });
+      if (known == solved.end()) {
+        // Every trial of a frequency from the same start, its first solution: near a
+        // fold of the damper's response the state reached depends on the path, and
+        // the secant needs Z as a function of v.
+        damper::DamperTracker& tracker = trackers_[which];
+        if (anchors_[which]) tracker.restore(*anchors_[which]);
+        const damper::ImpedancePoint direct = tracker.solve(damper::Excitation::from_velocity(f, v));
+        if (!anchors_[which] && direct.converged()) anchors_[which] = tracker.checkpoint();
+        if (!direct.converged()) {
+          failure = fmt::format("end {}, damper {} solved directly at {:.4g} m/s: {}", e + 1, j + 1, v, direct.failure);
+          return false;
+        }
+        known = solved.insert(solved.end(), Solved{which, v, direct.impedance});
+      }
+      if (!balance.correct(e, j, v, known->z)) {
+        failure = fmt::format("end {}, damper {}: the table has no impedance near {:.4g} m/s", e + 1, j + 1, v);
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+std::optional<double> Polisher::run(FrequencyBalance& balance, const double y, std::string& failure) {
+  if (y <= 0.0) return y;  // nothing builds up: the dampers stand still
+  anchors_.assign(trackers_.size(), std::nullopt);
   const EndsAtAmplitude first = balance.dampers(y);
   if (!first.known) {
     failure = first.failure;
@@ -371,20 +448,35 @@ std::optional<double> polish(const Span& span, FrequencyBalance& balance, const 
   for (auto& end : u) {
     for (double& x : end) x = std::log(x);
   }
+  const double log_f = std::log(balance.wave().angular_frequency);
+  if (history_.size() >= 2 && history_.back().u.size() == u.size()) {
+    // The first trial: the last two solutions' line in (log f, log v).
+    const Solution& a = history_[history_.size() - 2];
+    const Solution& b = history_.back();
+    const double t = (log_f - b.log_f) / (b.log_f - a.log_f);
+    for (std::size_t e = 0; e < u.size(); ++e) {
+      for (std::size_t j = 0; j < u[e].size(); ++j) u[e][j] = b.u[e][j] + t * (b.u[e][j] - a.u[e][j]);
+    }
+  }
+  if (slopes_.size() != u.size()) {
+    slopes_ = u;
+    for (auto& end : slopes_) std::fill(end.begin(), end.end(), kNaN);
+  }
   // Per damper, the trial velocities (log) known to give h > 0 and h < 0: once both
   // are known, a secant step that leaves the bracket is replaced by its midpoint.
   std::vector<std::vector<double>> above = u, below = u;
   for (auto& end : above) std::fill(end.begin(), end.end(), kNaN);
   for (auto& end : below) std::fill(end.begin(), end.end(), kNaN);
   double worst = std::numeric_limits<double>::infinity();
-  for (int iteration = 0; iteration < options.max_polish_iterations; ++iteration) {
+  for (int iteration = 0; iteration < options_.max_polish_iterations; ++iteration) {
     std::vector<std::vector<double>> v = u;
     for (auto& end : v) {
       for (double& x : end) x = std::exp(x);
     }
-    if (!correct_at_velocities(span, balance, options, v, failure)) return std::nullopt;
-    const auto next = balanced_amplitude(span, balance, options, failure);
+    if (!correct_at_velocities(balance, v, failure)) return std::nullopt;
+    const auto next = balanced_amplitude(span_, balance, options_, failure);
     if (!next) return std::nullopt;
+    if (*next <= 0.0) return *next;  // with the direct impedances nothing builds up
     const EndsAtAmplitude after = balance.dampers(*next);
     std::vector<std::vector<double>> h = u, u_next = u;
     worst = 0.0;
@@ -393,40 +485,65 @@ std::optional<double> polish(const Span& span, FrequencyBalance& balance, const 
         h[e][j] = std::log(after.ends[e].velocities[j]) - u[e][j];
         worst = std::max(worst, std::abs(h[e][j]));
         (h[e][j] > 0.0 ? above : below)[e][j] = u[e][j];
-        double step = h[e][j];
         if (!h_prev.empty() && h_prev[e][j] != h[e][j]) {
-          const double secant = -h[e][j] * (u[e][j] - u_prev[e][j]) / (h[e][j] - h_prev[e][j]);
-          step = std::isfinite(secant) && std::abs(secant) <= 1.0 ? secant : 0.5 * h[e][j];
+          slopes_[e][j] = (h[e][j] - h_prev[e][j]) / (u[e][j] - u_prev[e][j]);
         }
+        // The first step of a frequency takes the slope the last frequency ended with.
+        const double secant = -h[e][j] / slopes_[e][j];
+        const double step = std::isfinite(secant) && std::abs(secant) <= 1.0 ? secant
+                            : h_prev.empty()                                  ? h[e][j]
+                                                                              : 0.5 * h[e][j];
         u_next[e][j] = u[e][j] + step;
         const double a = above[e][j], b = below[e][j];
+        if (std::abs(a - b) <= options_.polish_tolerance && std::abs(h[e][j]) > options_.polish_tolerance) {
+          failure = fmt::format("end {}, damper {}: no self-consistent clamp velocity: as the trial passes {:.4g} m/s "
+                                "(damper solved directly) the balance's velocity jumps by a factor {:.3g}",
+                                e + 1, j + 1, std::exp(u[e][j]), std::exp(std::abs(h[e][j])));
+          return std::nullopt;
+        }
         if (!std::isnan(a) && !std::isnan(b) && !(u_next[e][j] > std::min(a, b) && u_next[e][j] < std::max(a, b))) {
           u_next[e][j] = 0.5 * (a + b);
         }
       }
     }
-    if (worst <= options.polish_tolerance) return *next;
+    if (worst <= options_.polish_tolerance) {
+      offsets_ = balance.offsets();
+      history_.push_back({log_f, u});
+      return *next;
+    }
     u_prev = std::move(u);
     h_prev = std::move(h);
     u = std::move(u_next);
   }
   failure = fmt::format("the polish with directly solved impedances still moved the clamp velocities by {:.3g} after {} "
                         "iterations (tolerance {:.3g})",
-                        worst, options.max_polish_iterations, options.polish_tolerance);
+                        worst, options_.max_polish_iterations, options_.polish_tolerance);
   return std::nullopt;
 }
 
 BalancePoint balance_at(const Span& span, std::size_t i, double f, const std::vector<ImpedanceTable>& tables,
-                        const BalanceOptions& options) {
+                        Polisher* polisher, const BalanceOptions& options) {
   BalancePoint p;
   p.frequency_hz = f;
   p.wind_speed = span.wind().wind_speed(f, span.conductor().diameter);
   p.wavelength = wavelength(span.conductor(), span.tension(), f);
   fill_undamped(span, f, p);
   FrequencyBalance balance(span, i, f, tables, options);
+  if (polisher) polisher->prepare(balance);
   std::string failure;
   auto y = balanced_amplitude(span, balance, options, failure);
-  if (y && options.polish && !span.dampers().empty()) y = polish(span, balance, options, *y, failure);
+  if (y && polisher) {
+    const double from_tables = *y;
+    y = polisher->run(balance, from_tables, failure);
+    if (!y) {
+      // Once more from the tables alone, without what earlier frequencies handed on.
+      polisher->forget();
+      balance.clear_offsets();
+      failure.clear();
+      y = balanced_amplitude(span, balance, options, failure);
+      if (y) y = polisher->run(balance, *y, failure);
+    }
+  }
   if (!y) {
     const double y_max = options.amplitude_max_over_diameter * span.conductor().diameter;
     p.termination = failure.empty() ? Termination::max_iterations : Termination::inner_failure;
@@ -438,8 +555,9 @@ BalancePoint balance_at(const Span& span, std::size_t i, double f, const std::ve
   fill_balanced(span, balance, *y, p);
   if (!(p.identity_error <= kIdentityTolerance)) {
     p.termination = Termination::energy_mismatch;
-    p.failure = fmt::format("the ends absorb {:.6g} W but their dampers dissipate {:.6g} (relative error {:.3g})",
-                            p.damper_power, p.damper_power * (1.0 - p.identity_error), p.identity_error);
+    p.failure = fmt::format("the ends absorb {:.6g} W but their dampers dissipate otherwise: off by {:.3g} of the "
+                            "power the waves bring to the ends",
+                            p.damper_power, p.identity_error);
     mask(p);
     return p;
   }
@@ -494,8 +612,13 @@ SpanBalance run_balance(const Span& span, const std::vector<double>& frequencies
     if (t.frequencies() != frequencies) throw InvalidParameter("tables", ": made for other frequencies");
   }
   SpanBalance out;
-  for (std::size_t i = 0; i < frequencies.size(); ++i) out.points.push_back(balance_at(span, i, frequencies[i], tables, options));
+  std::optional<Polisher> polisher;
+  if (options.polish && !span.dampers().empty()) polisher.emplace(span, options);
+  for (std::size_t i = 0; i < frequencies.size(); ++i) {
+    out.points.push_back(balance_at(span, i, frequencies[i], tables, polisher ? &*polisher : nullptr, options));
+  }
   out.summary = summarise(span, out.points, tables);
+  if (polisher) out.summary.direct_solves = polisher->direct_solves();
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "stockbridge/core/error.hpp"
 
@@ -11,6 +12,7 @@ void ImpedanceTableOptions::validate() const {
   require_positive("velocity_min", velocity_min, "m/s");
   if (!(velocity_max > velocity_min)) throw_invalid("velocity_max", velocity_max, "a value > velocity_min (m/s)");
   require_in_range("velocities", velocities, 2, 1000);
+  if (!(column_ratio >= 1.0 && column_ratio <= 10.0)) throw_invalid("column_ratio", column_ratio, "a factor from 1 to 10");
   require_in_range("threads", threads, 1, 256);
   solver.validate();
 }
@@ -69,15 +71,16 @@ ImpedanceTable::ImpedanceTable(const damper::Damper& damper, std::vector<double>
     : frequencies_(std::move(frequencies)) {
   options.validate();
   velocities_ = damper::log_spaced(options.velocity_min, options.velocity_max, options.velocities);
+  solved_ = solved_frequencies(frequencies_, options.column_ratio);
   damper::SweepSpec spec;
-  spec.frequencies = frequencies_;
+  for (const std::size_t i : solved_) spec.frequencies.push_back(frequencies_[i]);
   spec.amplitudes = velocities_;
   spec.solver = options.solver;
   spec.threads = options.threads;
   const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, progress);
   std::vector<double> log_v(velocities_.size());
   std::transform(velocities_.begin(), velocities_.end(), log_v.begin(), [](double v) { return std::log(v); });
-  for (std::size_t i = 0; i < frequencies_.size(); ++i) {
+  for (std::size_t i = 0; i < solved_.size(); ++i) {
     std::vector<std::optional<std::complex<double>>> z(velocities_.size());
     for (std::size_t a = 0; a < runs.size(); ++a) {
       const damper::ImpedancePoint& p = runs[a].points[i];
@@ -91,8 +94,31 @@ ImpedanceTable::ImpedanceTable(const damper::Damper& damper, std::vector<double>
   }
 }
 
+std::vector<std::size_t> ImpedanceTable::solved_frequencies(const std::vector<double>& frequencies, double column_ratio) {
+  std::vector<std::size_t> solved;
+  if (frequencies.empty()) return solved;
+  solved.push_back(0);
+  while (solved.back() + 1 < frequencies.size()) {
+    std::size_t next = solved.back() + 1;
+    while (next + 1 < frequencies.size() && frequencies[next + 1] <= column_ratio * frequencies[solved.back()]) ++next;
+    solved.push_back(next);
+  }
+  return solved;
+}
+
 std::optional<std::complex<double>> ImpedanceTable::at(std::size_t i, double velocity) const {
-  const Column& c = columns_.at(i);
+  if (i >= frequencies_.size()) throw std::out_of_range("ImpedanceTable::at: no such frequency");
+  const std::size_t k = static_cast<std::size_t>(std::lower_bound(solved_.begin(), solved_.end(), i) - solved_.begin());
+  if (solved_[k] == i) return column_at(k, velocity);
+  const auto lo = column_at(k - 1, velocity), hi = column_at(k, velocity);
+  if (!lo || !hi) return std::nullopt;
+  const double t = std::log(frequencies_[i] / frequencies_[solved_[k - 1]]) /
+                   std::log(frequencies_[solved_[k]] / frequencies_[solved_[k - 1]]);
+  return (1.0 - t) * *lo + t * *hi;
+}
+
+std::optional<std::complex<double>> ImpedanceTable::column_at(std::size_t column, double velocity) const {
+  const Column& c = columns_[column];
   const std::size_t n = c.log_v.size();
   if (n < 2) return std::nullopt;
   const double u = std::log(velocity);

@@ -127,7 +127,10 @@ struct BalancePoint {
   double stress_fymax = 0.0;            ///< at the span clamp, Pa
   double stress_poffenberger_swart = 0.0;  ///< Pa
   double damper_clamp_stress = 0.0;     ///< largest over the dampers, Pa
-  double identity_error = 0.0;          ///< |P_d - sum Re Z w^2 |Y_j|^2 / 2| relative to P_d
+  /// |P_d - sum Re Z w^2 |Y_j|^2 / 2| relative to the power the incoming waves bring
+  /// to the ends, sum Z0 w^2 |B|^2 / 2 (the scale of P_d's round-off: P_d is the
+  /// difference of the incoming and outgoing waves' powers)
+  double identity_error = 0.0;
   std::vector<DamperAtBalance> dampers; ///< end 1's by position from the end, then end 2's
   double undamped_amplitude = 0.0;      ///< m
   double undamped_stress_fymax = 0.0;   ///< Pa
@@ -152,6 +155,7 @@ struct BalanceSummary {
   std::optional<LifeEstimate> undamped_life;
   int impedance_nodes = 0;               ///< the tables' (frequency, velocity) nodes
   int failed_impedance_nodes = 0;
+  int direct_solves = 0;                 ///< the polish's harmonic-balance solves of a damper
 };
 
 /// What a balance run returns.

@@ -21,6 +21,10 @@ struct ImpedanceTableOptions {
   double velocity_min = 1e-3;  ///< m/s, lowest node
   double velocity_max = 3.0;   ///< m/s, highest node
   int velocities = 25;         ///< log-spaced nodes, >= 2
+  /// The frequencies solved (columns) lie at most this factor apart (the first and
+  /// last always solved; 1 solves every frequency); between them Z is interpolated
+  /// linearly in log f.
+  double column_ratio = 1.2;
   damper::SolverOptions solver;
   int threads = 1;
 
@@ -41,7 +45,10 @@ class ImpedanceTable {
   std::optional<std::complex<double>> at(std::size_t i, double velocity) const;
   /// Nodes that did not converge, of all.
   int failed_nodes() const { return failed_; }
-  int nodes() const { return static_cast<int>(frequencies_.size() * velocities_.size()); }
+  int nodes() const { return static_cast<int>(solved_.size() * velocities_.size()); }
+  /// The indices of the frequencies solved of `frequencies` (increasing): the fewest
+  /// that lie at most `column_ratio` apart.
+  static std::vector<std::size_t> solved_frequencies(const std::vector<double>& frequencies, double column_ratio);
 
  private:
   struct Column {  // one frequency: the converged nodes in log v, with their slopes
@@ -52,8 +59,11 @@ class ImpedanceTable {
   };
   static Column make_column(const std::vector<double>& log_v, const std::vector<std::optional<std::complex<double>>>& z);
 
+  std::optional<std::complex<double>> column_at(std::size_t column, double velocity) const;
+
   std::vector<double> frequencies_;
   std::vector<double> velocities_;
+  std::vector<std::size_t> solved_;  ///< the frequencies (indices) solved, increasing: columns_[k] is solved_[k]'s
   std::vector<Column> columns_;
   int failed_ = 0;
 };
