@@ -18,5 +18,6 @@ void add_response_command(CLI::App& app, int& exit_code);
 void add_strand_command(CLI::App& app, int& exit_code);
 void add_modes_command(CLI::App& app, int& exit_code);
 void add_span_command(CLI::App& app, int& exit_code);
+void add_design_command(CLI::App& app, int& exit_code);
 
 }  // namespace stockbridge::cli

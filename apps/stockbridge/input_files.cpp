@@ -38,6 +38,14 @@ span::Span read_span_input(const std::string& path, const std::vector<CommandFil
   return std::move(file.span);
 }
 
+io::DesignFile read_design_input(const std::string& path, const std::vector<CommandFile>& outputs) {
+  require_outputs_apart(outputs, {{"the design file", path}});
+  io::DesignFile file = io::load_design_file(path);
+  require_apart_from_references(outputs, "a file the design file reads", file.inputs);
+  print_warnings(file.warnings);
+  return file;
+}
+
 cable::Cable read_cable_input(const std::string& path, const std::vector<CommandFile>& outputs) {
   require_outputs_apart(outputs, {{"the cable file", path}});
   io::CableFile file = io::load_cable_file(path);

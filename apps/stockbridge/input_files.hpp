@@ -10,6 +10,7 @@
 #include "stockbridge/cable/cable.hpp"
 #include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/damper/damper.hpp"
+#include "stockbridge/io/design_file.hpp"
 #include "stockbridge/span/balance.hpp"
 
 namespace stockbridge::cli {
@@ -20,6 +21,9 @@ damper::Damper read_damper_input(const std::string& path, const std::vector<Comm
 /// The span file at `path`; throws InvalidParameter if an output would overwrite it
 /// or a file it references (damper files, their cable files, a wind table).
 span::Span read_span_input(const std::string& path, const std::vector<CommandFile>& outputs);
+/// The design file at `path`; throws InvalidParameter if an output would overwrite
+/// it or a file it reads (the damper, its cable files, the span files and theirs).
+io::DesignFile read_design_input(const std::string& path, const std::vector<CommandFile>& outputs);
 /// The cable file at `path`; throws InvalidParameter if an output would overwrite it.
 cable::Cable read_cable_input(const std::string& path, const std::vector<CommandFile>& outputs);
 

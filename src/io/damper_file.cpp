@@ -147,4 +147,43 @@ damper::Damper read_damper_text(std::string_view text, std::string_view source) 
   return load_damper_text(text, source).damper;
 }
 
+namespace {
+
+/// A TOML basic string's contents for `text` (quotes, backslashes and control characters escaped).
+std::string toml_escaped(std::string_view text) {
+  std::string out;
+  for (const char ch : text) {
+    if (ch == '"' || ch == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (static_cast<unsigned char>(ch) < 0x20) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned>(ch));
+    } else {
+      out += ch;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string damper_file_toml(const damper::DamperDescription& description, std::string_view comment) {
+  std::string text;
+  std::size_t start = 0;
+  while (start < comment.size()) {  // every comment line as a TOML comment
+    const std::size_t end = std::min(comment.find('\n', start), comment.size());
+    text += fmt::format("# {}\n", comment.substr(start, end - start));
+    start = end + 1;
+  }
+  text += fmt::format("\n[clamp]\nmass = {}   # kg\n", format_value(description.clamp_mass));
+  for (const damper::ArmDescription& arm : description.arms) {
+    text += "\n[[arm]]\n";
+    if (!arm.name.empty()) text += fmt::format("name = \"{}\"\n", toml_escaped(arm.name));
+    text += fmt::format("mass = {}   # kg\ninertia = {}   # kg m^2\noffset = {}   # m\n[arm.cable]\n",
+                        format_value(arm.mass), format_value(arm.inertia), format_value(arm.offset));
+    text += cable_table_toml(arm.cable);
+  }
+  return text;
+}
+
 }  // namespace stockbridge::io

@@ -54,6 +54,8 @@ JsonObject& JsonObject::add(std::string_view key, const std::vector<double>& val
   return add_raw(key, raw + "]");
 }
 
+JsonObject& JsonObject::add_null(std::string_view key) { return add_raw(key, "null"); }
+
 std::string JsonObject::str() const {
   std::string out = "{";
   for (std::size_t i = 0; i < members_.size(); ++i) {

@@ -161,7 +161,11 @@ class FrequencyBalance {
     wave_.wave_impedance = wave_impedance(c, span.tension());
     last_velocities_.resize(layouts_.size());
     offsets_.resize(layouts_.size());
-    for (std::size_t e = 0; e < layouts_.size(); ++e) offsets_[e].assign(layouts_[e].positions.size(), 0.0);
+    curvatures_.resize(layouts_.size());
+    for (std::size_t e = 0; e < layouts_.size(); ++e) {
+      offsets_[e].assign(layouts_[e].positions.size(), 0.0);
+      curvatures_[e].assign(layouts_[e].positions.size(), kNaN);
+    }
   }
 
   double wind(double y) const {
@@ -211,14 +215,17 @@ class FrequencyBalance {
     for (auto& end : offsets_) std::fill(end.begin(), end.end(), 0.0);
   }
 
-  /// Makes damper j of end e's impedance `direct` at clamp velocity v (the table's
-  /// shape kept, shifted by the difference there).
-  bool correct(std::size_t e, std::size_t j, double v, std::complex<double> direct) {
+  /// Makes damper j of end e's impedance the directly solved one at clamp velocity
+  /// v (the table's shape kept, shifted by the difference there).
+  bool correct(std::size_t e, std::size_t j, double v, const damper::ImpedancePoint& direct) {
     const auto table = tables_[layouts_[e].damper[j]].at(index_, v);
     if (!table) return false;
-    offsets_[e][j] = direct - *table;
+    offsets_[e][j] = direct.impedance - *table;
+    curvatures_[e][j] = direct.messenger_curvature_max;
     return true;
   }
+  /// Damper j of end e's messenger curvature from its last direct solve (NaN: none).
+  double messenger_curvature(std::size_t e, std::size_t j) const { return curvatures_[e][j]; }
 
  private:
   /// The weak-damper form: the string's own standing wave, Y_j = Y sin(k a_j), each
@@ -254,6 +261,7 @@ class FrequencyBalance {
   StringWave wave_;
   std::vector<std::vector<double>> last_velocities_;
   std::vector<std::vector<std::complex<double>>> offsets_;  ///< per end and damper: Z_direct - Z_table at the last v*
+  std::vector<std::vector<double>> curvatures_;  ///< per end and damper: the last direct solve's messenger curvature
 };
 
 void fill_undamped(const Span& span, double f, BalancePoint& p) {
@@ -289,6 +297,7 @@ void fill_balanced(const Span& span, FrequencyBalance& balance, double y, Balanc
       const double w = balance.wave().angular_frequency;
       d.power = 0.5 * d.impedance.real() * w * w * std::norm(s.response.damper_displacement[j]);
       d.clamp_stress = point_force_stress(c, span.tension(), std::abs(d.impedance) * d.clamp_velocity);
+      d.messenger_curvature_max = balance.messenger_curvature(e, j);
       p.damper_clamp_stress = std::max(p.damper_clamp_stress, d.clamp_stress);
       p.dampers.push_back(d);
     }
@@ -403,7 +412,7 @@ bool Polisher::correct_at_velocities(FrequencyBalance& balance, const std::vecto
   struct Solved {
     std::size_t damper;
     double velocity;
-    std::complex<double> z;
+    damper::ImpedancePoint point;
   };
   std::vector<Solved> solved;  // the ends of a symmetric span ask for the same point twice
   for (std::size_t e = 0; e < velocities.size(); ++e) {
@@ -425,9 +434,9 @@ bool Polisher::correct_at_velocities(FrequencyBalance& balance, const std::vecto
           failure = fmt::format("end {}, damper {} solved directly at {:.4g} m/s: {}", e + 1, j + 1, v, direct.failure);
           return false;
         }
-        known = solved.insert(solved.end(), Solved{which, v, direct.impedance});
+        known = solved.insert(solved.end(), Solved{which, v, direct});
       }
-      if (!balance.correct(e, j, v, known->z)) {
+      if (!balance.correct(e, j, v, known->point)) {
         failure = fmt::format("end {}, damper {}: the table has no impedance near {:.4g} m/s", e + 1, j + 1, v);
         return false;
       }

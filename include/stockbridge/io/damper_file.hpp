@@ -48,4 +48,9 @@ damper::Damper read_damper_file(const std::filesystem::path& path);
 DamperFile load_damper_text(std::string_view text, std::string_view source);
 damper::Damper read_damper_text(std::string_view text, std::string_view source);
 
+/// A whole damper file for `description`, every arm's cable written out in full (no
+/// references): `comment` first (each line as a TOML comment). Numbers are written
+/// so that they read back exactly.
+std::string damper_file_toml(const damper::DamperDescription& description, std::string_view comment);
+
 }  // namespace stockbridge::io

@@ -20,6 +20,7 @@ class JsonObject {
   JsonObject& add(std::string_view key, const JsonObject& value);
   JsonObject& add(std::string_view key, const std::vector<JsonObject>& values);
   JsonObject& add(std::string_view key, const std::vector<double>& values);
+  JsonObject& add_null(std::string_view key);
 
   /// The object as one line of JSON.
   std::string str() const;

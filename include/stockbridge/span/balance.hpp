@@ -13,6 +13,7 @@
 // endurance limit of the Safe Border Line.
 
 #include <complex>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -112,6 +113,9 @@ struct DamperAtBalance {
   std::complex<double> impedance;       ///< Z_j(f, v_j), N s/m
   double power = 0.0;                   ///< Re Z_j w^2 |Y_j|^2 / 2, W
   double clamp_stress = 0.0;            ///< conductor stress at its clamp from F = |Z| v, Pa
+  /// The largest clamp-section curvature amplitude of the damper's arms (its own
+  /// cable's fatigue load, 1/m) from the polish's direct solve at v_j; NaN without the polish.
+  double messenger_curvature_max = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The balance at one frequency; numbers NaN unless converged.

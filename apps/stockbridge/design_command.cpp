@@ -1,0 +1,122 @@
+// stockbridge design: the search for the best damper of a design study (a base
+// damper, the spans it serves, the numbers varied, constraints, an objective) on
+// threads and MPI ranks (design/search.hpp).
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "input_files.hpp"
+#include "progress.hpp"
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/atomic_file.hpp"
+#include "stockbridge/io/design_file.hpp"
+#include "stockbridge/requests/design_request.hpp"
+#include "task_runner.hpp"
+
+namespace stockbridge::cli {
+
+namespace {
+
+// Helper names here are unique among the program's files (unity batches).
+
+struct DesignOptions {
+  std::string design_file;
+  std::optional<int> samples;
+  int threads = 1;
+  bool json = false;
+  bool quiet = false;
+  std::string output;
+  std::string best;
+};
+
+std::string design_value(double value) { return fmt::format("{:.4g}", value); }
+
+void print_design_report(const design::DesignStudy& study, const design::DesignResult& result) {
+  const auto line = [&](std::string_view label, const design::Evaluation& e) {
+    std::string text = fmt::format("{}: ", label);
+    if (!e.converged) return text + "not converged (" + e.failure + ")";
+    text += study.objective() == design::Objective::life
+                ? fmt::format("shortest life {} years", design_value(e.shortest_life_years))
+                : fmt::format("largest stress {} of the endurance limit ({} MPa at {} Hz)", design_value(e.max_stress_ratio),
+                              design_value(e.max_stress / 1e6), design_value(e.frequency_at_max_hz));
+    text += fmt::format(", {} kg, messenger curvature {} 1/m", design_value(e.total_mass),
+                        design_value(e.messenger_curvature_max));
+    if (!e.feasible) text += " (infeasible: " + e.failure + ")";
+    return text;
+  };
+  fmt::print("{}\n", line("base", result.evaluations[result.base].evaluation));
+  if (!result.best) {
+    fmt::print("best: none of the {} candidates is feasible\n", result.evaluations.size());
+    return;
+  }
+  const design::Evaluation& best = result.evaluations[*result.best].evaluation;
+  fmt::print("{}\n", line("best", best));
+  for (std::size_t d = 0; d < study.variables().size(); ++d) {
+    fmt::print("  {} = {}\n", study.variables()[d].name, design_value(best.x[d]));
+  }
+}
+
+int run_design_command(const DesignOptions& options) {
+  Processes processes;
+  if (processes.mpirun_without_mpi()) {
+    fmt::print(stderr, "warning: started by mpirun, but this stockbridge was built without MPI: every process runs "
+                       "the whole study\n");
+  }
+  requests::DesignRequest request;
+  request.samples = options.samples;
+  request.threads = options.threads;
+  requests::validate(request);
+  const io::DesignFile file = read_design_input(options.design_file, {{"-o", options.output}, {"--best", options.best}});
+  const design::SearchOptions search = requests::search_options(file.search, request);
+
+  const auto start = std::chrono::steady_clock::now();
+  ProgressReport progress("design: candidates", options.quiet || processes.rank() != 0);
+  const std::unique_ptr<design::TaskRunner> runner = processes.runner(options.threads);
+  const design::DesignResult result = design::run_search(file.study, search, *runner, std::ref(progress));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (processes.rank() != 0) return result.best ? kSuccess : kNotConverged;
+
+  io::write_file_atomically(options.output, requests::design_csv(file.study, result));
+  const auto best = requests::best_damper_file(file.study, result, std::filesystem::path(options.design_file).filename().string());
+  if (best) io::write_file_atomically(options.best, *best);
+  if (options.json) {
+    fmt::print("{}\n", requests::design_summary(file.study, result)
+                           .add("samples", search.samples)
+                           .add("ranks", processes.size())
+                           .add("threads", options.threads)
+                           .add("seconds", seconds)
+                           .str());
+  } else {
+    print_design_report(file.study, result);
+  }
+  fmt::print(stderr, "design: {} candidates in {:.1f} s on {} rank(s) x {} thread(s)\n", result.evaluations.size(),
+             seconds, processes.size(), options.threads);
+  if (best) return kSuccess;
+  fmt::print(stderr, "design: no candidate is feasible ({} written, {} not)\n", options.output, options.best);
+  return kNotConverged;
+}
+
+}  // namespace
+
+void add_design_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<DesignOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "design", "Search the best damper for spans and their wind band (a design file): on threads and MPI ranks");
+  sub->add_option("design", options->design_file, "Design study (TOML)")->required();
+  sub->add_option("--samples", options->samples, "Space-filling candidates (instead of the file's samples)");
+  sub->add_option("--threads", options->threads, "Candidates evaluated at once (per MPI rank)")->capture_default_str();
+  sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
+  sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
+  sub->add_option("-o,--output", options->output, "Output CSV file: every candidate evaluated")->required();
+  sub->add_option("--best", options->best, "Output damper file: the best design")->required();
+  sub->callback([options, &exit_code] { exit_code = run_design_command(*options); });
+}
+
+}  // namespace stockbridge::cli

@@ -1,0 +1,36 @@
+#pragma once
+// How `stockbridge design` spreads its candidates: on threads, and across MPI ranks
+// when the program was started by mpirun (and built with MPI).
+
+#include <memory>
+
+#include "stockbridge/design/search.hpp"
+
+namespace stockbridge::cli {
+
+/// The processes of a run: one, or the MPI ranks. Starts MPI (when launched by
+/// mpirun) and finishes it when destroyed; every rank but 0 is silenced (its
+/// stdout and stderr go to /dev/null), so that messages and files come once.
+class Processes {
+ public:
+  Processes();
+  ~Processes();
+  Processes(const Processes&) = delete;
+  Processes& operator=(const Processes&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  /// Started by mpirun, but this program was built without MPI: each process would
+  /// run the whole study alone.
+  bool mpirun_without_mpi() const { return mpirun_without_mpi_; }
+  /// Tasks on `threads` threads of each rank, the ranks taking tasks in turn.
+  std::unique_ptr<design::TaskRunner> runner(int threads) const;
+
+ private:
+  int rank_ = 0;
+  int size_ = 1;
+  bool mpi_ = false;
+  bool mpirun_without_mpi_ = false;
+};
+
+}  // namespace stockbridge::cli

@@ -1,0 +1,78 @@
+#pragma once
+// The design search: the base design, a space-filling sample of the variables'
+// box (a Sobol sequence, digitally shifted by the seed), then local polishes of
+// the best feasible candidates (NLopt's COBYLA within the bounds, the constraints
+// as inequalities), every evaluation kept. Candidates are independent: a
+// TaskRunner runs them on threads here, on MPI ranks in the command line; the
+// search itself is the same on every rank, so the result is the same, bit for bit,
+// for any number of ranks and threads.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stockbridge/design/study.hpp"
+
+namespace stockbridge::design {
+
+struct SearchOptions {
+  int samples = 256;             ///< space-filling candidates (>= 1)
+  int polish = 4;                ///< best feasible candidates polished locally (>= 0)
+  int polish_evaluations = 40;   ///< evaluations of one polish at most (>= 2)
+  double polish_tolerance = 1e-3;  ///< stop when a step moves the variables less than this share of their ranges
+  std::uint64_t seed = 1;
+
+  void validate() const;
+};
+
+/// Runs independent tasks, each giving evaluations, and returns every task's in
+/// task order (to every caller, on MPI every rank).
+class TaskRunner {
+ public:
+  virtual ~TaskRunner() = default;
+  virtual std::vector<std::vector<Evaluation>> run(int tasks, const std::function<std::vector<Evaluation>(int)>& task) = 0;
+};
+
+/// Tasks on `threads` threads of this process (tasks taken in turn as threads free up).
+class ThreadRunner final : public TaskRunner {
+ public:
+  explicit ThreadRunner(int threads);
+  std::vector<std::vector<Evaluation>> run(int tasks, const std::function<std::vector<Evaluation>(int)>& task) override;
+
+ private:
+  int threads_;
+};
+
+/// Where an evaluation was made.
+enum class Stage { base, sample, polish };
+std::string_view stage_name(Stage stage);
+
+struct StudyEvaluation {
+  Stage stage = Stage::sample;
+  int run = 0;  ///< the sample's index, or the polish's (0 for the base)
+  Evaluation evaluation;
+};
+
+struct DesignResult {
+  std::vector<StudyEvaluation> evaluations;  ///< base, samples in order, then each polish's in order
+  /// The best feasible evaluation (index into evaluations); none when no candidate is feasible.
+  std::optional<std::size_t> best;
+  std::size_t base = 0;  ///< the base design's index (0)
+};
+
+/// Called after each stage's candidates: (evaluations done, evaluations planned at most).
+using SearchProgress = std::function<void(int, int)>;
+
+/// The points of the sample: `count` points of the variables' box.
+std::vector<std::vector<double>> space_filling_sample(const std::vector<DesignVariable>& variables, int count,
+                                                      std::uint64_t seed);
+
+DesignResult run_search(const DesignStudy& study, const SearchOptions& options, TaskRunner& runner,
+                        const SearchProgress& progress = {});
+
+/// Whether a is better than b: feasible before infeasible, converged before not,
+/// then the smaller objective.
+bool better(const Evaluation& a, const Evaluation& b);
+
+}  // namespace stockbridge::design

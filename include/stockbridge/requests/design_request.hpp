@@ -1,0 +1,51 @@
+#pragma once
+// The request layer for the design search (`stockbridge design`, Python's design):
+// the study's evaluations as the rows every front end shows (CSV columns, Python
+// arrays), the summary (the --json keys), and the best design as a damper file.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stockbridge/design/search.hpp"
+#include "stockbridge/io/json_writer.hpp"
+
+namespace stockbridge::requests {
+
+/// What a user changes of a design file's settings from the command line.
+struct DesignRequest {
+  std::optional<int> samples;  ///< instead of the file's
+  int threads = 1;             ///< candidates evaluated at once (per process)
+};
+
+/// InvalidParameter naming "--samples" or "--threads".
+void validate(const DesignRequest& request);
+/// The file's search options with the request's changes.
+design::SearchOptions search_options(const design::SearchOptions& file, const DesignRequest& request);
+
+/// The label column (first): stage (base, sample or polish).
+inline constexpr std::string_view kDesignStageColumn = "stage";
+/// The numeric columns after the stage, as the CSV and Python's arrays name them:
+///   run, <each variable by its name>, objective, max_stress_ratio, max_stress_mpa,
+///   frequency_at_max_hz, total_mass_kg, messenger_curvature_max_per_m,
+///   shortest_life_years, converged, feasible
+/// objective: max_stress_ratio (objective max_stress) or shortest_life_years (life).
+std::vector<std::string> design_columns(const design::DesignStudy& study);
+/// An evaluation's values in design_columns order (NaN where not computed).
+std::vector<double> design_row(const design::DesignStudy& study, const design::StudyEvaluation& evaluation);
+/// The whole CSV text.
+std::string design_csv(const design::DesignStudy& study, const design::DesignResult& result);
+
+/// The summary, as `stockbridge design --json` prints it and Python returns it:
+/// objective, evaluations, converged, feasible, base and best (each: objective,
+/// max_stress_ratio, max_stress_mpa, frequency_at_max_hz, total_mass_kg,
+/// messenger_curvature_max_per_m, shortest_life_years, position_m, variables
+/// {name: value}; best null when nothing is feasible), improved.
+io::JsonObject design_summary(const design::DesignStudy& study, const design::DesignResult& result);
+
+/// The best design as a complete damper file (the `impedance` and `span` commands
+/// read it), its position and figures in comments; none when nothing is feasible.
+std::optional<std::string> best_damper_file(const design::DesignStudy& study, const design::DesignResult& result,
+                                            std::string_view design_file);
+
+}  // namespace stockbridge::requests

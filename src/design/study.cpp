@@ -1,0 +1,231 @@
+#include "stockbridge/design/study.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/design/damper_numbers.hpp"
+
+namespace stockbridge::design {
+
+Objective parse_objective(std::string_view name) {
+  if (name == "max_stress") return Objective::max_stress;
+  if (name == "life") return Objective::life;
+  throw InvalidParameter("objective", fmt::format(" = '{}': expected max_stress or life", name));
+}
+
+std::string_view objective_name(Objective objective) { return objective == Objective::life ? "life" : "max_stress"; }
+
+namespace {
+
+/// A variable's or tie's path must name a number of the base damper.
+void check_path(const std::string& field, const std::string& path, const damper::DamperDescription& base) {
+  try {
+    damper_number(base, path);
+  } catch (const InvalidParameter& error) {
+    throw InvalidParameter(field, fmt::format(" = \"{}\"{}", path, error.detail()));
+  }
+}
+
+void validate_variable(const DesignVariable& v, std::size_t i, const damper::DamperDescription& base,
+                       const std::vector<DesignSpan>& spans) {
+  const std::string field = fmt::format("variable[{}]", i);
+  if (!(std::isfinite(v.min) && std::isfinite(v.max))) throw_invalid(field + ".min", v.min, "finite bounds");
+  if (!(v.min < v.max)) throw_invalid(field + ".max", v.max, fmt::format("a value > min = {}", v.min));
+  if (v.name == kPosition) {
+    if (!(v.min > 0.0)) throw_invalid(field + ".min", v.min, "a position > 0 m from the span clamp");
+    for (const DesignSpan& s : spans) {
+      if (s.span.dampers().empty()) {
+        throw InvalidParameter(field + ".name", fmt::format(" = \"position\": span {} has no [[damper]] to move", s.name));
+      }
+      double last = 0.0;  // the farthest damper beyond the first, which the position places
+      for (const span::SpanDamper& d : s.span.dampers()) last = std::max(last, d.position - s.span.dampers().front().position);
+      if (!(v.max + last < 0.5 * s.span.length())) {
+        throw_invalid(field + ".max", v.max, fmt::format("a position whose dampers stay within half of span {} ({} m)", s.name,
+                                                         0.5 * s.span.length()));
+      }
+    }
+    return;
+  }
+  check_path(field + ".name", v.name, base);
+}
+
+}  // namespace
+
+DesignStudy::DesignStudy(damper::DamperDescription base, std::vector<DesignSpan> spans, Objective objective,
+                         std::vector<DesignVariable> variables, std::vector<DesignTie> ties,
+                         DesignConstraints constraints, int points)
+    : base_(std::move(base)),
+      spans_(std::move(spans)),
+      objective_(objective),
+      variables_(std::move(variables)),
+      ties_(std::move(ties)),
+      constraints_(constraints),
+      points_(points) {
+  within_field("damper", [&] { damper::Damper{base_}; });
+  if (spans_.empty()) throw InvalidParameter("spans: expected at least one span file");
+  if (variables_.empty()) throw InvalidParameter("variable: expected at least one [[variable]]");
+  require_in_range("points", points_, 2, 100000);
+  for (std::size_t i = 0; i < variables_.size(); ++i) {
+    validate_variable(variables_[i], i, base_, spans_);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (variables_[j].name == variables_[i].name) {
+        throw InvalidParameter(fmt::format("variable[{}].name", i), fmt::format(" = \"{}\": already variable[{}]", variables_[i].name, j));
+      }
+    }
+  }
+  for (std::size_t i = 0; i < ties_.size(); ++i) {
+    const DesignTie& t = ties_[i];
+    const std::string field = fmt::format("tie[{}]", i);
+    check_path(field + ".name", t.name, base_);
+    const auto followed = std::find_if(variables_.begin(), variables_.end(), [&](const auto& v) { return v.name == t.equals; });
+    if (followed == variables_.end() || t.equals == kPosition) {
+      throw InvalidParameter(field + ".equals", fmt::format(" = \"{}\": expected the name of a damper [[variable]]", t.equals));
+    }
+    for (const DesignVariable& v : variables_) {
+      if (v.name == t.name) throw InvalidParameter(field + ".name", fmt::format(" = \"{}\": is a [[variable]] itself", t.name));
+    }
+  }
+  if (constraints_.total_mass_max) require_positive("constraints.total_mass_max", *constraints_.total_mass_max, "kg");
+  if (constraints_.messenger_curvature_max) {
+    require_positive("constraints.messenger_curvature_max", *constraints_.messenger_curvature_max, "1/m");
+  }
+  if (objective_ == Objective::life) {
+    for (const DesignSpan& s : spans_) {
+      if (!s.span.fatigue().life) {
+        throw InvalidParameter("objective", fmt::format(" = \"life\": span {} gives no wind climate ([fatigue] wind_weibull)", s.name));
+      }
+    }
+  }
+}
+
+std::vector<double> DesignStudy::base_values() const {
+  std::vector<double> x;
+  for (const DesignVariable& v : variables_) {
+    x.push_back(v.name == kPosition ? spans_.front().span.dampers().front().position : damper_number(base_, v.name));
+  }
+  return x;
+}
+
+damper::DamperDescription DesignStudy::damper_of(const std::vector<double>& x) const {
+  if (x.size() != variables_.size()) {
+    throw InvalidParameter("x", fmt::format(": {} values for {} variables", x.size(), variables_.size()));
+  }
+  damper::DamperDescription d = base_;
+  std::vector<std::string> set;  // the paths given values
+  const auto assign = [&](const std::string& path, double value) {
+    set_damper_number(d, path, value);
+    set.push_back(path);
+  };
+  for (std::size_t i = 0; i < variables_.size(); ++i) {
+    if (variables_[i].name != kPosition) assign(variables_[i].name, x[i]);
+  }
+  for (const DesignTie& t : ties_) {
+    const auto k = std::find_if(variables_.begin(), variables_.end(), [&](const auto& v) { return v.name == t.equals; });
+    assign(t.name, x[static_cast<std::size_t>(k - variables_.begin())]);
+  }
+  // Constant radius of gyration where the mass changes and the inertia is not given.
+  for (std::size_t a = 0; a < d.arms.size(); ++a) {
+    bool mass_set = false, inertia_set = false;
+    for (const std::string& path : set) {
+      if (path == "clamp.mass") continue;
+      const ArmPath p = split_arm_path(d, path);
+      if (p.arm != a) continue;
+      mass_set = mass_set || p.field == "mass";
+      inertia_set = inertia_set || p.field == "inertia";
+    }
+    if (mass_set && !inertia_set) d.arms[a].inertia = base_.arms[a].inertia * d.arms[a].mass / base_.arms[a].mass;
+  }
+  return d;
+}
+
+std::optional<double> DesignStudy::position_of(const std::vector<double>& x) const {
+  for (std::size_t i = 0; i < variables_.size(); ++i) {
+    if (variables_[i].name == kPosition) return x.at(i);
+  }
+  return std::nullopt;
+}
+
+span::Span DesignStudy::span_with(std::size_t k, const damper::Damper& damper, std::optional<double> position) const {
+  const span::Span& s = spans_.at(k).span;
+  std::vector<span::SpanDamper> dampers = s.dampers();
+  for (span::SpanDamper& d : dampers) d.damper = damper;
+  span::Span with(s.conductor(), s.length(), s.tension(), s.wind(), s.self_damping(), std::move(dampers), s.fatigue());
+  return position ? with.with_dampers_at(*position) : with;
+}
+
+namespace {
+
+/// The first point of a balance that did not converge, as one line.
+std::string first_failure(const span::SpanBalance& b) {
+  for (const span::BalancePoint& p : b.points) {
+    if (!p.converged()) return fmt::format("at {:.4g} Hz: {}", p.frequency_hz, p.failure);
+  }
+  return {};
+}
+
+}  // namespace
+
+Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x) {
+  Evaluation e;
+  e.x = x;
+  std::optional<damper::Damper> damper;
+  try {
+    damper.emplace(study.damper_of(x));
+  } catch (const InvalidParameter& error) {
+    e.failure = fmt::format("the candidate damper is not valid: {}", error.what());
+    return e;
+  }
+  e.total_mass = damper->clamp_mass();
+  for (const damper::Arm& arm : damper->arms()) e.total_mass += arm.description().mass;
+  const std::optional<double> position = study.position_of(x);
+  double ratio = 0.0, curvature = 0.0, life = std::numeric_limits<double>::infinity();
+  const span::BalanceOptions options;
+  for (std::size_t k = 0; k < study.spans().size(); ++k) {
+    std::optional<span::Span> s;
+    try {
+      s.emplace(study.span_with(k, *damper, position));
+    } catch (const InvalidParameter& error) {
+      e.failure = fmt::format("span {}: {}", study.spans()[k].name, error.what());
+      return e;
+    }
+    const std::vector<double> f = span::band_frequencies(*s, study.points());
+    const std::vector<span::ImpedanceTable> tables = span::impedance_tables(*s, f, options);
+    const span::SpanBalance b = span::run_balance(*s, f, tables, options);
+    if (b.summary.converged != b.summary.points) {
+      e.failure = fmt::format("span {}: {} of {} points did not converge, first {}", study.spans()[k].name,
+                              b.summary.points - b.summary.converged, b.summary.points, first_failure(b));
+      return e;
+    }
+    const double r = b.summary.max_stress_fymax / b.summary.endurance_limit;
+    if (k == 0 || r > ratio) {
+      ratio = r;
+      e.max_stress = b.summary.max_stress_fymax;
+      e.frequency_at_max_hz = b.summary.max_stress_frequency_hz;
+      e.span_at_max = k;
+    }
+    for (const span::BalancePoint& p : b.points) {
+      for (const span::DamperAtBalance& d : p.dampers) curvature = std::max(curvature, d.messenger_curvature_max);
+    }
+    if (b.summary.life) life = std::min(life, b.summary.life->life_years);
+  }
+  e.converged = true;
+  e.max_stress_ratio = ratio;
+  e.messenger_curvature_max = curvature;
+  if (study.objective() == Objective::life) e.shortest_life_years = life;
+  // An infinite life (no damage at all) is capped for the comparison (and the optimiser).
+  e.objective = study.objective() == Objective::life ? -std::min(life, 1e12) : ratio;
+  const DesignConstraints& c = study.constraints();
+  if (c.total_mass_max && e.total_mass > *c.total_mass_max) {
+    e.failure = fmt::format("total mass {:.4g} kg > total_mass_max {:.4g} kg", e.total_mass, *c.total_mass_max);
+  } else if (c.messenger_curvature_max && !(curvature <= *c.messenger_curvature_max)) {
+    e.failure = fmt::format("messenger curvature {:.4g} 1/m > messenger_curvature_max {:.4g} 1/m", curvature,
+                            *c.messenger_curvature_max);
+  }
+  e.feasible = e.failure.empty();
+  return e;
+}
+
+}  // namespace stockbridge::design
