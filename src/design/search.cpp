@@ -72,9 +72,11 @@ std::vector<std::vector<double>> space_filling_sample(const std::vector<DesignVa
   std::vector<std::uint32_t> shift(n);
   for (std::uint32_t& s : shift) s = static_cast<std::uint32_t>(random() >> 32);
   std::vector<std::vector<double>> points(static_cast<std::size_t>(count), std::vector<double>(n));
-  for (auto& point : points) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::vector<double>& point = points[i];
     for (std::size_t d = 0; d < n; ++d) {
-      const std::uint32_t bits = static_cast<std::uint32_t>(sobol()) ^ shift[d];
+      // The sequence's first point is 0 (the engine starts at the second).
+      const std::uint32_t bits = (i == 0 ? 0u : static_cast<std::uint32_t>(sobol())) ^ shift[d];
       const double u = (static_cast<double>(bits) + 0.5) / 4294967296.0;
       point[d] = variables[d].min + u * (variables[d].max - variables[d].min);
     }
@@ -88,8 +90,8 @@ namespace {
 /// constraints as inequalities g <= 0; every distinct candidate it evaluates, in order.
 class Polish {
  public:
-  Polish(const DesignStudy& study, const SearchOptions& options, const std::function<void()>& tick)
-      : study_(study), options_(options), tick_(tick) {}
+  Polish(const DesignStudy& study, const SearchOptions& options, TableCache& cache, const std::function<void()>& tick)
+      : study_(study), options_(options), cache_(cache), tick_(tick) {}
 
   /// From `start` (an evaluation already made: not made or recorded again).
   std::vector<Evaluation> run(const Evaluation& start) {
@@ -133,7 +135,7 @@ class Polish {
     }
     if (evaluations_.empty() && x == start_->x) return *start_;
     if (evaluations_.empty() || evaluations_.back().x != x) {
-      evaluations_.push_back(evaluate(study_, x));
+      evaluations_.push_back(evaluate(study_, x, &cache_));
       tick_();
     }
     return evaluations_.back();
@@ -169,6 +171,7 @@ class Polish {
 
   const DesignStudy& study_;
   const SearchOptions& options_;
+  TableCache& cache_;
   const std::function<void()>& tick_;
   const Evaluation* start_ = nullptr;
   std::vector<Evaluation> evaluations_;
@@ -209,10 +212,11 @@ DesignResult run_search(const DesignStudy& study, const SearchOptions& options, 
     progress(++done, planned);
   };
 
+  TableCache cache;
   std::vector<std::vector<double>> candidates{study.base_values()};
   for (auto& x : space_filling_sample(study.variables(), options.samples, options.seed)) candidates.push_back(std::move(x));
   const auto first = runner.run(static_cast<int>(candidates.size()), [&](int i) {
-    std::vector<Evaluation> e{evaluate(study, candidates[static_cast<std::size_t>(i)])};
+    std::vector<Evaluation> e{evaluate(study, candidates[static_cast<std::size_t>(i)], &cache)};
     tick();
     return e;
   });
@@ -223,7 +227,7 @@ DesignResult run_search(const DesignStudy& study, const SearchOptions& options, 
 
   const std::vector<std::size_t> starts = polish_starts(result.evaluations, options.polish);
   const auto polished = runner.run(static_cast<int>(starts.size()), [&](int j) {
-    return Polish(study, options, tick).run(result.evaluations[starts[static_cast<std::size_t>(j)]].evaluation);
+    return Polish(study, options, cache, tick).run(result.evaluations[starts[static_cast<std::size_t>(j)]].evaluation);
   });
   for (std::size_t j = 0; j < polished.size(); ++j) {
     for (const Evaluation& e : polished[j]) result.evaluations.push_back({Stage::polish, static_cast<int>(j), e});

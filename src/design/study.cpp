@@ -168,7 +168,19 @@ std::string first_failure(const span::SpanBalance& b) {
 
 }  // namespace
 
-Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x) {
+std::shared_ptr<const TableCache::Tables> TableCache::get(std::size_t k, const std::vector<double>& key,
+                                                           const std::function<Tables()>& make) {
+  const auto id = std::make_pair(k, key);
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (const auto found = tables_.find(id); found != tables_.end()) return found->second;
+  }
+  auto made = std::make_shared<const Tables>(make());  // outside the lock: other threads go on
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return tables_.emplace(id, std::move(made)).first->second;
+}
+
+Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, TableCache* cache) {
   Evaluation e;
   e.x = x;
   std::optional<damper::Damper> damper;
@@ -181,6 +193,10 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x) {
   e.total_mass = damper->clamp_mass();
   for (const damper::Arm& arm : damper->arms()) e.total_mass += arm.description().mass;
   const std::optional<double> position = study.position_of(x);
+  std::vector<double> damper_key;  // the damper variables' values: what the tables depend on
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (study.variables()[i].name != kPosition) damper_key.push_back(x[i]);
+  }
   double ratio = 0.0, curvature = 0.0, life = std::numeric_limits<double>::infinity();
   const span::BalanceOptions options;
   for (std::size_t k = 0; k < study.spans().size(); ++k) {
@@ -192,8 +208,10 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x) {
       return e;
     }
     const std::vector<double> f = span::band_frequencies(*s, study.points());
-    const std::vector<span::ImpedanceTable> tables = span::impedance_tables(*s, f, options);
-    const span::SpanBalance b = span::run_balance(*s, f, tables, options);
+    const auto make = [&] { return span::impedance_tables(*s, f, options); };
+    const std::shared_ptr<const TableCache::Tables> tables =
+        cache ? cache->get(k, damper_key, make) : std::make_shared<const TableCache::Tables>(make());
+    const span::SpanBalance b = span::run_balance(*s, f, *tables, options);
     if (b.summary.converged != b.summary.points) {
       e.failure = fmt::format("span {}: {} of {} points did not converge, first {}", study.spans()[k].name,
                               b.summary.points - b.summary.converged, b.summary.points, first_failure(b));

@@ -8,9 +8,13 @@
 
 #include <cstdint>
 #include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <functional>
 #include <vector>
 
 #include "stockbridge/span/balance.hpp"
@@ -106,8 +110,24 @@ struct Evaluation {
   std::string failure;         ///< why not converged, or which constraint is broken
 };
 
-/// Evaluates a candidate (one thread). A candidate whose damper is invalid (an arm
-/// mass below zero, a cable too short) is not converged, with the reason.
-Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x);
+/// The dampers' impedance tables of the candidates evaluated so far, by the values
+/// of their damper variables and the span: candidates that differ only in the
+/// position share them (a table depends on the damper and the span's band alone,
+/// so sharing changes no result). Safe to use from several threads.
+class TableCache {
+ public:
+  using Tables = std::vector<span::ImpedanceTable>;
+  /// The tables of span k for a damper made by `key`, made by `make` if not there yet.
+  std::shared_ptr<const Tables> get(std::size_t k, const std::vector<double>& key, const std::function<Tables()>& make);
+
+ private:
+  std::mutex mutex_;
+  std::map<std::pair<std::size_t, std::vector<double>>, std::shared_ptr<const Tables>> tables_;
+};
+
+/// Evaluates a candidate (one thread), with tables from `cache` where given. A
+/// candidate whose damper is invalid (an arm mass below zero, a cable too short)
+/// is not converged, with the reason.
+Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, TableCache* cache = nullptr);
 
 }  // namespace stockbridge::design

@@ -1,0 +1,195 @@
+// The design study: damper numbers by their file paths, ties and the inertia's
+// constant radius of gyration, validation, the space-filling sample, constraints,
+// and the search against a dense scan of a one-variable problem.
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/design/damper_numbers.hpp"
+#include "stockbridge/design/search.hpp"
+#include "support/damper_fixtures.hpp"
+#include "support/test_scale.hpp"
+#include "unit/span/aster570.hpp"
+
+namespace stockbridge::design {
+namespace {
+
+damper::DamperDescription two_arm_damper(int sections = 40) {
+  damper::ArmDescription left = stockbridge::testing::sauter_arm(sections), right = left;
+  left.name = "left";
+  right.name = "right";
+  return damper::DamperDescription{0.7, {left, right}};
+}
+
+DesignSpan aster_span(const damper::DamperDescription& d, double position = 1.0) {
+  span::FatigueSpec fatigue;
+  fatigue.cycles = 5e8;
+  std::vector<span::SpanDamper> dampers{{damper::Damper(d), position, true, "damper"}};
+  return {span::Span(span::testing::aster570(), 400.0, span::testing::aster570_tension, span::WindModel{},
+                     span::SelfDampingModel{}, std::move(dampers), fatigue),
+          "aster"};
+}
+
+DesignStudy study_of(std::vector<DesignVariable> variables, std::vector<DesignTie> ties = {},
+                     DesignConstraints constraints = {}, int points = 6) {
+  const damper::DamperDescription d = two_arm_damper(12);
+  return DesignStudy(d, {aster_span(d)}, Objective::max_stress, std::move(variables), std::move(ties), constraints, points);
+}
+
+TEST(DamperNumbers, AreFoundByTheirFilePaths) {
+  damper::DamperDescription d = two_arm_damper();
+  EXPECT_EQ(damper_number(d, "clamp.mass"), 0.7);
+  EXPECT_EQ(damper_number(d, "arm.left.mass"), d.arms[0].mass);
+  EXPECT_EQ(damper_number(d, "arm[1].inertia"), d.arms[1].inertia);
+  EXPECT_EQ(damper_number(d, "arm.right.cable.length"), d.arms[1].cable.length);
+  set_damper_number(d, "arm.right.cable.length", 0.25);
+  set_damper_number(d, "arm.left.cable.ei", 3.5);
+  set_damper_number(d, "arm[0].cable.jenkin[0].h", 0.9);
+  set_damper_number(d, "arm.left.offset", 0.04);
+  EXPECT_EQ(d.arms[1].cable.length, 0.25);
+  EXPECT_EQ(d.arms[0].cable.ei.at(0.1), 3.5);
+  EXPECT_EQ(d.arms[0].cable.jenkin[0].h.at(0.1), 0.9);
+  EXPECT_EQ(d.arms[0].offset, 0.04);
+  EXPECT_EQ(d.arms[1].cable.ei.at(0.1), 2.8);  // the other arm untouched
+}
+
+TEST(DamperNumbers, APathThatNamesNothingIsRefusedWithWhatWasExpected) {
+  const damper::DamperDescription d = two_arm_damper();
+  const auto message = [&](const char* path) {
+    try {
+      damper_number(d, path);
+    } catch (const InvalidParameter& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("arm.middle.mass").find("no arm is named 'middle' (the arms: left, right"), std::string::npos);
+  EXPECT_NE(message("arm.left.weight").find("names no number of the damper"), std::string::npos);
+  EXPECT_NE(message("arm[2].mass").find("the damper has 2 arm(s)"), std::string::npos);
+  EXPECT_NE(message("arm.left.cable.jenkin[1].h").find("1 Jenkin element(s)"), std::string::npos);
+  EXPECT_NE(message("clamp.inertia").find("names no number"), std::string::npos);
+  damper::DamperDescription profiled = d;
+  profiled.arms[0].cable.ei = cable::Profile::table({0.0, 0.1}, {2.0, 3.0}, "ei");
+  EXPECT_THROW(damper_number(profiled, "arm.left.cable.ei"), InvalidParameter);
+}
+
+TEST(DesignStudy, TiesFollowTheirVariableAndTheInertiaKeepsTheRadiusOfGyration) {
+  const DesignStudy study = study_of({{"arm.left.mass", 0.5, 3.0}, {"arm.left.cable.length", 0.1, 0.3}},
+                                     {{"arm.right.mass", "arm.left.mass"}});
+  const damper::DamperDescription base = study.base();
+  const damper::DamperDescription d = study.damper_of({1.712, 0.2});
+  EXPECT_EQ(d.arms[0].mass, 1.712);
+  EXPECT_EQ(d.arms[1].mass, 1.712);
+  EXPECT_EQ(d.arms[0].cable.length, 0.2);
+  EXPECT_EQ(d.arms[1].cable.length, base.arms[1].cable.length);  // not tied
+  // inertia / mass unchanged on both arms: the radius of gyration is kept
+  EXPECT_DOUBLE_EQ(d.arms[0].inertia / d.arms[0].mass, base.arms[0].inertia / base.arms[0].mass);
+  EXPECT_DOUBLE_EQ(d.arms[1].inertia / d.arms[1].mass, base.arms[1].inertia / base.arms[1].mass);
+  // ... unless the inertia is varied itself
+  const DesignStudy with_inertia = study_of({{"arm.left.mass", 0.5, 3.0}, {"arm.left.inertia", 1e-4, 1e-2}});
+  EXPECT_EQ(with_inertia.damper_of({2.0, 3e-3}).arms[0].inertia, 3e-3);
+  EXPECT_FALSE(study.position_of({1.0, 0.2}));
+  EXPECT_EQ(study.base_values(), (std::vector<double>{base.arms[0].mass, base.arms[0].cable.length}));
+}
+
+TEST(DesignStudy, IsCheckedWhereTheFileSpellsIt) {
+  const auto field_of = [](auto&& make) {
+    try {
+      make();
+    } catch (const InvalidParameter& e) {
+      return e.field();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(field_of([] { study_of({{"arm.left.mass", 3.0, 0.5}}); }), "variable[0].max");
+  EXPECT_EQ(field_of([] { study_of({{"arm.left.mas", 0.5, 3.0}}); }), "variable[0].name");
+  EXPECT_EQ(field_of([] { study_of({{"arm.left.mass", 0.5, 3.0}}, {{"arm.right.mass", "arm.left.cable.length"}}); }),
+            "tie[0].equals");
+  EXPECT_EQ(field_of([] { study_of({{"position", 0.5, 2.0}}, {{"arm.right.mass", "position"}}); }), "tie[0].equals");
+  EXPECT_EQ(field_of([] { study_of({{"arm.left.mass", 0.5, 3.0}}, {{"arm.left.mass", "arm.left.mass"}}); }),
+            "tie[0].name");
+  EXPECT_EQ(field_of([] { study_of({{"arm.left.mass", 0.5, 3.0}}, {}, {-1.0, std::nullopt}); }),
+            "constraints.total_mass_max");
+  EXPECT_EQ(field_of([] { study_of({{"position", 0.5, 250.0}}); }), "variable[0].max");
+  EXPECT_EQ(field_of([] { study_of({{"arm.left.mass", 0.5, 3.0}, {"arm.left.mass", 1.0, 2.0}}); }), "variable[1].name");
+  EXPECT_EQ(field_of([] { study_of({}); }), "");
+}
+
+TEST(SpaceFillingSample, FillsTheBoxStratifiedAndFollowsTheSeed) {
+  const std::vector<DesignVariable> box{{"a", 0.0, 1.0}, {"b", -2.0, 2.0}, {"c", 10.0, 20.0}};
+  const auto points = space_filling_sample(box, 16, 7);
+  ASSERT_EQ(points.size(), 16u);
+  for (std::size_t d = 0; d < box.size(); ++d) {
+    // A Sobol sequence's first 2^m points put one point in each of 2^m equal bins of
+    // every coordinate; a digital shift keeps that.
+    std::set<int> bins;
+    for (const auto& p : points) {
+      ASSERT_GT(p[d], box[d].min);
+      ASSERT_LT(p[d], box[d].max);
+      bins.insert(static_cast<int>(16.0 * (p[d] - box[d].min) / (box[d].max - box[d].min)));
+    }
+    EXPECT_EQ(bins.size(), 16u) << "coordinate " << d;
+  }
+  EXPECT_EQ(space_filling_sample(box, 16, 7), points);
+  EXPECT_NE(space_filling_sample(box, 16, 8), points);
+}
+
+TEST(DesignEvaluation, ConstraintsMakeACandidateInfeasibleAndSaySo) {
+  const DesignStudy heavy = study_of({{"arm.left.mass", 0.5, 3.0}}, {}, {1.0, std::nullopt});
+  const Evaluation e = evaluate(heavy, heavy.base_values());
+  ASSERT_TRUE(e.converged) << e.failure;
+  EXPECT_FALSE(e.feasible);
+  EXPECT_NE(e.failure.find("total mass 2.412 kg > total_mass_max 1 kg"), std::string::npos) << e.failure;
+  const DesignStudy stiff = study_of({{"arm.left.mass", 0.5, 3.0}}, {}, {std::nullopt, 1e-3});
+  const Evaluation c = evaluate(stiff, stiff.base_values());
+  EXPECT_FALSE(c.feasible);
+  EXPECT_NE(c.failure.find("messenger_curvature_max 0.001 1/m"), std::string::npos) << c.failure;
+  EXPECT_GT(c.messenger_curvature_max, 1e-3);
+  const DesignStudy free = study_of({{"arm.left.mass", 0.5, 3.0}});
+  const Evaluation f = evaluate(free, free.base_values());
+  EXPECT_TRUE(f.feasible);
+  EXPECT_EQ(f.objective, f.max_stress_ratio);
+  EXPECT_NEAR(f.total_mass, 0.7 + 2 * 0.856, 1e-12);
+}
+
+// One variable, the dampers' position: the search (sample and polish) against a
+// dense scan of the same objective; the tables are shared, only the balances differ.
+TEST(DesignSearch, OneVariableMatchesADenseScan) {
+  const DesignStudy study = study_of({{"position", 0.5, 2.0}});
+  SearchOptions options;
+  options.samples = stockbridge::testing::scaled(6, 2);
+  options.polish = 1;
+  options.polish_evaluations = stockbridge::testing::scaled(12, 4);
+  ThreadRunner runner(2);
+  const DesignResult result = run_search(study, options, runner);
+  ASSERT_TRUE(result.best);
+  const Evaluation& best = result.evaluations[*result.best].evaluation;
+  const int steps = stockbridge::testing::scaled(30, 6);
+  const double step = 1.5 / steps;
+  double scan_best = std::numeric_limits<double>::infinity(), scan_at = 0.0;
+  TableCache cache;
+  for (int k = 0; k <= steps; ++k) {
+    const Evaluation e = evaluate(study, {0.5 + k * step}, &cache);
+    ASSERT_TRUE(e.converged) << e.failure;
+    if (e.objective < scan_best) scan_best = e.objective, scan_at = 0.5 + k * step;
+  }
+  if (stockbridge::testing::short_tests()) return;  // too few evaluations to find the optimum: the paths are covered
+  EXPECT_LE(best.objective, scan_best * (1 + 1e-9)) << "scan's best at " << scan_at << " m";
+  EXPECT_NEAR(best.x[0], scan_at, 2 * step);
+  EXPECT_EQ(result.evaluations.front().stage, Stage::base);
+  // Threads change nothing.
+  ThreadRunner one(1);
+  const DesignResult again = run_search(study, options, one);
+  ASSERT_EQ(again.evaluations.size(), result.evaluations.size());
+  for (std::size_t i = 0; i < again.evaluations.size(); ++i) {
+    EXPECT_EQ(again.evaluations[i].evaluation.x, result.evaluations[i].evaluation.x);
+    EXPECT_EQ(again.evaluations[i].evaluation.objective, result.evaluations[i].evaluation.objective);
+  }
+}
+
+}  // namespace
+}  // namespace stockbridge::design
