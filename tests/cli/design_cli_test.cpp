@@ -1,0 +1,169 @@
+// `stockbridge design` as users run it: a small study end to end (CSV, best.toml,
+// --json), the best design through `stockbridge span` reproducing its objective,
+// the same designs.csv on 1 and 2 threads and on 1 and 2 MPI ranks, a study with
+// no feasible candidate (exit 3), and bad design files (exit 2, one line, no file).
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+#include "support/test_scale.hpp"
+
+namespace stockbridge::testing {
+namespace {
+
+const std::string kDesignExamples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
+
+/// The small study's sizes (smaller under the sanitizers: the same paths).
+const int kSamples = scaled(3, 1);
+const int kPoints = scaled(8, 4);
+
+/// A small study of the example's variables on the example span.
+std::string small_study() {
+  return "damper = \"" + kDesignExamples + "sauter2003.toml\"\n" + "spans = [\"" + kDesignExamples +
+         "aster570_400m.toml\"]\n"
+         "samples = " + std::to_string(kSamples) + "\npolish = 1\npolish_evaluations = " + std::to_string(scaled(4, 2)) +
+         "\npoints = " + std::to_string(kPoints) + "\nseed = 3\n"
+         "[[variable]]\nname = \"arm.left.mass\"\nmin = 0.5\nmax = 1.5\n"
+         "[[variable]]\nname = \"position\"\nmin = 0.6\nmax = 2.0\n"
+         "[[tie]]\nname = \"arm.right.mass\"\nequals = \"arm.left.mass\"\n"
+         "[constraints]\ntotal_mass_max = 4.0\n";
+}
+
+std::filesystem::path study_folder(const std::string& name, const std::string& text) {
+  const auto dir = scratch_directory(name);
+  std::ofstream(dir / "study.toml") << text;
+  return dir;
+}
+
+/// A number as text that reads back exactly.
+std::string exact(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+/// The number after "key": in the JSON text after `anchor` ("" for the whole text).
+double json_value(const std::string& json, const std::string& anchor, const std::string& key) {
+  const std::size_t from = anchor.empty() ? 0 : json.find("\"" + anchor + "\": ");
+  const std::size_t at = from == std::string::npos ? from : json.find("\"" + key + "\": ", from);
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "no key " << key << " after " << anchor << " in " << json;
+    return std::nan("");
+  }
+  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+}
+
+TEST(DesignCli, ASmallStudyWritesEveryCandidateAndTheBestDamper) {
+  const auto dir = study_folder("design-small", small_study());
+  const CliResult r = run_cli("design study.toml --json -o designs.csv --best best.toml", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = read_text(dir / "designs.csv");
+  EXPECT_EQ(csv.rfind("stage,run,arm.left.mass,position,objective,max_stress_ratio,max_stress_mpa,frequency_at_max_hz,"
+                      "total_mass_kg,messenger_curvature_max_per_m,shortest_life_years,converged,feasible\n",
+                      0),
+            0u)
+      << csv;
+  EXPECT_EQ(csv.find("\nbase,0,0.856,1,"), csv.find('\n')) << "the base design first, as its file gives it";
+  const int rows = static_cast<int>(std::count(csv.begin(), csv.end(), '\n')) - 1;
+  EXPECT_EQ(rows, static_cast<int>(json_value(r.out, "", "evaluations")));
+  EXPECT_GE(rows, 1 + kSamples + 1);
+  const std::string best = read_text(dir / "best.toml");
+  EXPECT_NE(best.find("# position = "), std::string::npos) << best;
+  EXPECT_NE(best.find("[[arm]]\nname = \"right\""), std::string::npos) << best;
+  EXPECT_LE(json_value(r.out, "best", "objective"), json_value(r.out, "base", "objective"));
+  EXPECT_NE(r.err.find("design: " + std::to_string(rows) + " candidates in "), std::string::npos) << r.err;
+
+  // The best damper, placed where the study found it, through `stockbridge span`:
+  // the same largest stress over the endurance limit, to 1e-9.
+  std::string span = read_text(kDesignExamples + "aster570_400m.toml");
+  span.replace(span.find("file = \"sauter2003.toml\""), 24, "file = \"best.toml\"");
+  const double position = json_value(r.out, "best", "position_m");
+  span.replace(span.find("position = 1.0"), 14, "position = " + exact(position));
+  std::ofstream(dir / "best_span.toml") << span;
+  const CliResult s = run_cli("span best_span.toml --points " + std::to_string(kPoints) + " --json -o span.csv", dir);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const double ratio = json_value(s.out, "", "max_stress_fymax_mpa") / json_value(s.out, "", "endurance_limit_mpa");
+  EXPECT_NEAR(ratio, json_value(r.out, "best", "objective"), 1e-9 * ratio);
+}
+
+TEST(DesignCli, ThreadsAndMpiRanksGiveTheSameDesigns) {
+  const auto dir = study_folder("design-threads", small_study());
+  ASSERT_EQ(run_cli("design study.toml --threads 2 -o two.csv --best two.toml", dir).exit_code, 0);
+#ifdef STOCKBRIDGE_TEST_MPIRUN
+  // One rank on one thread, and two ranks.
+  for (const int ranks : {1, 2}) {
+    const std::string out = "ranks" + std::to_string(ranks);
+    const std::string command = "cd '" + dir.string() + "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 '" +
+                                STOCKBRIDGE_TEST_MPIRUN + "' --oversubscribe -np " + std::to_string(ranks) + " '" +
+                                STOCKBRIDGE_CLI + "' design study.toml --quiet -o " + out + ".csv --best " + out +
+                                ".toml > " + out + ".log 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir / (out + ".log"));
+    EXPECT_EQ(read_text(dir / (out + ".csv")), read_text(dir / "two.csv")) << ranks << " ranks";
+    EXPECT_EQ(read_text(dir / (out + ".toml")), read_text(dir / "two.toml")) << ranks << " ranks";
+    EXPECT_NE(read_text(dir / (out + ".log")).find("on " + std::to_string(ranks) + " rank(s) x 1 thread(s)"),
+              std::string::npos);
+  }
+#else
+  // Built without MPI: one thread against two.
+  ASSERT_EQ(run_cli("design study.toml --threads 1 -o one.csv --best one.toml", dir).exit_code, 0);
+  EXPECT_EQ(read_text(dir / "one.csv"), read_text(dir / "two.csv"));
+  EXPECT_EQ(read_text(dir / "one.toml"), read_text(dir / "two.toml"));
+#endif
+}
+
+TEST(DesignCli, AStudyWithNoFeasibleCandidateSaysSoAndExits3) {
+  std::string text = small_study();
+  text.replace(text.find("total_mass_max = 4.0"), 20, "total_mass_max = 1.0");
+  const auto dir = study_folder("design-infeasible", text);
+  const CliResult r = run_cli("design study.toml -o designs.csv --best best.toml", dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.out.find("best: none of the " + std::to_string(1 + kSamples) + " candidates is feasible"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.err.find("design: no candidate is feasible (designs.csv written, best.toml not)"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "designs.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "best.toml"));
+}
+
+struct BadStudy {
+  const char* name;
+  std::string from, to;  ///< replaced in the small study
+  const char* expected;   ///< in the one line
+};
+
+TEST(DesignCli, BadStudiesAreOneLineAndWriteNothing) {
+  const BadStudy cases[] = {
+      {"unknown path", "name = \"arm.left.mass\"", "name = \"arm.left.mas\"",
+       "study.toml:9: variable[0].name = \"arm.left.mas\": names no number of the damper"},
+      {"min above max", "min = 0.5\nmax = 1.5", "min = 1.5\nmax = 0.5", "variable[0].max = 0.5: expected a value > min = 1.5"},
+      {"tie to nothing", "equals = \"arm.left.mass\"", "equals = \"arm.left.inertia\"",
+       "tie[0].equals = \"arm.left.inertia\": expected the name of a damper [[variable]]"},
+      {"negative budget", "total_mass_max = 4.0", "total_mass_max = -4.0", "constraints.total_mass_max = -4"},
+      {"missing span", "aster570_400m.toml\"]", "nowhere.toml\"]", "study.toml:2: spans: \""},
+      {"unknown key", "seed = 3", "sed = 3", "sed"},
+      {"life without a climate", "seed = 3", "seed = 3\nobjective = \"lifetime\"", "expected max_stress or life"},
+  };
+  for (const BadStudy& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::string text = small_study();
+    ASSERT_NE(text.find(c.from), std::string::npos);
+    text.replace(text.find(c.from), c.from.size(), c.to);
+    const auto dir = study_folder("design-bad", text);
+    const CliResult r = run_cli("design study.toml -o designs.csv --best best.toml", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "designs.csv"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "best.toml"));
+  }
+}
+
+}  // namespace
+}  // namespace stockbridge::testing
