@@ -29,6 +29,7 @@ namespace {
 struct DesignOptions {
   std::string design_file;
   std::optional<int> samples;
+  std::optional<int> polish;
   int threads = 1;
   bool json = false;
   bool quiet = false;
@@ -71,13 +72,14 @@ int run_design_command(const DesignOptions& options) {
   }
   requests::DesignRequest request;
   request.samples = options.samples;
+  request.polish = options.polish;
   request.threads = options.threads;
   requests::validate(request);
   const io::DesignFile file = read_design_input(options.design_file, {{"-o", options.output}, {"--best", options.best}});
   const design::SearchOptions search = requests::search_options(file.search, request);
 
   const auto start = std::chrono::steady_clock::now();
-  ProgressReport progress("design: candidates", options.quiet || processes.rank() != 0);
+  ProgressReport progress("design", options.quiet || processes.rank() != 0, "candidates");
   const std::unique_ptr<design::TaskRunner> runner = processes.runner(options.threads);
   const design::DesignResult result = design::run_search(file.study, search, *runner, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -89,6 +91,7 @@ int run_design_command(const DesignOptions& options) {
   if (options.json) {
     fmt::print("{}\n", requests::design_summary(file.study, result)
                            .add("samples", search.samples)
+                           .add("polish", search.polish)
                            .add("ranks", processes.size())
                            .add("threads", options.threads)
                            .add("seconds", seconds)
@@ -111,6 +114,7 @@ void add_design_command(CLI::App& app, int& exit_code) {
       "design", "Search the best damper for spans and their wind band (a design file): on threads and MPI ranks");
   sub->add_option("design", options->design_file, "Design study (TOML)")->required();
   sub->add_option("--samples", options->samples, "Space-filling candidates (instead of the file's samples)");
+  sub->add_option("--polish", options->polish, "Best candidates polished locally (instead of the file's polish; 0: none)");
   sub->add_option("--threads", options->threads, "Candidates evaluated at once (per MPI rank)")->capture_default_str();
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");

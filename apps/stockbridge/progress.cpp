@@ -12,8 +12,9 @@ constexpr double kPlainInterval = 10.0;  // s, between plain lines and before th
 constexpr int kBarWidth = 30;
 }  // namespace
 
-ProgressReport::ProgressReport(std::string what, bool quiet)
+ProgressReport::ProgressReport(std::string what, bool quiet, std::string unit)
     : what_(std::move(what)),
+      unit_(std::move(unit)),
       quiet_(quiet),
       terminal_(::isatty(STDERR_FILENO) == 1),
       start_(std::chrono::steady_clock::now()) {}
@@ -21,7 +22,7 @@ ProgressReport::ProgressReport(std::string what, bool quiet)
 std::string ProgressReport::line(int done, int total, double seconds) const {
   const double rate = seconds > 0.0 ? done / seconds : 0.0;
   const std::string left = rate > 0.0 ? fmt::format(", about {:.0f} s left", (total - done) / rate) : "";
-  return fmt::format("{}/{} points, {:.1f} points/s{}", done, total, rate, left);
+  return fmt::format("{}/{} {}, {:.1f} {}/s{}", done, total, unit_, rate, unit_, left);
 }
 
 void ProgressReport::operator()(int done, int total) {

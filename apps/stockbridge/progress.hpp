@@ -1,5 +1,5 @@
 #pragma once
-// Progress of a long computation on stderr, in points: on a terminal a bar with
+// Progress of a long computation on stderr, in points (or another unit): on a terminal a bar with
 // the rate and the time left, redrawn in place; elsewhere (a log, a pipe) a plain
 // line at most every 10 s, and only for runs that last longer than 10 s. Silent
 // with --quiet.
@@ -11,8 +11,9 @@ namespace stockbridge::cli {
 
 class ProgressReport {
  public:
-  /// `what` starts every line ("impedance"); `quiet` silences everything.
-  ProgressReport(std::string what, bool quiet);
+  /// `what` starts every line ("impedance"); `quiet` silences everything; `unit`
+  /// names what is counted.
+  ProgressReport(std::string what, bool quiet, std::string unit = "points");
   /// (points done, points in all); safe to call from the sweep's serialised callback.
   void operator()(int done, int total);
 
@@ -20,6 +21,7 @@ class ProgressReport {
   std::string line(int done, int total, double seconds) const;
 
   std::string what_;
+  std::string unit_;
   bool quiet_;
   bool terminal_;
   std::chrono::steady_clock::time_point start_;

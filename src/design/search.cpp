@@ -237,6 +237,7 @@ DesignResult run_search(const DesignStudy& study, const SearchOptions& options, 
     const Evaluation& e = result.evaluations[i].evaluation;
     if (e.feasible && (!result.best || better(e, result.evaluations[*result.best].evaluation))) result.best = i;
   }
+  if (progress) progress(planned, planned);  // done (polishes may stop before their budget)
   return result;
 }
 

@@ -30,6 +30,9 @@ STRAND_CMD = "strand INPUT"
 LOCAL_CMD = "identify local --input INPUT -o out.toml"
 GLOBAL_CMD = "identify global --experiment a --length 0.3 --input INPUT -o out.toml"
 SPAN_CMD = "span INPUT --frequencies 10,20 -o out.csv"
+DESIGN_CMD = "design INPUT -o out.csv --best best.toml"
+DESIGN = ("damper = \"nope.toml\"\nspans = [\"span.toml\"]\n"
+          "[[variable]]\nname = \"arm.a.mass\"\nmin = 0.5\nmax = 1.5\n")
 LOOP_CMD = "loop --ei 2.8 --jenkin 20:0.7 --amplitude 0.05 -o out.csv"
 
 cases = {
@@ -129,6 +132,13 @@ cases = {
     "span_weibull_shape_negative": (SPAN_CMD, "span.toml",
                                     SPAN + "wind_weibull = { shape = -2.0, scale = 4.0 }\naeolian_fraction = 0.3\n",
                                     "fatigue.wind_weibull.shape = -2"),
+    # design files (issue 15): the faults a design file shows alone (its variables and
+    # ties need the damper it names: tests/cli/design_cli_test.cpp)
+    "design_syntax": (DESIGN_CMD, "design.toml", "damper = \n", "design.toml:1"),
+    "design_empty": (DESIGN_CMD, "design.toml", "", "damper"),
+    "design_damper_missing": (DESIGN_CMD, "design.toml", DESIGN, 'damper: "nope.toml": expected an existing damper file'),
+    "design_damper_number": (DESIGN_CMD, "design.toml", DESIGN.replace('"nope.toml"', "3"), "damper"),
+    "design_damper_is_itself": (DESIGN_CMD, "design.toml", DESIGN.replace("nope.toml", "design.toml"), "'clamp'"),
     "span_name_line_break": (SPAN_CMD, "span.toml", SPAN.replace('name = "ASTER570"', 'name = "A\\nB"'), "conductor.name"),
     # strand files
     # Fuzzing findings: a name with a line break (it goes into messages and files), and
@@ -182,6 +192,10 @@ cases = {
     "option_span_frequencies_decreasing": ("span INPUT --frequencies 20,10 -o out.csv", "span.toml", SPAN, "frequencies[1] = 10"),
     "option_span_points_one": ("span INPUT --points 1 -o out.csv", "span.toml", SPAN, "points = 1"),
     "option_span_damper_model": ("span INPUT --damper-model linear -o out.csv", "span.toml", SPAN, "linear"),
+    "option_design_samples_zero": ("design INPUT --samples 0 -o out.csv --best best.toml", "design.toml", DESIGN, "--samples"),
+    "option_design_threads_zero": ("design INPUT --threads 0 -o out.csv --best best.toml", "design.toml", DESIGN, "--threads"),
+    "option_design_polish_negative": ("design INPUT --polish -1 -o out.csv --best best.toml", "design.toml", DESIGN, "--polish"),
+    "option_design_best_is_input": ("design INPUT -o out.csv --best design.toml", "design.toml", DESIGN, "--best"),
     "option_span_position_reversed": ("span INPUT --optimize-position 3:0.5 -o out.csv", "span.toml", SPAN,
                                       "optimize_position = 3:0.5"),
     "option_span_position_malformed": ("span INPUT --optimize-position 2 -o out.csv", "span.toml", SPAN, "AMIN:AMAX"),

@@ -61,7 +61,8 @@ struct DesignResult {
   std::size_t base = 0;  ///< the base design's index (0)
 };
 
-/// Called after each stage's candidates: (evaluations done, evaluations planned at most).
+/// Called after each candidate (serialised): (evaluations done, evaluations planned
+/// at most), and (planned, planned) at the end.
 using SearchProgress = std::function<void(int, int)>;
 
 /// The points of the sample: `count` points of the variables' box.

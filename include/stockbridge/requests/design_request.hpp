@@ -15,10 +15,11 @@ namespace stockbridge::requests {
 /// What a user changes of a design file's settings from the command line.
 struct DesignRequest {
   std::optional<int> samples;  ///< instead of the file's
+  std::optional<int> polish;   ///< instead of the file's
   int threads = 1;             ///< candidates evaluated at once (per process)
 };
 
-/// InvalidParameter naming "--samples" or "--threads".
+/// InvalidParameter naming "--samples", "--polish" or "--threads".
 void validate(const DesignRequest& request);
 /// The file's search options with the request's changes.
 design::SearchOptions search_options(const design::SearchOptions& file, const DesignRequest& request);
