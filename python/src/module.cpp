@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <complex>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <string>
@@ -17,13 +18,16 @@
 #include "stockbridge/damper/modes.hpp"
 #include "stockbridge/damper/steady_state.hpp"
 #include "stockbridge/damper/sweep.hpp"
+#include "stockbridge/design/search.hpp"
 #include "stockbridge/identification/global_identification.hpp"
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/design_file.hpp"
 #include "stockbridge/io/span_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
+#include "stockbridge/requests/design_request.hpp"
 #include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/span_request.hpp"
@@ -381,6 +385,66 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   return out;
 }
 
+/// The design command's CSV columns as arrays (one value per candidate, in the CSV's
+/// order: the base, the samples, the polishes), its --json summary as JSON text (the
+/// package's design() parses it into a dict) and best.toml's text (None when no
+/// candidate is feasible).
+py::dict design_search(const std::string& path, std::optional<int> samples, int threads) {
+  requests::DesignRequest request;
+  request.samples = samples;
+  request.threads = threads;
+  requests::validate(request);
+  const io::DesignFile file = io::load_design_file(path);
+  warn(file.warnings);
+  const design::SearchOptions options = requests::search_options(file.search, request);
+  std::optional<design::DesignResult> result;
+  {
+    py::gil_scoped_release release;
+    design::ThreadRunner runner(threads);
+    result.emplace(design::run_search(file.study, options, runner));
+  }
+  const std::vector<std::string> columns = requests::design_columns(file.study);
+  const std::size_t n = result->evaluations.size();
+  std::vector<std::vector<double>> values(columns.size(), std::vector<double>(n));
+  py::list stages;
+  for (std::size_t i = 0; i < n; ++i) {
+    const design::StudyEvaluation& e = result->evaluations[i];
+    const std::vector<double> row = requests::design_row(file.study, e);
+    for (std::size_t c = 0; c < columns.size(); ++c) values[c][i] = row[c];
+    stages.append(std::string(design::stage_name(e.stage)));
+  }
+  py::dict out;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    if (columns[c] == "run") {
+      py::array_t<long long> run(n);
+      for (std::size_t i = 0; i < n; ++i) run.mutable_at(i) = result->evaluations[i].run;
+      out["run"] = run;
+    } else if (columns[c] == "converged" || columns[c] == "feasible") {
+      py::array_t<bool> flags(n);
+      for (std::size_t i = 0; i < n; ++i) flags.mutable_at(i) = values[c][i] == 1.0;
+      out[py::str(columns[c])] = flags;
+    } else {
+      out[py::str(columns[c])] = array(values[c]);
+    }
+  }
+  out[py::str(std::string(requests::kDesignStageColumn))] = stages;
+  std::vector<std::string> csv_columns{std::string(requests::kDesignStageColumn)};
+  csv_columns.insert(csv_columns.end(), columns.begin(), columns.end());
+  out["columns"] = csv_columns;
+  std::vector<std::string> variables;
+  for (const design::DesignVariable& v : file.study.variables()) variables.push_back(v.name);
+  out["variables"] = variables;
+  // The command's --json adds the same three (and its wall time, which Python leaves out).
+  out["summary_json"] = requests::design_summary(file.study, *result)
+                            .add("samples", options.samples)
+                            .add("ranks", 1)
+                            .add("threads", threads)
+                            .str();
+  out["best_damper"] =
+      requests::best_damper_file(file.study, *result, std::filesystem::path(path).filename().string());
+  return out;
+}
+
 /// The modes command's JSON as a dict (the same keys), arms named as the CSV's columns.
 py::dict modes(const damper::Damper& d) {
   damper::DamperModes result;
@@ -529,6 +593,9 @@ PYBIND11_MODULE(_core, m) {
         py::arg("optimize_position") = py::none(), py::arg("threads") = 1,
         "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
         "'converged', 'termination', 'messages', 'dampers', 'columns' and the --json summary as 'summary_json'.");
+  m.def("_design", &design_search, py::arg("file"), py::arg("samples") = py::none(), py::arg("threads") = 1,
+        "A design study's search (stockbridge.design wraps it): the design CSV's columns as arrays, 'stage', "
+        "'columns', 'variables', the --json summary as 'summary_json' and best.toml's text as 'best_damper'.");
   m.def("modes", &modes, py::arg("damper"),
         "Linear natural frequencies (Hz), every element sticking and every one slipping, as the modes command's "
         "JSON: 'arms' (each arm, clamp held: name, stick_hz, slip_hz) and 'damper' (clamp free, the rigid-body "

@@ -7,9 +7,12 @@ built by the CMake project) and adds plots (``python3 -m stockbridge.plot``).
     damper = sb.load_damper("examples/sauter2003.toml")
     z = sb.impedance(damper, [10.0, 20.0], velocity=[0.2, 0.05])
     s = sb.span("examples/aster570_400m.toml", points=50)
+    d = sb.design("examples/design_aster570.toml", samples=16, threads=2)
 """
 
 import json
+
+import numpy
 
 from . import _toml
 
@@ -24,7 +27,7 @@ try:
     from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, cycle,  # noqa: F401
                         identify_global, identify_local, impedance, load_cable, load_damper, load_strand, loop,
                         modes, response, strand_bounds)
-    from ._core import _cable_from_toml, _damper_from_toml, _span
+    from ._core import _cable_from_toml, _damper_from_toml, _design, _span
 except ImportError:  # the plots work from the source tree without the compiled module
     pass
 
@@ -95,5 +98,24 @@ def span(file=None, frequencies=None, points=100, no_dampers=False, damper_model
     out = _span(file=None if file is None else str(file), text=text, frequencies=frequencies, points=points,
                 no_dampers=no_dampers, damper_model=damper_model,
                 optimize_position=None if optimize_position is None else tuple(optimize_position), threads=threads)
+    out["summary"] = json.loads(out.pop("summary_json"))
+    return out
+
+
+def design(file, samples=None, threads=1):
+    """The search for the best damper of a design study, as ``stockbridge design``: a
+    design file's path (`file`; its damper and span files relative to it);
+    `samples` space-filling candidates instead of the file's; `threads` candidates
+    evaluated at once.
+
+    Returns a dict: one array per column of the design CSV, by the CSV's names (one
+    value per candidate in the CSV's order: the base, the samples, the polishes;
+    'run' int, 'converged' and 'feasible' bool, the rest float, NaN where not
+    computed), 'stage' (array of str: base, sample or polish), 'columns' (the CSV's
+    order), 'variables' (the variables' names, their columns), 'summary' (the --json
+    summary's keys, None where the JSON has null) and 'best_damper': the text of the
+    --best damper file, None when no candidate is feasible."""
+    out = _design(file=str(file), samples=samples, threads=threads)
+    out["stage"] = numpy.array(out["stage"], dtype=str)
     out["summary"] = json.loads(out.pop("summary_json"))
     return out

@@ -5,6 +5,7 @@
     python3 -m stockbridge.plot loop cycle.csv -o loop.png      (cycle, response or loop CSV)
     python3 -m stockbridge.plot fit fitted.csv -o fit.png       (identify ... --fitted)
     python3 -m stockbridge.plot span span.csv -o span.png       (span: damped and undamped)
+    python3 -m stockbridge.plot design designs.csv -o design.png (design: objective per variable)
 
 Errors (a missing file or column, a cell that is not a number, nothing to plot, an
 output that cannot be written) print one line on stderr and exit with status 2,
@@ -54,12 +55,19 @@ class Table:
     def __contains__(self, name):
         return name in self.header
 
-    def column(self, name):
-        """The column's numbers, NaN for empty cells."""
+    def column(self, name, infinite=False):
+        """The column's numbers, NaN for empty cells; +inf accepted where `infinite`."""
         if name not in self.header:
             raise PlotError(f"{self.path}: missing column '{name}'")
         index = self.header.index(name)
-        return [self._number(line, name, row[index]) for line, row in self.rows]
+        return [self._number(line, name, row[index], infinite) for line, row in self.rows]
+
+    def text(self, name):
+        """The column's cells as text, stripped."""
+        if name not in self.header:
+            raise PlotError(f"{self.path}: missing column '{name}'")
+        index = self.header.index(name)
+        return [row[index].strip() for _, row in self.rows]
 
     def required(self, name, rows=None):
         """The column's numbers; a cell in `rows` (row numbers, default all) must not be empty."""
@@ -69,14 +77,14 @@ class Table:
                 raise PlotError(f"{self.path}:{self.rows[i][0]}: column '{name}' is empty: expected a number")
         return values
 
-    def _number(self, line, name, cell):
+    def _number(self, line, name, cell, infinite=False):
         if not cell.strip():
             return math.nan
         try:
             value = float(cell)
         except ValueError:
             value = math.nan
-        if not math.isfinite(value):
+        if not (math.isfinite(value) or (infinite and value == math.inf)):
             raise PlotError(f"{self.path}:{line}: column '{name}' = '{cell}': expected a finite number")
         return value
 
@@ -411,6 +419,178 @@ def plot_span(path, output):
     save(span_figure(path), output)
 
 
+# ---------------------------------------------------------------- design
+
+DESIGN_FIGURES = ["objective", "max_stress_ratio", "max_stress_mpa", "frequency_at_max_hz", "total_mass_kg",
+                  "messenger_curvature_max_per_m", "shortest_life_years", "converged", "feasible"]
+DESIGN_STAGES = ("base", "sample", "polish")
+LIFE_CAP_YEARS = 1e12  # the search compares an infinite life as this (design/study.cpp)
+
+
+class Designs:
+    """A design CSV (stockbridge design -o): per candidate its stage, run, variables,
+    objective and whether it converged and is feasible; the objective's kind (max_stress:
+    smaller is better, life: larger) from which column it repeats; the best candidate as
+    the search chooses it (the first feasible one with the best objective)."""
+
+    def __init__(self, path):
+        table = Table(path)
+        self.path = path
+        header = table.header
+        for name in ["stage", "run"] + DESIGN_FIGURES:
+            if name not in table:
+                raise PlotError(f"{path}: missing column '{name}': expected a design CSV (stockbridge design -o)")
+        start, end = header.index("run") + 1, header.index("objective")
+        self.variables = header[start:end]
+        if header[0] != "stage" or not self.variables or header[end:] != DESIGN_FIGURES:
+            raise PlotError(f"{path}: expected the columns stage, run, the variables, {', '.join(DESIGN_FIGURES)} "
+                            "in this order (a design CSV)")
+        self.stage = table.text("stage")
+        for i, stage in enumerate(self.stage):
+            if stage not in DESIGN_STAGES:
+                raise PlotError(f"{path}:{table.rows[i][0]}: stage = '{stage}': expected base, sample or polish")
+        self.converged = self._flags(table, "converged")
+        self.feasible = self._flags(table, "feasible")
+        for i, (ok, feasible) in enumerate(zip(self.converged, self.feasible)):
+            if feasible and not ok:
+                raise PlotError(f"{path}:{table.rows[i][0]}: feasible = 1 but converged = 0: expected a feasible "
+                                "candidate to have converged")
+        self.run = table.required("run")
+        self.x = {name: table.required(name) for name in self.variables}
+        good = [i for i, ok in enumerate(self.converged) if ok]
+        if not good:
+            raise PlotError(f"{path}: no converged candidate to plot (converged = 0 in every row)")
+        self.objective = table.column("objective", infinite=True)  # an infinite life is a result
+        for i in good:
+            if math.isnan(self.objective[i]):
+                raise PlotError(f"{path}:{table.rows[i][0]}: column 'objective' is empty: expected a number "
+                                "(converged = 1)")
+        self.life = self._is_life(table, good)
+        self.best = self._best()
+
+    @staticmethod
+    def _flags(table, name):
+        values = table.required(name)
+        for i, v in enumerate(values):
+            if v not in (0.0, 1.0):
+                raise PlotError(f"{table.path}:{table.rows[i][0]}: {name} = {v:g}: expected 0 or 1")
+        return [v == 1.0 for v in values]
+
+    def _is_life(self, table, good):
+        """Whether the objective is the shortest life (else the stress ratio), by the column it repeats."""
+        for name, life in (("shortest_life_years", True), ("max_stress_ratio", False)):
+            values = table.column(name, infinite=life)
+            if all(values[i] == self.objective[i] for i in good):
+                return life
+        raise PlotError(f"{self.path}: objective is neither max_stress_ratio nor shortest_life_years: expected a "
+                        "design CSV")
+
+    def _best(self):
+        feasible = [i for i, ok in enumerate(self.feasible) if ok]
+        if not feasible:
+            return None
+        if self.life:
+            return max(feasible, key=lambda i: min(self.objective[i], LIFE_CAP_YEARS))
+        return min(feasible, key=lambda i: self.objective[i])
+
+    def candidate(self, i):
+        """A candidate's name: base, sample 12 or polish 1."""
+        return self.stage[i] if self.stage[i] == "base" else f"{self.stage[i]} {self.run[i]:g}"
+
+    def objective_label(self):
+        return "shortest life (years)" if self.life else "largest stress / endurance limit"
+
+
+def design_groups(designs):
+    """(label, rows, marker style) of the candidates drawn: the samples and the polishes,
+    each feasible (filled) and infeasible (hollow), and the base (a black square)."""
+    groups = []
+    for stage, name, colour, marker, size in (("sample", "samples", "C0", "o", 5), ("polish", "polishes", "C1", "D", 5),
+                                              ("base", "base", "black", "s", 7)):
+        for feasible in (True, False):
+            rows = [i for i, s in enumerate(designs.stage) if s == stage and designs.converged[i]
+                    and designs.feasible[i] == feasible]
+            label = f"{name}, {'feasible' if feasible else 'infeasible'}"
+            style = {"marker": marker, "color": colour, "markersize": size, "markeredgewidth": 1.0,
+                     "markerfacecolor": colour if feasible else "none", "linestyle": "none"}
+            groups.append((label, rows, style))
+    return groups
+
+
+def draw_points(axis, x, y, label, style, top_marker="^"):
+    """Markers at (x, y); an infinite y (an infinite life) is drawn at the panel's top
+    edge, as an upward triangle unless `top_marker` says otherwise."""
+    finite_rows = [k for k, v in enumerate(y) if math.isfinite(v)]
+    top_rows = [k for k, v in enumerate(y) if v == math.inf]
+    if finite_rows or not top_rows:
+        axis.plot([x[k] for k in finite_rows], [y[k] for k in finite_rows], label=label, **style)
+        label = None
+    if top_rows:
+        axis.plot([x[k] for k in top_rows], [0.97] * len(top_rows), transform=axis.get_xaxis_transform(),
+                  clip_on=False, label=label, **dict(style, marker=top_marker))
+
+
+def design_figure(path):
+    """The objective of every candidate over each variable, one panel per variable
+    (sharing the objective's axis): samples (blue circles) and polishes (orange
+    diamonds), feasible filled and infeasible hollow, the base a black square, the best
+    candidate a red star; candidates that did not converge as red crosses along the
+    bottom; the legend in a panel of its own when there is room."""
+    designs = Designs(path)
+    n = len(designs.variables)
+    cells = n + 1 if n > 1 else 1
+    columns = 1 if cells == 1 else 2 if cells <= 4 else 3
+    rows = -(-cells // columns)
+    figure, axes = plt.subplots(rows, columns, figsize=FIGURE_SIZE, squeeze=False, sharey=True, layout="constrained")
+    panels = list(axes.flat)
+    failed = [i for i, ok in enumerate(designs.converged) if not ok]
+    for axis, name in zip(panels, designs.variables):
+        x = designs.x[name]
+        for label, group, style in design_groups(designs):
+            if group:
+                draw_points(axis, [x[i] for i in group], [designs.objective[i] for i in group], label, style)
+        if designs.best is not None:
+            b = designs.best
+            draw_points(axis, [x[b]], [designs.objective[b]], f"best ({designs.candidate(b)})",
+                        {"marker": "*", "color": "C3", "markersize": 16, "markeredgecolor": "black",
+                         "markeredgewidth": 0.8, "linestyle": "none", "zorder": 5}, top_marker="*")
+        if failed:
+            axis.plot([x[i] for i in failed], [0.03] * len(failed), "x", color="red",
+                      transform=axis.get_xaxis_transform(), label="not converged")
+        axis.set_xlabel("position (m)" if name == "position" else name)
+        axis.grid(True, alpha=0.3)
+        few_ticks(axis)
+    for axis in panels[::columns]:
+        axis.set_ylabel(designs.objective_label())
+    values = [v for i, v in enumerate(designs.objective) if designs.converged[i] and math.isfinite(v)]
+    if designs.life and values and min(values) > 0 and max(values) >= 10 * min(values):
+        log_scale(panels[0], "y")  # shared by every panel
+    infinite = any(v == math.inf for v in designs.objective)
+    if infinite and values:  # room above the finite values for the infinite ones at the top
+        low, high = panels[0].get_ylim()
+        panels[0].set_ylim(low, high * (high / low) ** 0.15 if panels[0].get_yscale() == "log"
+                           else high + 0.15 * (high - low))
+    handles, labels = panels[0].get_legend_handles_labels()
+    if len(panels) > n:
+        panels[n].legend(handles, labels, loc="center", fontsize="small")
+        panels[n].axis("off")
+        for axis in panels[n + 1:]:
+            axis.set_visible(False)
+    else:
+        panels[0].legend(fontsize="small")
+    b = designs.best
+    best = "no feasible candidate" if b is None else \
+        f"best {designs.candidate(b)}, {designs.objective_label().split(' (')[0]} = " + \
+        ("infinite" if designs.objective[b] == math.inf else f"{designs.objective[b]:.4g}")
+    note = ", infinite lives at the top" if infinite else ""
+    figure.suptitle(f"Design candidates ({path}): {best}{note}", fontsize="medium")
+    return figure
+
+
+def plot_design(path, output):
+    save(design_figure(path), output)
+
+
 # ---------------------------------------------------------------- command line
 
 class Parser(argparse.ArgumentParser):
@@ -433,7 +613,9 @@ def parser():
     impedance.add_argument("--power", action="store_true", help="add a panel: dissipated power Re Z V^2 / 2")
     for name, text in (("loop", "hysteresis loops of a cycle, response or loop file"),
                        ("fit", "measured and fitted loops (identify ... --fitted)"),
-                       ("span", "amplitude and fymax stress over frequency, damped and undamped, of a span CSV")):
+                       ("span", "amplitude and fymax stress over frequency, damped and undamped, of a span CSV"),
+                       ("design", "objective over each variable of a design CSV: feasible, infeasible, polished, "
+                        "best")):
         command = commands.add_parser(name, help=text)
         command.add_argument("csv")
         command.add_argument("-o", "--output", required=True)
@@ -449,6 +631,8 @@ def run(args):
         plot_loop(args.csv, args.output)
     elif args.command == "span":
         plot_span(args.csv, args.output)
+    elif args.command == "design":
+        plot_design(args.csv, args.output)
     else:
         plot_fit(args.csv, args.output)
 

@@ -12,9 +12,9 @@
 namespace stockbridge::requests {
 
 void validate(const DesignRequest& request) {
-  if (request.samples) require_in_range("--samples", *request.samples, 1, 1000000);
-  if (request.polish) require_in_range("--polish", *request.polish, 0, 10000);
-  require_in_range("--threads", request.threads, 1, 256);
+  if (request.samples) require_in_range("samples", *request.samples, 1, 1000000);
+  if (request.polish) require_in_range("polish", *request.polish, 0, 10000);
+  require_in_range("threads", request.threads, 1, 256);
 }
 
 design::SearchOptions search_options(const design::SearchOptions& file, const DesignRequest& request) {

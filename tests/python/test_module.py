@@ -6,6 +6,7 @@ import csv
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -341,3 +342,95 @@ def test_span_from_text_and_its_errors(tmp_path):
         sb.span()
     with pytest.raises(sb.InvalidParameter, match="optimize_position = 3:0.5"):
         sb.span(SPAN, optimize_position=(3.0, 0.5))
+
+
+DESIGN = os.path.join(SOURCE, "examples", "design_aster570.toml")
+
+
+def tiny_design(folder, **settings):
+    """examples/design_aster570.toml cut to seconds (8 frequencies per band, 3 samples, one
+    short polish; `settings` change more of its top-level keys), written as design.toml
+    next to copies of the damper and span files it reads. Returns its path."""
+    for name in ("sauter2003.toml", "aster570_400m.toml"):
+        shutil.copy(os.path.join(SOURCE, "examples", name), folder / name)
+    text = open(DESIGN).read()
+    for key, value in {"samples": 3, "polish": 1, "polish_evaluations": 4, **settings}.items():
+        text, count = re.subn(rf"^{key} = \S+", f"{key} = {value}", text, flags=re.M)
+        if count == 0:
+            text = f"{key} = {value}\n" + text  # a top-level key: before the tables
+    (folder / "design.toml").write_text("points = 8\n" + text)
+    return folder / "design.toml"
+
+
+@pytest.fixture(scope="module")
+def design_run(tmp_path_factory):
+    """The tiny study run by the program (CSV, --json, best.toml) and by design() on two threads."""
+    folder = tmp_path_factory.mktemp("design")
+    path = tiny_design(folder)
+    out = subprocess.run([CLI, "design", "design.toml", "--json", "--quiet", "-o", "designs.csv", "--best", "best.toml"],
+                         cwd=folder, check=True, capture_output=True, text=True).stdout
+    return folder, json.loads(out), sb.design(path, threads=2)
+
+
+def test_design_returns_the_documented_keys(design_run):
+    folder, _, d = design_run
+    assert d["variables"] == ["arm.left.mass", "arm.left.cable.length", "position"]
+    assert d["columns"][:2] == ["stage", "run"] and d["columns"][2:5] == d["variables"]
+    assert set(d) == set(d["columns"]) | {"columns", "variables", "summary", "best_damper"}
+    documented = documented_keys("design", ["-"])
+    assert "<variable>" in documented
+    assert set(d) == documented - {"<variable>"} | set(d["variables"])
+    n = d["summary"]["evaluations"]
+    assert n == len(d["stage"]) == 1 + 3 + len([s for s in d["stage"] if s == "polish"])
+    assert d["stage"].tolist()[:4] == ["base", "sample", "sample", "sample"]
+    assert d["run"].dtype == np.int64 and d["converged"].dtype == bool and d["feasible"].dtype == bool
+    assert d["objective"].dtype == np.float64 and d["objective"].shape == (n,)
+
+
+def test_design_equals_the_programs_csv_json_and_best_file(design_run):
+    folder, summary, d = design_run
+    rows = read_csv(folder / "designs.csv")
+    assert d["columns"] == list(rows[0].keys())
+    assert d["stage"].tolist() == [row["stage"] for row in rows]
+    for column in d["columns"][1:]:
+        expected = np.array([float(row[column]) if row[column] else np.nan for row in rows])
+        assert np.array_equal(d[column].astype(float), expected, equal_nan=True), column  # exactly: threads change nothing
+    del summary["seconds"]  # the program's wall time
+    assert d["summary"] == dict(summary, threads=2)  # the program ran on one thread
+    assert d["best_damper"] == (folder / "best.toml").read_text()
+
+
+def test_design_summary_names_the_best_feasible_row(design_run):
+    _, _, d = design_run
+    feasible = np.flatnonzero(d["feasible"])
+    assert len(feasible) > 0 and d["summary"]["best"] is not None
+    best = feasible[np.argmin(d["objective"][feasible])]
+    assert d["summary"]["best"]["objective"] == d["objective"][best]
+    assert d["summary"]["best_stage"] == d["stage"][best]
+    assert d["summary"]["best"]["variables"] == {name: d[name][best] for name in d["variables"]}
+    assert d["summary"]["feasible"] == len(feasible) and d["summary"]["objective"] == "max_stress"
+    assert d["summary"]["best"]["objective"] <= d["summary"]["base"]["objective"]
+    assert np.array_equal(d["objective"][d["converged"]], d["max_stress_ratio"][d["converged"]])
+
+
+def test_design_errors_and_warnings(tmp_path):
+    with pytest.raises(sb.InputError, match="none.toml: no such file"):
+        sb.design(tmp_path / "none.toml")
+    path = tiny_design(tmp_path)
+    with pytest.raises(sb.InvalidParameter, match="samples = 0"):
+        sb.design(path, samples=0)
+    with pytest.raises(sb.InvalidParameter, match="threads = 0"):
+        sb.design(path, threads=0)
+    text = path.read_text()
+    (tmp_path / "misspelt.toml").write_text(text.replace('name = "position"', 'name = "positon"'))
+    with pytest.raises(ValueError, match="positon"):
+        sb.design(tmp_path / "misspelt.toml")
+    (tmp_path / "bad.toml").write_text(text.replace("min = 0.5\nmax = 3.0", "min = 3.0\nmax = 0.5"))
+    with pytest.raises(ValueError, match="min"):
+        sb.design(tmp_path / "bad.toml")
+    # A damper value outside the typical ranges: the reader's warning, located; the search still runs.
+    damper = (tmp_path / "sauter2003.toml").read_text().replace("mass = 0.7 ", "mass = 0.01", 1)
+    (tmp_path / "sauter2003.toml").write_text(damper)
+    with pytest.warns(sb.UnusualValueWarning, match=r"sauter2003.toml:8: clamp.mass = 0.01: outside the typical"):
+        d = sb.design(path, samples=1)
+    assert d["stage"].tolist()[:2] == ["base", "sample"]

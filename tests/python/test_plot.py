@@ -4,6 +4,8 @@ exit status 2."""
 
 import csv
 import os
+import re
+import shutil
 import struct
 import subprocess
 import sys
@@ -386,3 +388,99 @@ def test_log_axes_label_values_below_one(span_files):
     assert amplitude.get_yscale() == "log" and labels
     assert all(float(text) > 0 for text in labels), labels
     module.plt.close(figure)
+
+
+# ---------------------------------------------------------------- design
+
+@pytest.fixture(scope="module")
+def design_files(tmp_path_factory):
+    """The design CSV of examples/design_aster570.toml cut to seconds (8 frequencies per
+    band, 3 samples, one polish of at most 4 evaluations)."""
+    d = tmp_path_factory.mktemp("design")
+    for name in ("sauter2003.toml", "aster570_400m.toml"):
+        shutil.copy(os.path.join(SOURCE, "examples", name), d / name)
+    text = open(os.path.join(SOURCE, "examples", "design_aster570.toml")).read()
+    for key, value in (("samples", 3), ("polish", 1), ("polish_evaluations", 4)):
+        text = re.sub(rf"^{key} = \S+", f"{key} = {value}", text, flags=re.M)
+    (d / "design.toml").write_text("points = 8\n" + text)
+    run_cli("design", "design.toml", "--quiet", "-o", "designs.csv", "--best", "best.toml", cwd=d)
+    return d
+
+
+def test_design_plot_writes_a_png(design_files):
+    result = plot("design", "designs.csv", "-o", "design.png", cwd=design_files)
+    assert result.returncode == 0, result.stderr
+    assert os.path.getsize(design_files / "design.png") > 10000
+    assert png_size(design_files / "design.png") == (800, 600)
+
+
+def marker_points(axis, label):
+    """The (x, y) of the markers the axis draws under a legend label."""
+    return [point for line in axis.get_lines() if line.get_label() == label
+            for point in zip(line.get_xdata(), line.get_ydata())]
+
+
+def test_design_plot_draws_each_variable_and_marks_the_best(design_files):
+    module = plot_module()
+    with open(design_files / "designs.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    variables = ["arm.left.mass", "arm.left.cable.length", "position"]
+    figure = module.design_figure(str(design_files / "designs.csv"))
+    panels = [axis for axis in figure.axes if axis.get_visible() and axis.axison]
+    assert [axis.get_xlabel() for axis in panels] == ["arm.left.mass", "arm.left.cable.length", "position (m)"]
+    feasible = [r for r in rows if r["feasible"] == "1"]
+    best = min(feasible, key=lambda r: float(r["objective"]))
+    label = f"best ({best['stage']} {best['run']})" if best["stage"] != "base" else "best (base)"
+    for axis, name in zip(panels, variables):
+        assert marker_points(axis, label) == [(float(best[name]), float(best["objective"]))]
+        drawn = sorted(p for line in axis.get_lines() if line.get_label().split(" ")[0] not in ("best", "not")
+                       for p in zip(line.get_xdata(), line.get_ydata()))
+        assert drawn == sorted((float(r[name]), float(r["objective"])) for r in rows if r["converged"] == "1")
+        for line in axis.get_lines():  # feasible filled, infeasible hollow
+            if "infeasible" in line.get_label():
+                assert line.get_markerfacecolor() == "none"
+            elif "feasible" in line.get_label():
+                assert line.get_markerfacecolor() != "none"
+    labels = [line.get_label() for line in panels[0].get_lines()]
+    assert any(label.startswith("polishes") for label in labels)  # the polish stage has its own markers
+    legend = [text.get_text() for axis in figure.axes for text in (axis.get_legend().get_texts() if axis.get_legend() else [])]
+    assert label in legend and ("base, feasible" in legend or "base, infeasible" in legend)
+    module.plt.close(figure)
+
+
+DESIGN_HEADER = ("stage,run,position,objective,max_stress_ratio,max_stress_mpa,frequency_at_max_hz,total_mass_kg,"
+                 "messenger_curvature_max_per_m,shortest_life_years,converged,feasible\n")
+
+
+def test_design_plot_of_a_life_study_draws_infinite_lives_at_the_top(tmp_path):
+    (tmp_path / "life.csv").write_text(DESIGN_HEADER + "base,0,1.5,40,0.9,8,12,2.4,0.2,40,1,1\n"
+                                       "sample,0,0.7,inf,0.4,3,20,2.4,0.1,inf,1,1\n"
+                                       "sample,1,2.2,3000,0.7,6,15,2.4,0.3,3000,1,1\n"
+                                       "sample,2,2.5,,,,,2.4,,,0,0\n")
+    result = plot("design", "life.csv", "-o", "life.png", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    module = plot_module()
+    figure = module.design_figure(str(tmp_path / "life.csv"))
+    axis = figure.axes[0]
+    assert axis.get_ylabel() == "shortest life (years)" and axis.get_yscale() == "log"
+    assert marker_points(axis, "best (sample 0)") == [(0.7, 0.97)]  # the infinite life, at the top (axes units)
+    assert marker_points(axis, "not converged") == [(2.5, 0.03)]
+    assert "infinite lives at the top" in figure._suptitle.get_text()
+    module.plt.close(figure)
+
+
+@pytest.mark.parametrize("contents,mention", [
+    ("stage,run,objective,converged,feasible\nbase,0,1,1,1\n", "missing column"),
+    (DESIGN_HEADER, "no data rows"),
+    (DESIGN_HEADER + "base,0,1.5,,,,,2.4,,,0,0\n", "no converged candidate to plot"),
+    (DESIGN_HEADER + "start,0,1.5,0.9,0.9,8,12,2.4,0.2,,1,1\n", "stage = 'start'"),
+    (DESIGN_HEADER + "base,0,1.5,0.9,0.9,8,12,2.4,0.2,,1,2\n", "feasible = 2"),
+    (DESIGN_HEADER + "base,0,1.5,0.9,0.9,8,12,2.4,0.2,,0,1\n", "feasible = 1 but converged = 0"),
+    (DESIGN_HEADER + "base,0,,0.9,0.9,8,12,2.4,0.2,,1,1\n", "'position' is empty"),
+    (DESIGN_HEADER + "base,0,1.5,0.5,0.9,8,12,2.4,0.2,,1,1\n", "neither max_stress_ratio nor shortest_life_years"),
+    (DESIGN_HEADER + "base,0,1.5,abc,0.9,8,12,2.4,0.2,,1,1\n", "'abc'"),
+    (DESIGN_HEADER.replace("run,position,", "run,") + "base,0,0.9,0.9,8,12,2.4,0.2,,1,1\n", "the variables")])
+def test_design_bad_files_get_one_line_and_exit_two(tmp_path, contents, mention):
+    (tmp_path / "bad.csv").write_text(contents)
+    result = plot("design", "bad.csv", "-o", "bad.png", cwd=tmp_path)
+    assert_bad(result, tmp_path, "bad.png", mention, "bad.csv")

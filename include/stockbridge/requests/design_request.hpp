@@ -19,7 +19,9 @@ struct DesignRequest {
   int threads = 1;             ///< candidates evaluated at once (per process)
 };
 
-/// InvalidParameter naming "--samples", "--polish" or "--threads".
+/// InvalidParameter naming "samples", "polish" or "threads" (the command's
+/// --samples, --polish and --threads, Python's keywords), as the other requests
+/// name their settings.
 void validate(const DesignRequest& request);
 /// The file's search options with the request's changes.
 design::SearchOptions search_options(const design::SearchOptions& file, const DesignRequest& request);
