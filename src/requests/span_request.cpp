@@ -98,6 +98,8 @@ void validate(const SpanRequest& request) {
 span::BalanceOptions balance_options(const SpanRequest& request) {
   span::BalanceOptions options;
   options.damper_model = span::parse_damper_model(request.damper_model);
+  // A position search compares positions on the tables alone: the finer table.
+  if (request.position_min) options.table = span::ImpedanceTableOptions::position_search();
   options.table.threads = request.threads;
   options.validate();
   return options;

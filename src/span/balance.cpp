@@ -160,10 +160,10 @@ class FrequencyBalance {
     wave_.wavenumber = wavenumber(c, span.tension(), frequency);
     wave_.wave_impedance = wave_impedance(c, span.tension());
     last_velocities_.resize(layouts_.size());
-    offsets_.resize(layouts_.size());
+    fixed_.resize(layouts_.size());
     curvatures_.resize(layouts_.size());
     for (std::size_t e = 0; e < layouts_.size(); ++e) {
-      offsets_[e].assign(layouts_[e].positions.size(), 0.0);
+      fixed_[e].resize(layouts_[e].positions.size());
       curvatures_[e].assign(layouts_[e].positions.size(), kNaN);
     }
   }
@@ -181,9 +181,8 @@ class FrequencyBalance {
     for (std::size_t e = 0; e < layouts_.size(); ++e) {
       const EndLayout& layout = layouts_[e];
       const ClampImpedance z = [&](std::size_t j, double v) -> std::optional<std::complex<double>> {
-        const auto table = tables_[layout.damper[j]].at(index_, v);
-        if (!table) return std::nullopt;
-        return *table + offsets_[e][j];
+        if (fixed_[e][j]) return fixed_[e][j];
+        return tables_[layout.damper[j]].at(index_, v);
       };
       EndSolution s = options_.damper_model == DamperModel::travelling
                           ? solve_end(wave_, layout.positions, z, y, options_.fixed_point, last_velocities_[e])
@@ -203,26 +202,21 @@ class FrequencyBalance {
   const StringWave& wave() const { return wave_; }
   const std::vector<EndLayout>& layouts() const { return layouts_; }
 
-  /// Per end and damper, Z_direct - Z_table at the last directly solved velocity.
-  const std::vector<std::vector<std::complex<double>>>& offsets() const { return offsets_; }
-  void set_offsets(std::vector<std::vector<std::complex<double>>> offsets) { offsets_ = std::move(offsets); }
   /// The ends' fixed points start again from the undamped velocities (not the last
   /// amplitude's): a scan over the amplitudes then gives the same balance each time.
   void restart_fixed_points() {
     for (auto& v : last_velocities_) v.clear();
   }
-  void clear_offsets() {
-    for (auto& end : offsets_) std::fill(end.begin(), end.end(), 0.0);
+  /// Back to the tables' impedances (the polish's fixed ones dropped).
+  void release() {
+    for (auto& end : fixed_) std::fill(end.begin(), end.end(), std::nullopt);
   }
 
-  /// Makes damper j of end e's impedance the directly solved one at clamp velocity
-  /// v (the table's shape kept, shifted by the difference there).
-  bool correct(std::size_t e, std::size_t j, double v, const damper::ImpedancePoint& direct) {
-    const auto table = tables_[layouts_[e].damper[j]].at(index_, v);
-    if (!table) return false;
-    offsets_[e][j] = direct.impedance - *table;
+  /// Makes damper j of end e's impedance the directly solved one `direct`, whatever
+  /// its clamp velocity (the polish's trial: the balance with these impedances).
+  void fix(std::size_t e, std::size_t j, const damper::ImpedancePoint& direct) {
+    fixed_[e][j] = direct.impedance;
     curvatures_[e][j] = direct.messenger_curvature_max;
-    return true;
   }
   /// Damper j of end e's messenger curvature from its last direct solve (NaN: none).
   double messenger_curvature(std::size_t e, std::size_t j) const { return curvatures_[e][j]; }
@@ -260,7 +254,8 @@ class FrequencyBalance {
   std::vector<EndLayout> layouts_;
   StringWave wave_;
   std::vector<std::vector<double>> last_velocities_;
-  std::vector<std::vector<std::complex<double>>> offsets_;  ///< per end and damper: Z_direct - Z_table at the last v*
+  /// Per end and damper: the impedance fixed by the polish (none: the table's at v).
+  std::vector<std::vector<std::optional<std::complex<double>>>> fixed_;
   std::vector<std::vector<double>> curvatures_;  ///< per end and damper: the last direct solve's messenger curvature
 };
 
@@ -349,35 +344,31 @@ std::vector<std::vector<double>> velocities_of(const EndsAtAmplitude& at) {
   return v;
 }
 
-/// Defect correction (BalanceOptions::polish) as a root in the clamp velocities: at
-/// trial velocities v, each damper is solved directly there and its table shifted to
-/// that value; the balance with these impedances gives velocities G(v). The root of
-/// h(u) = log G(v) - u, u = log v, is found by the secant method for each damper
-/// (plain substitution oscillates where the table's slope in v is far off: a
-/// resonance passing the frequency). At the root every damper's Z is the directly
-/// solved one at its own clamp velocity.
+/// The polish (BalanceOptions::polish): the balance found on the tables refined with
+/// each damper's impedance solved directly. At trial clamp velocities v, each
+/// damper is solved directly there (Z_j = Z(v_j)) and the span balanced with these
+/// impedances held fixed: the smallest stable amplitude of P_w - P_s - P_d with
+/// constant impedances (a smooth function of them: no fixed point in v, no table),
+/// whose dampers move at velocities G(v). The root of h(u) = log G(v) - u, u = log v,
+/// is found by the secant method for each damper, bracketed. At the root every
+/// damper's Z is the directly solved one at its own clamp velocity.
 ///
 /// Along the band, each damper is followed by harmonic balance solved from its last
-/// solution (the trials of one frequency, then the next frequency's): a few Newton
-/// steps each, where a cold start takes many. And one frequency's polish hands the
-/// next its tables' shifts and the secant's slopes, which vary smoothly along the
-/// band: the next starts near its solution.
+/// solution (a DamperTracker; every trial of one frequency from that frequency's
+/// first solution, so that Z is a function of v even where two steady states of
+/// the damper coexist), the first trial is the line through the last two
+/// frequencies' solutions in (log f, log v) and the secant starts with the last
+/// frequency's slope: a few direct solves a frequency.
 class Polisher {
  public:
   Polisher(const Span& span, const BalanceOptions& options) : span_(span), options_(options) {
     for (const SpanDamper& d : span.dampers()) trackers_.emplace_back(d.damper, options.table.solver);
   }
 
-  /// Shifts a frequency's tables as the last polished frequency's were.
-  void prepare(FrequencyBalance& balance) const {
-    if (!offsets_.empty()) balance.set_offsets(offsets_);
-  }
-
   /// The balance amplitude with directly solved impedances, from the tables' one, y.
   std::optional<double> run(FrequencyBalance& balance, double y, std::string& failure);
   /// Drops what the last frequencies handed on (after a failure: it may mislead).
   void forget() {
-    offsets_.clear();
     slopes_.clear();
     history_.clear();
   }
@@ -389,15 +380,16 @@ class Polisher {
   }
 
  private:
-  bool correct_at_velocities(FrequencyBalance& balance, const std::vector<std::vector<double>>& velocities,
-                             std::string& failure);
+  bool solve_at_velocities(FrequencyBalance& balance, const std::vector<std::vector<double>>& velocities,
+                           std::string& failure);
+  /// The first trial velocities (log) of a frequency: from the last two, else `u`.
+  void first_trial(double log_f, std::vector<std::vector<double>>& u) const;
 
   const Span& span_;
   const BalanceOptions& options_;
   std::vector<damper::DamperTracker> trackers_;  ///< one per damper of the span
   std::vector<std::optional<damper::DamperTracker::Checkpoint>> anchors_;  ///< per damper: this frequency's first solution
-  std::vector<std::vector<std::complex<double>>> offsets_;  ///< the last polished frequency's, per end and damper
-  std::vector<std::vector<double>> slopes_;  ///< dh/du there, per end and damper (NaN: unknown)
+  std::vector<std::vector<double>> slopes_;  ///< dh/du at the last solution, per end and damper (NaN: unknown)
   struct Solution {
     double log_f;
     std::vector<std::vector<double>> u;  ///< log v* per end and damper
@@ -405,9 +397,9 @@ class Polisher {
   std::vector<Solution> history_;  ///< the frequencies polished
 };
 
-/// Solves every damper directly at its clamp velocity and shifts its table there.
-bool Polisher::correct_at_velocities(FrequencyBalance& balance, const std::vector<std::vector<double>>& velocities,
-                                     std::string& failure) {
+/// Solves every damper directly at its clamp velocity and fixes its impedance there.
+bool Polisher::solve_at_velocities(FrequencyBalance& balance, const std::vector<std::vector<double>>& velocities,
+                                   std::string& failure) {
   const double f = balance.wave().angular_frequency / (2.0 * std::numbers::pi);
   struct Solved {
     std::size_t damper;
@@ -423,50 +415,46 @@ bool Polisher::correct_at_velocities(FrequencyBalance& balance, const std::vecto
         return s.damper == which && std::abs(s.velocity - v) <= 1e-12 * v;
       });
       if (known == solved.end()) {
-        // Every trial of a frequency from the same start, its first solution: near a
-        // fold of the damper's response the state reached depends on the path, and
-        // the secant needs Z as a function of v.
         damper::DamperTracker& tracker = trackers_[which];
         if (anchors_[which]) tracker.restore(*anchors_[which]);
         const damper::ImpedancePoint direct = tracker.solve(damper::Excitation::from_velocity(f, v));
-        if (!anchors_[which] && direct.converged()) anchors_[which] = tracker.checkpoint();
         if (!direct.converged()) {
           failure = fmt::format("end {}, damper {} solved directly at {:.4g} m/s: {}", e + 1, j + 1, v, direct.failure);
           return false;
         }
+        if (!anchors_[which]) anchors_[which] = tracker.checkpoint();
         known = solved.insert(solved.end(), Solved{which, v, direct});
       }
-      if (!balance.correct(e, j, v, known->point)) {
-        failure = fmt::format("end {}, damper {}: the table has no impedance near {:.4g} m/s", e + 1, j + 1, v);
-        return false;
-      }
+      balance.fix(e, j, known->point);
     }
   }
   return true;
 }
 
+void Polisher::first_trial(double log_f, std::vector<std::vector<double>>& u) const {
+  if (history_.size() < 2 || history_.back().u.size() != u.size()) return;
+  const Solution& a = history_[history_.size() - 2];
+  const Solution& b = history_.back();
+  const double t = (log_f - b.log_f) / (b.log_f - a.log_f);
+  for (std::size_t e = 0; e < u.size(); ++e) {
+    for (std::size_t j = 0; j < u[e].size(); ++j) u[e][j] = b.u[e][j] + t * (b.u[e][j] - a.u[e][j]);
+  }
+}
+
 std::optional<double> Polisher::run(FrequencyBalance& balance, const double y, std::string& failure) {
   if (y <= 0.0) return y;  // nothing builds up: the dampers stand still
-  anchors_.assign(trackers_.size(), std::nullopt);
   const EndsAtAmplitude first = balance.dampers(y);
   if (!first.known) {
     failure = first.failure;
     return std::nullopt;
   }
+  anchors_.assign(trackers_.size(), std::nullopt);
   std::vector<std::vector<double>> u = velocities_of(first), u_prev, h_prev;
   for (auto& end : u) {
     for (double& x : end) x = std::log(x);
   }
   const double log_f = std::log(balance.wave().angular_frequency);
-  if (history_.size() >= 2 && history_.back().u.size() == u.size()) {
-    // The first trial: the last two solutions' line in (log f, log v).
-    const Solution& a = history_[history_.size() - 2];
-    const Solution& b = history_.back();
-    const double t = (log_f - b.log_f) / (b.log_f - a.log_f);
-    for (std::size_t e = 0; e < u.size(); ++e) {
-      for (std::size_t j = 0; j < u[e].size(); ++j) u[e][j] = b.u[e][j] + t * (b.u[e][j] - a.u[e][j]);
-    }
-  }
+  first_trial(log_f, u);
   if (slopes_.size() != u.size()) {
     slopes_ = u;
     for (auto& end : slopes_) std::fill(end.begin(), end.end(), kNaN);
@@ -482,7 +470,7 @@ std::optional<double> Polisher::run(FrequencyBalance& balance, const double y, s
     for (auto& end : v) {
       for (double& x : end) x = std::exp(x);
     }
-    if (!correct_at_velocities(balance, v, failure)) return std::nullopt;
+    if (!solve_at_velocities(balance, v, failure)) return std::nullopt;
     const auto next = balanced_amplitude(span_, balance, options_, failure);
     if (!next) return std::nullopt;
     if (*next <= 0.0) return *next;  // with the direct impedances nothing builds up
@@ -516,7 +504,6 @@ std::optional<double> Polisher::run(FrequencyBalance& balance, const double y, s
       }
     }
     if (worst <= options_.polish_tolerance) {
-      offsets_ = balance.offsets();
       history_.push_back({log_f, u});
       return *next;
     }
@@ -538,7 +525,6 @@ BalancePoint balance_at(const Span& span, std::size_t i, double f, const std::ve
   p.wavelength = wavelength(span.conductor(), span.tension(), f);
   fill_undamped(span, f, p);
   FrequencyBalance balance(span, i, f, tables, options);
-  if (polisher) polisher->prepare(balance);
   std::string failure;
   auto y = balanced_amplitude(span, balance, options, failure);
   if (y && polisher) {
@@ -547,10 +533,9 @@ BalancePoint balance_at(const Span& span, std::size_t i, double f, const std::ve
     if (!y) {
       // Once more from the tables alone, without what earlier frequencies handed on.
       polisher->forget();
-      balance.clear_offsets();
+      balance.release();
       failure.clear();
-      y = balanced_amplitude(span, balance, options, failure);
-      if (y) y = polisher->run(balance, *y, failure);
+      y = polisher->run(balance, from_tables, failure);
     }
   }
   if (!y) {

@@ -17,6 +17,13 @@ void ImpedanceTableOptions::validate() const {
   solver.validate();
 }
 
+ImpedanceTableOptions ImpedanceTableOptions::position_search() {
+  ImpedanceTableOptions options;
+  options.velocities = 25;
+  options.column_ratio = 1.2;
+  return options;
+}
+
 namespace {
 
 /// Fritsch-Carlson slope at an interior node of one real component: zero at a local

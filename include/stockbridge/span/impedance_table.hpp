@@ -20,15 +20,22 @@ namespace stockbridge::span {
 struct ImpedanceTableOptions {
   double velocity_min = 1e-3;  ///< m/s, lowest node
   double velocity_max = 3.0;   ///< m/s, highest node
-  int velocities = 25;         ///< log-spaced nodes, >= 2
+  /// Log-spaced nodes, >= 2. The polished balance takes only its start from the
+  /// table (docs/span.md): a coarse one serves it; a balance on the table alone
+  /// (the position search) wants a finer one (position_search()).
+  int velocities = 9;
   /// The frequencies solved (columns) lie at most this factor apart (the first and
   /// last always solved; 1 solves every frequency); between them Z is interpolated
   /// linearly in log f.
-  double column_ratio = 1.2;
+  double column_ratio = 1.5;
   damper::SolverOptions solver;
   int threads = 1;
 
   void validate() const;
+  /// The finer table a balance on the table alone wants: 25 velocities, columns at
+  /// most a factor 1.2 apart (Z within a few percent of the direct solution away
+  /// from the damper's resonances: docs/span.md).
+  static ImpedanceTableOptions position_search();
 };
 
 class ImpedanceTable {
