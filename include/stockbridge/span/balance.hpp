@@ -8,7 +8,9 @@
 // (vibration builds up from rest). Each end's P_d comes from the travelling-wave
 // model with every damper's impedance at its own clamp velocity (a fixed point,
 // end_fixed_point.hpp), or from the weak-damper form. The dampers' impedances come
-// from an ImpedanceTable per damper, solved once for the band. Then the stresses at
+// from an ImpedanceTable per damper, solved once for the band, then (the polish)
+// from harmonic balance solved directly at each damper's clamp velocity, followed
+// along the band (damper::DamperTracker). Then the stresses at
 // the span clamp (fymax, Poffenberger-Swart) and at each damper clamp, and the
 // endurance limit of the Safe Border Line.
 
@@ -89,12 +91,12 @@ struct BalanceOptions {
   ImpedanceTableOptions table;
   FixedPointOptions fixed_point;
   RootSearchOptions root;
-  /// Polish with harmonic balance solved directly: each damper's table is shifted
-  /// to Z_direct(v) at a trial clamp velocity v and the balance solved again; the
-  /// velocities that reproduce themselves are found by the secant method in log v,
-  /// to `polish_tolerance`; then every damper's Z is the directly solved one at its v*.
-  /// Without it the table's interpolation error stands (up to tens of percent in Z
-  /// where a resonance passes the frequency as v grows: docs/span.md).
+  /// Polish with harmonic balance solved directly: at trial clamp velocities v each
+  /// damper is solved directly and the span balanced with those impedances held
+  /// fixed; the velocities that reproduce themselves are found by the secant method
+  /// in log v, to `polish_tolerance`; then every damper's Z is the directly solved
+  /// one at its v*. Without it the table's interpolation error stands (up to tens of
+  /// percent in Z where a resonance passes the frequency as v grows: docs/span.md).
   bool polish = true;
   double polish_tolerance = 1e-6;
   int max_polish_iterations = 60;
