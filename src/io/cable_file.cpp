@@ -127,15 +127,19 @@ std::string cable_table_toml(const cable::CableDescription& c) {
   return text;
 }
 
-std::string cable_file_toml(const cable::CableDescription& description, std::string_view comment) {
+std::string toml_comment_lines(std::string_view comment) {
   std::string text;
   std::size_t start = 0;
-  while (start < comment.size()) {  // every comment line as a TOML comment
+  while (start < comment.size()) {
     const std::size_t end = std::min(comment.find('\n', start), comment.size());
     text += fmt::format("# {}\n", comment.substr(start, end - start));
     start = end + 1;
   }
-  return text + "[cable]\n" + cable_table_toml(description);
+  return text;
+}
+
+std::string cable_file_toml(const cable::CableDescription& description, std::string_view comment) {
+  return toml_comment_lines(comment) + "[cable]\n" + cable_table_toml(description);
 }
 
 }  // namespace stockbridge::io

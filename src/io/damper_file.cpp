@@ -168,13 +168,7 @@ std::string toml_escaped(std::string_view text) {
 }  // namespace
 
 std::string damper_file_toml(const damper::DamperDescription& description, std::string_view comment) {
-  std::string text;
-  std::size_t start = 0;
-  while (start < comment.size()) {  // every comment line as a TOML comment
-    const std::size_t end = std::min(comment.find('\n', start), comment.size());
-    text += fmt::format("# {}\n", comment.substr(start, end - start));
-    start = end + 1;
-  }
+  std::string text = toml_comment_lines(comment);
   text += fmt::format("\n[clamp]\nmass = {}   # kg\n", format_value(description.clamp_mass));
   for (const damper::ArmDescription& arm : description.arms) {
     text += "\n[[arm]]\n";
