@@ -389,9 +389,10 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
 /// order: the base, the samples, the polishes), its --json summary as JSON text (the
 /// package's design() parses it into a dict) and best.toml's text (None when no
 /// candidate is feasible).
-py::dict design_search(const std::string& path, std::optional<int> samples, int threads) {
+py::dict design_search(const std::string& path, std::optional<int> samples, std::optional<int> polish, int threads) {
   requests::DesignRequest request;
   request.samples = samples;
+  request.polish = polish;
   request.threads = threads;
   requests::validate(request);
   const io::DesignFile file = io::load_design_file(path);
@@ -434,9 +435,10 @@ py::dict design_search(const std::string& path, std::optional<int> samples, int 
   std::vector<std::string> variables;
   for (const design::DesignVariable& v : file.study.variables()) variables.push_back(v.name);
   out["variables"] = variables;
-  // The command's --json adds the same three (and its wall time, which Python leaves out).
+  // The command's --json adds the same four (and its wall time, which Python leaves out).
   out["summary_json"] = requests::design_summary(file.study, *result)
                             .add("samples", options.samples)
+                            .add("polish", options.polish)
                             .add("ranks", 1)
                             .add("threads", threads)
                             .str();
@@ -593,7 +595,8 @@ PYBIND11_MODULE(_core, m) {
         py::arg("optimize_position") = py::none(), py::arg("threads") = 1,
         "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
         "'converged', 'termination', 'messages', 'dampers', 'columns' and the --json summary as 'summary_json'.");
-  m.def("_design", &design_search, py::arg("file"), py::arg("samples") = py::none(), py::arg("threads") = 1,
+  m.def("_design", &design_search, py::arg("file"), py::arg("samples") = py::none(), py::arg("polish") = py::none(),
+        py::arg("threads") = 1,
         "A design study's search (stockbridge.design wraps it): the design CSV's columns as arrays, 'stage', "
         "'columns', 'variables', the --json summary as 'summary_json' and best.toml's text as 'best_damper'.");
   m.def("modes", &modes, py::arg("damper"),

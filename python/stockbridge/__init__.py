@@ -102,11 +102,11 @@ def span(file=None, frequencies=None, points=100, no_dampers=False, damper_model
     return out
 
 
-def design(file, samples=None, threads=1):
+def design(file, samples=None, polish=None, threads=1):
     """The search for the best damper of a design study, as ``stockbridge design``: a
     design file's path (`file`; its damper and span files relative to it);
-    `samples` space-filling candidates instead of the file's; `threads` candidates
-    evaluated at once.
+    `samples` space-filling candidates and `polish` local polishes instead of the
+    file's; `threads` candidates evaluated at once.
 
     Returns a dict: one array per column of the design CSV, by the CSV's names (one
     value per candidate in the CSV's order: the base, the samples, the polishes;
@@ -115,7 +115,7 @@ def design(file, samples=None, threads=1):
     order), 'variables' (the variables' names, their columns), 'summary' (the --json
     summary's keys, None where the JSON has null) and 'best_damper': the text of the
     --best damper file, None when no candidate is feasible."""
-    out = _design(file=str(file), samples=samples, threads=threads)
+    out = _design(file=str(file), samples=samples, polish=polish, threads=threads)
     out["stage"] = numpy.array(out["stage"], dtype=str)
     out["summary"] = json.loads(out.pop("summary_json"))
     return out
