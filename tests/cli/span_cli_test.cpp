@@ -71,7 +71,7 @@ Csv read_csv(const std::filesystem::path& path) {
 }
 
 /// The number after "key": in a JSON text (NaN for null or a missing key).
-double json_number(const std::string& json, const std::string& key) {
+double span_json_number(const std::string& json, const std::string& key) {
   const std::size_t at = json.find("\"" + key + "\": ");
   if (at == std::string::npos) {
     ADD_FAILURE() << "no key " << key << " in " << json;
@@ -141,15 +141,15 @@ TEST(SpanCli, JsonSummaryHasEveryKey) {
       << r.out;
   EXPECT_NE(r.out.find("\"position_optimized\": false"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"failed\": []"), std::string::npos) << r.out;
-  EXPECT_EQ(json_number(r.out, "position_m"), 1.0);
-  EXPECT_LT(json_number(r.out, "max_stress_fymax_mpa"), json_number(r.out, "undamped_max_stress_fymax_mpa"));
-  EXPECT_GE(json_number(r.out, "life_years"), json_number(r.out, "undamped_life_years"));
-  EXPECT_LT(json_number(r.out, "max_energy_identity_error"), 1e-6);
+  EXPECT_EQ(span_json_number(r.out, "position_m"), 1.0);
+  EXPECT_LT(span_json_number(r.out, "max_stress_fymax_mpa"), span_json_number(r.out, "undamped_max_stress_fymax_mpa"));
+  EXPECT_GE(span_json_number(r.out, "life_years"), span_json_number(r.out, "undamped_life_years"));
+  EXPECT_LT(span_json_number(r.out, "max_energy_identity_error"), 1e-6);
   // The largest stress is the CSV's largest.
   const Csv csv = read_csv(dir / "span.csv");
   double largest = 0.0;
   for (double s : csv.column("stress_fymax_mpa")) largest = std::max(largest, s);
-  EXPECT_NEAR(json_number(r.out, "max_stress_fymax_mpa"), largest, 1e-9 * largest);
+  EXPECT_NEAR(span_json_number(r.out, "max_stress_fymax_mpa"), largest, 1e-9 * largest);
 }
 
 // MODEL.md section 9's undamped check numbers through the program.
@@ -188,11 +188,11 @@ TEST(SpanCli, PositionSearchReportsAndBalancesAtThePositionFound) {
   const CliResult r = run_cli("span '" + kSpanExample + "' --points 8 --optimize-position 0.5:3 --json -o span.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"position_optimized\": true"), std::string::npos) << r.out;
-  const double position = json_number(r.out, "position_m");
+  const double position = span_json_number(r.out, "position_m");
   EXPECT_GE(position, 0.5);
   EXPECT_LE(position, 3.0);
   // 1.0 m (the file's) is one of the scan's positions: the optimum is no worse.
-  EXPECT_LE(json_number(r.out, "max_stress_fymax_mpa"), json_number(at_file.out, "max_stress_fymax_mpa") * (1 + 1e-9));
+  EXPECT_LE(span_json_number(r.out, "max_stress_fymax_mpa"), span_json_number(at_file.out, "max_stress_fymax_mpa") * (1 + 1e-9));
   const CliResult report = run_cli("span '" + kSpanExample + "' --points 8 --optimize-position 0.5:3 -o span2.csv", dir);
   ASSERT_EQ(report.exit_code, 0) << report.err;
   EXPECT_NE(report.out.find("position: "), std::string::npos) << report.out;
