@@ -61,7 +61,7 @@ TEST(CycleCli, ElasticCableReproducesClosedFormsB) {
 }
 
 /// The number after "key": in a JSON text.
-double json_number(const std::string& json, const std::string& key) {
+double cycle_json_number(const std::string& json, const std::string& key) {
   const std::regex pattern("\"" + key + "\": ([-+0-9.eE]+)");
   std::smatch match;
   if (!std::regex_search(json, match, pattern)) {
@@ -117,11 +117,11 @@ TEST(CycleCli, JsonSummaryOfTheShippedCable) {
   const CliResult r = run_cli("cycle '" + cable + "' --experiment a --amplitude 0.03 --json -o c.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const SteadyCycle expected = steady_cycle_a(0.3, 2.8, 20.0, 0.7, 0.03);
-  EXPECT_NEAR(json_number(r.out, R"(force_n": \{"min": [-+0-9.eE]+, "max)"), expected.peak_force,
+  EXPECT_NEAR(cycle_json_number(r.out, R"(force_n": \{"min": [-+0-9.eE]+, "max)"), expected.peak_force,
               2e-4 * expected.peak_force) << r.out;
-  EXPECT_NEAR(json_number(r.out, "last_cycle_dissipation_sliders_j"), expected.dissipated, 1e-3 * expected.dissipated)
+  EXPECT_NEAR(cycle_json_number(r.out, "last_cycle_dissipation_sliders_j"), expected.dissipated, 1e-3 * expected.dissipated)
       << r.out;
-  EXPECT_NEAR(json_number(r.out, "last_cycle_dissipation_loop_j"), expected.dissipated, 1e-3 * expected.dissipated)
+  EXPECT_NEAR(cycle_json_number(r.out, "last_cycle_dissipation_loop_j"), expected.dissipated, 1e-3 * expected.dissipated)
       << r.out;
   EXPECT_NE(r.out.find("\"newton_iterations\": {\"max\": "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"failed_points\": 0"), std::string::npos) << r.out;

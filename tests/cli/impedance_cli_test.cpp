@@ -18,18 +18,9 @@
 namespace stockbridge::testing {
 namespace {
 
-const std::string kExample = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml";
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
 TEST(ImpedanceCli, SweepOfTheShippedExample) {
   const auto dir = scratch_directory("impedance-ok");
-  const CliResult r = run_cli("impedance '" + kExample +
+  const CliResult r = run_cli("impedance '" + kDamperExample +
                                   "' --velocity 0.2,0.05 --fmin 5 --fmax 50 --points 12 --threads 2 --json -o z.csv",
                               dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -83,7 +74,7 @@ TEST(ImpedanceCli, DesignFiguresNamedByTheArms) {
 
 TEST(ImpedanceCli, ExplicitFrequenciesAndConstantDisplacement) {
   const auto dir = scratch_directory("impedance-disp");
-  const CliResult r = run_cli("impedance '" + kExample + "' --displacement 0.001 --frequencies 8,12.5,20 -o z.csv", dir);
+  const CliResult r = run_cli("impedance '" + kDamperExample + "' --displacement 0.001 --frequencies 8,12.5,20 -o z.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto lines = lines_of(read_text(dir / "z.csv"));
   ASSERT_EQ(lines.size(), 4u);
@@ -93,7 +84,7 @@ TEST(ImpedanceCli, ExplicitFrequenciesAndConstantDisplacement) {
 TEST(ImpedanceCli, NonConvergedPointsAreFlaggedAndExitThree) {
   const auto dir = scratch_directory("impedance-fail");
   // One Newton iteration cannot reach the slipping steady state.
-  const CliResult r = run_cli("impedance '" + kExample + "' --velocity 0.2 --frequencies 10,12 --max-iterations 1 -o z.csv", dir);
+  const CliResult r = run_cli("impedance '" + kDamperExample + "' --velocity 0.2 --frequencies 10,12 --max-iterations 1 -o z.csv", dir);
   ASSERT_EQ(r.exit_code, 3) << r.err;
   const auto lines = lines_of(read_text(dir / "z.csv"));
   ASSERT_EQ(lines.size(), 3u);
@@ -133,7 +124,7 @@ TEST(ImpedanceCli, SingularJacobianPointsAreFlaggedNotPrinted) {
 }
 
 /// The number after "key": in a JSON text.
-double json_number(const std::string& json, const std::string& key) {
+double impedance_json_number(const std::string& json, const std::string& key) {
   const std::regex pattern("\"" + key + "\": ([-+0-9.eE]+)");
   std::smatch match;
   if (!std::regex_search(json, match, pattern)) {
@@ -173,16 +164,16 @@ TEST(ExamplesCli, TheShippedExamplesRun) {
                                          "' --json -o cable.toml" + scaled<std::string>("", " --sections 10"),
                                      dir);
   EXPECT_EQ(measured.exit_code, 0) << measured.err;
-  EXPECT_NEAR(json_number(measured.out, "ei"), 2.8, 0.01 * 2.8) << measured.out;
-  EXPECT_NEAR(json_number(measured.out, "c"), 20.0, 0.03 * 20.0) << measured.out;
-  EXPECT_NEAR(json_number(measured.out, "h"), 0.7, 0.01 * 0.7) << measured.out;
+  EXPECT_NEAR(impedance_json_number(measured.out, "ei"), 2.8, 0.01 * 2.8) << measured.out;
+  EXPECT_NEAR(impedance_json_number(measured.out, "c"), 20.0, 0.03 * 20.0) << measured.out;
+  EXPECT_NEAR(impedance_json_number(measured.out, "h"), 0.7, 0.01 * 0.7) << measured.out;
   const CliResult strand = run_cli("strand '" + examples + "strand_19wire.toml'", dir);
   EXPECT_EQ(strand.exit_code, 0) << strand.err;
 }
 
 TEST(ResponseCli, OneSteadyPeriod) {
   const auto dir = scratch_directory("response-ok");
-  const CliResult r = run_cli("response '" + kExample + "' --frequency 20 --velocity 0.2 --json -o t.csv", dir);
+  const CliResult r = run_cli("response '" + kDamperExample + "' --frequency 20 --velocity 0.2 --json -o t.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto lines = lines_of(read_text(dir / "t.csv"));
   // The arms by their names in the example file (left, right).
@@ -212,7 +203,7 @@ TEST(ResponseCli, DesignFiguresAgreeWithTheImpedanceSweep) {
     ASSERT_NE(at, header.end()) << figure;
     const double swept = std::strtod(cells[static_cast<std::size_t>(at - header.begin())].c_str(), nullptr);
     ASSERT_GT(swept, 0.0) << figure;
-    EXPECT_NEAR(json_number(r.out, figure), swept, 1e-9 * swept) << figure;
+    EXPECT_NEAR(impedance_json_number(r.out, figure), swept, 1e-9 * swept) << figure;
   }
   EXPECT_NE(r.err.find("messenger curvature amplitude"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("arm short: P = "), std::string::npos) << r.err;
@@ -230,7 +221,7 @@ class DamperCliRejects : public ::testing::TestWithParam<BadRun> {};
 
 TEST_P(DamperCliRejects, WithOneLineExitTwoAndNoFile) {
   const auto dir = scratch_directory(std::string("damper-bad-") + GetParam().name);
-  const std::string file = GetParam().damper ? "d.toml" : "'" + kExample + "'";
+  const std::string file = GetParam().damper ? "d.toml" : "'" + kDamperExample + "'";
   if (GetParam().damper) write_temp_file(dir, "d.toml", GetParam().damper);
   const CliResult r = run_cli(std::string(GetParam().arguments).replace(std::string(GetParam().arguments).find("FILE"), 4, file) +
                                   " -o out.csv", dir);

@@ -17,8 +17,6 @@
 namespace stockbridge::testing {
 namespace {
 
-const std::string kExample = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml";
-
 /// The numbers of the JSON array after "key": in `text` from position `from`.
 std::vector<double> json_array(const std::string& text, const std::string& key, std::size_t from = 0) {
   const std::size_t at = text.find("\"" + key + "\": [", from);
@@ -33,19 +31,12 @@ std::vector<double> json_array(const std::string& text, const std::string& key, 
   return values;
 }
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
 // MODEL.md section 4: each arm of the example 21.2 / 68.2 Hz sticking, 7.4 / 23.9 Hz
 // slipping. The two arms are identical, so the clamp-free damper has these too
 // (antisymmetric modes, clamp still) and two symmetric modes between and above.
 TEST(ModesCli, PrintsTheExamplesFrequenciesAsJson) {
   const auto dir = scratch_directory("modes-json");
-  const CliResult r = run_cli("modes '" + kExample + "' --json", dir);
+  const CliResult r = run_cli("modes '" + kDamperExample + "' --json", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_EQ(r.out.rfind("{\"arms\": [{\"name\": \"left\", \"stick_hz\": [", 0), 0u) << r.out;
@@ -82,7 +73,7 @@ TEST(ModesCli, PrintsTheExamplesFrequenciesAsJson) {
 
 TEST(ModesCli, WritesTheCsvAndPrintsATable) {
   const auto dir = scratch_directory("modes-csv");
-  const CliResult r = run_cli("modes '" + kExample + "' -o modes.csv", dir);
+  const CliResult r = run_cli("modes '" + kDamperExample + "' -o modes.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   const auto lines = lines_of(read_text(dir / "modes.csv"));

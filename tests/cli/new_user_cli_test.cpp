@@ -13,8 +13,6 @@
 namespace stockbridge::testing {
 namespace {
 
-const std::string kExample = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml";
-
 std::vector<std::vector<std::string>> csv_cells(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
   std::istringstream in(text);
@@ -29,7 +27,7 @@ std::vector<std::vector<std::string>> csv_cells(const std::string& text) {
 
 TEST(NewUserCli, AnOutputThatIsAnInputIsRefusedAndTheInputKept) {
   const auto dir = scratch_directory("output-is-input");
-  std::filesystem::copy_file(kExample, dir / "my_damper.toml");
+  std::filesystem::copy_file(kDamperExample, dir / "my_damper.toml");
   std::filesystem::create_symlink(dir / "my_damper.toml", dir / "link.toml");
   const std::string original = read_text(dir / "my_damper.toml");
   for (const std::string output : {"my_damper.toml", "./my_damper.toml", "link.toml"}) {
@@ -56,10 +54,10 @@ TEST(NewUserCli, AnOutputThatIsAnInputIsRefusedAndTheInputKept) {
 
 TEST(NewUserCli, ListsMayHaveSpacesButNotBeEmpty) {
   const auto dir = scratch_directory("lists");
-  const CliResult spaced = run_cli("impedance '" + kExample + "' --velocity '0.1, 0.05' --frequencies '10, 20' -o z.csv", dir);
+  const CliResult spaced = run_cli("impedance '" + kDamperExample + "' --velocity '0.1, 0.05' --frequencies '10, 20' -o z.csv", dir);
   ASSERT_EQ(spaced.exit_code, 0) << spaced.err;
   EXPECT_EQ(csv_cells(read_text(dir / "z.csv")).size(), 1u + 4u);
-  const CliResult empty = run_cli("impedance '" + kExample + "' --velocity 0.1 --frequencies '' -o e.csv", dir);
+  const CliResult empty = run_cli("impedance '" + kDamperExample + "' --velocity 0.1 --frequencies '' -o e.csv", dir);
   EXPECT_EQ(empty.exit_code, 2);
   EXPECT_NE(empty.err.find("--frequencies = '': expected a comma-separated list"), std::string::npos) << empty.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "e.csv"));
@@ -69,14 +67,14 @@ TEST(NewUserCli, ListsMayHaveSpacesButNotBeEmpty) {
 // round-off of zero (nothing slips at 1 Hz) are printed as 0.
 TEST(NewUserCli, NumbersTheUserGaveArePrintedAsGiven) {
   const auto dir = scratch_directory("number-noise");
-  const CliResult r = run_cli("impedance '" + kExample + "' --velocity 0.2 --fmin 5 --fmax 100 --points 7 -o z.csv", dir);
+  const CliResult r = run_cli("impedance '" + kDamperExample + "' --velocity 0.2 --fmin 5 --fmax 100 --points 7 -o z.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = csv_cells(read_text(dir / "z.csv"));
   ASSERT_EQ(rows.size(), 8u);
   EXPECT_EQ(rows[1][0], "5");
   EXPECT_EQ(rows[7][0], "100");
   for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i][1], "0.2");
-  const CliResult stick = run_cli("impedance '" + kExample + "' --velocity 0.2 --frequencies 1 -o s.csv", dir);
+  const CliResult stick = run_cli("impedance '" + kDamperExample + "' --velocity 0.2 --frequencies 1 -o s.csv", dir);
   ASSERT_EQ(stick.exit_code, 0) << stick.err;
   const auto stuck = csv_cells(read_text(dir / "s.csv"));
   EXPECT_EQ(stuck[0][2], "re_z_n_s_m");
@@ -87,10 +85,10 @@ TEST(NewUserCli, NumbersTheUserGaveArePrintedAsGiven) {
 
 TEST(NewUserCli, MisspeltWordsAreNamedWithTheClosestValidOne) {
   const auto dir = scratch_directory("misspelt");
-  const CliResult command = run_cli("impedence '" + kExample + "' --velocity 0.1 -o z.csv", dir);
+  const CliResult command = run_cli("impedence '" + kDamperExample + "' --velocity 0.1 -o z.csv", dir);
   EXPECT_EQ(command.exit_code, 2);
   EXPECT_EQ(command.err, "stockbridge: unknown command 'impedence' for 'stockbridge': did you mean 'impedance'?\n");
-  const CliResult flag = run_cli("impedance '" + kExample + "' --velocty 0.1 -o z.csv", dir);
+  const CliResult flag = run_cli("impedance '" + kDamperExample + "' --velocty 0.1 -o z.csv", dir);
   EXPECT_EQ(flag.exit_code, 2);
   EXPECT_EQ(flag.err, "stockbridge: unknown option '--velocty' for 'stockbridge impedance': did you mean '--velocity'?\n");
 }
@@ -112,7 +110,7 @@ namespace {
 TEST(NewUserCli, AShortRunToAFileSaysOnlyItsSummary) {
   const auto dir = scratch_directory("progress");
   for (const std::string quiet : {"", " --quiet"}) {
-    const CliResult r = run_cli("impedance '" + kExample + "' --velocity 0.2 --frequencies 10,20" + quiet + " -o z.csv", dir);
+    const CliResult r = run_cli("impedance '" + kDamperExample + "' --velocity 0.2 --frequencies 10,20" + quiet + " -o z.csv", dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.stderr_lines(), 1) << r.err;
     EXPECT_EQ(r.err.rfind("impedance: 2 points", 0), 0u) << r.err;

@@ -13,13 +13,12 @@
 namespace stockbridge::testing {
 namespace {
 
-const std::string kExample = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml";
 // The sampled energy balance of a converged point is about 1e-5: this tolerance forces the path.
 const std::string kUnreachable = " --energy-tolerance 1e-12";
 
 TEST(NotConvergedCli, ResponseWritesTheLastIterateMarkedAndExitsThree) {
   const auto dir = scratch_directory("response-not-converged");
-  const CliResult r = run_cli("response '" + kExample + "' --frequency 20 --velocity 0.2 --json -o t.csv" + kUnreachable, dir);
+  const CliResult r = run_cli("response '" + kDamperExample + "' --frequency 20 --velocity 0.2 --json -o t.csv" + kUnreachable, dir);
   ASSERT_EQ(r.exit_code, 3) << r.err;
   EXPECT_EQ(r.stderr_lines(), 1) << r.err;  // the reason, in one line
   EXPECT_NE(r.out.find("\"termination\": \"energy_mismatch\""), std::string::npos) << r.out;
@@ -35,7 +34,7 @@ TEST(NotConvergedCli, ResponseWritesTheLastIterateMarkedAndExitsThree) {
 TEST(NotConvergedCli, ASweepWithNoConvergedPointReportsNoEnergyError) {
   const auto dir = scratch_directory("impedance-none-converged");
   const CliResult r =
-      run_cli("impedance '" + kExample + "' --velocity 0.2 --frequencies 15,20 --json -o z.csv" + kUnreachable, dir);
+      run_cli("impedance '" + kDamperExample + "' --velocity 0.2 --frequencies 15,20 --json -o z.csv" + kUnreachable, dir);
   ASSERT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.out.find("\"max_energy_error\": null"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"termination\": \"energy_mismatch\""), std::string::npos) << r.out;

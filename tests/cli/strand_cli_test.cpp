@@ -17,7 +17,7 @@
 namespace stockbridge::testing {
 namespace {
 
-const std::string kExample = std::string("'") + STOCKBRIDGE_SOURCE_DIR + "/examples/strand_19wire.toml'";
+const std::string kStrandExample = std::string("'") + STOCKBRIDGE_SOURCE_DIR + "/examples/strand_19wire.toml'";
 
 // The example's bounds from MODEL.md section 7, with its numbers (E = 210 GPa, every
 // wire of radius r = 1 mm; 6 wires on R = 2 mm, lay 60 mm; 12 on R = 4 mm, lay 100 mm):
@@ -48,22 +48,22 @@ double number_after(const std::string& text, const std::string& prefix) {
   return std::strtod(match[1].str().c_str(), nullptr);
 }
 
-double json_number(const std::string& json, const std::string& key) { return number_after(json, "\"" + key + "\": "); }
+double strand_json_number(const std::string& json, const std::string& key) { return number_after(json, "\"" + key + "\": "); }
 
 TEST(StrandCli, PrintsTheBoundsOfTheExampleAsJson) {
   const auto dir = scratch_directory("strand-json");
-  const CliResult r = run_cli("strand " + kExample + " --json", dir);
+  const CliResult r = run_cli("strand " + kStrandExample + " --json", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_TRUE(std::regex_match(r.out, std::regex(R"(\{"ei_min_n_m2": [-+0-9.eE]+, "ei_max_n_m2": [-+0-9.eE]+\}\n)")))
       << r.out;
-  EXPECT_NEAR(json_number(r.out, "ei_min_n_m2"), kEiMin, 1e-9 * kEiMin);
-  EXPECT_NEAR(json_number(r.out, "ei_max_n_m2"), kEiMax, 1e-9 * kEiMax);
+  EXPECT_NEAR(strand_json_number(r.out, "ei_min_n_m2"), kEiMin, 1e-9 * kEiMin);
+  EXPECT_NEAR(strand_json_number(r.out, "ei_max_n_m2"), kEiMax, 1e-9 * kEiMax);
 }
 
 TEST(StrandCli, PrintsTheBoundsOfTheExampleAsText) {
   const auto dir = scratch_directory("strand-text");
-  const CliResult r = run_cli("strand " + kExample, dir);
+  const CliResult r = run_cli("strand " + kStrandExample, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_NE(r.out.find("19 wires (core + 2 layers)"), std::string::npos) << r.out;
@@ -77,8 +77,8 @@ TEST(StrandCli, YoungsModulusIsOptional) {
   const CliResult r = run_cli("strand wire.toml --json", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // One steel wire: E pi r^4 / 4 = 0.16493 N m^2 for both bounds.
-  EXPECT_NEAR(json_number(r.out, "ei_min_n_m2"), kEiMin / 19.0, 1e-12);
-  EXPECT_NEAR(json_number(r.out, "ei_max_n_m2"), kEiMin / 19.0, 1e-12);
+  EXPECT_NEAR(strand_json_number(r.out, "ei_min_n_m2"), kEiMin / 19.0, 1e-12);
+  EXPECT_NEAR(strand_json_number(r.out, "ei_max_n_m2"), kEiMin / 19.0, 1e-12);
 }
 
 constexpr const char* kGood =

@@ -14,7 +14,6 @@ namespace stockbridge::testing {
 namespace {
 
 const std::string kSource = STOCKBRIDGE_SOURCE_DIR;
-const std::string kExample = kSource + "/examples/sauter2003.toml";
 const std::string kMeasured = kSource + "/examples/cycle_measured_a.csv";
 
 int count(const std::string& text, const std::string& word) {
@@ -33,7 +32,7 @@ std::string arm_with_cable_file(const std::string& name, const std::string& cabl
 
 TEST(UnusualValuesCli, EachUnitMistakeInADamperFileWarnsOnItsLineAndTheRunGoesOn) {
   const auto dir = scratch_directory("unusual-damper");
-  std::string text = read_text(kExample);
+  std::string text = read_text(kDamperExample);
   text.replace(text.find("mass = 0.856"), 12, "mass = 863");
   text.replace(text.find("inertia = 0.001814"), 18, "inertia = 1815");
   text.replace(text.find("ei = 2.8"), 8, "ei = 4.9e6");
@@ -49,19 +48,19 @@ TEST(UnusualValuesCli, EachUnitMistakeInADamperFileWarnsOnItsLineAndTheRunGoesOn
 
 TEST(UnusualValuesCli, TheShippedExampleAndItsSweepSayNothing) {
   const auto dir = scratch_directory("usual");
-  const CliResult r = run_cli("impedance '" + kExample + "' --velocity 0.2,0.05 --frequencies 5,50 -o z.csv --quiet", dir);
+  const CliResult r = run_cli("impedance '" + kDamperExample + "' --velocity 0.2,0.05 --frequencies 5,50 -o z.csv --quiet", dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 }
 
 TEST(UnusualValuesCli, OptionsOutsideTheTypicalRangesWarnOncePerValue) {
   const auto dir = scratch_directory("unusual-options");
-  const CliResult sweep = run_cli("impedance '" + kExample + "' --velocity 100,0.1 --frequencies 2000 -o z.csv --quiet", dir);
+  const CliResult sweep = run_cli("impedance '" + kDamperExample + "' --velocity 100,0.1 --frequencies 2000 -o z.csv --quiet", dir);
   EXPECT_EQ(count(sweep.err, "warning: "), 2) << sweep.err;
   EXPECT_NE(sweep.err.find("warning: --velocity = 100: outside the typical 0.001 to 2 m/s"), std::string::npos) << sweep.err;
   EXPECT_NE(sweep.err.find("warning: --frequencies = 2000: outside the typical 0.5 to 500 Hz"), std::string::npos) << sweep.err;
 
-  const CliResult response = run_cli("response '" + kExample + "' --frequency 20 --displacement 2 -o t.csv", dir);
+  const CliResult response = run_cli("response '" + kDamperExample + "' --frequency 20 --displacement 2 -o t.csv", dir);
   EXPECT_NE(response.err.find("warning: --displacement = 2: outside the typical 1e-06 to 0.05 m"), std::string::npos)
       << response.err;
 
@@ -108,7 +107,7 @@ TEST(CableReferenceCli, ArmsCutOneCableFileToTheirLengthsAsIfWrittenOut) {
   const std::string reference = "file = \"cables/identified.toml\"\nlength = 0.1875\n";
   write(dir / "by_reference.toml", "[clamp]\nmass = 0.7\n" + arm_with_cable_file("left", reference) +
                                        arm_with_cable_file("right", reference));
-  const CliResult copied = run_cli("impedance '" + kExample + "' --velocity 0.2 --frequencies 8,20,40 -o copied.csv --quiet", dir);
+  const CliResult copied = run_cli("impedance '" + kDamperExample + "' --velocity 0.2 --frequencies 8,20,40 -o copied.csv --quiet", dir);
   ASSERT_EQ(copied.exit_code, 0) << copied.err;
   // From another working directory: the reference is relative to the damper file.
   std::filesystem::create_directories(dir / "elsewhere");

@@ -6,11 +6,15 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 
 #include <unistd.h>
 
 namespace stockbridge::testing {
+
+/// The shipped example damper (D. Sauter's verification damper), which most command tests run.
+inline const std::string kDamperExample = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml";
 
 struct CliResult {
   int exit_code = -1;
@@ -29,6 +33,14 @@ inline std::string read_text(const std::filesystem::path& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();
+}
+
+/// The lines of a text, without their line ends.
+inline std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
 }
 
 /// A fresh, empty directory for one test's files.

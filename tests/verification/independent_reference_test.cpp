@@ -120,7 +120,7 @@ TEST(IndependentReference, SauterNumbersAreTheExampleFile) {
   for (std::size_t k = 0; k < file.arms.size(); ++k) EXPECT_TRUE(file.arms[k].same_mechanics(numbers.arms[k]));
 }
 
-struct Case {
+struct ReferenceCase {
   const char* name;
   reference::DamperNumbers (*damper)(int sections);
   double frequency_hz;
@@ -128,12 +128,12 @@ struct Case {
   bool in_short_scale;
 };
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const ReferenceCase& c, std::ostream* os) { *os << c.name; }
 
-class IndependentReference : public ::testing::TestWithParam<Case> {};
+class IndependentReference : public ::testing::TestWithParam<ReferenceCase> {};
 
 TEST_P(IndependentReference, LibraryMatchesReference) {
-  const Case& c = GetParam();
+  const ReferenceCase& c = GetParam();
   if (testing::short_tests() && !c.in_short_scale) GTEST_SKIP() << "not at STOCKBRIDGE_TEST_SCALE=short";
   const int sections = testing::scaled(80, 40);
   const reference::ReferenceResult ref =
@@ -157,11 +157,11 @@ TEST_P(IndependentReference, LibraryMatchesReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Points, IndependentReference,
-                         ::testing::Values(Case{"sauter_15Hz_0.2", sauter_damper_numbers, 15.0, 0.2, true},
-                                           Case{"sauter_40Hz_0.2", sauter_damper_numbers, 40.0, 0.2, false},
-                                           Case{"sauter_15Hz_0.05", sauter_damper_numbers, 15.0, 0.05, false},
-                                           Case{"asymmetric_25Hz_0.1", asymmetric_damper_numbers, 25.0, 0.1, true}),
-                         [](const ::testing::TestParamInfo<Case>& info) {
+                         ::testing::Values(ReferenceCase{"sauter_15Hz_0.2", sauter_damper_numbers, 15.0, 0.2, true},
+                                           ReferenceCase{"sauter_40Hz_0.2", sauter_damper_numbers, 40.0, 0.2, false},
+                                           ReferenceCase{"sauter_15Hz_0.05", sauter_damper_numbers, 15.0, 0.05, false},
+                                           ReferenceCase{"asymmetric_25Hz_0.1", asymmetric_damper_numbers, 25.0, 0.1, true}),
+                         [](const ::testing::TestParamInfo<ReferenceCase>& info) {
                            std::string name = info.param.name;
                            for (char& ch : name) ch = ch == '.' ? '_' : ch;
                            return name;

@@ -14,12 +14,12 @@
 namespace stockbridge::damper {
 namespace {
 
-struct Case {
+struct AgreementCase {
   double frequency_hz;
   double velocity;
 };
 
-class MethodAgreement : public ::testing::TestWithParam<Case> {};
+class MethodAgreement : public ::testing::TestWithParam<AgreementCase> {};
 
 std::complex<double> impedance_by(Method method, const Excitation& e) {
   static const Damper damper =
@@ -42,9 +42,9 @@ TEST_P(MethodAgreement, WithinHalfAPercent) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SauterDamper, MethodAgreement,
-                         ::testing::Values(Case{12.0, 0.2}, Case{16.0, 0.2}, Case{30.0, 0.2}, Case{50.0, 0.2},
-                                           Case{16.0, 0.05}, Case{50.0, 0.05}),
-                         [](const ::testing::TestParamInfo<Case>& info) {
+                         ::testing::Values(AgreementCase{12.0, 0.2}, AgreementCase{16.0, 0.2}, AgreementCase{30.0, 0.2}, AgreementCase{50.0, 0.2},
+                                           AgreementCase{16.0, 0.05}, AgreementCase{50.0, 0.05}),
+                         [](const ::testing::TestParamInfo<AgreementCase>& info) {
                            char name[64];
                            std::snprintf(name, sizeof name, "f%d_v%d", static_cast<int>(info.param.frequency_hz),
                                          static_cast<int>(info.param.velocity * 100));

@@ -14,17 +14,17 @@
 namespace stockbridge::io {
 namespace {
 
-std::filesystem::path directory() {
+std::filesystem::path cable_directory() {
   return std::filesystem::temp_directory_path() / ("stockbridge-cable-file-" + std::to_string(::getpid()));
 }
 
-cable::CableDescription read(const std::string& contents) {
-  return read_cable_file(testing::write_temp_file(directory(), "cable.toml", contents)).description();
+cable::CableDescription read_cable(const std::string& contents) {
+  return read_cable_file(testing::write_temp_file(cable_directory(), "cable.toml", contents)).description();
 }
 
-std::string error_of(const std::string& contents) {
+std::string cable_error_of(const std::string& contents) {
   try {
-    read(contents);
+    read_cable(contents);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -32,7 +32,7 @@ std::string error_of(const std::string& contents) {
 }
 
 TEST(CableFile, SimpleFormAsInTheIssue) {
-  const cable::CableDescription d = read(
+  const cable::CableDescription d = read_cable(
       "[cable]\nlength = 0.3        # m\nsections = 40\nei = 2.8\njenkin = [ { c = 20.0, h = 0.7 } ]\n");
   EXPECT_EQ(d.length, 0.3);
   EXPECT_EQ(d.sections, 40);
@@ -44,7 +44,7 @@ TEST(CableFile, SimpleFormAsInTheIssue) {
 }
 
 TEST(CableFile, ProfilesMirrorAndModifiedMasing) {
-  const cable::CableDescription d = read(R"(
+  const cable::CableDescription d = read_cable(R"(
 [cable]
 length = 0.1875
 sections = 30
@@ -68,55 +68,55 @@ h = 0.1
 }
 
 TEST(CableFile, AcceptsCrlfLineEnds) {
-  const cable::CableDescription d = read("[cable]\r\nlength = 0.3\r\nsections = 10\r\nei = 2.8\r\n");
+  const cable::CableDescription d = read_cable("[cable]\r\nlength = 0.3\r\nsections = 10\r\nei = 2.8\r\n");
   EXPECT_EQ(d.sections, 10);
   EXPECT_TRUE(d.jenkin.empty());
 }
 
 TEST(CableFile, EachMistakeGetsOnePreciseLine) {
-  const std::string file = (directory() / "cable.toml").string();
-  EXPECT_EQ(error_of("[cable]\nsections = 40\nei = 2.8\n"),
+  const std::string file = (cable_directory() / "cable.toml").string();
+  EXPECT_EQ(cable_error_of("[cable]\nsections = 40\nei = 2.8\n"),
             file + ":1: missing key 'length' in [cable]: expected a number");
-  EXPECT_EQ(error_of("[cable]\nlength = -0.3\nsections = 40\nei = 2.8\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = -0.3\nsections = 40\nei = 2.8\n"),
             file + ":2: cable.length = -0.3: expected a finite value > 0 (m)");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\nlenght = 3\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\nlenght = 3\n"),
             file + ":5: unknown key 'cable.lenght': expected one of ei, jenkin, length, lever_arm_cap, mirror_length, sections");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40.5\nei = 2.8\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40.5\nei = 2.8\n"),
             file + ":3: cable.sections: the number 40.5: expected an integer from 2 to 5000");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 0\nei = 2.8\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 0\nei = 2.8\n"),
             file + ":3: cable.sections: 0: expected an integer from 2 to 5000");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = \"stiff\"\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = \"stiff\"\n"),
             file + ":4: cable.ei: the string \"stiff\": expected a number or a profile { s = [...], value = [...] }");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\njenkin = [ { c = 20.0, h = 0 } ]\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\njenkin = [ { c = 20.0, h = 0 } ]\n"),
             file + ":5: cable.jenkin[0].h = 0: expected a finite value > 0 (N m)");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\njenkin = [ { c = 20.0, h = 0.7, x = 1 } ]\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\njenkin = [ { c = 20.0, h = 0.7, x = 1 } ]\n"),
             file + ":5: unknown key 'cable.jenkin[0].x': expected one of c, h, k0");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = nan\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = nan\n"),
             file + ":4: cable.ei = nan: expected a finite value > 0 (N m^2)");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = { s = [0, 0.2, 0.1], value = [1, 2, 3] }\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = { s = [0, 0.2, 0.1], value = [1, 2, 3] }\n"),
             file + ":4: cable.ei.s[2] = 0.1: expected positions increasing strictly (previous 0.2 m)");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = { s = [0, 0.2], value = [1, -2] }\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = { s = [0, 0.2], value = [1, -2] }\n"),
             file + ":4: cable.ei.value[1] = -2: expected a finite value > 0 (N m^2)");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.7\nsections = 40\nei = 2.8\nmirror_length = 0.3\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.7\nsections = 40\nei = 2.8\nmirror_length = 0.3\n"),
             file + ":2: cable.length = 0.7: expected at most twice mirror_length = 0.3 m for the mirror method");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\n[extra]\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\n[extra]\n"),
             file + ":5: unknown key 'extra': expected one of cable");
-  EXPECT_EQ(error_of("length = 0.3\n"), file + ":1: missing key 'cable' in the top level: expected a table");
-  EXPECT_EQ(error_of("[cable\nlength = 0.3\n"), file + ":1:7: TOML syntax error: Error while parsing table header: expected ']', saw '\\n'");
-  EXPECT_EQ(error_of(""), file + ":1: missing key 'cable' in the top level: expected a table");
+  EXPECT_EQ(cable_error_of("length = 0.3\n"), file + ":1: missing key 'cable' in the top level: expected a table");
+  EXPECT_EQ(cable_error_of("[cable\nlength = 0.3\n"), file + ":1:7: TOML syntax error: Error while parsing table header: expected ']', saw '\\n'");
+  EXPECT_EQ(cable_error_of(""), file + ":1: missing key 'cable' in the top level: expected a table");
   // Control characters the user's text brings in (quoted keys, strings) are escaped: one line.
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\n\"a\\nb\" = 3\n").rfind(file + ":5: unknown key 'cable.a\\nb'", 0), 0u);
-  EXPECT_EQ(error_of("[cable]\nlength = \"0.3\\r\"\nsections = 40\nei = 2.8\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\n\"a\\nb\" = 3\n").rfind(file + ":5: unknown key 'cable.a\\nb'", 0), 0u);
+  EXPECT_EQ(cable_error_of("[cable]\nlength = \"0.3\\r\"\nsections = 40\nei = 2.8\n"),
             file + ":2: cable.length: the string \"0.3\\r\": expected a number");
   // Fuzzing finding: an absurd magnitude overflowed the flexibility (every sample failed).
-  EXPECT_EQ(error_of("[cable]\nlength = 0.11e308\nsections = 40\nei = 2.8\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.11e308\nsections = 40\nei = 2.8\n"),
             file + ":2: cable.length = 1.1e+307: expected a value from 1e-12 to 1e+12; one outside is a unit mistake (m)");
-  EXPECT_EQ(error_of("[cable]\nlength = 0.3\nsections = 40\nei = 1e-13\n"),
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = 1e-13\n"),
             file + ":4: cable.ei = 1e-13: expected a value from 1e-12 to 1e+12; one outside is a unit mistake (N m^2)");
 }
 
 TEST(CableFile, MissingFile) {
-  EXPECT_THROW(read_cable_file(directory() / "nope.toml"), InputError);
+  EXPECT_THROW(read_cable_file(cable_directory() / "nope.toml"), InputError);
 }
 
 }  // namespace

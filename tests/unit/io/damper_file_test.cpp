@@ -21,7 +21,7 @@ std::string arm(const std::string& name, const std::string& h) {
          "[arm.cable]\nlength = 0.1875\nsections = 8\nei = 2.8\njenkin = [ { c = 20.0, h = " + h + " } ]\n";
 }
 
-std::string error_of(const std::string& contents) {
+std::string damper_error_of(const std::string& contents) {
   const auto path = testing::write_temp_file(std::filesystem::temp_directory_path() /
                                                  ("stockbridge-damper-file-" + std::to_string(::getpid())),
                                              "damper.toml", contents);
@@ -36,19 +36,19 @@ std::string error_of(const std::string& contents) {
 TEST(DamperFile, AnErrorInTheSecondArmsCableIsAtItsOwnLine) {
   // Line 14 + 10 = the second arm's jenkin line (the first arm takes lines 3-12).
   const std::string text = "[clamp]\nmass = 0.7\n" + arm("long", "0.7") + arm("short", "-0.5");
-  EXPECT_EQ(error_of(text), ":22: arm[1].cable.jenkin[0].h = -0.5: expected a finite value > 0 (N m)");
+  EXPECT_EQ(damper_error_of(text), ":22: arm[1].cable.jenkin[0].h = -0.5: expected a finite value > 0 (N m)");
 }
 
 TEST(DamperFile, AnArmValueIsAtItsKeysLine) {
   std::string second = arm("short", "0.7");
   const std::string inertia = "inertia = 0.001814";
   second = second.substr(0, second.find(inertia)) + "inertia = -1" + second.substr(second.find(inertia) + inertia.size());
-  EXPECT_EQ(error_of("[clamp]\nmass = 0.7\n" + arm("long", "0.7") + second),
+  EXPECT_EQ(damper_error_of("[clamp]\nmass = 0.7\n" + arm("long", "0.7") + second),
             ":16: arm[1].inertia = -1: expected a finite value > 0 (kg m^2)");
   std::string beyond = arm("short", "0.7");
   const std::string offset = "offset = 0.0325";
   beyond = beyond.substr(0, beyond.find(offset)) + "offset = 0.3" + beyond.substr(beyond.find(offset) + offset.size());
-  EXPECT_EQ(error_of("[clamp]\nmass = 0.7\n" + beyond),
+  EXPECT_EQ(damper_error_of("[clamp]\nmass = 0.7\n" + beyond),
             ":7: arm[0].offset = 0.3: expected |offset| < the cable length 0.1875 m (the centre of gravity lies on the arm)");
 }
 

@@ -98,7 +98,7 @@ std::string at_line(int line) {
 }
 
 /// The error's message after the file's path ("" + ":<line>: ..."), or "accepted".
-std::string error_of(const std::string& contents) {
+std::string span_error_of(const std::string& contents) {
   const auto path = write_span(contents, "bad.toml");
   try {
     load_span_file(path);
@@ -188,7 +188,7 @@ class SpanFileMissingKey : public ::testing::TestWithParam<MissingKey> {};
 TEST_P(SpanFileMissingKey, IsNamedWithItsTable) {
   const MissingKey& m = GetParam();
   const std::string text = replaced(kSpan, m.line + "\n", "");
-  const std::string error = error_of(text);
+  const std::string error = span_error_of(text);
   const std::string where = m.table == "damper" ? "[[damper]]" : "[" + m.table + "]";
   const std::string expected = at_line(line_of(text, where)) + "missing key '" + m.key + "' in [" +
                                (m.table == "damper" ? "damper[0]" : m.table) + "]";
@@ -215,11 +215,11 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(SpanFile, AMissingTableIsNamed) {
   for (const std::string table : {"conductor", "span", "wind", "self_damping", "fatigue"}) {
     std::string text = replaced(kSpan, "[" + table + "]", "[" + table + "_]");
-    EXPECT_NE(error_of(text).find("unknown key '" + table + "_'"), std::string::npos) << error_of(text);
+    EXPECT_NE(span_error_of(text).find("unknown key '" + table + "_'"), std::string::npos) << span_error_of(text);
   }
   const std::string no_fatigue = kSpan.substr(0, kSpan.find("[fatigue]"));
-  EXPECT_NE(error_of(no_fatigue).find("missing key 'fatigue' in the top level"), std::string::npos)
-      << error_of(no_fatigue);
+  EXPECT_NE(span_error_of(no_fatigue).find("missing key 'fatigue' in the top level"), std::string::npos)
+      << span_error_of(no_fatigue);
 }
 
 /// A bad value is reported at its own line, named by its full path: the line of
@@ -228,7 +228,7 @@ void expect_at_line(const std::string& from, const std::string& to, const std::s
   const std::string text = replaced(kSpan, from, to);
   const std::string key_line = first ? to.substr(0, to.find('\n')) : to.substr(to.rfind('\n') + 1);
   const std::string expected = at_line(line_of(text, key_line)) + message;
-  const std::string error = error_of(text);
+  const std::string error = span_error_of(text);
   EXPECT_EQ(error.rfind(expected, 0), 0u) << error << "\nexpected the start: " << expected;
 }
 
@@ -261,7 +261,7 @@ TEST(SpanFile, BadValuesAreReportedAtTheirLine) {
 TEST(SpanFile, TensionIsGivenExactlyOnce) {
   expect_at_line("tension_fraction = 0.15", "tension_fraction = 0.15\ntension = 30000",
                  "span.tension_fraction: given beside span.tension: expected one of", true);
-  EXPECT_NE(error_of(replaced(kSpan, "tension_fraction = 0.15", "tension = 185300")).find("span.tension = 185300"),
+  EXPECT_NE(span_error_of(replaced(kSpan, "tension_fraction = 0.15", "tension = 185300")).find("span.tension = 185300"),
             std::string::npos);
   expect_at_line("tension_fraction = 0.15", "tension = -1", "span.tension = -1");
 }
@@ -278,15 +278,15 @@ TEST(SpanFile, AWindTableIsReadFromItsCsvBesideTheSpanFile) {
   EXPECT_NE(std::find(file.inputs.begin(), file.inputs.end(), dir / "wind/fnc.csv"), file.inputs.end());
   // Missing, without the key, beside another law, a bad cell, a bad point.
   expect_at_line("law = \"cigre\"", "law = \"table\"\ntable = \"nope.csv\"", "wind.table: \"nope.csv\": expected an existing CSV file");
-  EXPECT_NE(error_of(replaced(kSpan, "law = \"cigre\"", "law = \"table\"")).find("missing key 'table' in [wind]"),
+  EXPECT_NE(span_error_of(replaced(kSpan, "law = \"cigre\"", "law = \"table\"")).find("missing key 'table' in [wind]"),
             std::string::npos);
   expect_at_line("law = \"cigre\"", "law = \"cigre\"\ntable = \"wind/fnc.csv\"", "wind.table: \"wind/fnc.csv\": only law = \"table\"");
   testing::write_temp_file(dir / "wind", "bad.csv", "y_over_d,fnc\n0,0\n0.1,abc\n");
-  EXPECT_NE(error_of(replaced(kSpan, "law = \"cigre\"", "law = \"table\"\ntable = \"wind/bad.csv\"")).find("bad.csv:3"),
+  EXPECT_NE(span_error_of(replaced(kSpan, "law = \"cigre\"", "law = \"table\"\ntable = \"wind/bad.csv\"")).find("bad.csv:3"),
             std::string::npos);
   testing::write_temp_file(dir / "wind", "unsorted.csv", "y_over_d,fnc\n0.2,1\n0.1,2\n");
   const std::string unsorted = replaced(kSpan, "law = \"cigre\"", "law = \"table\"\ntable = \"wind/unsorted.csv\"");
-  const std::string error = error_of(unsorted);
+  const std::string error = span_error_of(unsorted);
   EXPECT_EQ(error.rfind(at_line(line_of(unsorted, "table =")) + "wind.table[1].y_over_d = 0.1", 0), 0u)
       << error;
 }
@@ -299,7 +299,7 @@ TEST(SpanFile, DamperFilesAreFoundRelativeToTheSpanFileFromAnotherFolder) {
   std::filesystem::current_path(cwd);
   ASSERT_EQ(file.span.dampers().size(), 1u);
   const std::string missing = replaced(kSpan, "dampers/stockbridge.toml", "dampers/none.toml");
-  const std::string error = error_of(missing);
+  const std::string error = span_error_of(missing);
   EXPECT_EQ(error.rfind(at_line(line_of(missing, "file =")) +
                             "damper[0].file: \"dampers/none.toml\": expected an existing damper file",
                         0),
@@ -307,7 +307,7 @@ TEST(SpanFile, DamperFilesAreFoundRelativeToTheSpanFileFromAnotherFolder) {
       << error;
   // An error inside the damper file is located there.
   testing::write_temp_file(span_directory() / "dampers", "broken.toml", replaced(kDamper, "mass = 0.856", "mass = -1"));
-  const std::string broken = error_of(replaced(kSpan, "dampers/stockbridge.toml", "dampers/broken.toml"));
+  const std::string broken = span_error_of(replaced(kSpan, "dampers/stockbridge.toml", "dampers/broken.toml"));
   EXPECT_NE(broken.find("broken.toml:5: arm[0].mass = -1"), std::string::npos) << broken;
 }
 
@@ -315,7 +315,7 @@ TEST(SpanFile, UnknownKeysAreRejected) {
   expect_at_line("strouhal = 0.185", "colour = 1", "unknown key 'wind.colour'");
   expect_at_line("ei_min = 28.28", "ei_min = 28.28\nei = 28.28", "unknown key 'conductor.ei'");
   expect_at_line("position = 1.0", "position = 1.0\nname = \"x\"", "unknown key 'damper[0].name'");
-  EXPECT_NE(error_of(kSpan + "[extra]\n").find("unknown key 'extra'"), std::string::npos);
+  EXPECT_NE(span_error_of(kSpan + "[extra]\n").find("unknown key 'extra'"), std::string::npos);
 }
 
 TEST(SpanFile, TextIsCheckedAlikeAndNamedWithoutLines) {

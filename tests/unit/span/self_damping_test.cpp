@@ -23,7 +23,7 @@ using testing::aster570;
 using testing::aster570_tension;
 using testing::expect_relative;
 
-SelfDampingModel model_of(SelfDampingLaw law) {
+SelfDampingModel self_damping_model_of(SelfDampingLaw law) {
   SelfDampingModel model;
   model.law = law;
   return model;
@@ -37,7 +37,7 @@ TEST(SelfDamping, NamedExponentSets) {
   for (const Case& c : {Case{"noiseux-1991", 2.44, 5.63, 2.76}, Case{"kraus-hagedorn-1991", 2.47, 5.38, 2.80},
                         Case{"seppa-1971", 2.5, 5.75, 2.8}, Case{"moecks-schmidt-1989", 2.45, 5.38, 2.4},
                         Case{"polimi-2000", 2.43, 5.5, 2.0}}) {
-    const SelfDampingModel model = model_of(parse_self_damping_law(c.name));
+    const SelfDampingModel model = self_damping_model_of(parse_self_damping_law(c.name));
     ASSERT_NO_THROW(model.validate()) << c.name;
     EXPECT_EQ(self_damping_law_name(model.law), c.name);
     const PowerLawExponents e = model.exponents();
@@ -54,7 +54,7 @@ TEST(SelfDamping, NamedExponentSets) {
 TEST(SelfDamping, NoiseuxOnHandNumbers) {
   // ASTER570, Lilien's k = 1.819851, Y = 10 mm, f = 20 Hz, T = 27.795 kN, L = 400 m:
   // 400 * 1.819851 * 0.01^2.44 * 20^5.63 / 27.795^2.76 = 20.96750 W
-  const SelfDampingModel noiseux = model_of(SelfDampingLaw::noiseux_1991);
+  const SelfDampingModel noiseux = self_damping_model_of(SelfDampingLaw::noiseux_1991);
   expect_relative(noiseux.power(0.01, 20.0, aster570(), aster570_tension, 400.0), 20.96750, 1e-6);
   SelfDampingModel given_k = noiseux;
   given_k.k = 2.0 * lilien_k(aster570());  // a k of one's own replaces Lilien's
@@ -62,7 +62,7 @@ TEST(SelfDamping, NoiseuxOnHandNumbers) {
 }
 
 TEST(SelfDamping, RangesPublishedByTheSourceTakeTheUsersValue) {
-  SelfDampingModel claren = model_of(SelfDampingLaw::claren_diana_1969);  // n: 1.5 to 3
+  SelfDampingModel claren = self_damping_model_of(SelfDampingLaw::claren_diana_1969);  // n: 1.5 to 3
   EXPECT_EQ(invalid_parameter_message([&] { claren.validate(); }),
             "n: law = 'claren-diana-1969' gives n only as a range, 1.5 to 3: give the value to use");
   claren.n = 3.5;
@@ -78,7 +78,7 @@ TEST(SelfDamping, RangesPublishedByTheSourceTakeTheUsersValue) {
   EXPECT_EQ(invalid_parameter_message([&] { claren.validate(); }),
             "l = 2.2: not used by law = 'claren-diana-1969' (it fixes l = 2; law = 'power' takes your own)");
 
-  SelfDampingModel tompkins = model_of(SelfDampingLaw::tompkins_1956);  // l 2.3-2.6, m 5-6, n 1.9
+  SelfDampingModel tompkins = self_damping_model_of(SelfDampingLaw::tompkins_1956);  // l 2.3-2.6, m 5-6, n 1.9
   tompkins.l = 2.5;
   EXPECT_EQ(invalid_parameter_message([&] { tompkins.validate(); }),
             "m: law = 'tompkins-1956' gives m only as a range, 5 to 6: give the value to use");
@@ -88,7 +88,7 @@ TEST(SelfDamping, RangesPublishedByTheSourceTakeTheUsersValue) {
 }
 
 TEST(SelfDamping, PowerLawTakesTheUsersExponents) {
-  SelfDampingModel power = model_of(SelfDampingLaw::power);
+  SelfDampingModel power = self_damping_model_of(SelfDampingLaw::power);
   power.l = 2.0;
   power.m = 4.0;
   EXPECT_EQ(invalid_parameter_message([&] { power.validate(); }), "n: missing: law = 'power' needs l, m and n");
@@ -144,7 +144,7 @@ TEST(SelfDamping, FotiIsContinuousWhereGrossSlipStarts) {
 }
 
 TEST(SelfDamping, FotiNeedsTheLimitCurvatureAndEiMax) {
-  SelfDampingModel foti = model_of(SelfDampingLaw::foti);
+  SelfDampingModel foti = self_damping_model_of(SelfDampingLaw::foti);
   EXPECT_EQ(invalid_parameter_message([&] { foti.validate(); }), "limit_curvature: missing: law = 'foti' needs it (1/m)");
   foti.limit_curvature = 0.0211;
   Conductor c = aster570();
@@ -157,7 +157,7 @@ TEST(SelfDamping, FotiNeedsTheLimitCurvatureAndEiMax) {
   foti.k = 1.8;
   EXPECT_EQ(invalid_parameter_message([&] { foti.validate(); }),
             "k = 1.8: not used by law = 'foti' (a power-law factor)");
-  SelfDampingModel noiseux = model_of(SelfDampingLaw::noiseux_1991);
+  SelfDampingModel noiseux = self_damping_model_of(SelfDampingLaw::noiseux_1991);
   noiseux.limit_curvature = 0.02;
   EXPECT_EQ(invalid_parameter_message([&] { noiseux.validate(); }),
             "limit_curvature = 0.02: not used by law = 'noiseux-1991' (only law = 'foti' uses it)");
