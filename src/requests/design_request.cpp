@@ -27,11 +27,11 @@ design::SearchOptions search_options(const design::SearchOptions& file, const De
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 
 /// The objective as reported: the stress ratio, or the shortest life in years.
 double reported_objective(const design::DesignStudy& study, const design::Evaluation& e) {
-  if (!e.converged) return kNaN;
+  if (!e.converged) return kNotComputed;
   return study.objective() == design::Objective::life ? e.shortest_life_years : e.max_stress_ratio;
 }
 
@@ -74,9 +74,9 @@ std::vector<double> design_row(const design::DesignStudy& study, const design::S
   std::vector<double> row{static_cast<double>(evaluation.run)};
   row.insert(row.end(), e.x.begin(), e.x.end());
   const bool c = e.converged;
-  for (const double v : {reported_objective(study, e), c ? e.max_stress_ratio : kNaN, c ? e.max_stress / 1e6 : kNaN,
-                         c ? e.frequency_at_max_hz : kNaN, e.total_mass, c ? e.messenger_curvature_max : kNaN,
-                         c ? e.shortest_life_years : kNaN, c ? 1.0 : 0.0, e.feasible ? 1.0 : 0.0}) {
+  for (const double v : {reported_objective(study, e), c ? e.max_stress_ratio : kNotComputed, c ? e.max_stress / 1e6 : kNotComputed,
+                         c ? e.frequency_at_max_hz : kNotComputed, e.total_mass, c ? e.messenger_curvature_max : kNotComputed,
+                         c ? e.shortest_life_years : kNotComputed, c ? 1.0 : 0.0, e.feasible ? 1.0 : 0.0}) {
     row.push_back(v);
   }
   return row;
