@@ -8,6 +8,9 @@
 #include <benchmark/benchmark.h>
 
 #include "stockbridge/identification/global_identification.hpp"
+#include "stockbridge/identification/impedance_identification.hpp"
+#include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/measured_impedance_file.hpp"
 
 namespace {
 
@@ -53,5 +56,28 @@ void BM_LocalFit(benchmark::State& state) {
   state.counters["model_runs"] = evaluations;
 }
 BENCHMARK(BM_LocalFit)->Unit(benchmark::kMillisecond);
+
+// Identification from impedance on the shipped example (examples/measured_impedance.csv:
+// 2 velocities x 16 frequencies, 1 % noise; examples/damper_to_identify.toml's
+// starting values, 40 sections): one model run over the 32 points, and the whole fit.
+const std::string kExamples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
+
+void BM_ImpedanceModelRun(benchmark::State& state) {
+  const damper::Damper damper = io::read_damper_file(kExamples + "damper_to_identify.toml");
+  const ImpedanceMeasurement m = io::read_measured_impedance(kExamples + "measured_impedance.csv");
+  for (auto _ : state) benchmark::DoNotOptimize(model_impedance(damper, m, {}));
+}
+BENCHMARK(BM_ImpedanceModelRun)->Unit(benchmark::kMillisecond);
+
+void BM_ImpedanceFit(benchmark::State& state) {
+  const damper::Damper damper = io::read_damper_file(kExamples + "damper_to_identify.toml");
+  const ImpedanceMeasurement m = io::read_measured_impedance(kExamples + "measured_impedance.csv");
+  ImpedanceIdentificationOptions options;
+  options.threads = static_cast<int>(state.range(0));
+  int runs = 0;
+  for (auto _ : state) runs = identify_impedance(damper.description(), m, options).model_evaluations;
+  state.counters["model_runs"] = runs;
+}
+BENCHMARK(BM_ImpedanceFit)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 
 }  // namespace

@@ -13,6 +13,8 @@ enum ExitStatus : int { kSuccess = 0, kBadInput = 2, kNotConverged = 3 };
 void add_loop_command(CLI::App& app, int& exit_code);
 void add_cycle_command(CLI::App& app, int& exit_code);
 void add_identify_command(CLI::App& app, int& exit_code);
+/// `identify impedance`, registered on the identify command.
+void add_identify_impedance_command(CLI::App& identify, int& exit_code);
 void add_impedance_command(CLI::App& app, int& exit_code);
 void add_response_command(CLI::App& app, int& exit_code);
 void add_strand_command(CLI::App& app, int& exit_code);

@@ -197,7 +197,7 @@ int run_global(const GlobalOptions& options) {
 }  // namespace
 
 void add_identify_command(CLI::App& app, int& exit_code) {
-  CLI::App* identify = app.add_subcommand("identify", "Identify cable parameters from measured hysteresis");
+  CLI::App* identify = app.add_subcommand("identify", "Identify cable parameters from measured hysteresis or impedance");
   identify->require_subcommand(1);
   auto local = std::make_shared<LocalOptions>();
   CLI::App* sub = identify->add_subcommand(
@@ -232,6 +232,8 @@ void add_identify_command(CLI::App& app, int& exit_code) {
   g->add_option("--fitted", global->fitted, "Write measured and model output along the record (CSV, for plotting)");
   g->add_flag("--json", global->json, "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout");
   g->callback([global, &exit_code] { exit_code = run_global(*global); });
+
+  add_identify_impedance_command(*identify, exit_code);
 }
 
 }  // namespace stockbridge::cli

@@ -25,7 +25,7 @@ namespace stockbridge::cli {
 
 namespace {
 
-constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 
 struct ResponseOptions {
   std::string damper_file;
@@ -63,11 +63,11 @@ std::string response_csv(const damper::Damper& damper, const damper::Excitation&
   std::vector<double> row;
   for (Eigen::Index j = 0; j < n; ++j) {
     const double t = time[static_cast<std::size_t>(j)];
-    row = {t, x * std::sin(w * t), w * x * std::cos(w * t), complete ? force(j) : kNoValue};
+    row = {t, x * std::sin(w * t), w * x * std::cos(w * t), complete ? force(j) : kNotComputed};
     for (const damper::ArmSolution& s : state.arms) {
       const damper::ArmPeriod& p = s.period;
       if (j >= p.loads.cols()) {
-        row.insert(row.end(), 7, kNoValue);
+        row.insert(row.end(), 7, kNotComputed);
         continue;
       }
       const auto i = static_cast<std::size_t>(j);
@@ -102,10 +102,10 @@ int run_response_command(const ResponseOptions& options) {
         .add("displacement_m", p.displacement_amplitude)
         .add("converged", p.converged())
         .add("termination", termination_name(p.termination))
-        .add("re_z_n_s_m", p.converged() ? p.impedance.real() : kNoValue)
-        .add("im_z_n_s_m", p.converged() ? p.impedance.imag() : kNoValue)
-        .add("power_w", p.converged() ? p.power : kNoValue)
-        .add("dissipated_power_w", p.converged() ? p.dissipated_power : kNoValue)
+        .add("re_z_n_s_m", p.converged() ? p.impedance.real() : kNotComputed)
+        .add("im_z_n_s_m", p.converged() ? p.impedance.imag() : kNotComputed)
+        .add("power_w", p.converged() ? p.power : kNotComputed)
+        .add("dissipated_power_w", p.converged() ? p.dissipated_power : kNotComputed)
         .add("energy_error", p.energy_error);
     for (std::size_t i = 0; i < figure_names.size(); ++i) json.add(figure_names[i], figures[i]);
     fmt::print("{}\n", json.str());

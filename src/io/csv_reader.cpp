@@ -28,52 +28,70 @@ std::vector<std::string> split_cells(const std::string& line) {
   return cells;
 }
 
-}  // namespace
+/// The file opened at its header: the first non-blank line, split into cells (a
+/// byte-order mark and a CR removed); `line_number` is the header's line.
+struct OpenedCsv {
+  std::ifstream in;
+  std::string header_line;
+  std::vector<std::string> header;
+  std::size_t line_number = 0;
+};
 
-std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& path,
-                                                  const std::vector<std::string>& names, std::size_t min_rows) {
+OpenedCsv open_csv(const std::filesystem::path& path) {
   const std::string file = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(fmt::format("{}: no such file", file));
-  std::ifstream in(path, std::ios::binary);
+  OpenedCsv csv{std::ifstream(path, std::ios::binary), {}, {}, 0};
   std::string line;
-  std::size_t line_number = 0;
-  std::vector<std::size_t> index(names.size(), std::string::npos);
-  std::size_t header_cells = 0;
-  // Header: the first non-blank line.
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+  while (std::getline(csv.in, line)) {
+    ++csv.line_number;
+    if (csv.line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
-    const std::vector<std::string> header = split_cells(line);
-    header_cells = header.size();
-    for (std::size_t c = 0; c < header.size(); ++c) {
-      for (std::size_t k = 0; k < names.size(); ++k) {
-        if (header[c] != names[k]) continue;
-        if (index[k] != std::string::npos) {
-          throw InputError(fmt::format("{}:{}: column '{}' appears twice (columns {} and {})", file, line_number,
-                                       names[k], index[k] + 1, c + 1));
-        }
-        index[k] = c;
-      }
-    }
-    for (std::size_t k = 0; k < names.size(); ++k) {
-      if (index[k] == std::string::npos && (line.find(';') != std::string::npos || line.find('\t') != std::string::npos)) {
-        throw InputError(fmt::format("{}:{}: header '{}' is separated by ';' or tabs: expected ',' between columns and "
-                                     "'.' as decimal separator",
-                                     file, line_number, printable(line)));
-      }
-      if (index[k] == std::string::npos) {
-        throw InputError(fmt::format("{}:{}: missing column '{}': expected a header with {}", file, line_number,
-                                     names[k], fmt::join(names, ",")));
-      }
-    }
-    break;
+    csv.header_line = line;
+    csv.header = split_cells(line);
+    return csv;
   }
-  if (header_cells == 0) throw InputError(fmt::format("{}: empty file: expected a header row and data", file));
-  std::vector<std::vector<double>> columns(names.size());
-  while (std::getline(in, line)) {
+  throw InputError(fmt::format("{}: empty file: expected a header row and data", file));
+}
+
+}  // namespace
+
+std::vector<std::string> read_csv_header(const std::filesystem::path& path) { return open_csv(path).header; }
+
+CsvRows read_csv_rows(const std::filesystem::path& path, const std::vector<std::string>& names, std::size_t min_rows) {
+  const std::string file = path.string();
+  OpenedCsv csv = open_csv(path);
+  std::vector<std::size_t> index(names.size(), std::string::npos);
+  const std::vector<std::string>& header = csv.header;
+  const std::size_t header_cells = header.size();
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      if (header[c] != names[k]) continue;
+      if (index[k] != std::string::npos) {
+        throw InputError(fmt::format("{}:{}: column '{}' appears twice (columns {} and {})", file, csv.line_number,
+                                     names[k], index[k] + 1, c + 1));
+      }
+      index[k] = c;
+    }
+  }
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::string& line = csv.header_line;
+    if (index[k] == std::string::npos && (line.find(';') != std::string::npos || line.find('\t') != std::string::npos)) {
+      throw InputError(fmt::format("{}:{}: header '{}' is separated by ';' or tabs: expected ',' between columns and "
+                                   "'.' as decimal separator",
+                                   file, csv.line_number, printable(line)));
+    }
+    if (index[k] == std::string::npos) {
+      throw InputError(fmt::format("{}:{}: missing column '{}': expected a header with {}", file, csv.line_number,
+                                   names[k], fmt::join(names, ",")));
+    }
+  }
+  CsvRows rows;
+  rows.columns.resize(names.size());
+  std::string line;
+  std::size_t line_number = csv.line_number;
+  while (std::getline(csv.in, line)) {
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
@@ -94,13 +112,19 @@ std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& p
         throw InputError(fmt::format("{}:{}: column '{}' = {}: expected a finite number", file, line_number, names[k],
                                      cell));
       }
-      columns[k].push_back(value);
+      rows.columns[k].push_back(value);
     }
+    rows.lines.push_back(line_number);
   }
-  if (columns.front().size() < min_rows) {
-    throw InputError(fmt::format("{}: {} data rows: expected at least {}", file, columns.front().size(), min_rows));
+  if (rows.lines.size() < min_rows) {
+    throw InputError(fmt::format("{}: {} data rows: expected at least {}", file, rows.lines.size(), min_rows));
   }
-  return columns;
+  return rows;
+}
+
+std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& path,
+                                                  const std::vector<std::string>& names, std::size_t min_rows) {
+  return read_csv_rows(path, names, min_rows).columns;
 }
 
 }  // namespace stockbridge::io

@@ -54,6 +54,22 @@ JsonObject& JsonObject::add(std::string_view key, const std::vector<double>& val
   return add_raw(key, raw + "]");
 }
 
+JsonObject& JsonObject::add(std::string_view key, const std::vector<std::vector<double>>& rows) {
+  std::string raw = "[";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    raw += i ? ", [" : "[";
+    for (std::size_t j = 0; j < rows[i].size(); ++j) raw += (j ? ", " : "") + number(rows[i][j]);
+    raw += "]";
+  }
+  return add_raw(key, raw + "]");
+}
+
+JsonObject& JsonObject::add(std::string_view key, const std::vector<std::string>& values) {
+  std::string raw = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) raw += (i ? ", " : "") + json_quote(values[i]);
+  return add_raw(key, raw + "]");
+}
+
 JsonObject& JsonObject::add_null(std::string_view key) { return add_raw(key, "null"); }
 
 std::string JsonObject::str() const {

@@ -16,4 +16,16 @@ namespace stockbridge::io {
 std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& path,
                                                   const std::vector<std::string>& names, std::size_t min_rows);
 
+/// The named columns as read_csv_columns reads them, and the file's line number of
+/// each data row (for messages about a row's values).
+struct CsvRows {
+  std::vector<std::vector<double>> columns;
+  std::vector<std::size_t> lines;
+};
+CsvRows read_csv_rows(const std::filesystem::path& path, const std::vector<std::string>& names, std::size_t min_rows);
+
+/// The header's column names (to choose between alternative columns); InputError
+/// for a missing or empty file.
+std::vector<std::string> read_csv_header(const std::filesystem::path& path);
+
 }  // namespace stockbridge::io

@@ -20,6 +20,8 @@ class JsonObject {
   JsonObject& add(std::string_view key, const JsonObject& value);
   JsonObject& add(std::string_view key, const std::vector<JsonObject>& values);
   JsonObject& add(std::string_view key, const std::vector<double>& values);
+  JsonObject& add(std::string_view key, const std::vector<std::vector<double>>& rows);
+  JsonObject& add(std::string_view key, const std::vector<std::string>& values);
   JsonObject& add_null(std::string_view key);
 
   /// The object as one line of JSON.

@@ -1,0 +1,127 @@
+// stockbridge identify impedance: the cable parameters (and optionally the clamp
+// mass) of a damper from its measured impedance curves.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "input_files.hpp"
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/atomic_file.hpp"
+#include "stockbridge/io/measured_impedance_file.hpp"
+#include "stockbridge/requests/impedance_fit_request.hpp"
+
+namespace stockbridge::cli {
+
+namespace {
+
+struct ImpedanceFitOptions {
+  std::string damper_file;
+  std::string input;
+  requests::ImpedanceFitRequest request;
+  std::string output;
+  std::string fitted;
+  bool json = false;
+};
+
+/// An RMS relative error of Z above this is not a model of the measurement: worth a warning.
+constexpr double kLargeRmsError = 0.1;
+
+/// Where the cable file of each cable type goes: -o for the first; for the others
+/// -o's name with the type's first arm's name appended ("cable.toml" -> "cable_right.toml").
+std::vector<std::string> cable_outputs(const std::string& output, const identification::ImpedanceIdentification& fit,
+                                       const damper::Damper& damper) {
+  std::vector<std::string> paths;
+  if (output.empty()) return paths;
+  const std::filesystem::path path(output);
+  for (std::size_t t = 0; t < fit.cables.size(); ++t) {
+    if (t == 0) {
+      paths.push_back(output);
+      continue;
+    }
+    const std::size_t arm = static_cast<std::size_t>(
+        std::find(fit.cable_type.begin(), fit.cable_type.end(), t) - fit.cable_type.begin());
+    std::filesystem::path other = path;
+    other.replace_filename(fmt::format("{}_{}{}", path.stem().string(), damper.arm_name(arm), path.extension().string()));
+    paths.push_back(other.string());
+  }
+  return paths;
+}
+
+void warn_fit(const ImpedanceFitOptions& options, const identification::ImpedanceIdentification& fit) {
+  std::vector<std::string> lines;
+  for (const std::string& note : fit.notes) lines.push_back(note);
+  if (fit.rms_relative_error > kLargeRmsError) {
+    lines.push_back(fmt::format("the fit's RMS relative error of Z {:.3g} % is large (above {:g} %): the model does not "
+                                "follow {} (check its units, the damper's masses and lengths, --elements)",
+                                100.0 * fit.rms_relative_error, 100.0 * kLargeRmsError, options.input));
+  }
+  print_warnings(lines);
+}
+
+int run_impedance_fit(const ImpedanceFitOptions& options) {
+  const identification::ImpedanceIdentificationOptions fit_options = requests::fit_options(options.request);
+  require_outputs_apart({{"-o", options.output}, {"--fitted", options.fitted}},
+                        {{"the --input measurement", options.input}, {"the --damper file", options.damper_file}});
+  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}, {"--fitted", options.fitted}});
+  const identification::ImpedanceMeasurement measurement = io::read_measured_impedance(options.input);
+  identification::ImpedanceIdentification fit;
+  try {
+    fit = identification::identify_impedance(damper.description(), measurement, fit_options);
+  } catch (const InvalidParameter& e) {
+    // The library names the measurement "measurement", anything else is the damper's.
+    const std::string_view what = e.what(), measurement_prefix = "measurement: ";
+    throw InputError(what.starts_with(measurement_prefix)
+                         ? fmt::format("{}: {}", options.input, what.substr(measurement_prefix.size()))
+                         : fmt::format("{}: {}", options.damper_file, what));
+  }
+  warn_fit(options, fit);
+  const std::vector<std::string> cables = cable_outputs(options.output, fit, damper);
+  for (std::size_t t = 0; t < cables.size(); ++t) {
+    io::write_file_atomically(cables[t], requests::fitted_cable_file(fit, t, options.input));
+  }
+  if (!options.fitted.empty()) io::write_file_atomically(options.fitted, requests::fitted_csv(measurement, fit));
+  if (options.json) fmt::print("{}\n", requests::fit_summary(measurement, fit, damper).str());
+  fmt::print(stderr, "{}\n", requests::fit_summary_line(measurement, fit));
+  if (cables.size() > 1) fmt::print(stderr, "cable files: {}\n", fmt::join(cables, ", "));
+  if (fit.not_converged > 0) {
+    fmt::print(stderr, "error: the fitted model did not converge at {} of {} measured points (converged = 0 in "
+               "--fitted; they count as misfit 1 each)\n",
+               fit.not_converged, measurement.points.size());
+    return kNotConverged;
+  }
+  return kSuccess;
+}
+
+}  // namespace
+
+void add_identify_impedance_command(CLI::App& identify, int& exit_code) {
+  auto options = std::make_shared<ImpedanceFitOptions>();
+  CLI::App* sub = identify.add_subcommand(
+      "impedance", "Cable parameters of a damper from its measured impedance (frequency_hz, velocity_m_s, "
+                   "re_z_n_s_m, im_z_n_s_m)");
+  sub->add_option("--damper", options->damper_file,
+                  "Damper file: masses, inertias, offsets, cable lengths; its cables' values start the fit")
+      ->required();
+  sub->add_option("--input", options->input,
+                  "Measured impedance (CSV: frequency_hz, velocity_m_s or displacement_m, re_z_n_s_m and im_z_n_s_m "
+                  "or abs_z_n_s_m and phase_deg; several amplitudes)")
+      ->required();
+  sub->add_option("--elements", options->request.elements, "Jenkin elements per cable")->capture_default_str();
+  sub->add_flag("--fit-clamp-mass", options->request.fit_clamp_mass, "Also fit the clamp mass (Im Z only)");
+  sub->add_option("--threads", options->request.threads, "Model runs at once")->capture_default_str();
+  sub->add_option("-o,--output", options->output,
+                  "Write the identified cable as a cable file (TOML; the length of the first arm) that damper files "
+                  "reference");
+  sub->add_option("--fitted", options->fitted, "Write measured and model Z at the measured points (CSV, for plotting)");
+  sub->add_flag("--json", options->json,
+                "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"misfit\": ..., \"parameters\": ...} on "
+                "stdout");
+  sub->callback([options, &exit_code] { exit_code = run_impedance_fit(*options); });
+}
+
+}  // namespace stockbridge::cli

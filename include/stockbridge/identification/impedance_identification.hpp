@@ -1,0 +1,120 @@
+#pragma once
+// Identification from a measured damper impedance (dissertation 4.3.1; the damper
+// characteristic test of IEC 61897): the cable parameters (ei and the Jenkin
+// elements' c_j, h_j, constant along the cable) and optionally the clamp mass that
+// make the model's impedance match a measured Z(f, V), the damper's masses,
+// inertias, offsets and cable lengths being known.
+//
+// Misfit: the relative complex one, every point weighted by its own magnitude,
+//     S = sum_i |Z_model,i - Z_i|^2 / |Z_i|^2,
+// so that a curve's small values (off resonance, at the higher velocity) count as
+// much as its peaks. A point the model does not converge at counts as the model's
+// Z = 0 there (|r_i|^2 = 1), never as a failure of the fit.
+//
+// Method: the model is followed along each measured curve in frequency order
+// (damper::DamperTracker, the sweep's warm starts); the parameters are fitted in
+// logarithms (they stay positive; the clamp mass linearly, it enters Z as i W m_c)
+// by Levenberg-Marquardt (Eigen's MINPACK port) on the 2N real residuals, with a
+// forward-difference Jacobian (the clamp mass's column analytic), from several
+// starts; the best start is polished to convergence. The Jacobian at the optimum
+// gives each parameter's standard error, its correlations, and which parameters (or
+// combinations) the data do not determine.
+#include <complex>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stockbridge/damper/impedance.hpp"
+#include "stockbridge/damper/tracker.hpp"
+#include "stockbridge/section/masing_law.hpp"
+
+namespace stockbridge::identification {
+
+/// One measured point: the clamp's excitation and the impedance there.
+struct MeasuredImpedance {
+  damper::Excitation excitation;
+  std::complex<double> impedance;  ///< Z, N s/m, nonzero
+};
+
+struct ImpedanceMeasurement {
+  std::vector<MeasuredImpedance> points;
+  /// What each curve holds constant: the points are grouped into curves by it.
+  damper::HeldAmplitude held = damper::HeldAmplitude::velocity;
+  /// Throws InvalidParameter naming the point ("point 3: frequency_hz = -1: expected > 0").
+  void validate() const;
+};
+
+/// The measured curves: the points whose held amplitude lies within 10 % of the
+/// smallest of them, each curve's point indices in frequency order; curves in
+/// increasing amplitude.
+std::vector<std::vector<std::size_t>> measured_curves(const ImpedanceMeasurement& measurement);
+
+/// Arms that share one cable type (the fit gives them the same parameters): those
+/// whose cables have the same ei and Jenkin elements in the damper description
+/// (lengths and sections may differ). Per arm, the index of its type; types are
+/// numbered in the order of their first arm.
+std::vector<std::size_t> cable_types(const damper::DamperDescription& damper);
+
+struct ImpedanceIdentificationOptions {
+  int elements = 1;              ///< Jenkin elements per cable type, 1..6
+  bool fit_clamp_mass = false;   ///< also fit m_c (otherwise the description's)
+  damper::SolverOptions solver;  ///< the model's periodic solver
+  int max_jacobians = 30;        ///< per start: Levenberg-Marquardt iterations at most
+  int threads = 1;               ///< Jacobian columns evaluated at once, >= 1
+  void validate() const;
+};
+
+/// One fitted parameter.
+struct ParameterEstimate {
+  std::string name;  ///< as a cable file names it ("ei", "jenkin[0].c"; "arm[1].cable.ei" with several cable types; "clamp_mass")
+  std::string unit;  ///< "N m^2", "N m", "kg"
+  double value = 0.0;
+  /// From the Jacobian at the optimum and the residual's spread, in the value's
+  /// unit; infinity where not determined.
+  double standard_error = 0.0;
+  /// RMS relative change of Z per relative change of the parameter (per kg of
+  /// clamp mass): how strongly the data see it.
+  double sensitivity = 0.0;
+  /// The relative standard error a 1 % scatter of Z would give it; infinity where
+  /// not determined.
+  double resolution_at_1_percent = 0.0;
+  /// False where the data leave it free (its Jacobian column in the span of the
+  /// others, or a 1 % scatter of Z moving it by more than half its value).
+  bool determined = true;
+};
+
+struct ImpedanceIdentification {
+  damper::DamperDescription damper;                ///< the start's damper with the fitted parameters
+  std::vector<std::size_t> cable_type;             ///< per arm (cable_types())
+  std::vector<section::MasingParameters> cables;   ///< per type, elements sorted by slip curvature h / c
+  double clamp_mass = 0.0;                         ///< kg (fitted, or the description's)
+  double misfit = 0.0;             ///< S at the optimum
+  double rms_relative_error = 0.0; ///< sqrt(S / N)
+  std::vector<ParameterEstimate> parameters;       ///< in the order of cables, then the clamp mass
+  /// Correlations of the parameters' estimates (NaN for a parameter not determined).
+  Eigen::MatrixXd correlation;
+  /// The stick stiffness ei + sum c of each type, which data that never reach slip
+  /// still determine (named "ei_plus_c", "arm[1].cable.ei_plus_c").
+  std::vector<ParameterEstimate> stick_stiffness;
+  /// What the data do not determine, one sentence each.
+  std::vector<std::string> notes;
+  std::vector<damper::ImpedancePoint> fitted;      ///< the model at each measured point, in the measurement's order
+  int not_converged = 0;           ///< measured points the fitted model does not converge at
+  int model_evaluations = 0;       ///< model runs over all points (Jacobian columns included)
+  int starts = 0;
+};
+
+/// Fits the cable parameters (and optionally the clamp mass) of `start` (its values
+/// the starting values) to the measurement. Throws InvalidParameter for a start
+/// whose cables are profiles or use the modified Masing model with another element
+/// count, or for bad options or measurements.
+ImpedanceIdentification identify_impedance(const damper::DamperDescription& start, const ImpedanceMeasurement& measurement,
+                                           const ImpedanceIdentificationOptions& options);
+
+/// The model's impedance at every measured point (in the measurement's order),
+/// followed along each curve; points that do not converge say so.
+std::vector<damper::ImpedancePoint> model_impedance(const damper::Damper& damper, const ImpedanceMeasurement& measurement,
+                                                    const damper::SolverOptions& solver);
+
+}  // namespace stockbridge::identification

@@ -1,0 +1,58 @@
+#pragma once
+// The request layer for the identification from a measured impedance (`stockbridge
+// identify impedance`, Python's identify_impedance): the fit's settings as the
+// front ends name them, the summary (the --json keys), the fitted model at the
+// measured points (the --fitted CSV's columns) and the identified cables as cable
+// files.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "stockbridge/identification/impedance_identification.hpp"
+#include "stockbridge/io/json_writer.hpp"
+
+namespace stockbridge::requests {
+
+struct ImpedanceFitRequest {
+  int elements = 1;             ///< Jenkin elements per cable type
+  bool fit_clamp_mass = false;  ///< also fit the clamp mass
+  int threads = 1;              ///< model runs at once (the Jacobian's columns)
+};
+
+/// The fit's options; InvalidParameter naming "elements" or "threads" (the
+/// command's --elements and --threads, Python's keywords).
+identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitRequest& request);
+
+/// The --fitted CSV's columns: the measured point (frequency_hz, velocity_m_s,
+/// displacement_m, re_z_n_s_m, im_z_n_s_m), the fitted model's Z there
+/// (model_re_z_n_s_m, model_im_z_n_s_m; NaN where it did not converge) and converged.
+std::vector<std::string> fitted_columns();
+/// One row per measured point, in the measurement's order, in fitted_columns order.
+std::vector<std::vector<double>> fitted_rows(const identification::ImpedanceMeasurement& measurement,
+                                             const identification::ImpedanceIdentification& fit);
+std::string fitted_csv(const identification::ImpedanceMeasurement& measurement,
+                       const identification::ImpedanceIdentification& fit);
+
+/// The summary, as `identify impedance --json` prints it and Python returns it:
+/// ei and jenkin [{c, h}] (the first cable type's, as identify global prints them),
+/// clamp_mass_kg, misfit, rms_relative_error, points, curves, not_converged,
+/// parameters [{name, unit, value, standard_error, resolution_at_1_percent,
+/// sensitivity, determined}], correlation (rows in the parameters' order, null for
+/// a parameter not determined), stick_stiffness [the same for each type's
+/// ei_plus_c], undetermined [names], notes, cables [{arms, ei, jenkin}] (every
+/// type), model_runs, starts.
+io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measurement,
+                           const identification::ImpedanceIdentification& fit, const damper::Damper& start);
+
+/// One line for the terminal: the parameters with their standard errors, the error and the work.
+std::string fit_summary_line(const identification::ImpedanceMeasurement& measurement,
+                             const identification::ImpedanceIdentification& fit);
+
+/// The cable file of cable type `type`: the fitted parameters on the cable of the
+/// type's first arm (its length, sections, mirror length and lever-arm cap), the
+/// fit's figures and `source` in comments. Damper files reference it and cut it to
+/// each arm's length.
+std::string fitted_cable_file(const identification::ImpedanceIdentification& fit, std::size_t type,
+                              std::string_view source);
+
+}  // namespace stockbridge::requests

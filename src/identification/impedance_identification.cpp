@@ -1,0 +1,618 @@
+#include "stockbridge/identification/impedance_identification.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <numeric>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "fit_core.hpp"
+#include "least_squares.hpp"
+#include "stockbridge/core/error.hpp"
+
+namespace stockbridge::identification {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Points whose held amplitudes lie within this ratio of a curve's smallest belong to it.
+constexpr double kCurveAmplitudeRatio = 1.1;
+/// The forward-difference step of the log parameters: about the square root of the
+/// model's relative accuracy (the harmonic balance's tolerance 1e-8).
+constexpr double kDifferenceStep = 1e-4;
+/// The scatter of Z (relative, per real component) at which parameters' resolutions are stated.
+constexpr double kStatedScatter = 0.01;
+/// A parameter that this scatter moves by more than this fraction of its value is not determined.
+constexpr double kUndeterminedResolution = 0.5;
+/// Each residual where the variables lie beyond fit_core::Search::variable_limit or
+/// the model refuses the parameters: far above any fit, so that no step goes there.
+constexpr double kRejected = 1e3;
+/// Iterations from each start before the best is polished.
+constexpr int kExploreJacobians = 3;
+/// The starts are explored on cables of at most this many sections (about 0.5 %
+/// off in Z, a third of the cost); the best is polished on the description's.
+constexpr int kExploreSections = 12;
+/// An RMS relative error below this reproduces the data to the model's accuracy:
+/// no further start can do better.
+constexpr double kReproducedError = 1e-6;
+/// The starts: (ei, every h) scaled from the starting values.
+constexpr std::pair<double, double> kStartFactors[] = {{1.0, 1.0}, {1.0, 0.5}, {1.0, 2.0}, {1.0, 0.25}, {0.7, 1.0}, {1.4, 1.0}};
+
+double held_amplitude(const damper::Excitation& e, damper::HeldAmplitude held) {
+  return held == damper::HeldAmplitude::velocity ? e.velocity_amplitude() : e.displacement_amplitude;
+}
+
+/// The constant value of a profile, or InvalidParameter naming it.
+double constant_value(const cable::Profile& profile, const std::string& name) {
+  if (!profile.is_constant()) {
+    throw InvalidParameter(fmt::format("{}: a profile along the cable: identify impedance fits constant parameters "
+                                       "(give the starting value as a number)",
+                                       name));
+  }
+  return profile.values()[0];
+}
+
+std::string arm_key(std::size_t arm) { return fmt::format("arm[{}].cable.", arm); }
+
+/// The optimiser's variables and the damper they stand for. Per cable type: the
+/// logarithms of ei, c_0, h_0, c_1, h_1, ... relative to the starting values; then,
+/// when fitted, the clamp mass's change in units of the damper's mass.
+class FitVariables {
+ public:
+  FitVariables(const damper::DamperDescription& start, int elements, bool fit_clamp_mass)
+      : start_(start), type_of_arm_(cable_types(start)), fit_clamp_mass_(fit_clamp_mass) {
+    const std::size_t types = *std::max_element(type_of_arm_.begin(), type_of_arm_.end()) + 1;
+    for (std::size_t t = 0; t < types; ++t) {
+      const std::size_t arm = first_arm(t);
+      prefixes_.push_back(types > 1 ? arm_key(arm) : "");
+      reference_.push_back(starting_parameters(start.arms[arm].cable, elements, arm_key(arm)));
+      k0_.push_back(starting_k0(start.arms[arm].cable, elements, arm_key(arm)));
+    }
+    mass_scale_ = start.clamp_mass;
+    for (const damper::ArmDescription& a : start.arms) mass_scale_ += a.mass;
+  }
+
+  int elements() const { return static_cast<int>(reference_.front().jenkin.size()); }
+  int per_type() const { return 1 + 2 * elements(); }
+  int size() const { return per_type() * static_cast<int>(reference_.size()) + (fit_clamp_mass_ ? 1 : 0); }
+  std::size_t types() const { return reference_.size(); }
+  const std::vector<std::size_t>& type_of_arm() const { return type_of_arm_; }
+  bool fits_clamp_mass() const { return fit_clamp_mass_; }
+  int clamp_mass_index() const { return size() - 1; }
+  double mass_scale() const { return mass_scale_; }
+
+  /// Each type's parameters at x, in the packed order.
+  std::vector<section::MasingParameters> cables(const Eigen::VectorXd& x) const {
+    std::vector<section::MasingParameters> out;
+    for (std::size_t t = 0; t < types(); ++t) {
+      const section::MasingParameters& r = reference_[t];
+      const int o = per_type() * static_cast<int>(t);
+      section::MasingParameters p{r.ei * std::exp(x(o)), {}};
+      for (int j = 0; j < elements(); ++j) {
+        p.jenkin.push_back({r.jenkin[j].c * std::exp(x(o + 1 + 2 * j)), r.jenkin[j].h * std::exp(x(o + 2 + 2 * j))});
+      }
+      out.push_back(p);
+    }
+    return out;
+  }
+
+  double clamp_mass(const Eigen::VectorXd& x) const {
+    return start_.clamp_mass + (fit_clamp_mass_ ? mass_scale_ * x(clamp_mass_index()) : 0.0);
+  }
+
+  /// The damper with the cables' parameters (each arm keeps its length, sections
+  /// (at most `max_sections`), mirror length and lever-arm cap) and the clamp mass given.
+  damper::DamperDescription damper(const std::vector<section::MasingParameters>& cables, double clamp_mass,
+                                   int max_sections = cable::max_sections) const {
+    damper::DamperDescription d = start_;
+    d.clamp_mass = clamp_mass;
+    for (std::size_t k = 0; k < d.arms.size(); ++k) {
+      const std::size_t t = type_of_arm_[k];
+      cable::CableDescription& c = d.arms[k].cable;
+      c.sections = std::min(c.sections, max_sections);
+      c.ei = cable::Profile::constant(cables[t].ei);
+      c.jenkin.clear();
+      for (std::size_t j = 0; j < cables[t].jenkin.size(); ++j) {
+        c.jenkin.push_back({cable::Profile::constant(cables[t].jenkin[j].c), cable::Profile::constant(cables[t].jenkin[j].h),
+                            k0_[t][j]});
+      }
+    }
+    return d;
+  }
+
+  /// The names of the variables' parameters as a cable file (and damper file) names them.
+  std::string name(int i) const {
+    if (fit_clamp_mass_ && i == clamp_mass_index()) return "clamp_mass";
+    const std::string& prefix = prefixes_[static_cast<std::size_t>(i / per_type())];
+    const int k = i % per_type();
+    if (k == 0) return prefix + "ei";
+    return fmt::format("{}jenkin[{}].{}", prefix, (k - 1) / 2, (k - 1) % 2 == 0 ? "c" : "h");
+  }
+  std::string unit(int i) const {
+    if (fit_clamp_mass_ && i == clamp_mass_index()) return "kg";
+    return i % per_type() == 0 || (i % per_type() - 1) % 2 == 0 ? "N m^2" : "N m";
+  }
+  std::string type_prefix(std::size_t t) const { return prefixes_[t]; }
+
+  /// The same point with each type's elements in order of slip curvature h / c (as
+  /// the fits report them; the model does not depend on their order).
+  Eigen::VectorXd sorted(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd out = x;
+    const std::vector<section::MasingParameters> unsorted = cables(x);
+    for (std::size_t t = 0; t < types(); ++t) {
+      const section::MasingParameters p = fit_core::sorted_by_slip_curvature(unsorted[t]);
+      const int o = per_type() * static_cast<int>(t);
+      for (int j = 0; j < elements(); ++j) {
+        out(o + 1 + 2 * j) = std::log(p.jenkin[j].c / reference_[t].jenkin[j].c);
+        out(o + 2 + 2 * j) = std::log(p.jenkin[j].h / reference_[t].jenkin[j].h);
+      }
+    }
+    return out;
+  }
+
+  /// The starting points: the starting values with ei and every h scaled.
+  std::vector<Eigen::VectorXd> starts() const {
+    std::vector<Eigen::VectorXd> out;
+    for (const auto& [ei_factor, h_factor] : kStartFactors) {
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(size());
+      for (std::size_t t = 0; t < types(); ++t) {
+        const int o = per_type() * static_cast<int>(t);
+        x(o) = std::log(ei_factor);
+        for (int j = 0; j < elements(); ++j) x(o + 2 + 2 * j) = std::log(h_factor);
+      }
+      out.push_back(x);
+    }
+    return out;
+  }
+
+ private:
+  std::size_t first_arm(std::size_t type) const {
+    return static_cast<std::size_t>(std::find(type_of_arm_.begin(), type_of_arm_.end(), type) - type_of_arm_.begin());
+  }
+
+  /// The start's elements where it has `elements` of them, otherwise their sums
+  /// spread over `elements` (fit_core::spread_over_elements).
+  static section::MasingParameters starting_parameters(const cable::CableDescription& c, int elements,
+                                                       const std::string& key) {
+    const double ei = constant_value(c.ei, key + "ei");
+    section::MasingParameters p{ei, {}};
+    double c_total = 0.0, h_total = 0.0;
+    for (std::size_t j = 0; j < c.jenkin.size(); ++j) {
+      const section::Jenkin e{constant_value(c.jenkin[j].c, fmt::format("{}jenkin[{}].c", key, j)),
+                              constant_value(c.jenkin[j].h, fmt::format("{}jenkin[{}].h", key, j))};
+      p.jenkin.push_back(e);
+      c_total += e.c;
+      h_total += e.h;
+    }
+    if (p.jenkin.empty()) {
+      throw InvalidParameter(fmt::format("{}jenkin: no elements: expected starting values of c and h (N m^2, N m)", key));
+    }
+    if (static_cast<int>(p.jenkin.size()) == elements) return p;
+    return fit_core::spread_over_elements(ei, c_total, h_total, elements);
+  }
+
+  static std::vector<double> starting_k0(const cable::CableDescription& c, int elements, const std::string& key) {
+    if (static_cast<int>(c.jenkin.size()) == elements) {
+      std::vector<double> k0;
+      for (const cable::JenkinProfile& e : c.jenkin) k0.push_back(e.k0);
+      return k0;
+    }
+    for (std::size_t j = 0; j < c.jenkin.size(); ++j) {
+      if (c.jenkin[j].k0 != 0.0) {
+        throw InvalidParameter(fmt::format("{}jenkin[{}].k0 = {}: the modified Masing model with {} elements in the "
+                                           "file but {} to fit: expected as many elements as fitted",
+                                           key, j, format_value(c.jenkin[j].k0), c.jenkin.size(), elements));
+      }
+    }
+    return std::vector<double>(static_cast<std::size_t>(elements), 0.0);
+  }
+
+  damper::DamperDescription start_;
+  std::vector<std::size_t> type_of_arm_;
+  bool fit_clamp_mass_;
+  std::vector<std::string> prefixes_;
+  std::vector<section::MasingParameters> reference_;
+  std::vector<std::vector<double>> k0_;
+  double mass_scale_ = 0.0;
+};
+
+using Checkpoints = std::vector<damper::DamperTracker::Checkpoint>;
+
+/// The model at every measured point. Each curve is solved from `warm` where given
+/// (per point, the solution there for nearby parameters: a Newton step or two,
+/// where following the curve from its first frequency takes substeps near every
+/// resonance), else, or where a point fails from it, along the curve in frequency
+/// order. `solutions` (if given) receives each point's solution, to warm-start the
+/// next parameters (empty where it did not converge).
+std::vector<damper::ImpedancePoint> solve_points(const damper::Damper& damper, const ImpedanceMeasurement& m,
+                                                 const damper::SolverOptions& solver, const Checkpoints* warm,
+                                                 Checkpoints* solutions) {
+  std::vector<damper::ImpedancePoint> points(m.points.size());
+  if (solutions) solutions->assign(m.points.size(), {});
+  auto keep = [&](damper::DamperTracker& tracker, std::size_t i) {
+    if (solutions && points[i].converged()) (*solutions)[i] = tracker.checkpoint();
+  };
+  for (const std::vector<std::size_t>& curve : measured_curves(m)) {
+    damper::DamperTracker tracker(damper, solver, m.held);
+    bool warm_started = warm && warm->size() == m.points.size() &&
+                        std::all_of(curve.begin(), curve.end(), [&](std::size_t i) { return !(*warm)[i].empty(); });
+    for (std::size_t k = 0; k < curve.size() && warm_started; ++k) {
+      tracker.restore((*warm)[curve[k]]);
+      points[curve[k]] = tracker.solve(m.points[curve[k]].excitation);
+      warm_started = points[curve[k]].converged();
+      keep(tracker, curve[k]);
+    }
+    if (warm_started) continue;
+    damper::DamperTracker along(damper, solver, m.held);
+    for (const std::size_t i : curve) {
+      points[i] = along.solve(m.points[i].excitation);
+      keep(along, i);
+    }
+  }
+  return points;
+}
+
+/// The model at one point of the variables: the residuals, where it converged, and
+/// its solutions (to warm-start nearby points).
+struct Evaluation {
+  Eigen::VectorXd x;
+  Eigen::VectorXd residuals;
+  std::vector<bool> converged;
+  Checkpoints solutions;
+};
+
+/// The relative complex residuals of the model's Z against the measured one (Z = 0
+/// where the model did not converge).
+class ImpedanceProblem : public least_squares::Problem {
+ public:
+  /// The model's cables have at most `max_sections` sections.
+  ImpedanceProblem(const FitVariables& variables, const ImpedanceMeasurement& measurement,
+                   const ImpedanceIdentificationOptions& options, int max_sections = cable::max_sections)
+      : variables_(variables), measurement_(measurement), options_(options), max_sections_(max_sections) {}
+
+  int variables() const override { return variables_.size(); }
+  int residual_count() const override { return 2 * static_cast<int>(measurement_.points.size()); }
+
+  Eigen::VectorXd residuals(const Eigen::VectorXd& x) override { return evaluated(x).residuals; }
+
+  /// Levenberg-Marquardt's points are warm-started from the best so far (its
+  /// current iterate), the Jacobian's columns from the point they differentiate at.
+
+  Eigen::MatrixXd jacobian(const Eigen::VectorXd& x) override {
+    const Evaluation at = evaluated(x);
+    Eigen::MatrixXd jacobian(residual_count(), variables());
+    std::vector<int> columns(static_cast<std::size_t>(variables()));
+    std::iota(columns.begin(), columns.end(), 0);
+    if (variables_.fits_clamp_mass()) {
+      jacobian.col(variables_.clamp_mass_index()) = clamp_mass_column(at);
+      columns.pop_back();
+    }
+    run_in_parallel(columns.size(), [&](std::size_t k) {
+      Eigen::VectorXd shifted = x;
+      shifted(columns[k]) += kDifferenceStep;
+      jacobian.col(columns[k]) = (evaluate(shifted, &at).residuals - at.residuals) / kDifferenceStep;
+    });
+    return jacobian;
+  }
+
+  /// The model's points (with the clamp mass) at x; converged() false where it did not converge.
+  std::vector<damper::ImpedancePoint> points(const Eigen::VectorXd& x) const {
+    const damper::DamperDescription description =
+        variables_.damper(variables_.cables(x), std::max(0.0, variables_.clamp_mass(x)), max_sections_);
+    const Evaluation* warm = best_recent();
+    return solve_points(damper::Damper(description), measurement_, options_.solver, warm ? &warm->solutions : nullptr,
+                        nullptr);
+  }
+
+  int evaluations() const { return evaluations_.load(); }
+
+ private:
+  /// The model with the clamp mass left out (it is added as i W m_c, which may then be negative).
+  Evaluation evaluate(const Eigen::VectorXd& x, const Evaluation* warm) {
+    ++evaluations_;
+    const std::size_t n = measurement_.points.size();
+    Evaluation e{x, Eigen::VectorXd(2 * n), std::vector<bool>(n, false), {}};
+    std::vector<damper::ImpedancePoint> arms;
+    if (x.cwiseAbs().maxCoeff() <= fit_core::Search::variable_limit) {
+      try {
+        arms = solve_points(damper::Damper(variables_.damper(variables_.cables(x), 0.0, max_sections_)), measurement_,
+                            options_.solver, warm ? &warm->solutions : nullptr, &e.solutions);
+      } catch (const InvalidParameter&) {
+        arms.clear();  // parameters the model does not accept (overflowed)
+      }
+    }
+    if (arms.empty()) {
+      e.residuals.setConstant(kRejected);
+      return e;
+    }
+    const double clamp_mass = variables_.clamp_mass(x);
+    for (std::size_t i = 0; i < n; ++i) {
+      const MeasuredImpedance& m = measurement_.points[i];
+      std::complex<double> z = 0.0;
+      if (arms[i].converged()) {
+        z = arms[i].impedance + std::complex<double>(0.0, m.excitation.angular_frequency() * clamp_mass);
+        e.converged[i] = true;
+      }
+      const std::complex<double> r = (z - m.impedance) / std::abs(m.impedance);
+      e.residuals(2 * i) = r.real();
+      e.residuals(2 * i + 1) = r.imag();
+    }
+    return e;
+  }
+
+  /// dr/dx of the clamp-mass variable: i W (mass scale) / |Z| where the model converged.
+  Eigen::VectorXd clamp_mass_column(const Evaluation& at) const {
+    Eigen::VectorXd column = Eigen::VectorXd::Zero(residual_count());
+    for (std::size_t i = 0; i < measurement_.points.size(); ++i) {
+      const MeasuredImpedance& m = measurement_.points[i];
+      if (at.converged[i]) {
+        column(2 * i + 1) = m.excitation.angular_frequency() * variables_.mass_scale() / std::abs(m.impedance);
+      }
+    }
+    return column;
+  }
+
+  /// The evaluation at x: Levenberg-Marquardt asks for the Jacobian at its best point,
+  /// which need not be the last one evaluated, so the last few are kept.
+  Evaluation evaluated(const Eigen::VectorXd& x) {
+    for (const Evaluation& e : recent_) {
+      if (e.x == x) return e;
+    }
+    Evaluation e = evaluate(x, best_recent());
+    if (recent_.size() == 4) recent_.erase(recent_.begin());
+    recent_.push_back(e);
+    return e;
+  }
+
+  /// The kept evaluation with the smallest residuals (none at first).
+  const Evaluation* best_recent() const {
+    const Evaluation* best = nullptr;
+    for (const Evaluation& e : recent_) {
+      if (!best || e.residuals.squaredNorm() < best->residuals.squaredNorm()) best = &e;
+    }
+    return best;
+  }
+
+  template <class Task>
+  void run_in_parallel(std::size_t count, Task task) const {
+    const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(options_.threads), count);
+    if (workers <= 1) {
+      for (std::size_t k = 0; k < count; ++k) task(k);
+      return;
+    }
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    auto work = [&] {
+      for (std::size_t k = next++; k < count; k = next++) {
+        try {
+          task(k);
+        } catch (...) {
+          const std::lock_guard lock(failure_mutex);
+          if (!failure) failure = std::current_exception();
+        }
+      }
+    };
+    std::vector<std::thread> threads;
+    for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work);
+    work();
+    for (std::thread& t : threads) t.join();
+    if (failure) std::rethrow_exception(failure);
+  }
+
+  const FitVariables& variables_;
+  const ImpedanceMeasurement& measurement_;
+  const ImpedanceIdentificationOptions& options_;
+  int max_sections_;
+  std::vector<Evaluation> recent_;
+  std::atomic<int> evaluations_{0};
+};
+
+/// Each variable's estimate (value, standard error, resolution, sensitivity), in the variables' order.
+std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Eigen::VectorXd& x,
+                                         const least_squares::Statistics& s) {
+  const std::vector<section::MasingParameters> cables = variables.cables(x);
+  std::vector<ParameterEstimate> out;
+  for (int i = 0; i < variables.size(); ++i) {
+    ParameterEstimate e;
+    e.name = variables.name(i);
+    e.unit = variables.unit(i);
+    if (variables.fits_clamp_mass() && i == variables.clamp_mass_index()) {
+      // A linear variable in units of the damper's mass: its resolution in those units.
+      e.value = variables.clamp_mass(x);
+      e.standard_error = variables.mass_scale() * s.standard_error(i);
+      e.resolution_at_1_percent = s.resolution(i);
+      e.sensitivity = s.sensitivity(i) / variables.mass_scale();
+    } else {
+      const section::MasingParameters& p = cables[static_cast<std::size_t>(i / variables.per_type())];
+      const int k = i % variables.per_type();
+      e.value = k == 0 ? p.ei : (k - 1) % 2 == 0 ? p.jenkin[(k - 1) / 2].c : p.jenkin[(k - 1) / 2].h;
+      e.standard_error = e.value * s.standard_error(i);  // a log variable: relative errors
+      e.resolution_at_1_percent = s.resolution(i);
+      e.sensitivity = s.sensitivity(i);
+    }
+    if (s.in_null_space[static_cast<std::size_t>(i)]) e.standard_error = kInfinity;
+    e.determined = !s.in_null_space[static_cast<std::size_t>(i)] && e.resolution_at_1_percent <= kUndeterminedResolution;
+    out.push_back(e);
+  }
+  return out;
+}
+
+/// Each type's ei + sum c, a combination the data determine even where nothing slips.
+std::vector<ParameterEstimate> stick_stiffnesses(const FitVariables& variables, const Eigen::VectorXd& x,
+                                                 const least_squares::Statistics& s) {
+  std::vector<ParameterEstimate> out;
+  const std::vector<section::MasingParameters> cables = variables.cables(x);
+  for (std::size_t t = 0; t < cables.size(); ++t) {
+    const section::MasingParameters& p = cables[t];
+    const double stiffness = p.max_stiffness();
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(variables.size());  // d(ei + sum c) / (ei + sum c) per log variable
+    const int o = variables.per_type() * static_cast<int>(t);
+    g(o) = p.ei / stiffness;
+    for (int j = 0; j < variables.elements(); ++j) g(o + 1 + 2 * j) = p.jenkin[j].c / stiffness;
+    ParameterEstimate e;
+    e.name = variables.type_prefix(t) + "ei_plus_c";
+    e.unit = "N m^2";
+    e.value = stiffness;
+    e.resolution_at_1_percent = s.resolution_of(g);
+    e.standard_error = stiffness * s.standard_error_of(g);
+    e.sensitivity = std::numeric_limits<double>::quiet_NaN();
+    e.determined = e.resolution_at_1_percent <= kUndeterminedResolution;
+    out.push_back(e);
+  }
+  return out;
+}
+
+/// One sentence per null-space direction and per poorly resolved parameter, and
+/// one where the fitted model never slips.
+std::vector<std::string> determination_notes(const std::vector<ParameterEstimate>& parameters,
+                                             const least_squares::Statistics& s,
+                                             const std::vector<ParameterEstimate>& stick,
+                                             const std::vector<damper::ImpedancePoint>& fitted) {
+  std::vector<std::string> notes;
+  for (Eigen::Index k = 0; k < s.null_space.cols(); ++k) {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+      if (std::abs(s.null_space(static_cast<Eigen::Index>(i), k)) > 0.1) names.push_back(parameters[i].name);
+    }
+    notes.push_back(names.size() == 1 ? fmt::format("Z does not change with {}: the data do not determine it", names[0])
+                                      : fmt::format("Z changes only with a combination of {}: the data do not "
+                                                    "determine them apart",
+                                                    fmt::join(names, ", ")));
+  }
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const ParameterEstimate& p = parameters[i];
+    if (p.determined || s.in_null_space[i]) continue;
+    notes.push_back(fmt::format("{} is not determined: a 1 % scatter of Z moves it by {:.3g} %", p.name,
+                                100.0 * p.resolution_at_1_percent));
+  }
+  const bool slips = std::any_of(fitted.begin(), fitted.end(),
+                                 [](const damper::ImpedancePoint& p) { return p.converged() && p.dissipated_power > 0.0; });
+  if (!slips) {
+    std::string stiffness;
+    for (const ParameterEstimate& e : stick) stiffness += fmt::format(", {} = {:.6g} N m^2", e.name, e.value);
+    notes.push_back(fmt::format("the fitted cable never slips at the measured points: they determine only its stick "
+                                "stiffness{}; measure at a higher velocity or across the arms' resonances",
+                                stiffness));
+  }
+  return notes;
+}
+
+}  // namespace
+
+void ImpedanceMeasurement::validate() const {
+  if (points.empty()) throw InvalidParameter("measurement: no points");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const MeasuredImpedance& p = points[i];
+    const std::string at = fmt::format("point {}: ", i + 1);
+    require_positive(at + "frequency_hz", p.excitation.frequency_hz, "Hz");
+    require_positive(at + "displacement_m", p.excitation.displacement_amplitude, "m");
+    if (!std::isfinite(p.impedance.real()) || !std::isfinite(p.impedance.imag()) || p.impedance == 0.0) {
+      throw InvalidParameter(fmt::format("{}Z = {} + {} i N s/m: expected finite and nonzero", at,
+                                         format_value(p.impedance.real()), format_value(p.impedance.imag())));
+    }
+  }
+}
+
+std::vector<std::vector<std::size_t>> measured_curves(const ImpedanceMeasurement& m) {
+  std::vector<std::size_t> order(m.points.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto amplitude = [&](std::size_t i) { return held_amplitude(m.points[i].excitation, m.held); };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return amplitude(a) < amplitude(b); });
+  std::vector<std::vector<std::size_t>> curves;
+  double smallest = 0.0;
+  for (const std::size_t i : order) {
+    if (curves.empty() || amplitude(i) > kCurveAmplitudeRatio * smallest) {
+      curves.emplace_back();
+      smallest = amplitude(i);
+    }
+    curves.back().push_back(i);
+  }
+  for (std::vector<std::size_t>& curve : curves) {
+    std::stable_sort(curve.begin(), curve.end(), [&](std::size_t a, std::size_t b) {
+      return m.points[a].excitation.frequency_hz < m.points[b].excitation.frequency_hz;
+    });
+  }
+  return curves;
+}
+
+std::vector<std::size_t> cable_types(const damper::DamperDescription& d) {
+  std::vector<std::size_t> type(d.arms.size());
+  std::vector<std::size_t> first_of_type;
+  for (std::size_t k = 0; k < d.arms.size(); ++k) {
+    const cable::CableDescription& c = d.arms[k].cable;
+    auto same = [&](std::size_t f) { return d.arms[f].cable.ei == c.ei && d.arms[f].cable.jenkin == c.jenkin; };
+    const auto found = std::find_if(first_of_type.begin(), first_of_type.end(), same);
+    type[k] = static_cast<std::size_t>(found - first_of_type.begin());
+    if (found == first_of_type.end()) first_of_type.push_back(k);
+  }
+  return type;
+}
+
+void ImpedanceIdentificationOptions::validate() const {
+  require_in_range("elements", elements, 1, 6);
+  require_in_range("max_jacobians", max_jacobians, 1, 10000);
+  require_in_range("threads", threads, 1, 1024);
+  solver.validate();
+}
+
+std::vector<damper::ImpedancePoint> model_impedance(const damper::Damper& damper, const ImpedanceMeasurement& m,
+                                                    const damper::SolverOptions& solver) {
+  return solve_points(damper, m, solver, nullptr, nullptr);
+}
+
+ImpedanceIdentification identify_impedance(const damper::DamperDescription& start, const ImpedanceMeasurement& measurement,
+                                           const ImpedanceIdentificationOptions& options) {
+  options.validate();
+  measurement.validate();
+  (void)damper::Damper(start);  // validates the start, naming its fields
+  const FitVariables variables(start, options.elements, options.fit_clamp_mass);
+  if (2 * measurement.points.size() < static_cast<std::size_t>(variables.size())) {
+    throw InvalidParameter(fmt::format("measurement: {} points for {} parameters: expected at least {}",
+                                       measurement.points.size(), variables.size(), (variables.size() + 1) / 2));
+  }
+  ImpedanceProblem coarse(variables, measurement, options, kExploreSections);
+  ImpedanceProblem problem(variables, measurement, options);
+
+  // Each start explored briefly on coarse cables, the best polished to convergence.
+  least_squares::Run best;
+  best.sum_of_squares = kInfinity;
+  int starts = 0;
+  for (const Eigen::VectorXd& x : variables.starts()) {
+    least_squares::Run run = least_squares::levenberg_marquardt(coarse, x, std::min(kExploreJacobians, options.max_jacobians));
+    ++starts;
+    if (run.sum_of_squares < best.sum_of_squares) best = std::move(run);
+    if (std::sqrt(best.sum_of_squares / measurement.points.size()) < kReproducedError) break;
+  }
+  best = least_squares::levenberg_marquardt(problem, best.x, options.max_jacobians);
+
+  const Eigen::VectorXd x = variables.sorted(best.x);
+  const double sum_of_squares = problem.residuals(x).squaredNorm();
+  const least_squares::Statistics statistics = least_squares::statistics(problem.jacobian(x), sum_of_squares, kStatedScatter);
+
+  ImpedanceIdentification result;
+  result.cable_type = variables.type_of_arm();
+  result.cables = variables.cables(x);
+  result.clamp_mass = variables.clamp_mass(x);
+  result.damper = variables.damper(result.cables, std::max(0.0, result.clamp_mass));
+  result.misfit = sum_of_squares;
+  result.rms_relative_error = std::sqrt(sum_of_squares / static_cast<double>(measurement.points.size()));
+  result.parameters = estimates(variables, x, statistics);
+  result.correlation = statistics.correlation;
+  result.stick_stiffness = stick_stiffnesses(variables, x, statistics);
+  result.fitted = problem.points(x);
+  result.not_converged = static_cast<int>(
+      std::count_if(result.fitted.begin(), result.fitted.end(), [](const damper::ImpedancePoint& p) { return !p.converged(); }));
+  result.notes = determination_notes(result.parameters, statistics, result.stick_stiffness, result.fitted);
+  result.model_evaluations = coarse.evaluations() + problem.evaluations() + 1;
+  result.starts = starts;
+  return result;
+}
+
+}  // namespace stockbridge::identification

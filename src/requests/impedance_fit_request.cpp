@@ -1,0 +1,144 @@
+#include "stockbridge/requests/impedance_fit_request.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/cable_file.hpp"
+#include "stockbridge/io/csv_writer.hpp"
+
+namespace stockbridge::requests {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+io::JsonObject estimate_json(const identification::ParameterEstimate& e) {
+  return io::JsonObject()
+      .add("name", e.name)
+      .add("unit", e.unit)
+      .add("value", e.value)
+      .add("standard_error", e.standard_error)
+      .add("resolution_at_1_percent", e.resolution_at_1_percent)
+      .add("sensitivity", e.sensitivity)
+      .add("determined", e.determined);
+}
+
+std::vector<io::JsonObject> jenkin_json(const section::MasingParameters& p) {
+  std::vector<io::JsonObject> out;
+  for (const section::Jenkin& e : p.jenkin) out.push_back(io::JsonObject().add("c", e.c).add("h", e.h));
+  return out;
+}
+
+/// "2.79 +- 0.02" or "2.79 (not determined)".
+std::string with_error(const identification::ParameterEstimate& e) {
+  if (!e.determined) return fmt::format("{:.6g} (not determined)", e.value);
+  return fmt::format("{:.6g} +- {:.2g}", e.value, e.standard_error);
+}
+
+}  // namespace
+
+identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitRequest& request) {
+  require_in_range("elements", request.elements, 1, 6);
+  require_in_range("threads", request.threads, 1, 1024);
+  identification::ImpedanceIdentificationOptions options;
+  options.elements = request.elements;
+  options.fit_clamp_mass = request.fit_clamp_mass;
+  options.threads = request.threads;
+  return options;
+}
+
+std::vector<std::string> fitted_columns() {
+  return {"frequency_hz", "velocity_m_s",     "displacement_m",   "re_z_n_s_m",
+          "im_z_n_s_m",   "model_re_z_n_s_m", "model_im_z_n_s_m", "converged"};
+}
+
+std::vector<std::vector<double>> fitted_rows(const identification::ImpedanceMeasurement& measurement,
+                                             const identification::ImpedanceIdentification& fit) {
+  std::vector<std::vector<double>> rows;
+  for (std::size_t i = 0; i < measurement.points.size(); ++i) {
+    const identification::MeasuredImpedance& m = measurement.points[i];
+    const damper::ImpedancePoint& p = fit.fitted[i];
+    const std::complex<double> z = p.converged() ? p.impedance : std::complex<double>(kNaN, kNaN);
+    rows.push_back({m.excitation.frequency_hz, m.excitation.velocity_amplitude(), m.excitation.displacement_amplitude,
+                    m.impedance.real(), m.impedance.imag(), z.real(), z.imag(), p.converged() ? 1.0 : 0.0});
+  }
+  return rows;
+}
+
+std::string fitted_csv(const identification::ImpedanceMeasurement& measurement,
+                       const identification::ImpedanceIdentification& fit) {
+  io::CsvWriter csv(fitted_columns());
+  for (const std::vector<double>& row : fitted_rows(measurement, fit)) csv.add_row(row);
+  return csv.text();
+}
+
+io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measurement,
+                           const identification::ImpedanceIdentification& fit, const damper::Damper& start) {
+  std::vector<io::JsonObject> parameters, stick, cables;
+  std::vector<std::string> undetermined;
+  for (const identification::ParameterEstimate& e : fit.parameters) {
+    parameters.push_back(estimate_json(e));
+    if (!e.determined) undetermined.push_back(e.name);
+  }
+  for (const identification::ParameterEstimate& e : fit.stick_stiffness) stick.push_back(estimate_json(e));
+  for (std::size_t t = 0; t < fit.cables.size(); ++t) {
+    std::vector<std::string> arms;
+    for (std::size_t k = 0; k < fit.cable_type.size(); ++k) {
+      if (fit.cable_type[k] == t) arms.push_back(start.arm_name(k));
+    }
+    cables.push_back(io::JsonObject().add("arms", arms).add("ei", fit.cables[t].ei).add("jenkin", jenkin_json(fit.cables[t])));
+  }
+  std::vector<std::vector<double>> correlation(static_cast<std::size_t>(fit.correlation.rows()));
+  for (Eigen::Index i = 0; i < fit.correlation.rows(); ++i) {
+    for (Eigen::Index j = 0; j < fit.correlation.cols(); ++j) correlation[static_cast<std::size_t>(i)].push_back(fit.correlation(i, j));
+  }
+  return io::JsonObject()
+      .add("ei", fit.cables.front().ei)
+      .add("jenkin", jenkin_json(fit.cables.front()))
+      .add("clamp_mass_kg", fit.clamp_mass)
+      .add("misfit", fit.misfit)
+      .add("rms_relative_error", fit.rms_relative_error)
+      .add("points", static_cast<int>(measurement.points.size()))
+      .add("curves", static_cast<int>(identification::measured_curves(measurement).size()))
+      .add("not_converged", fit.not_converged)
+      .add("parameters", parameters)
+      .add("correlation", correlation)
+      .add("stick_stiffness", stick)
+      .add("undetermined", undetermined)
+      .add("notes", fit.notes)
+      .add("cables", cables)
+      .add("model_runs", fit.model_evaluations)
+      .add("starts", fit.starts);
+}
+
+std::string fit_summary_line(const identification::ImpedanceMeasurement& measurement,
+                             const identification::ImpedanceIdentification& fit) {
+  std::vector<std::string> parts;
+  for (const identification::ParameterEstimate& e : fit.parameters) {
+    parts.push_back(fmt::format("{} = {} {}", e.name, with_error(e), e.unit));
+  }
+  return fmt::format("identify impedance: {}; RMS relative error of Z {:.3g} % over {} points ({} curves), {} model runs",
+                     fmt::join(parts, ", "), 100.0 * fit.rms_relative_error, measurement.points.size(),
+                     identification::measured_curves(measurement).size(), fit.model_evaluations);
+}
+
+std::string fitted_cable_file(const identification::ImpedanceIdentification& fit, std::size_t type,
+                              std::string_view source) {
+  const std::size_t arm = static_cast<std::size_t>(
+      std::find(fit.cable_type.begin(), fit.cable_type.end(), type) - fit.cable_type.begin());
+  std::string comment = fmt::format(
+      "Identified by stockbridge identify impedance from {}:\n"
+      "RMS relative error of Z {:.4g} % at {} points; the length is arm[{}]'s (damper files cut it to theirs).",
+      source, 100.0 * fit.rms_relative_error, fit.fitted.size(), arm);
+  const std::string prefix = fit.cables.size() > 1 ? fmt::format("arm[{}].cable.", arm) : "";
+  for (const identification::ParameterEstimate& e : fit.parameters) {
+    if (!e.determined && e.name.starts_with(prefix) && e.unit != "kg") comment += fmt::format("\n{} = {:.6g} {} is NOT determined by the data.", e.name, e.value, e.unit);
+  }
+  return io::cable_file_toml(fit.damper.arms[arm].cable, comment);
+}
+
+}  // namespace stockbridge::requests

@@ -1,0 +1,263 @@
+// Identification from a measured damper impedance: exact recovery from curves the
+// model computes with known parameters, recovery at 1 % complex noise with
+// standard errors that cover the truth, what a curve that never slips does not
+// determine, the clamp mass, the curves' grouping, and the least-squares core's
+// statistics against closed forms.
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "identification/least_squares.hpp"
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/damper/sweep.hpp"
+#include "stockbridge/identification/impedance_identification.hpp"
+#include "support/damper_fixtures.hpp"
+
+namespace stockbridge::identification {
+namespace {
+
+using damper::DamperDescription;
+
+/// The verification damper (two identical arms) on a coarse cable (12 sections:
+/// the data come from the same model, so the mesh does not matter) with `cable`'s
+/// parameters.
+DamperDescription impedance_test_damper(double ei, std::vector<std::pair<double, double>> jenkin, double clamp_mass = 0.7) {
+  DamperDescription d;
+  d.clamp_mass = clamp_mass;
+  for (const char* name : {"left", "right"}) {
+    damper::ArmDescription a = testing::sauter_arm(12);
+    a.name = name;
+    a.cable = cable::CableDescription::uniform(0.1875, 12, ei, jenkin);
+    d.arms.push_back(a);
+  }
+  return d;
+}
+
+/// The model's Z of `truth` at `points` log-spaced frequencies over 4-60 Hz (the
+/// arms' slip and stick resonances, 7.5 and 19 Hz, and beyond) at each velocity;
+/// optionally with complex Gaussian noise of RMS `noise` |Z|.
+ImpedanceMeasurement measured(const DamperDescription& truth, const std::vector<double>& velocities, int points,
+                              double noise = 0.0, unsigned seed = 1) {
+  const damper::Damper damper(truth);
+  ImpedanceMeasurement m;
+  for (const double v : velocities) {
+    for (const double f : damper::log_spaced(4.0, 60.0, points)) {
+      m.points.push_back({damper::Excitation::from_velocity(f, v), 0.0});
+    }
+  }
+  const std::vector<damper::ImpedancePoint> z = model_impedance(damper, m, {});
+  std::mt19937 random(seed);
+  std::normal_distribution<double> gaussian(0.0, noise / std::sqrt(2.0));
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    EXPECT_TRUE(z[i].converged()) << z[i].failure;
+    const double scale = std::abs(z[i].impedance);
+    m.points[i].impedance = z[i].impedance + (noise > 0.0 ? std::complex<double>(gaussian(random), gaussian(random)) * scale : 0.0);
+  }
+  return m;
+}
+
+double relative_error(double value, double truth) { return std::abs(value / truth - 1.0); }
+
+TEST(ImpedanceIdentification, RecoversOneElementExactlyFromNoiseFreeCurves) {
+  const ImpedanceMeasurement m = measured(impedance_test_damper(2.8, {{20.0, 0.7}}), {0.05, 0.2}, 8);
+  const ImpedanceIdentification fit = identify_impedance(impedance_test_damper(3.0, {{17.0, 0.8}}), m, {});
+  ASSERT_EQ(fit.cables.size(), 1u);
+  EXPECT_LT(relative_error(fit.cables[0].ei, 2.8), 1e-5);
+  EXPECT_LT(relative_error(fit.cables[0].jenkin[0].c, 20.0), 1e-5);
+  EXPECT_LT(relative_error(fit.cables[0].jenkin[0].h, 0.7), 1e-5);
+  EXPECT_LT(fit.rms_relative_error, 1e-6);
+  EXPECT_EQ(fit.not_converged, 0);
+  for (const ParameterEstimate& p : fit.parameters) EXPECT_TRUE(p.determined) << p.name;
+  EXPECT_TRUE(fit.notes.empty()) << fit.notes.front();
+  // Every arm gets the type's parameters; the fitted points are the model's.
+  EXPECT_EQ(fit.damper.arms[1].cable.jenkin[0].h.at(0.0), fit.cables[0].jenkin[0].h);
+  ASSERT_EQ(fit.fitted.size(), m.points.size());
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    EXPECT_LT(std::abs(fit.fitted[i].impedance - m.points[i].impedance), 1e-5 * std::abs(m.points[i].impedance));
+  }
+}
+
+TEST(ImpedanceIdentification, RecoversTwoElementsExactlyFromNoiseFreeCurves) {
+  // Two elements of distinct slip curvatures (h/c = 0.0033 and 0.035 1/m), from one
+  // element's starting values spread over two.
+  const ImpedanceMeasurement m = measured(impedance_test_damper(2.8, {{60.0, 0.2}, {20.0, 0.7}}), {0.05, 0.2}, 12);
+  ImpedanceIdentificationOptions options;
+  options.elements = 2;
+  const ImpedanceIdentification fit = identify_impedance(impedance_test_damper(2.8, {{70.0, 0.8}}), m, options);
+  const section::MasingParameters& p = fit.cables[0];
+  ASSERT_EQ(p.jenkin.size(), 2u);
+  EXPECT_LT(relative_error(p.ei, 2.8), 1e-4);
+  EXPECT_LT(relative_error(p.jenkin[0].c, 60.0), 1e-4);  // sorted by slip curvature
+  EXPECT_LT(relative_error(p.jenkin[0].h, 0.2), 1e-4);
+  EXPECT_LT(relative_error(p.jenkin[1].c, 20.0), 1e-4);
+  EXPECT_LT(relative_error(p.jenkin[1].h, 0.7), 1e-4);
+  EXPECT_EQ(fit.parameters[1].name, "jenkin[0].c");
+  EXPECT_EQ(fit.parameters[4].name, "jenkin[1].h");
+}
+
+TEST(ImpedanceIdentification, RecoversWithinTwoPercentAtOnePercentNoiseWithHonestStandardErrors) {
+  const DamperDescription truth = impedance_test_damper(2.8, {{20.0, 0.7}});
+  for (const unsigned seed : {1u}) {
+    const ImpedanceMeasurement m = measured(truth, {0.05, 0.2}, 12, 0.01, seed);
+    const ImpedanceIdentification fit = identify_impedance(impedance_test_damper(3.6, {{14.0, 1.0}}), m, {});
+    const double values[] = {2.8, 20.0, 0.7};
+    ASSERT_EQ(fit.parameters.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const ParameterEstimate& p = fit.parameters[i];
+      EXPECT_LT(relative_error(p.value, values[i]), 0.02) << p.name << " seed " << seed;
+      EXPECT_LT(std::abs(p.value - values[i]), 4.0 * p.standard_error) << p.name << " seed " << seed;
+      EXPECT_TRUE(p.determined) << p.name;
+    }
+    // The residual scatter is the noise's: sqrt(S / N) about 1 % (N complex points).
+    EXPECT_NEAR(fit.rms_relative_error, 0.01, 0.003);
+  }
+}
+
+TEST(ImpedanceIdentification, ACurveThatNeverSlipsLeavesHUndeterminedButTheStickStiffness) {
+  // At 0.2 mm/s the clamp curvatures stay far below the slip curvature h / c.
+  const ImpedanceMeasurement m = measured(impedance_test_damper(2.8, {{20.0, 0.7}}), {0.0002}, 12);
+  const ImpedanceIdentification fit = identify_impedance(impedance_test_damper(3.6, {{14.0, 1.0}}), m, {});
+  ASSERT_EQ(fit.parameters.size(), 3u);
+  EXPECT_EQ(fit.parameters[2].name, "jenkin[0].h");
+  EXPECT_FALSE(fit.parameters[2].determined);
+  EXPECT_TRUE(std::isinf(fit.parameters[2].standard_error));
+  // ei and c apart are not determined either; their sum is, exactly.
+  EXPECT_FALSE(fit.parameters[0].determined);
+  EXPECT_FALSE(fit.parameters[1].determined);
+  ASSERT_EQ(fit.stick_stiffness.size(), 1u);
+  EXPECT_TRUE(fit.stick_stiffness[0].determined);
+  EXPECT_LT(relative_error(fit.stick_stiffness[0].value, 22.8), 1e-6);
+  bool says_never_slips = false;
+  for (const std::string& note : fit.notes) says_never_slips |= note.find("never slips") != std::string::npos;
+  EXPECT_TRUE(says_never_slips);
+}
+
+TEST(ImpedanceIdentification, FitsTheClampMass) {
+  const ImpedanceMeasurement m = measured(impedance_test_damper(2.8, {{20.0, 0.7}}, 0.7), {0.05, 0.2}, 6);
+  ImpedanceIdentificationOptions options;
+  options.fit_clamp_mass = true;
+  const ImpedanceIdentification fit = identify_impedance(impedance_test_damper(3.0, {{18.0, 0.75}}, 0.4), m, options);
+  EXPECT_NEAR(fit.clamp_mass, 0.7, 1e-5);
+  EXPECT_EQ(fit.parameters.back().name, "clamp_mass");
+  EXPECT_EQ(fit.parameters.back().unit, "kg");
+  EXPECT_NEAR(fit.damper.clamp_mass, 0.7, 1e-5);
+  EXPECT_LT(relative_error(fit.cables[0].jenkin[0].h, 0.7), 1e-5);
+}
+
+TEST(ImpedanceIdentification, PointsTheModelCannotConvergeCountAsMisfitNotAsFailures) {
+  const ImpedanceMeasurement m = measured(impedance_test_damper(2.8, {{20.0, 0.7}}), {0.2}, 2);
+  ImpedanceIdentificationOptions options;
+  options.solver.energy_tolerance = 1e-300;  // no point is trusted
+  options.max_jacobians = 1;
+  const ImpedanceIdentification fit = identify_impedance(impedance_test_damper(3.0, {{16.0, 0.8}}), m, options);
+  EXPECT_EQ(fit.not_converged, 2);
+  EXPECT_NEAR(fit.misfit, 2.0, 1e-12);  // each point as Z = 0: |r|^2 = 1
+}
+
+TEST(ImpedanceIdentification, ArmsWithDifferentCablesAreDifferentTypes) {
+  DamperDescription d = impedance_test_damper(2.8, {{20.0, 0.7}});
+  EXPECT_EQ(cable_types(d), (std::vector<std::size_t>{0, 0}));
+  d.arms[1].cable.length = 0.15;  // a shorter arm of the same cable: the same type
+  EXPECT_EQ(cable_types(d), (std::vector<std::size_t>{0, 0}));
+  d.arms[1].cable.ei = cable::Profile::constant(3.0);
+  EXPECT_EQ(cable_types(d), (std::vector<std::size_t>{0, 1}));
+}
+
+TEST(ImpedanceIdentification, TwoCableTypesAreFittedApartAndNamedByTheirArm) {
+  DamperDescription truth = impedance_test_damper(2.8, {{20.0, 0.7}});
+  truth.arms[1].cable = cable::CableDescription::uniform(0.15, 12, 4.0, {{30.0, 1.1}});
+  DamperDescription start = truth;
+  start.arms[0].cable = cable::CableDescription::uniform(0.1875, 12, 3.0, {{18.0, 0.8}});
+  start.arms[1].cable = cable::CableDescription::uniform(0.15, 12, 3.6, {{33.0, 1.0}});
+  const ImpedanceIdentification fit = identify_impedance(start, measured(truth, {0.05, 0.2}, 8), {});
+  ASSERT_EQ(fit.cables.size(), 2u);
+  EXPECT_LT(relative_error(fit.cables[0].jenkin[0].h, 0.7), 1e-4);
+  EXPECT_LT(relative_error(fit.cables[1].jenkin[0].h, 1.1), 1e-4);
+  EXPECT_LT(relative_error(fit.cables[1].ei, 4.0), 1e-4);
+  EXPECT_EQ(fit.parameters[0].name, "arm[0].cable.ei");
+  EXPECT_EQ(fit.parameters[3].name, "arm[1].cable.ei");
+}
+
+TEST(ImpedanceIdentification, GroupsPointsIntoCurvesByTheHeldAmplitudeInFrequencyOrder) {
+  ImpedanceMeasurement m;
+  m.points = {{damper::Excitation::from_velocity(20.0, 0.2), 1.0},  {damper::Excitation::from_velocity(10.0, 0.05), 1.0},
+              {damper::Excitation::from_velocity(5.0, 0.201), 1.0}, {damper::Excitation::from_velocity(7.0, 0.05), 1.0}};
+  EXPECT_EQ(measured_curves(m), (std::vector<std::vector<std::size_t>>{{3, 1}, {2, 0}}));
+  m.held = damper::HeldAmplitude::displacement;  // X = V / W: all four differ
+  EXPECT_EQ(measured_curves(m).size(), 4u);
+}
+
+TEST(ImpedanceIdentification, RefusesProfilesAndTooFewPointsNamingThem) {
+  const ImpedanceMeasurement m = measured(impedance_test_damper(2.8, {{20.0, 0.7}}), {0.2}, 4);
+  DamperDescription start = impedance_test_damper(2.8, {{20.0, 0.7}});
+  start.arms[1].cable.jenkin[0].h = cable::Profile::table({0.0, 0.1}, {0.7, 0.6}, "h");
+  EXPECT_THROW(
+      {
+        try {
+          identify_impedance(start, m, {});
+        } catch (const InvalidParameter& e) {
+          EXPECT_NE(std::string(e.what()).find("arm[1].cable.jenkin[0].h: a profile"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      InvalidParameter);
+  ImpedanceMeasurement one = m;
+  one.points.resize(1);
+  EXPECT_THROW(identify_impedance(impedance_test_damper(2.8, {{20.0, 0.7}}), one, {}), InvalidParameter);
+  one.points[0].impedance = 0.0;
+  EXPECT_THROW(one.validate(), InvalidParameter);
+}
+
+// The least-squares core on problems with closed-form answers.
+
+/// r(x) = A x - b, linear: one Levenberg-Marquardt step solves it.
+class LinearProblem : public least_squares::Problem {
+ public:
+  LinearProblem(Eigen::MatrixXd a, Eigen::VectorXd b) : a_(std::move(a)), b_(std::move(b)) {}
+  int variables() const override { return static_cast<int>(a_.cols()); }
+  int residual_count() const override { return static_cast<int>(a_.rows()); }
+  Eigen::VectorXd residuals(const Eigen::VectorXd& x) override { return a_ * x - b_; }
+  Eigen::MatrixXd jacobian(const Eigen::VectorXd&) override { return a_; }
+
+ private:
+  Eigen::MatrixXd a_;
+  Eigen::VectorXd b_;
+};
+
+TEST(LeastSquares, SolvesALinearProblemAndGivesItsClassicalCovariance) {
+  Eigen::MatrixXd a(4, 2);
+  a << 1, 0, 1, 1, 1, 2, 1, 3;  // a straight line through 4 points
+  const Eigen::VectorXd b = Eigen::Vector4d(1.0, 2.9, 5.1, 7.0);
+  LinearProblem problem(a, b);
+  const least_squares::Run run = least_squares::levenberg_marquardt(problem, Eigen::Vector2d::Zero(), 20);
+  const Eigen::Vector2d expected = (a.transpose() * a).ldlt().solve(a.transpose() * b);
+  EXPECT_NEAR(run.x(0), expected(0), 1e-9);
+  EXPECT_NEAR(run.x(1), expected(1), 1e-9);
+  const double s = (a * expected - b).squaredNorm();
+  EXPECT_NEAR(run.sum_of_squares, s, 1e-12);
+  const least_squares::Statistics st = least_squares::statistics(a, s, 0.01);
+  const Eigen::Matrix2d c = (a.transpose() * a).inverse();
+  EXPECT_NEAR(st.standard_error(1), std::sqrt(s / 2.0 * c(1, 1)), 1e-12);
+  EXPECT_NEAR(st.resolution(0), 0.01 * std::sqrt(c(0, 0)), 1e-12);
+  EXPECT_NEAR(st.correlation(0, 1), c(0, 1) / std::sqrt(c(0, 0) * c(1, 1)), 1e-12);
+  EXPECT_NEAR(st.sensitivity(1), std::sqrt(14.0 / 4.0), 1e-12);
+  EXPECT_NEAR(st.resolution_of(Eigen::Vector2d(1.0, 1.0)), 0.01 * std::sqrt(c.sum()), 1e-12);
+}
+
+TEST(LeastSquares, FindsTheNullSpaceOfAZeroColumnAndOfEqualColumns) {
+  Eigen::MatrixXd a(3, 3);
+  a << 1, 1, 0, 2, 2, 0, 0.5, 0.5, 0;  // columns 0 and 1 equal, column 2 zero; rank 1
+  const least_squares::Statistics st = least_squares::statistics(a, 1.0, 0.01);
+  EXPECT_EQ(st.null_space.cols(), 2);
+  for (int i = 0; i < 3; ++i) EXPECT_TRUE(st.in_null_space[static_cast<std::size_t>(i)]) << i;
+  EXPECT_TRUE(std::isinf(st.standard_error(2)));
+  EXPECT_TRUE(std::isnan(st.correlation(0, 1)));
+  // Their sum is what the data see: determined.
+  EXPECT_TRUE(std::isfinite(st.resolution_of(Eigen::Vector3d(1.0, 1.0, 0.0))));
+  EXPECT_TRUE(std::isinf(st.resolution_of(Eigen::Vector3d(1.0, -1.0, 0.0))));
+}
+
+}  // namespace
+}  // namespace stockbridge::identification
