@@ -67,8 +67,8 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
   const identification::ImpedanceIdentificationOptions fit_options = requests::fit_options(options.request);
   require_outputs_apart({{"-o", options.output}, {"--fitted", options.fitted}},
                         {{"the --input measurement", options.input}, {"the --damper file", options.damper_file}});
-  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}, {"--fitted", options.fitted}});
   const identification::ImpedanceMeasurement measurement = io::read_measured_impedance(options.input);
+  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}, {"--fitted", options.fitted}});
   identification::ImpedanceIdentification fit;
   try {
     fit = identification::identify_impedance(damper.description(), measurement, fit_options);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+#include <pybind11/complex.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -20,14 +22,17 @@
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/design/search.hpp"
 #include "stockbridge/identification/global_identification.hpp"
+#include "stockbridge/identification/impedance_identification.hpp"
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/design_file.hpp"
+#include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/io/span_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
 #include "stockbridge/requests/design_request.hpp"
+#include "stockbridge/requests/impedance_fit_request.hpp"
 #include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/span_request.hpp"
@@ -328,6 +333,82 @@ py::dict identify_global(const std::string& experiment, double length, const std
   return out;
 }
 
+/// A measured impedance from arrays (as the CSV reader builds it from a file):
+/// frequencies, one amplitude per point (velocity or displacement) and complex Z.
+identification::ImpedanceMeasurement measurement_from_arrays(const std::vector<double>& frequency,
+                                                             const std::vector<double>& amplitude, bool velocity,
+                                                             const std::vector<std::complex<double>>& z) {
+  if (frequency.size() != amplitude.size() || frequency.size() != z.size()) {
+    throw InvalidParameter(fmt::format("frequency, {} and z: {}, {} and {} values: expected as many of each",
+                                       velocity ? "velocity" : "displacement", frequency.size(), amplitude.size(),
+                                       z.size()));
+  }
+  identification::ImpedanceMeasurement m;
+  m.held = velocity ? damper::HeldAmplitude::velocity : damper::HeldAmplitude::displacement;
+  for (std::size_t i = 0; i < frequency.size(); ++i) {
+    require_positive(fmt::format("frequency[{}]", i), frequency[i], "Hz");
+    require_positive(fmt::format("{}[{}]", velocity ? "velocity" : "displacement", i), amplitude[i], velocity ? "m/s" : "m");
+    const damper::Excitation e =
+        velocity ? damper::Excitation::from_velocity(frequency[i], amplitude[i]) : damper::Excitation{frequency[i], amplitude[i]};
+    m.points.push_back({e, z[i]});
+  }
+  m.validate();
+  return m;
+}
+
+/// The identification from a measured impedance (stockbridge.identify_impedance wraps
+/// it): the --fitted CSV's columns as arrays, the --json summary as JSON text, the
+/// cable files' texts and the fitted damper.
+py::dict identify_impedance(const damper::Damper& start, const std::optional<std::string>& input,
+                            const std::optional<std::vector<double>>& frequency,
+                            const std::optional<std::vector<double>>& velocity,
+                            const std::optional<std::vector<double>>& displacement,
+                            const std::optional<std::vector<std::complex<double>>>& z, int elements, bool fit_clamp_mass,
+                            int threads) {
+  const bool arrays = frequency || velocity || displacement || z;
+  if (input.has_value() == arrays) {
+    throw InvalidParameter("give either input (a measured CSV's path) or frequency, velocity (or displacement) and z");
+  }
+  if (arrays && (!frequency || !z || velocity.has_value() == displacement.has_value())) {
+    throw InvalidParameter("give frequency, z and one of velocity or displacement (arrays of one value per point)");
+  }
+  const identification::ImpedanceMeasurement m =
+      input ? io::read_measured_impedance(*input)
+            : measurement_from_arrays(*frequency, velocity ? *velocity : *displacement, velocity.has_value(), *z);
+  const identification::ImpedanceIdentificationOptions options =
+      requests::fit_options({elements, fit_clamp_mass, threads});
+  identification::ImpedanceIdentification fit;
+  {
+    py::gil_scoped_release release;
+    fit = identification::identify_impedance(start.description(), m, options);
+  }
+  const std::vector<std::string> columns = requests::fitted_columns();
+  const std::vector<std::vector<double>> rows = requests::fitted_rows(m, fit);
+  py::dict fitted;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    std::vector<double> column;
+    for (const std::vector<double>& row : rows) column.push_back(row[c]);
+    if (columns[c] == "converged") {
+      py::array_t<bool> flags(column.size());
+      for (std::size_t i = 0; i < column.size(); ++i) flags.mutable_at(i) = column[i] == 1.0;
+      fitted["converged"] = flags;
+    } else {
+      fitted[py::str(columns[c])] = array(column);
+    }
+  }
+  py::list cable_files;
+  for (std::size_t t = 0; t < fit.cables.size(); ++t) {
+    cable_files.append(requests::fitted_cable_file(fit, t, input ? *input : std::string("arrays")));
+  }
+  py::dict out;
+  out["summary_json"] = requests::fit_summary(m, fit, start).str();
+  out["fitted"] = fitted;
+  out["cable_files"] = cable_files;
+  out["cable"] = cable::Cable(fit.damper.arms.front().cable);
+  out["damper"] = damper::Damper(fit.damper);
+  return out;
+}
+
 /// The span command's CSV columns as arrays (one value per frequency) and its --json
 /// summary as JSON text (the package's span() parses it into a dict).
 py::dict span_balance(const std::optional<std::string>& path, const std::optional<std::string>& text,
@@ -611,6 +692,10 @@ PYBIND11_MODULE(_core, m) {
         py::arg("measured"), py::arg("method") = "fit", py::arg("sections") = 40, py::arg("elements") = 1,
         py::arg("optimizer") = "subplex",
         "Constant cable parameters from a cycle of experiment (a) or (b); 'cable' is a Cable ready for make_damper.");
+  m.def("_identify_impedance", &identify_impedance, py::arg("damper"), py::arg("input") = py::none(),
+        py::arg("frequency") = py::none(), py::arg("velocity") = py::none(), py::arg("displacement") = py::none(),
+        py::arg("z") = py::none(), py::arg("elements") = 1, py::arg("fit_clamp_mass") = false, py::arg("threads") = 1,
+        "The identification from a measured impedance (stockbridge.identify_impedance wraps it).");
   m.def("loop", &loop, py::arg("ei"), py::arg("jenkin") = std::vector<std::pair<double, double>>{},
         py::arg("amplitude"), py::arg("cycles") = section::SinusoidalDrive{}.cycles,
         py::arg("points") = section::SinusoidalDrive{}.points, py::arg("law") = "exact", py::arg("exponent") = 10.0,

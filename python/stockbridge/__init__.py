@@ -8,6 +8,8 @@ built by the CMake project) and adds plots (``python3 -m stockbridge.plot``).
     z = sb.impedance(damper, [10.0, 20.0], velocity=[0.2, 0.05])
     s = sb.span("examples/aster570_400m.toml", points=50)
     d = sb.design("examples/design_aster570.toml", samples=16, threads=2)
+    fit = sb.identify_impedance(sb.load_damper("examples/damper_to_identify.toml"),
+                                "examples/measured_impedance.csv")
 """
 
 import json
@@ -27,7 +29,7 @@ try:
     from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, cycle,  # noqa: F401
                         identify_global, identify_local, impedance, load_cable, load_damper, load_strand, loop,
                         modes, response, strand_bounds)
-    from ._core import _cable_from_toml, _damper_from_toml, _design, _span
+    from ._core import _cable_from_toml, _damper_from_toml, _design, _identify_impedance, _span
 except ImportError:  # the plots work from the source tree without the compiled module
     pass
 
@@ -119,3 +121,30 @@ def design(file, samples=None, polish=None, threads=1):
     out["stage"] = numpy.array(out["stage"], dtype=str)
     out["summary"] = json.loads(out.pop("summary_json"))
     return out
+
+
+def identify_impedance(damper, input=None, *, frequency=None, velocity=None, displacement=None, z=None, elements=1,
+                       fit_clamp_mass=False, threads=1):
+    """The cable parameters (and with `fit_clamp_mass` the clamp mass) of a damper
+    from its measured impedance, as ``stockbridge identify impedance``: `damper` a
+    Damper (load_damper, make_damper) whose masses, inertias, offsets and cable
+    lengths are known, its cables' values the starting values; the measurement a
+    CSV's path (`input`, the command's columns) or arrays of one value per point:
+    `frequency` (Hz), `velocity` (m/s) or `displacement` (m), and complex `z` (N s/m).
+    `elements` Jenkin elements per cable; `threads` model runs at once.
+
+    Returns a dict: the --json summary's keys (ei, jenkin, misfit, rms_relative_error,
+    parameters with standard errors, correlation, undetermined, notes, ...), 'fitted'
+    (the --fitted CSV's columns as arrays: the measured and the model's Z at each
+    point), 'cable' (a Cable: the identified cable at the first arm's length, for
+    make_damper), 'cable_files' (each cable type's cable file text) and 'damper'
+    (the damper with the identified parameters)."""
+    def values(array):
+        return None if array is None else list(numpy.ravel(numpy.asarray(array)))
+    out = _identify_impedance(damper, input=None if input is None else str(input), frequency=values(frequency),
+                              velocity=values(velocity), displacement=values(displacement),
+                              z=None if z is None else [complex(v) for v in numpy.ravel(numpy.asarray(z))],
+                              elements=elements, fit_clamp_mass=fit_clamp_mass, threads=threads)
+    summary = json.loads(out.pop("summary_json"))
+    summary.update(out)
+    return summary

@@ -350,14 +350,71 @@ FIT_COLUMNS = [("curvature_per_m", "moment_n_m", "model_moment_n_m", "curvature 
                ("phi_rad", "clamp_moment_n_m", "model_clamp_moment_n_m", "tip rotation phi (rad)", "clamp moment T (N m)")]
 
 
+def amplitude_groups(values):
+    """[(smallest, rows)]: the rows whose values lie within 10 % of a group's
+    smallest, in increasing amplitude (as identify impedance groups its curves)."""
+    groups = []
+    for i in sorted(range(len(values)), key=lambda i: values[i]):
+        if not groups or values[i] > 1.1 * groups[-1][0]:
+            groups.append((values[i], []))
+        groups[-1][1].append(i)
+    return groups
+
+
+def impedance_fit_figure(table):
+    """Measured Z (markers) and the fitted model's (lines) over frequency, |Z| and
+    phase, one colour per measured curve (velocity or displacement amplitude)."""
+    frequency = table.required("frequency_hz")
+    measured = [complex(r, i) for r, i in zip(table.required("re_z_n_s_m"), table.required("im_z_n_s_m"))]
+    model = [complex(r, i) for r, i in zip(table.column("model_re_z_n_s_m"), table.column("model_im_z_n_s_m"))]
+    for i, f in enumerate(frequency):
+        if f <= 0:
+            raise PlotError(f"{table.path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
+    velocity, displacement = table.required("velocity_m_s"), table.required("displacement_m")
+    by_velocity, by_displacement = amplitude_groups(velocity), amplitude_groups(displacement)
+    curves, label = ((by_velocity, "V = {:g} m/s") if len(by_velocity) <= len(by_displacement)
+                     else (by_displacement, "X = {:g} m"))
+    figure, axes = plt.subplots(2, 1, figsize=FIGURE_SIZE, sharex=True, layout="constrained")
+    for number, (amplitude, rows) in enumerate(curves):
+        rows.sort(key=lambda i: frequency[i])
+        colour = f"C{number % 10}"
+        f = [frequency[i] for i in rows]
+        axes[0].plot(f, [abs(measured[i]) for i in rows], "o", color=colour, markersize=4,
+                     label="measured, " + label.format(amplitude))
+        axes[1].plot(f, [math.degrees(math.atan2(measured[i].imag, measured[i].real)) for i in rows], "o",
+                     color=colour, markersize=4)
+        good = [i for i in rows if finite(model[i].real, model[i].imag)]
+        axes[0].plot([frequency[i] for i in good], [abs(model[i]) for i in good], "-", color=colour,
+                     label="fitted model, " + label.format(amplitude))
+        axes[1].plot([frequency[i] for i in good], [math.degrees(math.atan2(model[i].imag, model[i].real))
+                                                    for i in good], "-", color=colour)
+        failed = [frequency[i] for i in rows if i not in good]
+        if failed:
+            axes[1].plot(failed, [0.0] * len(failed), "x", color="red", label="model not converged")
+    axes[0].set_ylabel("|Z| (N s/m)")
+    axes[1].set_ylabel("phase (deg)")
+    axes[1].set_xlabel("frequency (Hz)")
+    for axis in axes:
+        axis.grid(True, which="both", alpha=0.3)
+    log_scale(axes[0], "x")
+    log_if_positive(axes[0])
+    axes[0].legend(fontsize="small")
+    axes[0].set_title(f"Measured and fitted impedance ({table.path})", fontsize="medium")
+    return figure
+
+
 def plot_fit(path, output):
     table = Table(path)
+    if "model_re_z_n_s_m" in table:
+        save(impedance_fit_figure(table), output)
+        return
     for x_name, y_name, model_name, xlabel, ylabel in FIT_COLUMNS:
         if x_name in table and model_name in table:
             x, measured, model = (table.column(name) for name in (x_name, y_name, model_name))
             break
     else:
-        raise PlotError(f"{path}: expected the columns written by identify --fitted (e.g. x_m, force_n, model_force_n)")
+        raise PlotError(f"{path}: expected the columns written by identify --fitted (e.g. x_m, force_n, model_force_n, "
+                        "or frequency_hz, re_z_n_s_m, model_re_z_n_s_m)")
     if not any(finite(a, b) for a, b in zip(x, measured)):
         raise PlotError(f"{path}: no sample to plot (every cell of {x_name}, {y_name} is empty)")
     figure, axis = plt.subplots(figsize=FIGURE_SIZE, layout="constrained")
@@ -612,7 +669,7 @@ def parser():
     impedance.add_argument("--linear", action="store_true", help="linear axes")
     impedance.add_argument("--power", action="store_true", help="add a panel: dissipated power Re Z V^2 / 2")
     for name, text in (("loop", "hysteresis loops of a cycle, response or loop file"),
-                       ("fit", "measured and fitted loops (identify ... --fitted)"),
+                       ("fit", "measured and fitted loops or impedance (identify ... --fitted)"),
                        ("span", "amplitude and fymax stress over frequency, damped and undamped, of a span CSV"),
                        ("design", "objective over each variable of a design CSV: feasible, infeasible, polished, "
                         "best")):

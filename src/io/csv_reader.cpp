@@ -57,7 +57,16 @@ OpenedCsv open_csv(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::vector<std::string> read_csv_header(const std::filesystem::path& path) { return open_csv(path).header; }
+std::vector<std::string> read_csv_header(const std::filesystem::path& path) {
+  const OpenedCsv csv = open_csv(path);
+  const std::string& line = csv.header_line;
+  if (csv.header.size() == 1 && line.find_first_of(";\t") != std::string::npos) {
+    throw InputError(fmt::format("{}:{}: header '{}' is separated by ';' or tabs: expected ',' between columns and "
+                                 "'.' as decimal separator",
+                                 path.string(), csv.line_number, printable(line)));
+  }
+  return csv.header;
+}
 
 CsvRows read_csv_rows(const std::filesystem::path& path, const std::vector<std::string>& names, std::size_t min_rows) {
   const std::string file = path.string();

@@ -33,6 +33,8 @@ SPAN_CMD = "span INPUT --frequencies 10,20 -o out.csv"
 DESIGN_CMD = "design INPUT -o out.csv --best best.toml"
 DESIGN = ("damper = \"nope.toml\"\nspans = [\"span.toml\"]\n"
           "[[variable]]\nname = \"arm.a.mass\"\nmin = 0.5\nmax = 1.5\n")
+IMPEDANCE_FIT_CMD = "identify impedance --damper nope.toml --input INPUT -o out.toml"
+MEASURED_Z = "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.05,5.1,80.2\n20,0.05,12.5,150.3\n"
 LOOP_CMD = "loop --ei 2.8 --jenkin 20:0.7 --amplitude 0.05 -o out.csv"
 
 cases = {
@@ -132,6 +134,29 @@ cases = {
     "span_weibull_shape_negative": (SPAN_CMD, "span.toml",
                                     SPAN + "wind_weibull = { shape = -2.0, scale = 4.0 }\naeolian_fraction = 0.3\n",
                                     "fatigue.wind_weibull.shape = -2"),
+    # measured impedance (issue 16): the measured file is read first, so the missing
+    # damper file is never reached
+    "measured_z_no_amplitude": (IMPEDANCE_FIT_CMD, "z.csv", MEASURED_Z.replace("velocity_m_s", "speed"),
+                                "missing column 'velocity_m_s' (or 'displacement_m')"),
+    "measured_z_no_impedance": (IMPEDANCE_FIT_CMD, "z.csv", MEASURED_Z.replace("re_z_n_s_m", "real"),
+                                "missing column 're_z_n_s_m' (or 'abs_z_n_s_m')"),
+    "measured_z_polar_no_phase": (IMPEDANCE_FIT_CMD, "z.csv", MEASURED_Z.replace("re_z_n_s_m,im_z_n_s_m", "abs_z_n_s_m,angle"),
+                                  "missing column 'phase_deg'"),
+    "measured_z_frequency_negative": (IMPEDANCE_FIT_CMD, "z.csv", MEASURED_Z.replace("\n20,", "\n-20,"),
+                                      "z.csv:3: column 'frequency_hz' = -20: expected > 0"),
+    "measured_z_velocity_zero": (IMPEDANCE_FIT_CMD, "z.csv", MEASURED_Z.replace("10,0.05", "10,0"),
+                                 "z.csv:2: column 'velocity_m_s' = 0: expected > 0"),
+    "measured_z_displacement_negative": (IMPEDANCE_FIT_CMD, "z.csv",
+                                         MEASURED_Z.replace("velocity_m_s", "displacement_m").replace("20,0.05", "20,-0.001"),
+                                         "z.csv:3: column 'displacement_m' = -0.001: expected > 0"),
+    "measured_z_nan": (IMPEDANCE_FIT_CMD, "z.csv", MEASURED_Z.replace("12.5", "nan"),
+                       "z.csv:3: column 're_z_n_s_m' = nan: expected a finite number"),
+    "measured_z_zero": (IMPEDANCE_FIT_CMD, "z.csv", MEASURED_Z.replace("5.1,80.2", "0,0"), "expected a nonzero impedance"),
+    "measured_z_abs_zero": (IMPEDANCE_FIT_CMD, "z.csv",
+                            MEASURED_Z.replace("re_z_n_s_m,im_z_n_s_m", "abs_z_n_s_m,phase_deg").replace("5.1,80.2", "0,80"),
+                            "z.csv:2: column 'abs_z_n_s_m' = 0: expected > 0"),
+    "measured_z_one_row": (IMPEDANCE_FIT_CMD, "z.csv", MEASURED_Z.rsplit("20,", 1)[0], "1 data rows: expected at least 2"),
+    "measured_z_semicolons": (IMPEDANCE_FIT_CMD, "z.csv", MEASURED_Z.replace(",", ";"), "separated by ';'"),
     # design files (issue 15): the faults a design file shows alone (its variables and
     # ties need the damper it names: tests/cli/design_cli_test.cpp)
     "design_syntax": (DESIGN_CMD, "design.toml", "damper = \n", "design.toml:1"),
@@ -192,6 +217,10 @@ cases = {
     "option_span_frequencies_decreasing": ("span INPUT --frequencies 20,10 -o out.csv", "span.toml", SPAN, "frequencies[1] = 10"),
     "option_span_points_one": ("span INPUT --points 1 -o out.csv", "span.toml", SPAN, "points = 1"),
     "option_span_damper_model": ("span INPUT --damper-model linear -o out.csv", "span.toml", SPAN, "linear"),
+    "option_impedance_fit_elements": ("identify impedance --damper nope.toml --input INPUT --elements 9 -o out.toml", "z.csv",
+                                      MEASURED_Z, "elements = 9"),
+    "option_impedance_fit_threads": ("identify impedance --damper nope.toml --input INPUT --threads 0 -o out.toml", "z.csv",
+                                     MEASURED_Z, "threads = 0"),
     "option_design_samples_zero": ("design INPUT --samples 0 -o out.csv --best best.toml", "design.toml", DESIGN, "samples = 0"),
     "option_design_threads_zero": ("design INPUT --threads 0 -o out.csv --best best.toml", "design.toml", DESIGN, "threads = 0"),
     "option_design_polish_negative": ("design INPUT --polish -1 -o out.csv --best best.toml", "design.toml", DESIGN, "polish = -1"),

@@ -434,3 +434,44 @@ def test_design_errors_and_warnings(tmp_path):
     with pytest.warns(sb.UnusualValueWarning, match=r"sauter2003.toml:8: clamp.mass = 0.01: outside the typical"):
         d = sb.design(path, samples=1)
     assert d["stage"].tolist()[:2] == ["base", "sample"]
+
+
+@pytest.fixture(scope="module")
+def impedance_fit(tmp_path_factory):
+    """The shipped example identified by the program (--json, --fitted, -o) and by identify_impedance()."""
+    folder = tmp_path_factory.mktemp("identify-impedance")
+    damper = os.path.join(SOURCE, "examples", "damper_to_identify.toml")
+    measured = os.path.join(SOURCE, "examples", "measured_impedance.csv")
+    out = subprocess.run([CLI, "identify", "impedance", "--damper", damper, "--input", measured, "--json",
+                          "-o", "cable.toml", "--fitted", "z_fit.csv"],
+                         cwd=folder, check=True, capture_output=True, text=True).stdout
+    return folder, json.loads(out), sb.identify_impedance(sb.load_damper(damper), measured)
+
+
+def test_identify_impedance_equals_the_program_and_returns_the_documented_keys(impedance_fit):
+    folder, summary, fit = impedance_fit
+    assert set(fit) == documented_keys("identify_impedance", ["-"])
+    assert {key: fit[key] for key in summary} == summary  # exactly: the same fit
+    rows = read_csv(folder / "z_fit.csv")
+    assert list(fit["fitted"]) == list(rows[0].keys())
+    for column, values in fit["fitted"].items():
+        assert np.array_equal(values.astype(float), [float(row[column]) for row in rows]), column
+    assert fit["cable_files"] == [(folder / "cable.toml").read_text()]
+    assert abs(fit["cable"].ei / 2.8 - 1) < 0.01 and fit["cable"].length == 0.1875
+
+
+def test_identify_impedance_from_arrays_equals_the_file(impedance_fit):
+    _, _, fit = impedance_fit
+    f = fit["fitted"]
+    again = sb.identify_impedance(sb.load_damper(os.path.join(SOURCE, "examples", "damper_to_identify.toml")),
+                                  frequency=f["frequency_hz"], velocity=f["velocity_m_s"],
+                                  z=f["re_z_n_s_m"] + 1j * f["im_z_n_s_m"])
+    assert again["ei"] == fit["ei"] and again["jenkin"] == fit["jenkin"]
+    with pytest.raises(sb.InvalidParameter, match="either input"):
+        sb.identify_impedance(again["damper"], "x.csv", frequency=[10.0])
+    with pytest.raises(sb.InvalidParameter, match="expected as many of each"):
+        sb.identify_impedance(again["damper"], frequency=[10.0, 20.0], velocity=[0.1], z=[1j, 2j])
+    with pytest.raises(sb.InvalidParameter, match=r"frequency\[0\] = -10"):
+        sb.identify_impedance(again["damper"], frequency=[-10.0, 20.0], velocity=[0.1, 0.1], z=[1j, 2j])
+    with pytest.raises(sb.InvalidParameter, match="elements = 0"):
+        sb.identify_impedance(again["damper"], frequency=[10.0, 20.0], velocity=[0.1, 0.1], z=[1j, 2j], elements=0)

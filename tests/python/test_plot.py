@@ -484,3 +484,22 @@ def test_design_bad_files_get_one_line_and_exit_two(tmp_path, contents, mention)
     (tmp_path / "bad.csv").write_text(contents)
     result = plot("design", "bad.csv", "-o", "bad.png", cwd=tmp_path)
     assert_bad(result, tmp_path, "bad.png", mention, "bad.csv")
+
+
+def test_impedance_fit_plot_overlays_measured_and_fitted_curves(tmp_path):
+    damper = os.path.join(SOURCE, "examples", "sauter2003.toml")
+    run_cli("impedance", damper, "--velocity", "0.05,0.2", "--fmin", "5", "--fmax", "60", "--points", "6",
+            "-o", "measured.csv", cwd=tmp_path)
+    run_cli("identify", "impedance", "--damper", damper, "--input", "measured.csv", "--fitted", "z_fit.csv", cwd=tmp_path)
+    result = plot("fit", "z_fit.csv", "-o", "fit.png", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert png_size(tmp_path / "fit.png") == (800, 600)
+    module = plot_module()
+    figure = module.impedance_fit_figure(module.Table(str(tmp_path / "z_fit.csv")))
+    labels = [line.get_label() for line in figure.axes[0].get_lines()]
+    assert labels == ["measured, V = 0.05 m/s", "fitted model, V = 0.05 m/s", "measured, V = 0.2 m/s",
+                      "fitted model, V = 0.2 m/s"]
+    measured, model = figure.axes[0].get_lines()[:2]
+    assert len(measured.get_xdata()) == len(model.get_xdata()) == 6
+    for a, b in zip(measured.get_ydata(), model.get_ydata()):  # the fit reproduces its own curve
+        assert abs(a / b - 1) < 1e-4

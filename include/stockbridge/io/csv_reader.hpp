@@ -25,7 +25,7 @@ struct CsvRows {
 CsvRows read_csv_rows(const std::filesystem::path& path, const std::vector<std::string>& names, std::size_t min_rows);
 
 /// The header's column names (to choose between alternative columns); InputError
-/// for a missing or empty file.
+/// for a missing or empty file, or a header of one cell separated by ';' or tabs.
 std::vector<std::string> read_csv_header(const std::filesystem::path& path);
 
 }  // namespace stockbridge::io

@@ -1,0 +1,218 @@
+// `stockbridge identify impedance` end to end: a curve `impedance` writes (the
+// program's own CSV, its extra columns ignored) identified back to its cable, the
+// cable file reused by a damper file to reproduce the curve; the other column
+// forms; the shipped example; bad measurements and dampers.
+
+#include <cmath>
+#include <complex>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+#include "support/temp_file.hpp"
+
+namespace stockbridge::testing {
+namespace {
+
+/// The first number after "key": in a JSON text (NaN if absent).
+double json_number(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": ");
+  return at == std::string::npos ? NAN : std::stod(json.substr(at + key.size() + 4));
+}
+
+/// A damper of two identical arms of the verification damper's on 12-section
+/// cables with the given cable keys (or a reference to a cable file).
+std::string damper_toml(const std::string& cable_keys) {
+  std::string text = "[clamp]\nmass = 0.7\n";
+  for (const char* name : {"left", "right"}) {
+    text += std::string("[[arm]]\nname = \"") + name +
+            "\"\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\nlength = 0.1875\nsections = 12\n" +
+            cable_keys;
+  }
+  return text;
+}
+
+const std::string kTruth = "ei = 2.8\njenkin = [ { c = 20.0, h = 0.7 } ]\n";
+const std::string kGuess = "ei = 3.1\njenkin = [ { c = 17.0, h = 0.8 } ]\n";
+
+/// Rows of a CSV as named columns.
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  std::vector<double> column(const std::string& name) const {
+    const std::size_t c = static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    std::vector<double> out;
+    for (const std::vector<double>& row : rows) out.push_back(c < row.size() ? row[c] : NAN);
+    return out;
+  }
+};
+
+Csv read_csv(const std::filesystem::path& path) {
+  std::istringstream in(read_text(path));
+  std::string line, cell;
+  Csv csv;
+  std::getline(in, line);
+  for (std::istringstream h(line); std::getline(h, cell, ',');) csv.header.push_back(cell);
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    for (std::istringstream r(line); std::getline(r, cell, ',');) row.push_back(cell.empty() ? NAN : std::stod(cell));
+    csv.rows.push_back(row);
+  }
+  return csv;
+}
+
+/// The truth's curve at two velocities, as `impedance` writes it.
+std::filesystem::path measured_curve(const std::filesystem::path& dir) {
+  write_temp_file(dir, "truth.toml", damper_toml(kTruth));
+  const CliResult r = run_cli("impedance truth.toml --velocity 0.05,0.2 --fmin 4 --fmax 60 --points 8 -o measured.csv", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return dir / "measured.csv";
+}
+
+TEST(IdentifyImpedanceCli, RecoversTheCableOfACurveAndItsCableFileReproducesTheCurve) {
+  const auto dir = scratch_directory("identify-impedance");
+  measured_curve(dir);
+  write_temp_file(dir, "start.toml", damper_toml(kGuess));
+  const CliResult r =
+      run_cli("identify impedance --damper start.toml --input measured.csv --json -o cable.toml --fitted z_fit.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NEAR(json_number(r.out, "ei"), 2.8, 1e-4) << r.out;
+  EXPECT_NEAR(json_number(r.out, "c"), 20.0, 1e-3) << r.out;
+  EXPECT_NEAR(json_number(r.out, "h"), 0.7, 1e-4) << r.out;
+  EXPECT_LT(json_number(r.out, "rms_relative_error"), 1e-5) << r.out;
+  EXPECT_NE(r.out.find("\"undetermined\": []"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"standard_error\": "), std::string::npos) << r.out;
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;  // the summary line, no warning
+  EXPECT_NE(r.err.find("identify impedance: ei = 2.8"), std::string::npos) << r.err;
+
+  // The fitted CSV: the measured points and the model's Z there.
+  const Csv fitted = read_csv(dir / "z_fit.csv");
+  const Csv measured = read_csv(dir / "measured.csv");
+  ASSERT_EQ(fitted.rows.size(), 16u);
+  const std::vector<double> re = fitted.column("re_z_n_s_m"), model_re = fitted.column("model_re_z_n_s_m"),
+                            im = fitted.column("im_z_n_s_m"), model_im = fitted.column("model_im_z_n_s_m");
+  for (std::size_t i = 0; i < re.size(); ++i) {
+    EXPECT_EQ(re[i], measured.column("re_z_n_s_m")[i]);
+    EXPECT_LT(std::abs(std::complex(model_re[i] - re[i], model_im[i] - im[i])), 1e-4 * std::hypot(re[i], im[i])) << i;
+  }
+
+  // A damper file reuses the identified cable; `impedance` reproduces the curve.
+  write_temp_file(dir, "reused.toml", damper_toml("file = \"cable.toml\"\n"));
+  ASSERT_EQ(run_cli("impedance reused.toml --velocity 0.05,0.2 --fmin 4 --fmax 60 --points 8 -o again.csv", dir).exit_code, 0);
+  const Csv again = read_csv(dir / "again.csv");
+  for (std::size_t i = 0; i < re.size(); ++i) {
+    const std::complex<double> z(measured.column("re_z_n_s_m")[i], measured.column("im_z_n_s_m")[i]);
+    const std::complex<double> z_again(again.column("re_z_n_s_m")[i], again.column("im_z_n_s_m")[i]);
+    EXPECT_LT(std::abs(z_again - z), 1e-4 * std::abs(z)) << i;
+  }
+}
+
+TEST(IdentifyImpedanceCli, AbsAndPhaseWithDisplacementGiveTheSameCable) {
+  const auto dir = scratch_directory("identify-impedance-polar");
+  const Csv measured = read_csv(measured_curve(dir));
+  // Only the velocity 0.2 curve's points, as a constant-displacement measurement
+  // would list them: displacement_m and |Z|, phase.
+  std::string polar = "frequency_hz,displacement_m,abs_z_n_s_m,phase_deg\n", cartesian = "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n";
+  for (const std::vector<double>& row : measured.rows) {
+    auto at = [&](const char* name) { return row[static_cast<std::size_t>(
+                                           std::find(measured.header.begin(), measured.header.end(), name) - measured.header.begin())]; };
+    if (at("velocity_m_s") != 0.2) continue;
+    char line[256];
+    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g\n", at("frequency_hz"), at("displacement_m"), at("abs_z_n_s_m"),
+                  at("phase_deg"));
+    polar += line;
+    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g\n", at("frequency_hz"), at("velocity_m_s"), at("re_z_n_s_m"),
+                  at("im_z_n_s_m"));
+    cartesian += line;
+  }
+  write_temp_file(dir, "polar.csv", polar);
+  write_temp_file(dir, "cartesian.csv", cartesian);
+  write_temp_file(dir, "start.toml", damper_toml(kGuess));
+  const CliResult a = run_cli("identify impedance --damper start.toml --input polar.csv --json", dir);
+  const CliResult b = run_cli("identify impedance --damper start.toml --input cartesian.csv --json", dir);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  for (const char* key : {"ei", "c", "h"}) {
+    EXPECT_NEAR(json_number(a.out, key) / json_number(b.out, key), 1.0, 1e-4) << key << "\n" << a.out << "\n" << b.out;
+  }
+}
+
+TEST(IdentifyImpedanceCli, TheShippedExampleRecoversItsCableWithinOnePercent) {
+  // examples/measured_impedance.csv: the verification damper (ei 2.8, c 20, h 0.7)
+  // at 0.05 and 0.2 m/s with 1 % scatter; examples/damper_to_identify.toml guesses.
+  const auto dir = scratch_directory("identify-impedance-example");
+  const std::string examples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
+  const CliResult r = run_cli("identify impedance --damper " + examples + "damper_to_identify.toml --input " + examples +
+                                  "measured_impedance.csv --json -o cable.toml",
+                              dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NEAR(json_number(r.out, "ei"), 2.8, 0.028) << r.out;
+  EXPECT_NEAR(json_number(r.out, "c"), 20.0, 0.2) << r.out;
+  EXPECT_NEAR(json_number(r.out, "h"), 0.7, 0.007) << r.out;
+  EXPECT_NEAR(json_number(r.out, "rms_relative_error"), 0.01, 0.003) << r.out;
+  EXPECT_NE(read_text(dir / "cable.toml").find("length = 0.1875"), std::string::npos);
+}
+
+TEST(IdentifyImpedanceCli, ACurveBelowSlipSaysHIsNotDeterminedAndStillWritesTheCable) {
+  const auto dir = scratch_directory("identify-impedance-stick");
+  write_temp_file(dir, "truth.toml", damper_toml(kTruth));
+  ASSERT_EQ(run_cli("impedance truth.toml --velocity 0.0002 --fmin 4 --fmax 60 --points 10 -o measured.csv", dir).exit_code, 0);
+  write_temp_file(dir, "start.toml", damper_toml(kGuess));
+  const CliResult r = run_cli("identify impedance --damper start.toml --input measured.csv --json -o cable.toml", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"undetermined\": [\"ei\", \"jenkin[0].c\", \"jenkin[0].h\"]"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("warning: the fitted cable never slips"), std::string::npos) << r.err;
+  EXPECT_NE(read_text(dir / "cable.toml").find("jenkin[0].h = "), std::string::npos);  // the comment says so
+  EXPECT_NE(read_text(dir / "cable.toml").find("NOT determined"), std::string::npos);
+}
+
+struct BadFit {
+  const char* name;
+  const char* damper;    ///< the damper file's text ("" for the valid start)
+  const char* measured;  ///< the measured file's text ("" for a valid curve)
+  const char* must_mention;
+  const char* options = "";  ///< added to the command
+};
+
+class IdentifyImpedanceCliRejects : public ::testing::TestWithParam<BadFit> {};
+
+TEST_P(IdentifyImpedanceCliRejects, WithOneLineExitTwoAndNoFile) {
+  const BadFit& bad = GetParam();
+  const auto dir = scratch_directory(std::string("identify-impedance-bad-") + bad.name);
+  write_temp_file(dir, "start.toml", *bad.damper ? std::string(bad.damper) : damper_toml(kGuess));
+  write_temp_file(dir, "z.csv", *bad.measured ? std::string(bad.measured)
+                                              : "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.05,5,80\n20,0.05,12,150\n");
+  const CliResult r =
+      run_cli(std::string("identify impedance --damper start.toml --input z.csv -o out.toml --fitted fit.csv ") + bad.options, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_NE(r.err.find(bad.must_mention), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.toml"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "fit.csv"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInputs, IdentifyImpedanceCliRejects,
+    ::testing::Values(
+        BadFit{"missing_column", "", "frequency_hz,re_z_n_s_m,im_z_n_s_m\n10,5,80\n20,12,150\n",
+               "z.csv: missing column 'velocity_m_s' (or 'displacement_m')"},
+        BadFit{"frequency_zero", "", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.05,5,80\n0,0.05,12,150\n",
+               "z.csv:3: column 'frequency_hz' = 0: expected > 0"},
+        BadFit{"velocity_negative", "", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,-0.05,5,80\n20,0.05,12,150\n",
+               "z.csv:2: column 'velocity_m_s' = -0.05: expected > 0"},
+        BadFit{"nan", "", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.05,NaN,80\n20,0.05,12,150\n",
+               "z.csv:2: column 're_z_n_s_m' = NaN: expected a finite number"},
+        BadFit{"profile_start",
+               "[clamp]\nmass = 0.7\n[[arm]]\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\nlength = 0.1875\nsections = 12\n"
+               "ei = { s = [0.0, 0.1], value = [2.8, 3.0] }\njenkin = [ { c = 20.0, h = 0.7 } ]\n",
+               "", "start.toml: arm[0].cable.ei: a profile along the cable"},
+        BadFit{"too_few_points", "", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.05,5,80\n20,0.05,12,150\n",
+               "z.csv: 2 points for 5 parameters", "--elements 2"}),
+    [](const ::testing::TestParamInfo<BadFit>& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace stockbridge::testing
