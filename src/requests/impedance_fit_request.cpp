@@ -121,9 +121,10 @@ std::string fit_summary_line(const identification::ImpedanceMeasurement& measure
   for (const identification::ParameterEstimate& e : fit.parameters) {
     parts.push_back(fmt::format("{} = {} {}", e.name, with_error(e), e.unit));
   }
-  return fmt::format("identify impedance: {}; RMS relative error of Z {:.3g} % over {} points ({} curves), {} model runs",
-                     fmt::join(parts, ", "), 100.0 * fit.rms_relative_error, measurement.points.size(),
-                     identification::measured_curves(measurement).size(), fit.model_evaluations);
+  const std::size_t curves = identification::measured_curves(measurement).size();
+  return fmt::format("identify impedance: {}; RMS relative error of Z {:.3g} % over {} points ({} curve{}), {} model runs",
+                     fmt::join(parts, ", "), 100.0 * fit.rms_relative_error, measurement.points.size(), curves,
+                     curves == 1 ? "" : "s", fit.model_evaluations);
 }
 
 std::string fitted_cable_file(const identification::ImpedanceIdentification& fit, std::size_t type,
