@@ -179,7 +179,7 @@ def test_debian_package_depends_on_the_linked_libraries_and_installs_to_usr(scra
         expected |= {"python3", "python3-numpy"}
     assert expected <= depends, f"missing: {expected - depends}"
 
-    files = [line.split()[-1] for line in run("dpkg-deb", "-c", deb).splitlines()]
+    files = [line.split()[5] for line in run("dpkg-deb", "-c", deb).splitlines()]  # symlinks: "path -> target"
     assert all(f == "./" or f.startswith("./usr/") for f in files), [f for f in files if not f.startswith("./usr/")]
     assert not [f for f in files if f.startswith("./usr/local")]
     for expected_file in ("./usr/bin/stockbridge", "./usr/include/stockbridge/version.hpp",
