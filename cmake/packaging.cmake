@@ -16,8 +16,9 @@ install(FILES ${PROJECT_BINARY_DIR}/stockbridgeConfig.cmake ${PROJECT_BINARY_DIR
 # What a person reads goes to share/doc/stockbridge; what the program and its users
 # run (damper, cable and span files, scripts, the C++ consumer) to share/stockbridge,
 # which minimal systems do not strip as they may share/doc.
+# README.md beside docs/, as in the sources, so that its links to docs/*.md hold.
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR} FILES_MATCHING PATTERN "*.md")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR} FILES_MATCHING PATTERN "*.md")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples DESTINATION ${CMAKE_INSTALL_DATADIR}/stockbridge
         PATTERN __pycache__ EXCLUDE)
 

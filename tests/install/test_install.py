@@ -93,7 +93,7 @@ def test_installed_tree_holds_the_public_interface_only(prefix, scratch):
     for name in ("stockbridgeConfig.cmake", "stockbridgeConfigVersion.cmake", "stockbridgeTargets.cmake"):
         assert (config / name).is_file(), name
     assert (prefix / "share/doc/stockbridge/README.md").is_file()
-    assert (prefix / "share/doc/stockbridge/install.md").is_file()
+    assert (prefix / "share/doc/stockbridge/docs/install.md").is_file()
     assert (prefix / EXAMPLES / "sauter2003.toml").is_file()
     assert (prefix / EXAMPLES / "cpp_consumer" / "CMakeLists.txt").is_file()
 
@@ -183,7 +183,7 @@ def test_debian_package_depends_on_the_linked_libraries_and_installs_to_usr(scra
     assert all(f == "./" or f.startswith("./usr/") for f in files), [f for f in files if not f.startswith("./usr/")]
     assert not [f for f in files if f.startswith("./usr/local")]
     for expected_file in ("./usr/bin/stockbridge", "./usr/include/stockbridge/version.hpp",
-                          f"./usr/{EXAMPLES}/sauter2003.toml", "./usr/share/doc/stockbridge/install.md"):
+                          f"./usr/{EXAMPLES}/sauter2003.toml", "./usr/share/doc/stockbridge/docs/install.md"):
         assert expected_file in files, expected_file
     assert [f for f in files if re.fullmatch(r"\./usr/lib/(.+/)?cmake/stockbridge/stockbridgeConfig\.cmake", f)]
 
