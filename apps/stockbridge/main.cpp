@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "misspellings.hpp"
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/version.hpp"
 
 namespace {
 
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
   using namespace stockbridge;
   CLI::App app{"stockbridge: nonlinear impedance of Stockbridge dampers (Masing cable model)", "stockbridge"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "stockbridge " STOCKBRIDGE_VERSION);
+  app.set_version_flag("--version", fmt::format("stockbridge {}", stockbridge::version()));
   int exit_code = cli::kSuccess;
   cli::add_loop_command(app, exit_code);
   cli::add_cycle_command(app, exit_code);

@@ -38,6 +38,7 @@
 #include "stockbridge/requests/span_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 #include "stockbridge/strand/strand_bounds.hpp"
+#include "stockbridge/version.hpp"
 
 namespace py = pybind11;
 using namespace stockbridge;
@@ -587,6 +588,7 @@ py::dict modes(const damper::Damper& d) {
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "stockbridge: nonlinear impedance of Stockbridge dampers (C++ library binding)";
+  m.attr("__version__") = std::string(stockbridge::version());
 
   static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);

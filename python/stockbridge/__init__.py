@@ -26,6 +26,7 @@ class UnusualValueWarning(UserWarning):
 
 
 try:
+    from ._core import __version__  # noqa: F401  (the library's, as stockbridge --version)
     from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, cycle,  # noqa: F401
                         identify_global, identify_local, impedance, load_cable, load_damper, load_strand, loop,
                         modes, response, strand_bounds)

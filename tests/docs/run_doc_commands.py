@@ -27,6 +27,8 @@ SKIPPED_BLOCKS = {
     "scripts/install-deps && scripts/test-all": "the test suite, which runs this",
     "cmake --preset sanitize && cmake --build --preset sanitize": "the hour of fuzzing in hardening.md needs the "
     "sanitizer build; the suite runs every fuzzer for 10 s (fuzz/run_fuzzer.sh)",
+    "cd build && cpack -G DEB && apt-get install -y ./stockbridge_*.deb": "installs into the system; the "
+    "suite packs the .deb and installs into temporary prefixes instead (tests/install)",
 }
 
 

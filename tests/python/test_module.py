@@ -40,6 +40,11 @@ def test_impedance_equals_the_program_for_the_same_file(tmp_path):
     assert z["arms"] == ["left", "right"]
 
 
+def test_version_is_the_programs():
+    out = subprocess.run([CLI, "--version"], check=True, capture_output=True, text=True).stdout
+    assert out == f"stockbridge {sb.__version__}\n"
+
+
 def documented_keys(function, arms):
     """The keys docs/python.md gives for what `function` returns: every name in
     backticks in its row's second cell, <arm> standing for each of `arms`."""
