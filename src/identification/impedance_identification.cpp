@@ -279,11 +279,10 @@ class ImpedanceProblem : public least_squares::Problem {
   int variables() const override { return variables_.size(); }
   int residual_count() const override { return 2 * static_cast<int>(measurement_.points.size()); }
 
-  Eigen::VectorXd residuals(const Eigen::VectorXd& x) override { return evaluated(x).residuals; }
-
   /// Levenberg-Marquardt's points are warm-started from the best so far (its
-  /// current iterate), the Jacobian's columns from the point they differentiate at.
-
+  /// current iterate), the Jacobian's columns from the point they differentiate at
+  /// (on `threads` threads: the columns are independent model runs).
+  Eigen::VectorXd residuals(const Eigen::VectorXd& x) override { return evaluated(x).residuals; }
   Eigen::MatrixXd jacobian(const Eigen::VectorXd& x) override {
     const Evaluation at = evaluated(x);
     Eigen::MatrixXd jacobian(residual_count(), variables());

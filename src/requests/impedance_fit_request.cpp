@@ -14,7 +14,7 @@ namespace stockbridge::requests {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNotModelled = std::numeric_limits<double>::quiet_NaN();
 
 io::JsonObject estimate_json(const identification::ParameterEstimate& e) {
   return io::JsonObject()
@@ -62,7 +62,7 @@ std::vector<std::vector<double>> fitted_rows(const identification::ImpedanceMeas
   for (std::size_t i = 0; i < measurement.points.size(); ++i) {
     const identification::MeasuredImpedance& m = measurement.points[i];
     const damper::ImpedancePoint& p = fit.fitted[i];
-    const std::complex<double> z = p.converged() ? p.impedance : std::complex<double>(kNaN, kNaN);
+    const std::complex<double> z = p.converged() ? p.impedance : std::complex<double>(kNotModelled, kNotModelled);
     rows.push_back({m.excitation.frequency_hz, m.excitation.velocity_amplitude(), m.excitation.displacement_amplitude,
                     m.impedance.real(), m.impedance.imag(), z.real(), z.imag(), p.converged() ? 1.0 : 0.0});
   }

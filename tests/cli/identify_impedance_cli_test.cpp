@@ -40,7 +40,7 @@ const std::string kTruth = "ei = 2.8\njenkin = [ { c = 20.0, h = 0.7 } ]\n";
 const std::string kGuess = "ei = 3.1\njenkin = [ { c = 17.0, h = 0.8 } ]\n";
 
 /// Rows of a CSV as named columns.
-struct Csv {
+struct CsvTable {
   std::vector<std::string> header;
   std::vector<std::vector<double>> rows;
   std::vector<double> column(const std::string& name) const {
@@ -51,10 +51,10 @@ struct Csv {
   }
 };
 
-Csv read_csv(const std::filesystem::path& path) {
+CsvTable read_csv_table(const std::filesystem::path& path) {
   std::istringstream in(read_text(path));
   std::string line, cell;
-  Csv csv;
+  CsvTable csv;
   std::getline(in, line);
   for (std::istringstream h(line); std::getline(h, cell, ',');) csv.header.push_back(cell);
   while (std::getline(in, line)) {
@@ -90,8 +90,8 @@ TEST(IdentifyImpedanceCli, RecoversTheCableOfACurveAndItsCableFileReproducesTheC
   EXPECT_NE(r.err.find("identify impedance: ei = 2.8"), std::string::npos) << r.err;
 
   // The fitted CSV: the measured points and the model's Z there.
-  const Csv fitted = read_csv(dir / "z_fit.csv");
-  const Csv measured = read_csv(dir / "measured.csv");
+  const CsvTable fitted = read_csv_table(dir / "z_fit.csv");
+  const CsvTable measured = read_csv_table(dir / "measured.csv");
   ASSERT_EQ(fitted.rows.size(), 16u);
   const std::vector<double> re = fitted.column("re_z_n_s_m"), model_re = fitted.column("model_re_z_n_s_m"),
                             im = fitted.column("im_z_n_s_m"), model_im = fitted.column("model_im_z_n_s_m");
@@ -103,7 +103,7 @@ TEST(IdentifyImpedanceCli, RecoversTheCableOfACurveAndItsCableFileReproducesTheC
   // A damper file reuses the identified cable; `impedance` reproduces the curve.
   write_temp_file(dir, "reused.toml", damper_toml("file = \"cable.toml\"\n"));
   ASSERT_EQ(run_cli("impedance reused.toml --velocity 0.05,0.2 --fmin 4 --fmax 60 --points 8 -o again.csv", dir).exit_code, 0);
-  const Csv again = read_csv(dir / "again.csv");
+  const CsvTable again = read_csv_table(dir / "again.csv");
   for (std::size_t i = 0; i < re.size(); ++i) {
     const std::complex<double> z(measured.column("re_z_n_s_m")[i], measured.column("im_z_n_s_m")[i]);
     const std::complex<double> z_again(again.column("re_z_n_s_m")[i], again.column("im_z_n_s_m")[i]);
@@ -113,7 +113,7 @@ TEST(IdentifyImpedanceCli, RecoversTheCableOfACurveAndItsCableFileReproducesTheC
 
 TEST(IdentifyImpedanceCli, AbsAndPhaseWithDisplacementGiveTheSameCable) {
   const auto dir = scratch_directory("identify-impedance-polar");
-  const Csv measured = read_csv(measured_curve(dir));
+  const CsvTable measured = read_csv_table(measured_curve(dir));
   // Only the velocity 0.2 curve's points, as a constant-displacement measurement
   // would list them: displacement_m and |Z|, phase.
   std::string polar = "frequency_hz,displacement_m,abs_z_n_s_m,phase_deg\n", cartesian = "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n";
