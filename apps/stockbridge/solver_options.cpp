@@ -15,6 +15,9 @@ void SolverFlags::add_to(CLI::App& command) {
                   defaults.collocation.harmonics));
   samples_flag_ = command.add_option(
       "--samples", samples_, "Time samples per period for hb (default: 8 H rounded up to a power of 2, at least 64)");
+  full_period_flag_ = command.add_flag(
+      "--full-period", full_period_, "hb: every harmonic and the mean over whole periods (default: odd harmonics over half "
+                       "periods, as the symmetric law and drive allow)");
   steps_flag_ = command.add_option(
       "--steps", steps_, fmt::format("Time steps per period (time, shooting; default {})", defaults.time_integration.steps_per_period));
   max_iterations_flag_ = command.add_option(
@@ -35,6 +38,7 @@ requests::SolverSettings SolverFlags::settings() const {
   s.method = method_;
   if (harmonics_flag_->count() > 0) s.harmonics = harmonics_;
   if (samples_flag_->count() > 0) s.samples = samples_;
+  if (full_period_) s.half_wave = false;
   if (steps_flag_->count() > 0) s.steps = steps_;
   if (max_iterations_flag_->count() > 0) s.max_iterations = max_iterations_;
   if (max_periods_flag_->count() > 0) s.max_periods = max_periods_;

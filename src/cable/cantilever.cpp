@@ -66,6 +66,15 @@ CableState CableState::virgin(const Cable& cable) {
   return state;
 }
 
+void CableState::mirror() {
+  clamp_moment = -clamp_moment;
+  tip_force = -tip_force;
+  rotation = -rotation;
+  deflection = -deflection;
+  for (double& k : curvature) k = -k;
+  for (double& h : hysteretic) h = -h;
+}
+
 Eigen::Matrix2d CableState::tip_stiffness(double length) const { return cable::tip_stiffness(flexibility, length); }
 
 Eigen::Matrix2d tip_stiffness(const Eigen::Matrix2d& flexibility, double length) {
@@ -202,6 +211,14 @@ void Cantilever::reset() {
 void Cantilever::restore(const CableState& state) {
   state_ = Committable<CableState>(state);
   last_increment_.setZero();
+}
+
+void Cantilever::mirror() {
+  CableState& mirrored = state_.trial();
+  mirrored = state_.committed();
+  mirrored.mirror();
+  state_.commit();
+  last_increment_ = -last_increment_;
 }
 
 void Cantilever::set_trial_loads(double clamp_moment, double tip_force) {

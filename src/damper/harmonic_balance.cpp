@@ -28,6 +28,8 @@ void HarmonicBalanceOptions::validate() const {
   cantilever.validate();
 }
 
+bool HarmonicBalanceOptions::uses_half_wave() const { return half_wave && !collocation && sample_count() % 2 == 0; }
+
 int HarmonicBalanceOptions::sample_count() const {
   if (collocation) return 2 * harmonics + 1;
   if (samples > 0) return samples;
@@ -40,9 +42,6 @@ namespace {
 using Strided = Eigen::Map<Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 2>>;
 using ConstStrided = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 2>>;
 
-/// Harmonic number of coefficient column c: 0, 1, 1, 2, 2, ...
-int harmonic_of(int c) { return (c + 1) / 2; }
-
 /// Sign of det(J) from its LU factors.
 int determinant_sign(const Eigen::MatrixXd& jacobian) {
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian);
@@ -53,19 +52,28 @@ int determinant_sign(const Eigen::MatrixXd& jacobian) {
 }  // namespace
 
 HarmonicBalance::HarmonicBalance(Arm arm, HarmonicBalanceOptions options)
-    : arm_(std::move(arm)), options_(validated(options)), samples_(options_.sample_count()) {
-  const int c_count = 2 * options_.harmonics + 1;
-  basis_.resize(samples_, c_count);
-  projection_.resize(c_count, samples_);
-  for (int j = 0; j < samples_; ++j) {
+    : arm_(std::move(arm)),
+      options_(validated(options)),
+      samples_(options_.sample_count()),
+      symmetry_(options_.uses_half_wave() ? PathSymmetry::half_wave : PathSymmetry::none),
+      driven_samples_(symmetry_ == PathSymmetry::half_wave ? samples_ / 2 : samples_) {
+  const bool odd_only = symmetry_ == PathSymmetry::half_wave;
+  if (!odd_only) harmonic_.push_back(0);
+  for (int k = 1; k <= options_.harmonics; k += odd_only ? 2 : 1) harmonic_.insert(harmonic_.end(), {k, k});
+  excitation_column_ = odd_only ? 1 : 2;
+  const auto c_count = static_cast<Eigen::Index>(harmonic_.size());
+  basis_.resize(driven_samples_, c_count);
+  projection_.resize(c_count, driven_samples_);
+  // Over half a period the odd harmonics' sums are half the whole period's.
+  const double weight = (odd_only ? 2.0 : 1.0) / samples_;
+  const int first_cosine = odd_only ? 0 : 1;  // then sine, cosine, sine, ...
+  for (int j = 0; j < driven_samples_; ++j) {
     const double theta = 2.0 * std::numbers::pi * j / samples_;
-    basis_(j, 0) = 1.0;
-    projection_(0, j) = 1.0 / samples_;
-    for (int k = 1; k <= options_.harmonics; ++k) {
-      basis_(j, 2 * k - 1) = std::cos(k * theta);
-      basis_(j, 2 * k) = std::sin(k * theta);
-      projection_(2 * k - 1, j) = 2.0 * std::cos(k * theta) / samples_;
-      projection_(2 * k, j) = 2.0 * std::sin(k * theta) / samples_;
+    for (Eigen::Index c = 0; c < c_count; ++c) {
+      const int k = harmonic_[static_cast<std::size_t>(c)];
+      const bool sine = k > 0 && (c - first_cosine) % 2 == 1;
+      basis_(j, c) = k == 0 ? 1.0 : sine ? std::sin(k * theta) : std::cos(k * theta);
+      projection_(c, j) = (k == 0 ? 1.0 : 2.0) * weight * basis_(j, c);
     }
   }
 }
@@ -83,8 +91,8 @@ Eigen::VectorXd HarmonicBalance::linear_guess(const Excitation& excitation) cons
   const double w = excitation.angular_frequency();
   const Eigen::Matrix2d dynamic = arm_.stick_stiffness() - w * w * arm_.mass_matrix();
   Eigen::VectorXd q = Eigen::VectorXd::Zero(unknown_count());
-  // p(t) = L x_c'' = -W^2 X L sin(W t): the sin(W t) column is c = 2.
-  q.segment<2>(4) = dynamic.inverse() * (-w * w * excitation.displacement_amplitude * arm_.load_vector());
+  // p(t) = L x_c'' = -W^2 X L sin(W t).
+  q.segment<2>(2 * excitation_column_) = dynamic.inverse() * (-w * w * excitation.displacement_amplitude * arm_.load_vector());
   return q;
 }
 
@@ -92,7 +100,7 @@ HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation
                                                     const cable::CableState* start, int periods, unsigned derivatives,
                                                     HarmonicBalanceWorkspace& workspace) const {
   assert(q.size() == unknown_count());
-  const int c_count = 2 * options_.harmonics + 1;
+  const int c_count = static_cast<int>(harmonic_.size());
   const int p_count = 2 * c_count;
   const bool with_jacobian = (derivatives & kJacobian) != 0;
   const double w = excitation.angular_frequency();
@@ -108,7 +116,7 @@ HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation
     return out;
   }
   PeriodicCableResult loads = workspace.cable.evaluate(kinematics, periods, start, with_jacobian ? &basis_ : nullptr,
-                                                       with_jacobian ? &workspace.sensitivity : nullptr);
+                                                       with_jacobian ? &workspace.sensitivity : nullptr, symmetry_);
   out.cable = std::move(loads.summary);
   out.period = std::move(loads.period);
   if (!out.ok()) return out;
@@ -116,19 +124,19 @@ HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation
   // Accelerations' coefficients: -k^2 W^2 per harmonic.
   Eigen::Matrix2Xd acceleration(2, c_count);
   for (int c = 0; c < c_count; ++c) {
-    const double k = harmonic_of(c);
+    const double k = harmonic_[static_cast<std::size_t>(c)];
     acceleration.col(c) = -k * k * w * w * coefficients.col(c);
   }
   out.residual.resize(p_count);
   if (!options_.collocation) {
     Eigen::Map<Eigen::Matrix2Xd> residual(out.residual.data(), 2, c_count);
-    residual = mass * acceleration + out.period.loads * projection_.transpose();
-    residual.col(2) -= -w * w * x_amp * load;  // excitation, sin(W t)
+    residual = mass * acceleration + out.period.loads.leftCols(driven_samples_) * projection_.transpose();
+    residual.col(excitation_column_) -= -w * w * x_amp * load;  // excitation, sin(W t)
     if (with_jacobian) {
       out.force_jacobian.resize(p_count, p_count);
       for (int d = 0; d < 2; ++d) {
-        const ConstStrided s(workspace.sensitivity.data() + d, samples_, p_count,
-                             Eigen::Stride<Eigen::Dynamic, 2>(2 * samples_, 2));
+        const ConstStrided s(workspace.sensitivity.data() + d, driven_samples_, p_count,
+                             Eigen::Stride<Eigen::Dynamic, 2>(2 * driven_samples_, 2));
         Strided(out.force_jacobian.data() + d, c_count, p_count, Eigen::Stride<Eigen::Dynamic, 2>(2 * c_count, 2)) =
             projection_ * s;
       }
@@ -136,7 +144,7 @@ HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation
   } else {
     Eigen::Map<Eigen::Matrix2Xd> residual(out.residual.data(), 2, samples_);
     residual = mass * (acceleration * basis_.transpose()) + out.period.loads;
-    residual -= (-w * w * x_amp * load) * basis_.col(2).transpose();
+    residual -= (-w * w * x_amp * load) * basis_.col(excitation_column_).transpose();
     if (with_jacobian) out.force_jacobian = workspace.sensitivity;
   }
   if ((derivatives & kFrequency) != 0) {
@@ -144,18 +152,18 @@ HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation
     const double v = w * x_amp;
     Eigen::Matrix2Xd d_acceleration(2, c_count);
     for (int c = 0; c < c_count; ++c) {
-      const double k = harmonic_of(c);
+      const double k = harmonic_[static_cast<std::size_t>(c)];
       d_acceleration.col(c) = -2.0 * k * k * w * coefficients.col(c);
     }
     out.d_frequency.resize(p_count);
     if (!options_.collocation) {
       Eigen::Map<Eigen::Matrix2Xd> d(out.d_frequency.data(), 2, c_count);
       d = mass * d_acceleration;
-      d.col(2) += v * load;
+      d.col(excitation_column_) += v * load;
     } else {
       Eigen::Map<Eigen::Matrix2Xd> d(out.d_frequency.data(), 2, samples_);
       d = mass * (d_acceleration * basis_.transpose());
-      d += (v * load) * basis_.col(2).transpose();
+      d += (v * load) * basis_.col(excitation_column_).transpose();
     }
   }
   return out;
@@ -169,12 +177,12 @@ Eigen::MatrixXd HarmonicBalance::jacobian(const Excitation& excitation, const Ei
 
 void HarmonicBalance::assemble_jacobian(const Excitation& excitation, const Eigen::MatrixXd& force_jacobian,
                                         Eigen::MatrixXd& jacobian) const {
-  const int c_count = 2 * options_.harmonics + 1;
+  const int c_count = static_cast<int>(harmonic_.size());
   const double w = excitation.angular_frequency();
   const Eigen::Matrix2d& mass = arm_.mass_matrix();
   jacobian = force_jacobian;
   for (int c = 0; c < c_count; ++c) {
-    const double k = harmonic_of(c);
+    const double k = harmonic_[static_cast<std::size_t>(c)];
     if (!options_.collocation) {
       jacobian.block<2, 2>(2 * c, 2 * c) += -k * k * w * w * mass;
     } else {

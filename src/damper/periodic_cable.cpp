@@ -12,11 +12,12 @@ namespace stockbridge::damper {
 
 PeriodicCable::PeriodicCable(const cable::Cable& cable, cable::CantileverOptions options) : cantilever_(cable, options) {}
 
-PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, int periods,
+PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, int passes,
                                             const cable::CableState* start, const Eigen::MatrixXd* basis,
-                                            Eigen::MatrixXd* sensitivity) {
-  require_in_range("periods", periods, 1, 100000);
+                                            Eigen::MatrixXd* sensitivity, PathSymmetry symmetry) {
+  require_in_range("passes", passes, 1, 100000);
   const int n_samples = static_cast<int>(kinematics.cols());
+  const bool half_wave = symmetry == PathSymmetry::half_wave;
   const std::size_t n_sections = cable().sections();
   const std::size_t m = cable().elements();
   const bool with_sensitivity = basis && sensitivity;
@@ -30,35 +31,75 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
   PeriodicCableResult result;
   SolverSummary& summary = result.summary;
   ArmPeriod& period = result.period;
-  period.resize(n_samples);
-  period.kinematics = kinematics;
+  period.resize(half_wave ? 2 * n_samples : n_samples);
   if (start) {
     cantilever_.restore(*start);
   } else {
     cantilever_.reset();
   }
-  for (int k = 1; k <= periods; ++k) {
+  for (int k = 1; k <= passes; ++k) {
     summary.periods = k;
     const double dissipated_before = cantilever_.committed().dissipated;
-    if (k == periods) period_start_ = cantilever_.committed();
+    if (k == passes) period_start_ = cantilever_.committed();
     for (int j = 0; j < n_samples; ++j) {
       const cable::StateDetermination solve = cantilever_.set_trial_tip(kinematics(0, j), kinematics(1, j));
       summary.newton_iterations = std::max(summary.newton_iterations, solve.newton_iterations);
       if (!solve.converged()) {
         summary.termination = Termination::inner_failure;
-        summary.where = fmt::format("cable state determination at sample {} of period {}: {}", j, k, brief_report(solve));
+        summary.where = fmt::format("cable state determination at sample {} of {} {}: {}", j,
+                                    half_wave ? "half period" : "period", k, brief_report(solve));
         return result;
       }
       const cable::CableState& trial = cantilever_.trial();
       if (with_sensitivity) propagate_sensitivity(cantilever_.committed(), trial, *basis, j, sensitivity);
-      period.record_loads(j, trial, cantilever_.cable());
+      if (k == passes) period.record_loads(j, trial, cantilever_.cable());
       cantilever_.commit();
     }
     period.dissipated = cantilever_.committed().dissipated - dissipated_before;
+    if (half_wave) mirror(with_sensitivity);
   }
+  if (half_wave) {
+    period.dissipated *= 2.0;
+    period.complete_half_wave();
+  }
+  period.kinematics.leftCols(n_samples) = kinematics;
+  if (half_wave) period.kinematics.rightCols(n_samples) = -kinematics;
   summary.periodicity_defect = state_change(period_start_, cantilever_.committed());
+  if (half_wave) settle_locked_moments();
   summary.termination = Termination::converged;
   return result;
+}
+
+// Under the mirror an element that sticks over the whole half period maps its moment
+// H0 to -(H0 + D) (D its change over the half): a two-cycle about the centred moment
+// -D / 2, never settling (in whole periods any H0 is steady: friction locks it in).
+// Halfway between the last pass's start and its mirrored end is that centre, reached
+// in one step, while slipping elements, settled or settling, stay where they were or
+// go on settling. The mean of two cable states is one: the moments are statically
+// admissible, the curvatures and the tip kinematics linear in them, each slider's
+// moment within its bound.
+void PeriodicCable::settle_locked_moments() {
+  relaxed_ = cantilever_.committed();
+  const cable::CableState& start = period_start_;
+  relaxed_.clamp_moment = 0.5 * (relaxed_.clamp_moment + start.clamp_moment);
+  relaxed_.tip_force = 0.5 * (relaxed_.tip_force + start.tip_force);
+  relaxed_.rotation = 0.5 * (relaxed_.rotation + start.rotation);
+  relaxed_.deflection = 0.5 * (relaxed_.deflection + start.deflection);
+  for (std::size_t i = 0; i < relaxed_.curvature.size(); ++i) {
+    relaxed_.curvature[i] = 0.5 * (relaxed_.curvature[i] + start.curvature[i]);
+  }
+  for (std::size_t i = 0; i < relaxed_.hysteretic.size(); ++i) {
+    relaxed_.hysteretic[i] = 0.5 * (relaxed_.hysteretic[i] + start.hysteretic[i]);
+  }
+  cantilever_.restore(relaxed_);
+}
+
+void PeriodicCable::mirror(bool with_sensitivity) {
+  cantilever_.mirror();
+  if (!with_sensitivity) return;
+  anchor_ = -anchor_;
+  previous_d_clamp_moment_ = -previous_d_clamp_moment_;
+  previous_d_tip_force_ = -previous_d_tip_force_;
 }
 
 double PeriodicCable::state_change(const cable::CableState& start, const cable::CableState& end) const {

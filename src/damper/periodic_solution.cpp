@@ -14,6 +14,15 @@ void ArmPeriod::resize(int samples) {
   clamp_section_moment.resize(static_cast<std::size_t>(samples));
 }
 
+void ArmPeriod::complete_half_wave() {
+  const Eigen::Index half = loads.cols() / 2;
+  loads.rightCols(half) = -loads.leftCols(half);
+  for (std::vector<double>* samples : {&clamp_moment, &clamp_curvature, &clamp_section_moment}) {
+    const auto h = static_cast<std::ptrdiff_t>(half);
+    std::transform(samples->begin(), samples->begin() + h, samples->begin() + h, [](double v) { return -v; });
+  }
+}
+
 void ArmPeriod::record_loads(int j, const cable::CableState& state, const cable::Cable& cable) {
   const auto k = static_cast<std::size_t>(j);
   loads(0, j) = state.tip_force;

@@ -30,6 +30,7 @@ damper::SolverOptions solver_options(const SolverSettings& settings) {
   damper::HarmonicBalanceOptions& balance = collocation ? options.collocation : options.harmonic_balance;
   apply(settings.harmonics, "harmonics", hb || collocation, "hb and collocation", [&](int h) { balance.harmonics = h; });
   apply(settings.samples, "samples", hb, "hb", [&](int n) { balance.samples = n; });
+  apply(settings.half_wave, "half_wave", hb, "hb", [&](bool on) { balance.half_wave = on; });
   apply(settings.steps, "steps", time || shooting, "time and shooting", [&](int n) {
     options.time_integration.steps_per_period = n;
     options.shooting.steps_per_period = n;

@@ -33,6 +33,11 @@ struct CableState {
   std::vector<double> hysteretic;     ///< H at each section and element (sections x elements), N m
 
   static CableState virgin(const Cable& cable);
+  /// The state under the opposite loads: the law is odd (a Jenkin element's moment
+  /// changes sign with its path, the modified Masing slip moments depend on |M| / |F|),
+  /// so loads, tip kinematics, curvatures and slider moments change sign; tangents,
+  /// flexibility and the energy dissipated stay.
+  void mirror();
   /// Q = T - F l, N m.
   double tip_moment(double length) const { return clamp_moment - tip_force * length; }
   /// d(F, Q)/(x, phi): the tip stiffness for the damper, from the flexibility.
@@ -100,6 +105,10 @@ class Cantilever {
   void reset();
   /// Commits a given state (one of this cable's, e.g. saved from committed()).
   void restore(const CableState& state);
+  /// Commits the mirror image of the committed state (CableState::mirror): driving
+  /// the mirrored cable along a path gives the negative of driving the cable along
+  /// the negative path. The predictor's last increment changes sign with it.
+  void mirror();
 
  private:
   template <int K>

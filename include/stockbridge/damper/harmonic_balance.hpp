@@ -4,7 +4,11 @@
 //
 // The arm's tip kinematics are a Fourier series of H harmonics,
 //     u(t) = u_0 + sum_k a_k cos(k W t) + b_k sin(k W t),  unknowns q = [u_0, a_1, b_1, ...],
-// two numbers (x, phi) each. The cable loads f(t) = (F, Q) follow by alternating
+// two numbers (x, phi) each. Under half-wave symmetry (the default for harmonic
+// balance) only the odd harmonics are kept, q = [a_1, b_1, a_3, b_3, ...]: the
+// cable law is odd and the drive a sine, so the steady state repeats with the
+// opposite sign after half a period, u(t + T/2) = -u(t), and the cable is driven
+// over half a period only (PathSymmetry::half_wave). The cable loads f(t) = (F, Q) follow by alternating
 // frequency-time: u is sampled at N points per period, the cable is driven
 // through a pre-period and the period with the exact law, and f is projected
 // back. Harmonic balance sets the Galerkin projection of the equation of motion
@@ -26,9 +30,15 @@ struct HarmonicBalanceOptions {
   int harmonics = 9;          ///< H, >= 1
   int samples = 0;            ///< AFT samples per period (harmonic balance); 0: 8 H rounded up to a power of 2, >= 64
   bool collocation = false;   ///< trigonometric collocation at 2H + 1 points instead
+  /// Odd harmonics only, the cable driven over half periods (harmonic balance with
+  /// an even number of samples; collocation and odd sample counts use whole periods).
+  /// False: every harmonic and the mean, whole periods (a check, or the path of a
+  /// steady state that breaks the symmetry).
+  bool half_wave = true;
   int max_iterations = 100;   ///< Newton iterations
   double tolerance = 1e-8;    ///< residual relative to the excitation force amplitude m W^2 X
-  /// Every evaluation drives the cable through `periods` periods and uses the last;
+  /// Every evaluation drives the cable through `periods` periods (half periods, each
+  /// followed by the mirror, under half-wave symmetry) and uses the last;
   /// the solution is accepted when, in the same evaluation, the cable's state over the
   /// last period changed by at most `periodicity_tolerance` (see PeriodicCableResult).
   int periods = 2;
@@ -44,6 +54,8 @@ struct HarmonicBalanceOptions {
   void validate() const;
   /// The number of time samples per period actually used.
   int sample_count() const;
+  /// Whether half-wave symmetry is used (asked for, harmonic balance, samples even).
+  bool uses_half_wave() const;
 };
 
 /// What a solve leaves for the next one along a path (as in a stepped-sine test):
@@ -90,7 +102,9 @@ class HarmonicBalance {
 
   const Arm& arm() const { return arm_; }
   const HarmonicBalanceOptions& options() const { return options_; }
-  int unknown_count() const { return 2 * (2 * options_.harmonics + 1); }
+  int unknown_count() const { return 2 * static_cast<int>(harmonic_.size()); }
+  /// The harmonic number of each coefficient column (0 for the mean).
+  const std::vector<int>& harmonics() const { return harmonic_; }
   HarmonicBalanceWorkspace make_workspace() const;
 
   /// The all-stick linear steady state (a starting point where no predictor exists).
@@ -133,9 +147,13 @@ class HarmonicBalance {
  private:
   Arm arm_;
   HarmonicBalanceOptions options_;
-  int samples_;
-  Eigen::MatrixXd basis_;       // N x (2H+1): 1, cos(k W t_j), sin(k W t_j)
-  Eigen::MatrixXd projection_;  // (2H+1) x N: Fourier coefficients from samples (harmonic balance)
+  int samples_;                 // per period
+  PathSymmetry symmetry_;
+  int driven_samples_;          // per pass of the cable: N, or N / 2 under half-wave symmetry
+  std::vector<int> harmonic_;   // per coefficient column C: 0, 1, 1, 2, 2, ... (odd only: 1, 1, 3, 3, ...)
+  int excitation_column_;       // the column of sin(W t)
+  Eigen::MatrixXd basis_;       // driven samples x C: 1, cos(k W t_j), sin(k W t_j)
+  Eigen::MatrixXd projection_;  // C x driven samples: Fourier coefficients from samples (harmonic balance)
 };
 
 }  // namespace stockbridge::damper

@@ -28,6 +28,18 @@
 
 namespace stockbridge::damper {
 
+/// What the path's second half is.
+enum class PathSymmetry {
+  none,       ///< the samples are a whole period
+  /// The samples are the first half of a period whose second half is their negative,
+  /// u(t + T/2) = -u(t) (odd harmonics only). The cable law is odd, so the second half
+  /// from state S is the mirror image of the first half from the mirror image of S:
+  /// each pass drives the half and mirrors the state (Cantilever::mirror), and a
+  /// steady state is one whose mirror image the half leads back to. Half the samples
+  /// per pass, and the mirrored memory settles in half-period steps.
+  half_wave,
+};
+
 struct PeriodicCableResult {
   /// termination: converged when every state determination converged, else
   /// inner_failure with `where` naming the sample, the period and the failed state
@@ -47,13 +59,17 @@ class PeriodicCable {
  public:
   PeriodicCable(const cable::Cable& cable, cable::CantileverOptions options);
 
-  /// Loads along the periodic path `kinematics` (2 x N) in the last of `periods`
-  /// periods, starting from `start` (nullptr: the virgin state).
+  /// Loads along the periodic path `kinematics` (2 x N) in the last of `passes`
+  /// passes of it (periods; half periods, each followed by the mirror, under
+  /// PathSymmetry::half_wave), starting from `start` (nullptr: the virgin state).
   /// With `basis` (N x C) the path is u_j = sum_c basis(j, c) q(2c + d) for DOF d,
   /// and `sensitivity` (2N x 2C, rows 2j + d for F (d = 0) and Q (d = 1)) receives
-  /// the exact derivative of the final period's loads with respect to q.
-  PeriodicCableResult evaluate(const Eigen::Matrix2Xd& kinematics, int periods, const cable::CableState* start = nullptr,
-                               const Eigen::MatrixXd* basis = nullptr, Eigen::MatrixXd* sensitivity = nullptr);
+  /// the exact derivative of the final pass's loads with respect to q. The period
+  /// returned is whole (2N samples under half_wave, the second half the negative of
+  /// the first); the final state is the one the next pass would start from.
+  PeriodicCableResult evaluate(const Eigen::Matrix2Xd& kinematics, int passes, const cable::CableState* start = nullptr,
+                               const Eigen::MatrixXd* basis = nullptr, Eigen::MatrixXd* sensitivity = nullptr,
+                               PathSymmetry symmetry = PathSymmetry::none);
   /// The cable's state at the end of the last evaluation.
   const cable::CableState& final_state() const { return cantilever_.committed(); }
   const cable::Cable& cable() const { return cantilever_.cable(); }
@@ -63,9 +79,15 @@ class PeriodicCable {
                              const Eigen::MatrixXd& basis, int sample, Eigen::MatrixXd* sensitivity);
 
   double state_change(const cable::CableState& start, const cable::CableState& end) const;
+  /// Mirrors the cable and, with it, the sensitivities carried to the next pass.
+  void mirror(bool with_sensitivity);
+  /// Under half-wave symmetry: the final state halfway between the last pass's start
+  /// and its mirrored end (centres the moments friction locks in).
+  void settle_locked_moments();
 
   cable::Cantilever cantilever_;
   cable::CableState period_start_;
+  cable::CableState relaxed_;
   // Sensitivity state (see propagate_sensitivity): the anchor d kappa / dq of every
   // element (column i*m + e), and the elements whose anchor is still to be set from
   // the previous step's load derivatives.

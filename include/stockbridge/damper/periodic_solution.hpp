@@ -29,6 +29,9 @@ struct ArmPeriod {
   /// stores at sample j the cable's tip loads (F, Q), the clamp moment T and the clamp
   /// section's curvature and moment T - F s_0 of `state`.
   void record_loads(int j, const cable::CableState& state, const cable::Cable& cable);
+  /// Under half-wave symmetry the first half of the samples was recorded: the second
+  /// half's loads, moments and curvatures are their negatives.
+  void complete_half_wave();
 };
 
 /// How an arm's periodic solve ended: termination, newton_iterations (harmonic

@@ -20,6 +20,7 @@ struct SolverSettings {
   std::optional<int> max_iterations;      ///< Newton iterations per point (hb, collocation, shooting)
   std::optional<int> max_periods;         ///< periods integrated at most (time)
   std::optional<double> energy_tolerance; ///< largest energy-balance error of a trusted point (every method)
+  std::optional<bool> half_wave;          ///< odd harmonics over half periods (hb; default true)
 };
 
 /// The options for `settings` (InvalidParameter naming the setting otherwise).
