@@ -1,8 +1,10 @@
 // The product's main job: the impedance sweep of examples/sauter2003.toml
 // (200 frequencies log-spaced over 1-100 Hz at 0.05 and 0.2 m/s, harmonic
-// balance, 9 harmonics), on 1 and 2 threads; and the cost of one point per method.
+// balance, 9 harmonics), on 1 and 2 threads, with and without continuation blocks,
+// and at one amplitude; and the cost of one point per method.
 
 #include <string>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
@@ -18,12 +20,15 @@ Damper example() {
   return stockbridge::io::read_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml");
 }
 
+/// Arguments: threads, amplitudes (2: 0.05 and 0.2 m/s; 1: 0.2 m/s), frequencies per
+/// continuation block (SweepSpec::block_points; 0: one block per amplitude).
 void BM_SauterSweep(benchmark::State& state) {
   const Damper damper = example();
   SweepSpec spec;
   spec.frequencies = log_spaced(1.0, 100.0, 200);
-  spec.amplitudes = {0.05, 0.2};
+  spec.amplitudes = state.range(1) == 2 ? std::vector<double>{0.05, 0.2} : std::vector<double>{0.2};
   spec.threads = static_cast<int>(state.range(0));
+  spec.block_points = static_cast<int>(state.range(2));
   int converged = 0;
   for (auto _ : state) {
     converged = 0;
@@ -33,7 +38,19 @@ void BM_SauterSweep(benchmark::State& state) {
   }
   state.counters["converged_points"] = converged;
 }
-BENCHMARK(BM_SauterSweep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_SauterSweep)
+    ->ArgNames({"threads", "amplitudes", "block_points"})
+    ->Args({1, 2, 50})
+    ->Args({2, 2, 50})
+    ->Args({1, 1, 50})
+    ->Args({2, 1, 50})
+    ->Args({1, 2, 0})
+    ->Args({2, 2, 0})
+    ->Args({1, 1, 0})
+    ->Args({2, 1, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
 
 // One point from a cold start (no continuation), per method, at a slipping frequency.
 void BM_OnePoint(benchmark::State& state, Method method, double frequency_hz) {

@@ -28,6 +28,7 @@ void SweepSpec::validate() const {
                      constant_displacement ? "m" : "m/s");
   }
   require_in_range("threads", threads, 1, 256);
+  require_in_range("block_points", block_points, 0, 1000000);
   solver.validate();
 }
 
@@ -51,17 +52,44 @@ std::vector<double> log_spaced(double fmin, double fmax, int points) {
 
 namespace {
 
-/// One continuation run of one arm over all frequencies at one amplitude.
-std::vector<ArmSolution> continue_arm(const Arm& arm, const SweepSpec& spec, double amplitude,
-                                      const std::function<void()>& tick) {
+/// A stretch of one amplitude's frequencies [begin, end) followed by one arm's own
+/// continuation: the sweep's unit of work on a thread.
+struct Block {
+  std::size_t amplitude = 0;
+  std::size_t task_column = 0;  ///< which distinct arm
+  std::size_t begin = 0, end = 0;
+};
+
+/// Each amplitude's frequencies cut into stretches of about spec.block_points (the
+/// same cut whatever the threads, so that the results are too), for every distinct arm.
+std::vector<Block> cut_into_blocks(const SweepSpec& spec, std::size_t distinct_arms) {
+  const std::size_t n = spec.frequencies.size();
+  const std::size_t per_block = spec.block_points > 0 ? static_cast<std::size_t>(spec.block_points) : n;
+  const std::size_t count = std::max<std::size_t>(1, (n + per_block / 2) / per_block);
+  std::vector<Block> blocks;
+  for (std::size_t a = 0; a < spec.amplitudes.size(); ++a) {
+    for (std::size_t b = 0; b < count; ++b) {
+      for (std::size_t d = 0; d < distinct_arms; ++d) blocks.push_back({a, d, b * n / count, (b + 1) * n / count});
+    }
+  }
+  return blocks;
+}
+
+/// One arm's continuation over a block: from a cold start kWarmUp frequencies
+/// before it (where there are), as the sweep itself would arrive, the warm-up's
+/// solutions discarded.
+void continue_arm(const Arm& arm, const SweepSpec& spec, const Block& block, std::vector<ArmSolution>& solutions,
+                  const std::function<void()>& tick) {
+  constexpr std::size_t kWarmUp = 2;
   ArmTracker tracker(arm, spec.solver, spec.constant_displacement ? HeldAmplitude::displacement : HeldAmplitude::velocity);
-  std::vector<ArmSolution> solutions;
-  solutions.reserve(spec.frequencies.size());
-  for (const double f : spec.frequencies) {
-    solutions.push_back(tracker.solve(spec.excitation(f, amplitude)));
+  const double amplitude = spec.amplitudes[block.amplitude];
+  for (std::size_t i = block.begin >= kWarmUp ? block.begin - kWarmUp : 0; i < block.begin; ++i) {
+    tracker.solve(spec.excitation(spec.frequencies[i], amplitude));
+  }
+  for (std::size_t i = block.begin; i < block.end; ++i) {
+    solutions[i] = tracker.solve(spec.excitation(spec.frequencies[i], amplitude));
     tick();
   }
-  return solutions;
 }
 
 /// Flags both ends of every interval where an arm's Jacobian sign changes.
@@ -86,13 +114,14 @@ void flag_folds(const std::vector<ArmSolution>& arm, const std::string& arm_labe
 std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, const SweepProgress& progress) {
   spec.validate();
   const std::vector<std::size_t>& distinct = damper.distinct();
-  // Tasks: (amplitude, distinct arm).
-  const std::size_t n_tasks = spec.amplitudes.size() * distinct.size();
-  std::vector<std::vector<ArmSolution>> results(n_tasks);
+  const std::vector<Block> blocks = cut_into_blocks(spec, distinct.size());
+  // Per (amplitude, distinct arm): every frequency's solution.
+  std::vector<std::vector<ArmSolution>> results(spec.amplitudes.size() * distinct.size(),
+                                                std::vector<ArmSolution>(spec.frequencies.size()));
   // Progress in points (amplitude x frequency), not arm solves: a point is counted
   // once as many arm solves as it needs have been done in all.
   const int total_points = static_cast<int>(spec.amplitudes.size() * spec.frequencies.size());
-  std::atomic<std::size_t> next_task{0};
+  std::atomic<std::size_t> next_block{0};
   std::mutex progress_mutex;
   std::size_t solves = 0;
   int reported = 0;
@@ -105,17 +134,17 @@ std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, con
   std::exception_ptr failure;
   auto worker = [&] {
     try {
-      for (std::size_t t = next_task++; t < n_tasks; t = next_task++) {
-        const std::size_t a = t / distinct.size();
-        const std::size_t arm = distinct[t % distinct.size()];
-        results[t] = continue_arm(damper.arms()[arm], spec, spec.amplitudes[a], tick);
+      for (std::size_t b = next_block++; b < blocks.size(); b = next_block++) {
+        const Block& block = blocks[b];
+        continue_arm(damper.arms()[distinct[block.task_column]], spec, block,
+                     results[block.amplitude * distinct.size() + block.task_column], tick);
       }
     } catch (...) {
       const std::lock_guard<std::mutex> lock(progress_mutex);
       if (!failure) failure = std::current_exception();
     }
   };
-  const int n_threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(spec.threads), n_tasks));
+  const int n_threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(spec.threads), blocks.size()));
   std::vector<std::thread> pool;
   for (int i = 1; i < n_threads; ++i) pool.emplace_back(worker);
   worker();

@@ -1,6 +1,7 @@
-// The sweep on several threads (sweep.hpp: the runs, amplitudes x distinct arms, go
-// to parallel threads) gives exactly what it gives on one: each run is computed
-// alone, in the same order, whichever thread takes it. The ThreadSanitizer preset
+// The sweep on several threads (sweep.hpp: the continuation blocks, amplitudes x
+// stretches of frequencies x distinct arms, go to parallel threads) gives exactly
+// what it gives on one: each block is computed alone, in the same order, whichever
+// thread takes it; and blocks give what one continuation per amplitude gives. The ThreadSanitizer preset
 // (`ctest --preset tsan`) runs the tests here with "Threads" in their names.
 
 #include <string>
@@ -35,6 +36,7 @@ SweepSpec spec_with_threads(int threads) {
   spec.frequencies = log_spaced(5.0, 60.0, stockbridge::testing::scaled(24, 8));
   spec.amplitudes = {0.02, 0.1, 0.2};
   spec.threads = threads;
+  spec.block_points = stockbridge::testing::scaled(6, 4);  // two to four continuation blocks per amplitude
   return spec;
 }
 
@@ -85,6 +87,22 @@ TEST(SweepThreads, ThreadsGiveExactlyTheSingleThreadResult) {
       EXPECT_EQ(parallel[a].amplitude, serial[a].amplitude);
       ASSERT_EQ(parallel[a].points.size(), serial[a].points.size());
       for (std::size_t i = 0; i < serial[a].points.size(); ++i) expect_same_points(parallel[a].points[i], serial[a].points[i]);
+    }
+  }
+}
+
+// Cutting each amplitude's sweep into continuation blocks (each from a cold start
+// two frequencies before it) finds the same steady states as one continuation.
+TEST(SweepThreads, ContinuationBlocksAgreeWithOneContinuation) {
+  const Damper damper = two_kinds_of_arm();
+  SweepSpec blocks = spec_with_threads(2), whole = spec_with_threads(2);
+  whole.block_points = 0;
+  const std::vector<SweepRun> a = run_sweep(damper, blocks), b = run_sweep(damper, whole);
+  for (std::size_t r = 0; r < a.size(); ++r) {
+    for (std::size_t i = 0; i < a[r].points.size(); ++i) {
+      ASSERT_TRUE(a[r].points[i].converged() && b[r].points[i].converged());
+      EXPECT_LT(std::abs(a[r].points[i].impedance - b[r].points[i].impedance), 1e-6 * std::abs(b[r].points[i].impedance))
+          << a[r].points[i].frequency_hz << " Hz at " << a[r].amplitude;
     }
   }
 }

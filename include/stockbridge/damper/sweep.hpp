@@ -23,6 +23,12 @@ struct SweepSpec {
   bool constant_displacement = false;
   SolverOptions solver;
   int threads = 1;                  ///< >= 1
+  /// Frequencies per continuation block (0: one block). Each amplitude's sweep is cut
+  /// into blocks of about this many frequencies, each followed by its own
+  /// continuation from a cold start two frequencies before it, so that the threads
+  /// share even a single amplitude; the cut does not depend on `threads`, nor do the
+  /// results.
+  int block_points = 50;
 
   void validate() const;
   Excitation excitation(double frequency_hz, double amplitude) const;

@@ -107,6 +107,30 @@ TEST(Cantilever, MixedFormsHoldTheirConstraints) {
   EXPECT_NEAR(cantilever.trial().rotation, -0.1, 1e-12);
 }
 
+// The law is odd: from the mirrored state, the negated path gives the negated loads
+// and states (what half-wave symmetry relies on), with the same dissipation.
+TEST(Cantilever, TheMirroredCableAnswersTheNegatedPathWithNegatedLoads) {
+  Cantilever original = loaded_cantilever();
+  Cantilever mirrored = loaded_cantilever();
+  mirrored.mirror();
+  EXPECT_EQ(mirrored.committed().clamp_moment, -original.committed().clamp_moment);
+  const std::vector<std::pair<double, double>> path{{0.012, 0.02}, {0.03, 0.06}, {-0.02, -0.01}, {0.001, 0.03}};
+  const double dissipated_before = original.committed().dissipated;
+  for (const auto& [x, phi] : path) {
+    ASSERT_TRUE(original.set_trial_tip(x, phi).converged());
+    ASSERT_TRUE(mirrored.set_trial_tip(-x, -phi).converged());
+    original.commit();
+    mirrored.commit();
+    const CableState &a = original.committed(), &b = mirrored.committed();
+    EXPECT_NEAR(b.clamp_moment, -a.clamp_moment, 1e-12 * std::abs(a.clamp_moment));
+    EXPECT_NEAR(b.tip_force, -a.tip_force, 1e-12 * std::abs(a.tip_force));
+    for (std::size_t i = 0; i < a.hysteretic.size(); ++i) EXPECT_NEAR(b.hysteretic[i], -a.hysteretic[i], 1e-12);
+    for (std::size_t i = 0; i < a.curvature.size(); ++i) EXPECT_NEAR(b.curvature[i], -a.curvature[i], 1e-12);
+  }
+  EXPECT_GT(original.committed().dissipated, dissipated_before);
+  EXPECT_NEAR(mirrored.committed().dissipated, original.committed().dissipated, 1e-15);
+}
+
 TEST(Cantilever, NonConvergenceIsAResultNotANumber) {
   // A tolerance below round-off cannot be met: the solver must say so.
   CantileverOptions options;

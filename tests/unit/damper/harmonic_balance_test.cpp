@@ -4,6 +4,8 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +14,7 @@
 #include "stockbridge/damper/harmonic_balance.hpp"
 #include "stockbridge/damper/impedance.hpp"
 #include "stockbridge/damper/steady_state.hpp"
+#include "stockbridge/damper/sweep.hpp"
 #include "support/damper_fixtures.hpp"
 
 namespace stockbridge::damper {
@@ -21,32 +24,44 @@ using testing::damper_of;
 using testing::sauter_arm;
 
 // The Jacobian from forward sensitivities equals central finite differences of the
-// residual (a slipping state, two cable periods from the virgin state), for one
+// residual (a slipping state, two cable passes from the virgin state), for one
 // element per section and for two (sections where one element slips and the other
-// sticks take their own branch of the propagation).
-class HarmonicBalanceJacobian : public ::testing::TestWithParam<int> {};
+// sticks take their own branch of the propagation), over whole periods and under
+// half-wave symmetry (the sensitivities mirrored with the state between passes).
+struct JacobianCase {
+  int elements;
+  bool half_wave;
+};
+
+class HarmonicBalanceJacobian : public ::testing::TestWithParam<JacobianCase> {};
 
 TEST_P(HarmonicBalanceJacobian, MatchesFiniteDifferences) {
   ArmDescription description = sauter_arm();
-  if (GetParam() == 2) description.cable = cable::CableDescription::uniform(0.1875, 40, 2.8, {{15.0, 0.7}, {5.0, 0.15}});
+  const bool two = GetParam().elements == 2;
+  if (two) description.cable = cable::CableDescription::uniform(0.1875, 40, 2.8, {{15.0, 0.7}, {5.0, 0.15}});
   const Arm arm(description);
-  HarmonicBalance hb(arm, HarmonicBalanceOptions{});
+  HarmonicBalanceOptions options;
+  options.half_wave = GetParam().half_wave;
+  HarmonicBalance hb(arm, options);
   Eigen::VectorXd q = hb.linear_guess(Excitation::from_velocity(15.0, 0.2));
   // The cable part of the Jacobian depends on q only; at 0.01 Hz the inertia terms
   // (up to 81 W^2 M at 15 Hz) vanish and the comparison tests that part alone.
   const Excitation e{0.01, 1e-3};
-  q(4) *= 0.7;
-  q(5) *= 1.3;
-  q(3) = 0.2 * q(4);
-  q(8) = 0.1 * q(4);
+  // (x, phi) of sin(W t) at s, s + 1; of cos(W t) at s - 2; a higher harmonic at h.
+  const Eigen::Index s = options.half_wave ? 2 : 4, h = options.half_wave ? 6 : 8;
+  q(s) *= 0.7;
+  q(s + 1) *= 1.3;
+  q(s - 1) = 0.2 * q(s);
+  q(h) = 0.1 * q(s);
   // Two elements (slip curvatures 0.03 and 0.047): a mean deflection makes both slip
   // on the first loading; the oscillation about it then gives every range of curvature
   // along the cable, so that some sections reverse while only the weaker element slips
   // and the stronger one sticks with a non-zero anchor. (Checked: halving that term of
-  // the propagation makes this case fail.)
-  if (GetParam() == 2) {
+  // the propagation makes this case fail.) Under half-wave symmetry there is no mean.
+  // (Checked: not mirroring the anchors between passes makes both half-wave cases fail.)
+  if (two) {
     q *= 0.55;
-    q(0) += 6e-4;
+    if (!options.half_wave) q(0) += 6e-4;
   }
   HarmonicBalanceWorkspace workspace = hb.make_workspace();
   const HarmonicBalanceEvaluation at = hb.evaluate(e, q, nullptr, 2, HarmonicBalance::kJacobian, workspace);
@@ -54,19 +69,62 @@ TEST_P(HarmonicBalanceJacobian, MatchesFiniteDifferences) {
   const Eigen::MatrixXd jacobian = hb.jacobian(e, at.force_jacobian);
   Eigen::MatrixXd fd(jacobian.rows(), jacobian.cols());
   for (Eigen::Index i = 0; i < q.size(); ++i) {
-    const double h = 1e-7 * (std::abs(q(i)) + 1e-4);
+    const double step = 1e-7 * (std::abs(q(i)) + 1e-4);
     Eigen::VectorXd qp = q, qm = q;
-    qp(i) += h;
-    qm(i) -= h;
+    qp(i) += step;
+    qm(i) -= step;
     const HarmonicBalanceEvaluation plus = hb.evaluate(e, qp, nullptr, 2, HarmonicBalance::kNone, workspace);
     const HarmonicBalanceEvaluation minus = hb.evaluate(e, qm, nullptr, 2, HarmonicBalance::kNone, workspace);
     ASSERT_TRUE(plus.ok() && minus.ok());
-    fd.col(i) = (plus.residual - minus.residual) / (2.0 * h);
+    fd.col(i) = (plus.residual - minus.residual) / (2.0 * step);
   }
   EXPECT_LT((jacobian - fd).norm(), 1e-6 * jacobian.norm());
 }
 
-INSTANTIATE_TEST_SUITE_P(Elements, HarmonicBalanceJacobian, ::testing::Values(1, 2));
+INSTANTIATE_TEST_SUITE_P(Elements, HarmonicBalanceJacobian,
+                         ::testing::Values(JacobianCase{1, false}, JacobianCase{2, false}, JacobianCase{1, true},
+                                           JacobianCase{2, true}),
+                         [](const ::testing::TestParamInfo<JacobianCase>& info) {
+                           return std::to_string(info.param.elements) + (info.param.half_wave ? "_half_wave" : "_full_period");
+                         });
+
+// Half-wave symmetry: odd harmonics only (20 unknowns at H = 9 instead of 38), the
+// cable driven over half periods; the same impedance as whole periods with every
+// harmonic, along a sweep through the slip and stick resonances, at both amplitudes.
+TEST(HarmonicBalance, HalfWaveSymmetryGivesTheWholePeriodsImpedance) {
+  const Arm arm(sauter_arm());
+  HarmonicBalanceOptions half, full;
+  full.half_wave = false;
+  EXPECT_EQ(HarmonicBalance(arm, half).unknown_count(), 20);
+  EXPECT_EQ(HarmonicBalance(arm, full).unknown_count(), 38);
+  EXPECT_EQ(HarmonicBalance(arm, half).harmonics(), (std::vector<int>{1, 1, 3, 3, 5, 5, 7, 7, 9, 9}));
+  SweepSpec spec;
+  spec.frequencies = log_spaced(4.0, 60.0, 16);
+  spec.amplitudes = {0.05, 0.2};
+  spec.solver.harmonic_balance = half;
+  const std::vector<SweepRun> a = run_sweep(damper_of({sauter_arm()}, 0.0), spec);
+  spec.solver.harmonic_balance = full;
+  const std::vector<SweepRun> b = run_sweep(damper_of({sauter_arm()}, 0.0), spec);
+  for (std::size_t r = 0; r < a.size(); ++r) {
+    for (std::size_t i = 0; i < a[r].points.size(); ++i) {
+      const ImpedancePoint &p = a[r].points[i], &q = b[r].points[i];
+      ASSERT_TRUE(p.converged() && q.converged()) << p.failure << q.failure;
+      EXPECT_LT(std::abs(p.impedance - q.impedance), 1e-6 * std::abs(q.impedance)) << p.frequency_hz << " Hz";
+      EXPECT_NEAR(p.dissipated_power, q.dissipated_power, 1e-6 * std::abs(q.dissipated_power));
+    }
+  }
+}
+
+// Odd sample counts and collocation use whole periods.
+TEST(HarmonicBalance, HalfWaveOnlyWhereItApplies) {
+  HarmonicBalanceOptions options;
+  EXPECT_TRUE(options.uses_half_wave());
+  options.samples = 101;
+  EXPECT_FALSE(options.uses_half_wave());
+  options.samples = 0;
+  options.collocation = true;
+  EXPECT_FALSE(options.uses_half_wave());
+}
 
 // The frequency derivative (for arclength continuation) against finite differences.
 TEST(HarmonicBalance, FrequencyDerivativeMatchesFiniteDifferences) {
