@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <optional>
 #include <utility>
-#include <cmath>
 
 #include <fmt/format.h>
 
@@ -48,15 +48,31 @@ void SolverOptions::validate() const {
 }
 
 Eigen::VectorXd Continuation::predictor(const Excitation& target) const {
-  return unknowns * (target.displacement_amplitude / excitation.displacement_amplitude);
+  Eigen::VectorXd scaled = unknowns * (target.displacement_amplitude / excitation.displacement_amplitude);
+  if (previous_unknowns.size() != unknowns.size()) return scaled;
+  const double last_step = std::log(excitation.frequency_hz / previous_excitation.frequency_hz);
+  const double step = std::log(target.frequency_hz / excitation.frequency_hz);
+  const bool same_amplitude =
+      std::abs(previous_excitation.velocity_amplitude() / excitation.velocity_amplitude() - 1.0) < 1e-12 &&
+      std::abs(target.velocity_amplitude() / excitation.velocity_amplitude() - 1.0) < 1e-12;
+  if (!(last_step > 0.0 && step > 0.0 && step <= 2.0 * last_step && same_amplitude)) return scaled;
+  const Eigen::VectorXd previous_scaled =
+      previous_unknowns * (target.displacement_amplitude / previous_excitation.displacement_amplitude);
+  return scaled + (step / last_step) * (scaled - previous_scaled);
+}
+
+void Continuation::advance(const Eigen::VectorXd& solution, const Excitation& at) {
+  std::swap(previous_unknowns, unknowns);
+  previous_excitation = excitation;
+  unknowns = solution;
+  excitation = at;
 }
 
 namespace {
 
 /// Moves the path on to a converged solution.
 void advance(Continuation& path, const ArmSolution& solution, const Excitation& excitation) {
-  path.unknowns = solution.unknowns;
-  path.excitation = excitation;
+  path.advance(solution.unknowns, excitation);
 }
 
 class HarmonicBalanceArmSolver final : public ArmSolver {

@@ -50,10 +50,18 @@ struct Continuation {
   Eigen::VectorXd unknowns;      ///< the solver's unknowns at the solution
   Excitation excitation;         ///< where it was solved
   HarmonicBalanceMemory memory;  ///< harmonic balance and collocation: its cable state and Jacobian
+  /// The solution before it (empty: none), for the secant.
+  Eigen::VectorXd previous_unknowns;
+  Excitation previous_excitation;
 
   bool empty() const { return unknowns.size() == 0; }
-  /// The unknowns scaled to the target's displacement amplitude: the predictor.
+  /// The predictor at `target`: the unknowns scaled to its displacement amplitude
+  /// and, where the path came from a lower frequency at the same amplitude and goes
+  /// on upwards by a step at most twice the last, the secant through the last two
+  /// solutions (so scaled) extrapolated in log frequency.
   Eigen::VectorXd predictor(const Excitation& target) const;
+  /// Moves on to a converged solution (the current one becomes the previous).
+  void advance(const Eigen::VectorXd& solution, const Excitation& at);
 };
 
 /// One arm's periodic solver, whichever the method (a small interface the damper
