@@ -30,6 +30,8 @@ constexpr double kDifferenceStep = 1e-4;
 constexpr double kStatedScatter = 0.01;
 /// A parameter that this scatter moves by more than this fraction of its value is not determined.
 constexpr double kUndeterminedResolution = 0.5;
+/// Nor one whose estimate is correlated beyond this with one not determined.
+constexpr double kTiedCorrelation = 0.999;
 /// Each residual where the variables lie beyond fit_core::Search::variable_limit or
 /// the model refuses the parameters: far above any fit, so that no step goes there.
 constexpr double kRejected = 1e3;
@@ -413,6 +415,17 @@ class ImpedanceProblem : public least_squares::Problem {
   std::atomic<int> evaluations_{0};
 };
 
+/// The first parameter not determined on its own (null space or poor resolution)
+/// whose estimate is correlated with parameter i's beyond kTiedCorrelation; -1 if none.
+int tied_partner(const std::vector<ParameterEstimate>& parameters, const least_squares::Statistics& s, std::size_t i) {
+  for (std::size_t j = 0; j < parameters.size(); ++j) {
+    const bool free = s.in_null_space[j] || !(parameters[j].resolution_at_1_percent <= kUndeterminedResolution);
+    const double r = s.correlation(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+    if (j != i && free && std::abs(r) > kTiedCorrelation) return static_cast<int>(j);
+  }
+  return -1;
+}
+
 /// Each variable's estimate (value, standard error, resolution, sensitivity), in the variables' order.
 std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Eigen::VectorXd& x,
                                          const least_squares::Statistics& s) {
@@ -439,6 +452,10 @@ std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Ei
     if (s.in_null_space[static_cast<std::size_t>(i)]) e.standard_error = kInfinity;
     e.determined = !s.in_null_space[static_cast<std::size_t>(i)] && e.resolution_at_1_percent <= kUndeterminedResolution;
     out.push_back(e);
+  }
+  // A parameter tied to an undetermined one moves with it: not determined either.
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (out[i].determined && tied_partner(out, s, i) >= 0) out[i].determined = false;
   }
   return out;
 }
@@ -488,6 +505,13 @@ std::vector<std::string> determination_notes(const std::vector<ParameterEstimate
   for (std::size_t i = 0; i < parameters.size(); ++i) {
     const ParameterEstimate& p = parameters[i];
     if (p.determined || s.in_null_space[i]) continue;
+    const int partner = tied_partner(parameters, s, i);
+    if (p.resolution_at_1_percent <= kUndeterminedResolution && partner >= 0) {
+      notes.push_back(fmt::format("{} is not determined apart from {}: their estimates are correlated at {:.6f}", p.name,
+                                  parameters[static_cast<std::size_t>(partner)].name,
+                                  s.correlation(static_cast<Eigen::Index>(i), partner)));
+      continue;
+    }
     notes.push_back(fmt::format("{} is not determined: a 1 % scatter of Z moves it by {:.3g} %", p.name,
                                 100.0 * p.resolution_at_1_percent));
   }
