@@ -235,6 +235,9 @@ class NewtonSolve {
   enum class StepOutcome { accepted, retry_with_exact_jacobian, failed };
   /// One Newton step with a backtracking line search.
   StepOutcome step(Eigen::VectorXd& q);
+  /// Broyden's rank-one update of the stored force Jacobian after an accepted step
+  /// with a stored one: the secant condition J dq = dr along the step.
+  void broyden_update(const Eigen::VectorXd& q);
   double norm_of(const HarmonicBalanceEvaluation& e) const { return e.residual.lpNorm<Eigen::Infinity>() / scale_; }
 
   const HarmonicBalance& model_;
@@ -250,6 +253,7 @@ class NewtonSolve {
   bool exact_ = false;  // the Newton matrix is exact at the current point
   double norm_ = 0.0;   // of the current residual, relative to the force scale
   int settling_periods_ = 0;
+  Eigen::VectorXd step_start_, step_start_residual_;  // where the last step started
 };
 
 bool NewtonSolve::fail(Termination termination, std::string where) {
@@ -357,6 +361,8 @@ bool NewtonSolve::run(Eigen::VectorXd& q) {
     if (summary_.newton_iterations == options_.max_iterations) return fail(Termination::max_iterations);
     ++summary_.newton_iterations;
     const double previous_norm = norm_;
+    step_start_ = q;
+    step_start_residual_ = current_.residual;
     const StepOutcome outcome = step(q);
     if (outcome == StepOutcome::failed) return false;
     if (outcome == StepOutcome::retry_with_exact_jacobian) {
@@ -370,10 +376,21 @@ bool NewtonSolve::run(Eigen::VectorXd& q) {
     if (refresh) {
       if (!adopt_evaluation(q, true, "refreshing the Jacobian")) return false;
     } else {
+      broyden_update(q);
       model_.assemble_jacobian(excitation_, memory_.force_jacobian, jacobian_);
       exact_ = false;
     }
   }
+}
+
+void NewtonSolve::broyden_update(const Eigen::VectorXd& q) {
+  if (!options_.broyden) return;
+  const Eigen::VectorXd dq = q - step_start_;
+  const double dq2 = dq.squaredNorm();
+  if (!(dq2 > 0.0)) return;
+  // The inertia terms are linear: the whole Newton matrix's secant error is the force Jacobian's.
+  const Eigen::VectorXd error = (current_.residual - step_start_residual_) - jacobian_ * dq;
+  memory_.force_jacobian.noalias() += (error / dq2) * dq.transpose();
 }
 
 }  // namespace

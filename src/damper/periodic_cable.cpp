@@ -32,6 +32,7 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
   SolverSummary& summary = result.summary;
   ArmPeriod& period = result.period;
   period.resize(half_wave ? 2 * n_samples : n_samples);
+  find_turning_points(kinematics, half_wave, with_sensitivity ? basis : nullptr);
   if (start) {
     cantilever_.restore(*start);
   } else {
@@ -41,18 +42,20 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
     summary.periods = k;
     const double dissipated_before = cantilever_.committed().dissipated;
     if (k == passes) period_start_ = cantilever_.committed();
+    std::size_t next_turn = 0;
     for (int j = 0; j < n_samples; ++j) {
-      const cable::StateDetermination solve = cantilever_.set_trial_tip(kinematics(0, j), kinematics(1, j));
-      summary.newton_iterations = std::max(summary.newton_iterations, solve.newton_iterations);
-      if (!solve.converged()) {
-        summary.termination = Termination::inner_failure;
-        summary.where = fmt::format("cable state determination at sample {} of {} {}: {}", j,
-                                    half_wave ? "half period" : "period", k, brief_report(solve));
-        return result;
+      // The path's turning points before this sample, then the sample.
+      for (; next_turn < turning_points_.size() && turning_points_[next_turn].time < j; ++next_turn) {
+        const TurningPoint& t = turning_points_[next_turn];
+        if (with_sensitivity) {
+          rhs_x_ = t.d_x;
+          rhs_phi_ = t.d_phi;
+        }
+        if (!drive_to(t.kinematics, -1, with_sensitivity, sensitivity, summary, k, half_wave)) return result;
       }
-      const cable::CableState& trial = cantilever_.trial();
-      if (with_sensitivity) propagate_sensitivity(cantilever_.committed(), trial, *basis, j, sensitivity);
-      if (k == passes) period.record_loads(j, trial, cantilever_.cable());
+      if (with_sensitivity) set_sample_derivative(*basis, j);
+      if (!drive_to(kinematics.col(j), j, with_sensitivity, sensitivity, summary, k, half_wave)) return result;
+      if (k == passes) period.record_loads(j, cantilever_.trial(), cantilever_.cable());
       cantilever_.commit();
     }
     period.dissipated = cantilever_.committed().dissipated - dissipated_before;
@@ -94,6 +97,22 @@ void PeriodicCable::settle_locked_moments() {
   cantilever_.restore(relaxed_);
 }
 
+bool PeriodicCable::drive_to(const Eigen::Vector2d& tip, int sample, bool with_sensitivity, Eigen::MatrixXd* sensitivity,
+                             SolverSummary& summary, int pass, bool half_wave) {
+  const cable::StateDetermination solve = cantilever_.set_trial_tip(tip(0), tip(1));
+  summary.newton_iterations = std::max(summary.newton_iterations, solve.newton_iterations);
+  if (!solve.converged()) {
+    summary.termination = Termination::inner_failure;
+    summary.where = fmt::format("cable state determination at {} of {} {}: {}",
+                                sample >= 0 ? fmt::format("sample {}", sample) : std::string("a turning point"),
+                                half_wave ? "half period" : "period", pass, brief_report(solve));
+    return false;
+  }
+  if (with_sensitivity) propagate_sensitivity(cantilever_.committed(), cantilever_.trial(), sample, sensitivity);
+  if (sample < 0) cantilever_.commit();
+  return true;
+}
+
 void PeriodicCable::mirror(bool with_sensitivity) {
   cantilever_.mirror();
   if (!with_sensitivity) return;
@@ -132,21 +151,23 @@ double PeriodicCable::state_change(const cable::CableState& start, const cable::
 // When e slips, A_e becomes the new d kappa = da_i + dM_i / k_i. A section whose
 // elements all slip contributes nothing; its anchors are set lazily, from the
 // step's (dT, dF), only when an element sticks again.
-void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const cable::CableState& to,
-                                          const Eigen::MatrixXd& basis, int sample, Eigen::MatrixXd* sensitivity) {
-  const std::size_t n_sections = cable().sections();
-  const std::size_t m = cable().elements();
-  const Eigen::Index p = anchor_.rows();
-  const double l = cable().length();
-  const auto s = cable().positions();
-  const auto w = cable().weights();
+void PeriodicCable::set_sample_derivative(const Eigen::MatrixXd& basis, int sample) {
   // du/dq for this sample: q(2c + d) scaled by basis(sample, c).
-  rhs_phi_.setZero(p);
-  rhs_x_.setZero(p);
+  rhs_phi_.setZero(2 * basis.cols());
+  rhs_x_.setZero(2 * basis.cols());
   for (Eigen::Index c = 0; c < basis.cols(); ++c) {
     rhs_phi_(2 * c + 1) = basis(sample, c);
     rhs_x_(2 * c) = basis(sample, c);
   }
+}
+
+void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const cable::CableState& to, int sample,
+                                          Eigen::MatrixXd* sensitivity) {
+  const std::size_t n_sections = cable().sections();
+  const std::size_t m = cable().elements();
+  const double l = cable().length();
+  const auto s = cable().positions();
+  const auto w = cable().weights();
   sticking_.resize(n_sections * m);
   partial_.assign(n_sections, 0);
   for (std::size_t i = 0; i < n_sections; ++i) {
@@ -198,8 +219,75 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
   }
   std::swap(previous_d_clamp_moment_, d_clamp_moment_);
   std::swap(previous_d_tip_force_, d_tip_force_);
+  if (sample < 0) return;
   sensitivity->row(2 * sample) = previous_d_tip_force_.transpose();
   sensitivity->row(2 * sample + 1) = (previous_d_clamp_moment_ - l * previous_d_tip_force_).transpose();
+}
+
+// The parabola through u_{j-1}, u_j, u_{j+1} (at tau = -1, 0, 1) of a coordinate with
+// a discrete extreme at sample j turns at tau* = -b / (2 a), b = (u+ - u-) / 2,
+// a = (u+ - 2 u0 + u-) / 2. There the turning coordinate's value depends on the
+// samples through the parabola's weights only (its slope is zero); the other
+// coordinate's also through tau*, whose derivatives follow from a and b.
+void PeriodicCable::find_turning_points(const Eigen::Matrix2Xd& kinematics, bool half_wave,
+                                        const Eigen::MatrixXd* basis) {
+  const int n = static_cast<int>(kinematics.cols());
+  const double wrap = half_wave ? -1.0 : 1.0;  // u_{j + n} = wrap u_j
+  turning_points_.clear();
+  if (n < 3) return;
+  auto sample = [&](int j, int d) {
+    return j < 0 ? wrap * kinematics(d, j + n) : j >= n ? wrap * kinematics(d, j - n) : kinematics(d, j);
+  };
+  for (int j = 0; j < n; ++j) {
+    for (int d = 0; d < 2; ++d) {
+      const double um = sample(j - 1, d), u0 = sample(j, d), up = sample(j + 1, d);
+      if (!((u0 - um) * (up - u0) < 0.0)) continue;
+      const double a = 0.5 * (up - 2.0 * u0 + um), b = 0.5 * (up - um);
+      const double tau = -b / (2.0 * a);
+      if (!(std::abs(tau) > 1e-6 && std::abs(tau) <= 0.5)) continue;
+      TurningPoint t;
+      t.time = j + tau;
+      const double weights[3] = {0.5 * tau * (tau - 1.0), 1.0 - tau * tau, 0.5 * tau * (tau + 1.0)};
+      // d tau* / d(u-, u0, u+) of the turning coordinate.
+      const double dtau[3] = {0.25 / a + 0.25 * b / (a * a), -0.5 * b / (a * a), -0.25 / a + 0.25 * b / (a * a)};
+      for (int e = 0; e < 2; ++e) {
+        const double em = sample(j - 1, e), e0 = sample(j, e), ep = sample(j + 1, e);
+        t.kinematics(e) = weights[0] * em + weights[1] * e0 + weights[2] * ep;
+      }
+      if (basis) {
+        const Eigen::Index p = 2 * basis->cols();
+        t.d_x.setZero(p);
+        t.d_phi.setZero(p);
+        const int other = 1 - d;
+        const double em = sample(j - 1, other), ep = sample(j + 1, other), e0 = sample(j, other);
+        const double other_slope = 0.5 * (ep - em) + (ep - 2.0 * e0 + em) * tau;
+        for (int k = -1; k <= 1; ++k) {
+          const int row = ((j + k) % n + n) % n;
+          const double sign = (j + k < 0 || j + k >= n) ? wrap : 1.0;
+          for (Eigen::Index c = 0; c < basis->cols(); ++c) {
+            const double bk = sign * (*basis)(row, c);
+            t.d_x(2 * c) += weights[k + 1] * bk;
+            t.d_phi(2 * c + 1) += weights[k + 1] * bk;
+            // The other coordinate moves with tau*, which the turning one's samples set.
+            Eigen::VectorXd& d_other = other == 0 ? t.d_x : t.d_phi;
+            d_other(2 * c + d) += other_slope * dtau[k + 1] * bk;
+          }
+        }
+      }
+      turning_points_.push_back(std::move(t));
+    }
+  }
+  // In time order; those past the last sample come before the next pass's first.
+  for (TurningPoint& t : turning_points_) {
+    if (t.time > n - 1) {
+      t.time -= n;
+      t.kinematics *= wrap;
+      t.d_x *= wrap;
+      t.d_phi *= wrap;
+    }
+  }
+  std::sort(turning_points_.begin(), turning_points_.end(),
+            [](const TurningPoint& x, const TurningPoint& y) { return x.time < y.time; });
 }
 
 }  // namespace stockbridge::damper

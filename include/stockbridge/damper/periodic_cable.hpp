@@ -75,8 +75,23 @@ class PeriodicCable {
   const cable::Cable& cable() const { return cantilever_.cable(); }
 
  private:
-  void propagate_sensitivity(const cable::CableState& from, const cable::CableState& to,
-                             const Eigen::MatrixXd& basis, int sample, Eigen::MatrixXd* sensitivity);
+  /// A point between two samples where the smooth path through them (the parabola
+  /// through three samples) turns in x or phi: driven, not recorded, so that the cable
+  /// reaches the path's extreme rather than the nearest sample (the loop's tips).
+  struct TurningPoint {
+    double time = 0.0;             ///< in samples from the pass's start (-1 < time < N - 1)
+    Eigen::Vector2d kinematics;    ///< (x, phi)
+    Eigen::VectorXd d_x, d_phi;    ///< their derivatives with respect to q (with a basis)
+  };
+  void find_turning_points(const Eigen::Matrix2Xd& kinematics, bool half_wave, const Eigen::MatrixXd* basis);
+  /// One step of the cable to `tip` (sample < 0: a turning point, committed here;
+  /// a sample is committed by the caller after recording it), with its sensitivities
+  /// from rhs_x_, rhs_phi_; false (summary filled) if the state determination failed.
+  bool drive_to(const Eigen::Vector2d& tip, int sample, bool with_sensitivity, Eigen::MatrixXd* sensitivity,
+                SolverSummary& summary, int pass, bool half_wave);
+  void set_sample_derivative(const Eigen::MatrixXd& basis, int sample);
+  void propagate_sensitivity(const cable::CableState& from, const cable::CableState& to, int sample,
+                             Eigen::MatrixXd* sensitivity);
 
   double state_change(const cable::CableState& start, const cable::CableState& end) const;
   /// Mirrors the cable and, with it, the sensitivities carried to the next pass.
@@ -88,6 +103,7 @@ class PeriodicCable {
   cable::Cantilever cantilever_;
   cable::CableState period_start_;
   cable::CableState relaxed_;
+  std::vector<TurningPoint> turning_points_;
   // Sensitivity state (see propagate_sensitivity): the anchor d kappa / dq of every
   // element (column i*m + e), and the elements whose anchor is still to be set from
   // the previous step's load derivatives.

@@ -35,7 +35,8 @@ damper::Damper damper_named(const std::vector<std::string>& names) {
 TEST(SolverSettings, UnsetSettingsTakeTheMethodsOwnDefaults) {
   const damper::SolverOptions hb = solver_options({});
   EXPECT_EQ(hb.method, Method::harmonic_balance);
-  EXPECT_EQ(hb.harmonic_balance.harmonics, 9);
+  EXPECT_EQ(hb.harmonic_balance.harmonics, 15);
+  EXPECT_TRUE(hb.harmonic_balance.half_wave);
   SolverSettings collocation;
   collocation.method = "collocation";
   const damper::SolverOptions co = solver_options(collocation);
@@ -54,7 +55,7 @@ TEST(SolverSettings, EachSettingReachesTheChosenMethod) {
   EXPECT_EQ(co.collocation.harmonics, 25);
   EXPECT_EQ(co.collocation.max_iterations, 70);
   EXPECT_EQ(co.energy_tolerance, 0.05);
-  EXPECT_EQ(co.harmonic_balance.harmonics, 9);  // the other method's options are untouched
+  EXPECT_EQ(co.harmonic_balance.harmonics, 15);  // the other method's options are untouched
   SolverSettings t;
   t.method = "time";
   t.steps = 64;
@@ -76,6 +77,13 @@ TEST(SolverSettings, ASettingTheMethodDoesNotUseOrABadValueIsNamed) {
   SolverSettings m;
   m.method = "newton";
   EXPECT_THROW(solver_options(m), InvalidParameter);
+  SolverSettings w;
+  w.method = "collocation";
+  w.half_wave = false;
+  EXPECT_EQ(testing::invalid_parameter_message([&] { solver_options(w); }),
+            "half_wave = false: not used by this method (only by hb)");
+  w.method = "hb";
+  EXPECT_FALSE(solver_options(w).harmonic_balance.half_wave);
 }
 
 TEST(SweepRequest, GridEndsAndAmplitudeChoice) {
