@@ -85,15 +85,17 @@ std::vector<double> amplitudes_of(const py::object& value) {
 requests::SolverSettings solver_settings(const std::string& method, std::optional<int> harmonics,
                                          std::optional<int> samples, std::optional<int> steps,
                                          std::optional<int> max_iterations, std::optional<int> max_periods,
-                                         std::optional<double> energy_tolerance) {
-  return {method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance};
+                                         std::optional<double> energy_tolerance, bool full_period) {
+  requests::SolverSettings settings{method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance};
+  if (full_period) settings.half_wave = false;
+  return settings;
 }
 
 py::dict impedance(const damper::Damper& d, const std::optional<std::vector<double>>& frequencies,
                    const py::object& velocity, const py::object& displacement, double fmin, double fmax, int points,
                    const std::string& method, std::optional<int> harmonics, std::optional<int> samples,
                    std::optional<int> steps, std::optional<int> max_iterations, std::optional<int> max_periods,
-                   std::optional<double> energy_tolerance, int threads) {
+                   std::optional<double> energy_tolerance, bool full_period, int threads) {
   requests::SweepRequest request;
   request.velocities = amplitudes_of(velocity);
   request.displacements = amplitudes_of(displacement);
@@ -103,7 +105,7 @@ py::dict impedance(const damper::Damper& d, const std::optional<std::vector<doub
   }
   request.grid = {fmin, fmax, points};
   request.solver =
-      solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance);
+      solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance, full_period);
   request.threads = threads;
   const damper::SweepSpec spec = requests::sweep_spec(request);
   warn(unusual_messages(requests::unusual_values(request)));
@@ -168,11 +170,11 @@ py::array_t<double> per_arm(const damper::DamperSteadyState& state, std::size_t 
 py::dict response(const damper::Damper& d, double frequency, std::optional<double> velocity, std::optional<double> displacement,
                   const std::string& method, std::optional<int> harmonics, std::optional<int> samples,
                   std::optional<int> steps, std::optional<int> max_iterations, std::optional<int> max_periods,
-                  std::optional<double> energy_tolerance) {
+                  std::optional<double> energy_tolerance, bool full_period) {
   const damper::Excitation e = requests::excitation(frequency, velocity, displacement);
   warn(unusual_messages(requests::unusual_excitation(frequency, velocity, displacement)));
   const damper::SolverOptions options = requests::solver_options(
-      solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance));
+      solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance, full_period));
   damper::DamperSteadyState state;
   {
     py::gil_scoped_release release;
@@ -660,7 +662,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("displacement") = py::none(), py::arg("fmin") = 1.0, py::arg("fmax") = 100.0, py::arg("points") = 200,
         py::arg("method") = "hb", py::arg("harmonics") = py::none(), py::arg("samples") = py::none(),
         py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(), py::arg("max_periods") = py::none(),
-        py::arg("energy_tolerance") = py::none(), py::arg("threads") = 1,
+        py::arg("energy_tolerance") = py::none(), py::arg("full_period") = false, py::arg("threads") = 1,
         "Z(f, amplitude) over `frequencies` (or fmin..fmax, `points` log-spaced): arrays of shape (amplitudes, "
         "frequencies) named as the impedance CSV's columns (the design figures per arm as '<arm>_power_w' and "
         "'<arm>_mass_amplitude_m', the arms named in 'arms'); NaN where a point did not converge (see 'converged', "
@@ -668,7 +670,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("response", &response, py::arg("damper"), py::arg("frequency"), py::arg("velocity") = py::none(),
         py::arg("displacement") = py::none(), py::arg("method") = "hb", py::arg("harmonics") = py::none(),
         py::arg("samples") = py::none(), py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(),
-        py::arg("max_periods") = py::none(), py::arg("energy_tolerance") = py::none(),
+        py::arg("max_periods") = py::none(), py::arg("energy_tolerance") = py::none(), py::arg("full_period") = false,
         "One steady period; per-arm arrays have shape (arms, samples). A point that did not converge is returned "
         "as its last iterate with converged = False, its termination and message (NaN where nothing was computed). "
         "The point's design figures are numbers named as the impedance CSV's columns.");

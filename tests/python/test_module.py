@@ -145,6 +145,7 @@ def read_csv(path):
     (["--method", "time", "--steps", "64", "--max-periods", "500"], dict(method="time", steps=64, max_periods=500)),
     (["--fmin", "9", "--fmax", "30", "--points", "3", "--samples", "256", "--threads", "2"],
      dict(fmin=9.0, fmax=30.0, points=3, samples=256, threads=2)),
+    (["--full-period", "--harmonics", "9"], dict(full_period=True, harmonics=9)),
 ])
 def test_every_cli_option_has_the_same_python_keyword(tmp_path, flags, keywords):
     frequencies = [] if "--fmin" in flags else ["--frequencies", "12,40"]
