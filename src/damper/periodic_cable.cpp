@@ -26,6 +26,10 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
     anchor_.setZero(p, static_cast<Eigen::Index>(n_sections * m));
     pending_.assign(n_sections * m, 0);
     pending_compliance_.assign(n_sections, 0.0);
+    contribution_.setZero(p, static_cast<Eigen::Index>(n_sections));
+    counted_sticking_.assign(n_sections * m, kNotCounted);
+    sticking_sum_phi_.setZero(p);
+    sticking_sum_x_.setZero(p);
     sensitivity->resize(2 * n_samples, p);
   }
   PeriodicCableResult result;
@@ -42,6 +46,7 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
     summary.periods = k;
     const double dissipated_before = cantilever_.committed().dissipated;
     if (k == passes) period_start_ = cantilever_.committed();
+    if (with_sensitivity) resum_sticking();  // no round-off carried from pass to pass
     std::size_t next_turn = 0;
     for (int j = 0; j < n_samples; ++j) {
       // The path's turning points before this sample, then the sample.
@@ -117,6 +122,9 @@ void PeriodicCable::mirror(bool with_sensitivity) {
   cantilever_.mirror();
   if (!with_sensitivity) return;
   anchor_ = -anchor_;
+  contribution_ = -contribution_;
+  sticking_sum_phi_ = -sticking_sum_phi_;
+  sticking_sum_x_ = -sticking_sum_x_;
   previous_d_clamp_moment_ = -previous_d_clamp_moment_;
   previous_d_tip_force_ = -previous_d_tip_force_;
 }
@@ -174,25 +182,26 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
     const double dkappa = to.curvature[i] - from.curvature[i];
     const auto jenkin = cable().jenkin(i);
     const double k = to.tangent[i];
-    bool any_stick = false, any_slip = false;
+    bool any_stick = false, any_slip = false, changed = false;
     for (std::size_t e = 0; e < m; ++e) {
       const std::size_t ie = i * m + e;
       const bool sticks = !section::jenkin_slips(jenkin[e], from.hysteretic[ie], dkappa);
       sticking_[ie] = sticks;
       any_stick |= sticks;
       any_slip |= !sticks;
-      if (!sticks) continue;
-      auto anchor = anchor_.col(static_cast<Eigen::Index>(ie));
-      if (pending_[ie]) {  // it slipped in the previous step, in a section where all slipped
-        anchor = pending_compliance_[i] * (previous_d_clamp_moment_ - s[i] * previous_d_tip_force_);
+      changed |= counted_sticking_[ie] != static_cast<unsigned char>(sticks);
+      if (sticks && pending_[ie]) {  // it slipped in the previous step, in a section where all slipped
+        anchor_.col(static_cast<Eigen::Index>(ie)) =
+            pending_compliance_[i] * (previous_d_clamp_moment_ - s[i] * previous_d_tip_force_);
         pending_[ie] = 0;
+        changed = true;
       }
-      const double coefficient = jenkin[e].c / k;
-      rhs_phi_.noalias() -= (w[i] * coefficient) * anchor;
-      rhs_x_.noalias() -= (w[i] * (l - s[i]) * coefficient) * anchor;
     }
     partial_[i] = any_stick && any_slip;
+    if (changed) recount_section(i, k);
   }
+  rhs_phi_ -= sticking_sum_phi_;
+  rhs_x_ -= sticking_sum_x_;
   const Eigen::Matrix2d inverse = to.flexibility.inverse();
   d_clamp_moment_ = inverse(0, 0) * rhs_phi_ + inverse(0, 1) * rhs_x_;
   d_tip_force_ = inverse(1, 0) * rhs_phi_ + inverse(1, 1) * rhs_x_;
@@ -201,10 +210,7 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
     const double k = to.tangent[i];
     if (partial_[i]) {
       // d kappa_new = da_i + dM_i / k_i becomes the anchor of every slipping element.
-      a_ = (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_);
-      for (std::size_t e = 0; e < m; ++e) {
-        if (sticking_[i * m + e]) a_ += (jenkin[e].c / k) * anchor_.col(static_cast<Eigen::Index>(i * m + e));
-      }
+      a_ = (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_) + contribution_.col(static_cast<Eigen::Index>(i));
       for (std::size_t e = 0; e < m; ++e) {
         if (!sticking_[i * m + e]) anchor_.col(static_cast<Eigen::Index>(i * m + e)) = a_;
       }
@@ -222,6 +228,38 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
   if (sample < 0) return;
   sensitivity->row(2 * sample) = previous_d_tip_force_.transpose();
   sensitivity->row(2 * sample + 1) = (previous_d_clamp_moment_ - l * previous_d_tip_force_).transpose();
+}
+
+// The sticking elements' part of the right-hand side, sum_i w_i [1; l - s_i] da_i
+// with da_i = sum_{sticking e} (c_e / k_i) A_e, changes only where a section's
+// sticking set changes or a sticking element's anchor is set: it is kept as a sum
+// and corrected section by section (O(changes) instead of O(sections) per step).
+void PeriodicCable::recount_section(std::size_t i, double k) {
+  const std::size_t m = cable().elements();
+  const auto jenkin = cable().jenkin(i);
+  const double w = cable().weights()[i], arm = cable().length() - cable().positions()[i];
+  auto contribution = contribution_.col(static_cast<Eigen::Index>(i));
+  a_ = -contribution;
+  contribution.setZero();
+  for (std::size_t e = 0; e < m; ++e) {
+    counted_sticking_[i * m + e] = sticking_[i * m + e];
+    if (sticking_[i * m + e]) contribution += (jenkin[e].c / k) * anchor_.col(static_cast<Eigen::Index>(i * m + e));
+  }
+  a_ += contribution;
+  sticking_sum_phi_ += w * a_;
+  sticking_sum_x_ += (w * arm) * a_;
+}
+
+void PeriodicCable::resum_sticking() {
+  const std::size_t n = cable().sections();
+  const double l = cable().length();
+  sticking_sum_phi_.setZero(contribution_.rows());
+  sticking_sum_x_.setZero(contribution_.rows());
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = contribution_.col(static_cast<Eigen::Index>(i));
+    sticking_sum_phi_ += cable().weights()[i] * c;
+    sticking_sum_x_ += (cable().weights()[i] * (l - cable().positions()[i])) * c;
+  }
 }
 
 // The parabola through u_{j-1}, u_j, u_{j+1} (at tau = -1, 0, 1) of a coordinate with

@@ -80,7 +80,7 @@ std::vector<Block> cut_into_blocks(const SweepSpec& spec, std::size_t distinct_a
 /// solutions discarded.
 void continue_arm(const Arm& arm, const SweepSpec& spec, const Block& block, std::vector<ArmSolution>& solutions,
                   const std::function<void()>& tick) {
-  constexpr std::size_t kWarmUp = 2;
+  constexpr std::size_t kWarmUp = 1;
   ArmTracker tracker(arm, spec.solver, spec.constant_displacement ? HeldAmplitude::displacement : HeldAmplitude::velocity);
   const double amplitude = spec.amplitudes[block.amplitude];
   for (std::size_t i = block.begin >= kWarmUp ? block.begin - kWarmUp : 0; i < block.begin; ++i) {

@@ -92,7 +92,7 @@ TEST(SweepThreads, ThreadsGiveExactlyTheSingleThreadResult) {
 }
 
 // Cutting each amplitude's sweep into continuation blocks (each from a cold start
-// two frequencies before it) finds the same steady states as one continuation.
+// one frequency before it) finds the same steady states as one continuation.
 TEST(SweepThreads, ContinuationBlocksAgreeWithOneContinuation) {
   const Damper damper = two_kinds_of_arm();
   SweepSpec blocks = spec_with_threads(2), whole = spec_with_threads(2);

@@ -92,6 +92,10 @@ class PeriodicCable {
   void set_sample_derivative(const Eigen::MatrixXd& basis, int sample);
   void propagate_sensitivity(const cable::CableState& from, const cable::CableState& to, int sample,
                              Eigen::MatrixXd* sensitivity);
+  /// Section i's sticking elements' part of the sensitivities' right-hand side, anew.
+  void recount_section(std::size_t i, double k);
+  /// The right-hand side's sticking part summed anew over the sections.
+  void resum_sticking();
 
   double state_change(const cable::CableState& start, const cable::CableState& end) const;
   /// Mirrors the cable and, with it, the sensitivities carried to the next pass.
@@ -110,6 +114,12 @@ class PeriodicCable {
   Eigen::MatrixXd anchor_;
   std::vector<unsigned char> sticking_, partial_, pending_;
   std::vector<double> pending_compliance_;
+  // Per section, da_i of its sticking elements (column i), the elements counted in
+  // it (kNotCounted: none yet), and the sums over the sections (recount_section).
+  static constexpr unsigned char kNotCounted = 2;
+  Eigen::MatrixXd contribution_;
+  std::vector<unsigned char> counted_sticking_;
+  Eigen::VectorXd sticking_sum_phi_, sticking_sum_x_;
   Eigen::VectorXd a_, rhs_phi_, rhs_x_, d_clamp_moment_, d_tip_force_, previous_d_clamp_moment_, previous_d_tip_force_;
 };
 

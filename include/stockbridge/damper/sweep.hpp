@@ -25,7 +25,7 @@ struct SweepSpec {
   int threads = 1;                  ///< >= 1
   /// Frequencies per continuation block (0: one block). Each amplitude's sweep is cut
   /// into blocks of about this many frequencies, each followed by its own
-  /// continuation from a cold start two frequencies before it, so that the threads
+  /// continuation from a cold start one frequency before it, so that the threads
   /// share even a single amplitude; the cut does not depend on `threads`, nor do the
   /// results.
   int block_points = 50;
