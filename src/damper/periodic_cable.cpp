@@ -85,7 +85,8 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
 // in one step, while slipping elements, settled or settling, stay where they were or
 // go on settling. The mean of two cable states is one: the moments are statically
 // admissible, the curvatures and the tip kinematics linear in them, each slider's
-// moment within its bound.
+// moment within its bound (under the modified Masing model, whose bound depends on
+// |M| / |F|, the next step sets any excess back, as it does for a bound that shrinks).
 void PeriodicCable::settle_locked_moments() {
   relaxed_ = cantilever_.committed();
   const cable::CableState& start = period_start_;
