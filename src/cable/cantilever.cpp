@@ -75,6 +75,16 @@ void CableState::mirror() {
   for (double& h : hysteretic) h = -h;
 }
 
+void CableState::move_halfway_to(const CableState& other) {
+  auto halfway = [](double& value, double to) { value = 0.5 * (value + to); };
+  halfway(clamp_moment, other.clamp_moment);
+  halfway(tip_force, other.tip_force);
+  halfway(rotation, other.rotation);
+  halfway(deflection, other.deflection);
+  for (std::size_t i = 0; i < curvature.size(); ++i) halfway(curvature[i], other.curvature[i]);
+  for (std::size_t i = 0; i < hysteretic.size(); ++i) halfway(hysteretic[i], other.hysteretic[i]);
+}
+
 Eigen::Matrix2d CableState::tip_stiffness(double length) const { return cable::tip_stiffness(flexibility, length); }
 
 Eigen::Matrix2d tip_stiffness(const Eigen::Matrix2d& flexibility, double length) {
@@ -219,6 +229,14 @@ void Cantilever::mirror() {
   mirrored.mirror();
   state_.commit();
   last_increment_ = -last_increment_;
+}
+
+void Cantilever::commit_halfway_to(const CableState& other) {
+  CableState& moved = state_.trial();
+  moved = state_.committed();
+  moved.move_halfway_to(other);
+  state_.commit();
+  last_increment_.setZero();  // as after restore(): no step led here
 }
 
 void Cantilever::set_trial_loads(double clamp_moment, double tip_force) {

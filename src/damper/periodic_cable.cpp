@@ -87,21 +87,7 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
 // admissible, the curvatures and the tip kinematics linear in them, each slider's
 // moment within its bound (under the modified Masing model, whose bound depends on
 // |M| / |F|, the next step sets any excess back, as it does for a bound that shrinks).
-void PeriodicCable::settle_locked_moments() {
-  relaxed_ = cantilever_.committed();
-  const cable::CableState& start = period_start_;
-  relaxed_.clamp_moment = 0.5 * (relaxed_.clamp_moment + start.clamp_moment);
-  relaxed_.tip_force = 0.5 * (relaxed_.tip_force + start.tip_force);
-  relaxed_.rotation = 0.5 * (relaxed_.rotation + start.rotation);
-  relaxed_.deflection = 0.5 * (relaxed_.deflection + start.deflection);
-  for (std::size_t i = 0; i < relaxed_.curvature.size(); ++i) {
-    relaxed_.curvature[i] = 0.5 * (relaxed_.curvature[i] + start.curvature[i]);
-  }
-  for (std::size_t i = 0; i < relaxed_.hysteretic.size(); ++i) {
-    relaxed_.hysteretic[i] = 0.5 * (relaxed_.hysteretic[i] + start.hysteretic[i]);
-  }
-  cantilever_.restore(relaxed_);
-}
+void PeriodicCable::settle_locked_moments() { cantilever_.commit_halfway_to(period_start_); }
 
 bool PeriodicCable::drive_to(const Eigen::Vector2d& tip, int sample, bool with_sensitivity, Eigen::MatrixXd* sensitivity,
                              SolverSummary& summary, int pass, bool half_wave) {

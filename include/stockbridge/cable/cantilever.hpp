@@ -38,6 +38,10 @@ struct CableState {
   /// so loads, tip kinematics, curvatures and slider moments change sign; tangents,
   /// flexibility and the energy dissipated stay.
   void mirror();
+  /// Halfway to `other` (a state of the same cable): loads, tip kinematics,
+  /// curvatures and slider moments become the means; tangents, flexibility and the
+  /// energy dissipated stay this state's.
+  void move_halfway_to(const CableState& other);
   /// Q = T - F l, N m.
   double tip_moment(double length) const { return clamp_moment - tip_force * length; }
   /// d(F, Q)/(x, phi): the tip stiffness for the damper, from the flexibility.
@@ -109,6 +113,8 @@ class Cantilever {
   /// the mirrored cable along a path gives the negative of driving the cable along
   /// the negative path. The predictor's last increment changes sign with it.
   void mirror();
+  /// Commits the committed state moved halfway to `other` (CableState::move_halfway_to).
+  void commit_halfway_to(const CableState& other);
 
  private:
   template <int K>

@@ -106,7 +106,6 @@ class PeriodicCable {
 
   cable::Cantilever cantilever_;
   cable::CableState period_start_;
-  cable::CableState relaxed_;
   std::vector<TurningPoint> turning_points_;
   // Sensitivity state (see propagate_sensitivity): the anchor d kappa / dq of every
   // element (column i*m + e), and the elements whose anchor is still to be set from
