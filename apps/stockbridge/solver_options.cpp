@@ -15,7 +15,7 @@ void SolverFlags::add_to(CLI::App& command) {
                   defaults.collocation.harmonics));
   samples_flag_ = command.add_option(
       "--samples", samples_, "Time samples per period for hb (default: 8 H rounded up to a power of 2, at least 64)");
-  full_period_flag_ = command.add_flag(
+  command.add_flag(
       "--full-period", full_period_, "hb: every harmonic and the mean over whole periods (default: odd harmonics over half "
                        "periods, as the symmetric law and drive allow)");
   steps_flag_ = command.add_option(

@@ -20,7 +20,7 @@ class SolverFlags {
   std::string method_ = "hb";
   int harmonics_ = 0, samples_ = 0, steps_ = 0, max_iterations_ = 0, max_periods_ = 0;
   double energy_tolerance_ = 0.0;
-  CLI::Option *harmonics_flag_ = nullptr, *samples_flag_ = nullptr, *steps_flag_ = nullptr, *full_period_flag_ = nullptr;
+  CLI::Option *harmonics_flag_ = nullptr, *samples_flag_ = nullptr, *steps_flag_ = nullptr;
   bool full_period_ = false;
   CLI::Option *max_iterations_flag_ = nullptr, *max_periods_flag_ = nullptr, *energy_tolerance_flag_ = nullptr;
 };

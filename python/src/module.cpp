@@ -86,9 +86,8 @@ requests::SolverSettings solver_settings(const std::string& method, std::optiona
                                          std::optional<int> samples, std::optional<int> steps,
                                          std::optional<int> max_iterations, std::optional<int> max_periods,
                                          std::optional<double> energy_tolerance, bool full_period) {
-  requests::SolverSettings settings{method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance};
-  if (full_period) settings.half_wave = false;
-  return settings;
+  return {method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance,
+          full_period ? std::optional<bool>(false) : std::nullopt};
 }
 
 py::dict impedance(const damper::Damper& d, const std::optional<std::vector<double>>& frequencies,
