@@ -415,13 +415,18 @@ class ImpedanceProblem : public least_squares::Problem {
   std::atomic<int> evaluations_{0};
 };
 
-/// The first parameter not determined on its own (null space or poor resolution)
-/// whose estimate is correlated with parameter i's beyond kTiedCorrelation; -1 if none.
+/// Parameter i outside the null space and resolved within kUndeterminedResolution.
+bool determined_on_its_own(const std::vector<ParameterEstimate>& parameters, const least_squares::Statistics& s,
+                           std::size_t i) {
+  return !s.in_null_space[i] && parameters[i].resolution_at_1_percent <= kUndeterminedResolution;
+}
+
+/// The first parameter not determined on its own whose estimate is correlated with
+/// parameter i's beyond kTiedCorrelation; -1 if none.
 int tied_partner(const std::vector<ParameterEstimate>& parameters, const least_squares::Statistics& s, std::size_t i) {
   for (std::size_t j = 0; j < parameters.size(); ++j) {
-    const bool free = s.in_null_space[j] || !(parameters[j].resolution_at_1_percent <= kUndeterminedResolution);
     const double r = s.correlation(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
-    if (j != i && free && std::abs(r) > kTiedCorrelation) return static_cast<int>(j);
+    if (j != i && !determined_on_its_own(parameters, s, j) && std::abs(r) > kTiedCorrelation) return static_cast<int>(j);
   }
   return -1;
 }
@@ -450,12 +455,11 @@ std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Ei
       e.sensitivity = s.sensitivity(i);
     }
     if (s.in_null_space[static_cast<std::size_t>(i)]) e.standard_error = kInfinity;
-    e.determined = !s.in_null_space[static_cast<std::size_t>(i)] && e.resolution_at_1_percent <= kUndeterminedResolution;
     out.push_back(e);
   }
   // A parameter tied to an undetermined one moves with it: not determined either.
   for (std::size_t i = 0; i < out.size(); ++i) {
-    if (out[i].determined && tied_partner(out, s, i) >= 0) out[i].determined = false;
+    out[i].determined = determined_on_its_own(out, s, i) && tied_partner(out, s, i) < 0;
   }
   return out;
 }
