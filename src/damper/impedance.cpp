@@ -47,15 +47,17 @@ void SolverOptions::validate() const {
   require_positive("energy_tolerance", energy_tolerance, "");
 }
 
+bool same_amplitude(double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); }
+
 Eigen::VectorXd Continuation::predictor(const Excitation& target) const {
   Eigen::VectorXd scaled = unknowns * (target.displacement_amplitude / excitation.displacement_amplitude);
   if (previous_unknowns.size() != unknowns.size()) return scaled;
   const double last_step = std::log(excitation.frequency_hz / previous_excitation.frequency_hz);
   const double step = std::log(target.frequency_hz / excitation.frequency_hz);
-  const bool same_amplitude =
-      std::abs(previous_excitation.velocity_amplitude() / excitation.velocity_amplitude() - 1.0) < 1e-12 &&
-      std::abs(target.velocity_amplitude() / excitation.velocity_amplitude() - 1.0) < 1e-12;
-  if (!(last_step > 0.0 && step > 0.0 && step <= 2.0 * last_step && same_amplitude)) return scaled;
+  const double v = excitation.velocity_amplitude();
+  const bool one_velocity =
+      same_amplitude(previous_excitation.velocity_amplitude(), v) && same_amplitude(target.velocity_amplitude(), v);
+  if (!(last_step > 0.0 && step > 0.0 && step <= 2.0 * last_step && one_velocity)) return scaled;
   const Eigen::VectorXd previous_scaled =
       previous_unknowns * (target.displacement_amplitude / previous_excitation.displacement_amplitude);
   return scaled + (step / last_step) * (scaled - previous_scaled);

@@ -12,9 +12,6 @@ double held_value(const Excitation& e, HeldAmplitude held) {
   return held == HeldAmplitude::velocity ? e.velocity_amplitude() : e.displacement_amplitude;
 }
 
-/// Equal but for round-off (a velocity computed back from W X).
-bool same_amplitude(double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); }
-
 }  // namespace
 
 ArmTracker::ArmTracker(const Arm& arm, const SolverOptions& options, HeldAmplitude held)

@@ -44,6 +44,9 @@ struct SolverOptions {
   static HarmonicBalanceOptions collocation_defaults();
 };
 
+/// Two amplitudes equal but for round-off (a velocity computed back from W X).
+bool same_amplitude(double a, double b);
+
 /// Where a solve along a path (a sweep, a continuation) starts: the last converged
 /// solution. Empty: a cold start, from the solver's own starting point.
 struct Continuation {
