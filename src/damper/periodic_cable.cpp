@@ -260,8 +260,15 @@ void PeriodicCable::find_turning_points(const Eigen::Matrix2Xd& kinematics, bool
   const double wrap = half_wave ? -1.0 : 1.0;  // u_{j + n} = wrap u_j
   turning_points_.clear();
   if (n < 3) return;
+  // Sample j of the periodic path, j from -1 to n: which column, with which sign.
+  struct Wrapped {
+    int column;
+    double sign;
+  };
+  auto wrapped = [&](int j) { return j < 0 ? Wrapped{j + n, wrap} : j >= n ? Wrapped{j - n, wrap} : Wrapped{j, 1.0}; };
   auto sample = [&](int j, int d) {
-    return j < 0 ? wrap * kinematics(d, j + n) : j >= n ? wrap * kinematics(d, j - n) : kinematics(d, j);
+    const Wrapped w = wrapped(j);
+    return w.sign * kinematics(d, w.column);
   };
   for (int j = 0; j < n; ++j) {
     for (int d = 0; d < 2; ++d) {
@@ -287,10 +294,9 @@ void PeriodicCable::find_turning_points(const Eigen::Matrix2Xd& kinematics, bool
         const double em = sample(j - 1, other), ep = sample(j + 1, other), e0 = sample(j, other);
         const double other_slope = 0.5 * (ep - em) + (ep - 2.0 * e0 + em) * tau;
         for (int k = -1; k <= 1; ++k) {
-          const int row = ((j + k) % n + n) % n;
-          const double sign = (j + k < 0 || j + k >= n) ? wrap : 1.0;
+          const Wrapped w = wrapped(j + k);
           for (Eigen::Index c = 0; c < basis->cols(); ++c) {
-            const double bk = sign * (*basis)(row, c);
+            const double bk = w.sign * (*basis)(w.column, c);
             t.d_x(2 * c) += weights[k + 1] * bk;
             t.d_phi(2 * c + 1) += weights[k + 1] * bk;
             // The other coordinate moves with tau*, which the turning one's samples set.
