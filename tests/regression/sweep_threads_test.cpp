@@ -1,8 +1,9 @@
 // The sweep on several threads (sweep.hpp: the continuation blocks, amplitudes x
 // stretches of frequencies x distinct arms, go to parallel threads) gives exactly
 // what it gives on one: each block is computed alone, in the same order, whichever
-// thread takes it; and blocks give what one continuation per amplitude gives. The ThreadSanitizer preset
-// (`ctest --preset tsan`) runs the tests here with "Threads" in their names.
+// thread takes it; and blocks give what one continuation per amplitude gives. The
+// ThreadSanitizer preset (`ctest --preset tsan`) runs the tests here with "Threads"
+// in their names.
 
 #include <string>
 #include <vector>
