@@ -23,15 +23,29 @@ Cable::Cable(CableDescription description) : description_(validated(std::move(de
     }
   }
   for (const JenkinProfile& e : description_.jenkin) k0_.push_back(e.k0);
-  slip_compliance_.resize(n);
-  stick_compliance_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    double stiffness = ei_[i];
-    for (std::size_t j = 0; j < m; ++j) stiffness += jenkin_[i * m + j].c;
-    slip_compliance_[i] = 1.0 / ei_[i];
-    stick_compliance_[i] = 1.0 / stiffness;
-  }
   modified_masing_ = description_.uses_modified_masing();
+  if (m == 1 && !modified_masing_) fill_one_element_columns();
+}
+
+void Cable::fill_one_element_columns() {
+  OneElementColumns& columns = one_element_columns_;
+  const double l = length();
+  for (std::size_t i = 0; i < sections(); ++i) {
+    const section::Jenkin& e = jenkin_[i];
+    const double s = positions_[i];
+    const double w = weights_[i];
+    columns.c.push_back(e.c);
+    columns.h.push_back(e.h);
+    columns.ei.push_back(ei_[i]);
+    columns.stick_stiffness.push_back(ei_[i] + e.c);
+    columns.slip_compliance.push_back(1.0 / ei_[i]);
+    columns.stick_compliance.push_back(1.0 / (ei_[i] + e.c));
+    columns.position.push_back(s);
+    columns.weight.push_back(w);
+    columns.weight_position.push_back(w * s);
+    columns.weight_arm.push_back(w * (l - s));
+    columns.weight_arm_position.push_back(w * (l - s) * s);
+  }
 }
 
 }  // namespace stockbridge::cable

@@ -1,7 +1,9 @@
 #include "stockbridge/cable/cantilever.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 #include <Eigen/LU>
@@ -99,48 +101,77 @@ Eigen::Matrix2d tip_stiffness(const Eigen::Matrix2d& flexibility, double length)
 
 namespace {
 
-/// The one-element section in closed form, without divisions: stick if the elastic
-/// trial stays inside the slip limit (the classification of section::jenkin_slips),
-/// else slip at +-h with the elastic stiffness only.
-struct OneElementStep {
-  double dk, hysteretic, compliance, dissipated;
-};
-
-inline OneElementStep one_element_step(const section::Jenkin& e, double h_from, double excess, double stick_compliance,
-                                       double slip_compliance) {
-  const double dk_stick = excess * stick_compliance;
-  const double elastic = h_from + e.c * dk_stick;
-  if (dk_stick > 0.0 && elastic >= e.h) {
-    const double dk = (excess - (e.h - h_from)) * slip_compliance;
-    return {dk, e.h, slip_compliance, e.h * (h_from + e.c * dk - e.h) / e.c};
-  }
-  if (dk_stick < 0.0 && elastic <= -e.h) {
-    const double dk = (excess - (-e.h - h_from)) * slip_compliance;
-    return {dk, -e.h, slip_compliance, e.h * (-e.h - h_from - e.c * dk) / e.c};
-  }
-  return {dk_stick, elastic, stick_compliance, 0.0};
+// Branchless selection for the vectorised loop below: a comparison becomes an all-ones
+// or all-zero mask and picks the bits of one of two values (exactly that value). With
+// `?:` the compiler moves the loads and sums a choice needs into branches, and a loop
+// with branches does not run on vectors.
+inline std::uint64_t lane_mask(bool condition) { return -static_cast<std::uint64_t>(condition); }
+inline double lane_pick(std::uint64_t mask, double if_set, double otherwise) {
+  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(if_set) & mask) |
+                               (std::bit_cast<std::uint64_t>(otherwise) & ~mask));
 }
 
-/// apply_loads for cables of one element per section and constant slip moments.
+// x86-64 builds carry an AVX2 copy of the loop chosen at load time where the processor
+// has it (4 sections a step); the baseline copy serves every other x86-64 processor.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define STOCKBRIDGE_SECTION_LOOP_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define STOCKBRIDGE_SECTION_LOOP_CLONES
+#endif
+
+/// apply_loads for cables of one element per section and constant slip moments: each
+/// section in closed form (the elastic trial sticks if it stays inside the slip limit,
+/// the classification of section::jenkin_slips, else the element slips at +-h and only
+/// ei resists), without branches, so that the loop over the sections runs on vectors;
+/// the sums of CableSums with the weights multiplied out in the columns.
+STOCKBRIDGE_SECTION_LOOP_CLONES
 void apply_loads_one_element(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
                              CableState& to) {
+  const OneElementColumns& col = cable.one_element_columns();
   const std::size_t n = cable.sections();
-  const double l = cable.length();
-  const auto s = cable.positions();
-  const auto w = cable.weights();
   const double d_clamp_moment = clamp_moment - from.clamp_moment;
   const double d_tip_force = tip_force - from.tip_force;
-  CableSums sums;
+  // Raw pointers: the vectoriser must not reload a vector's data from `col` after a store.
+  const double *c = col.c.data(), *h = col.h.data(), *ei = col.ei.data(), *stick_stiffness = col.stick_stiffness.data();
+  const double *slip_compliance = col.slip_compliance.data(), *stick_compliance = col.stick_compliance.data();
+  const double *s = col.position.data(), *w = col.weight.data(), *w_s = col.weight_position.data();
+  const double *w_arm = col.weight_arm.data(), *w_arm_s = col.weight_arm_position.data();
+  const double* kappa_from = from.curvature.data();
+  const double* h_from = from.hysteretic.data();
+  double* kappa_to = to.curvature.data();
+  double* h_to = to.hysteretic.data();
+  double* tangent_to = to.tangent.data();
+  double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
+  double f00 = 0.0, f01 = 0.0, f10 = 0.0, f11 = 0.0;  // flexibility, f01 and f11 negated
+#pragma omp simd reduction(+ : rotation, deflection, dissipated, f00, f01, f10, f11)
   for (std::size_t i = 0; i < n; ++i) {
-    const OneElementStep step = one_element_step(cable.jenkin(i)[0], from.hysteretic[i], d_clamp_moment - d_tip_force * s[i],
-                                                 cable.stick_compliance(i), cable.slip_compliance(i));
-    const double kappa = from.curvature[i] + step.dk;
-    to.curvature[i] = kappa;
-    to.hysteretic[i] = step.hysteretic;
-    to.tangent[i] = step.compliance == cable.slip_compliance(i) ? cable.ei(i) : cable.ei(i) + cable.jenkin(i)[0].c;
-    sums.add(w[i], s[i], l, kappa, step.compliance, step.dissipated);
+    const double excess = d_clamp_moment - d_tip_force * s[i];
+    const double dk_stick = excess * stick_compliance[i];
+    const double elastic = h_from[i] + c[i] * dk_stick;
+    const std::uint64_t slips = (lane_mask(dk_stick > 0.0) & lane_mask(elastic >= h[i])) |
+                                (lane_mask(dk_stick < 0.0) & lane_mask(elastic <= -h[i]));
+    const double bound = std::copysign(h[i], dk_stick);  // +-h, the slip moment reached
+    const double dk_slip = (excess - (bound - h_from[i])) * slip_compliance[i];
+    const double slip_dissipation = bound * (h_from[i] + c[i] * dk_slip - bound) / c[i];
+    const double kappa = kappa_from[i] + lane_pick(slips, dk_slip, dk_stick);
+    const double compliance = lane_pick(slips, slip_compliance[i], stick_compliance[i]);
+    kappa_to[i] = kappa;
+    h_to[i] = lane_pick(slips, bound, elastic);
+    tangent_to[i] = lane_pick(slips, ei[i], stick_stiffness[i]);
+    rotation += w[i] * kappa;
+    deflection += w_arm[i] * kappa;
+    dissipated += w[i] * lane_pick(slips, slip_dissipation, 0.0);
+    f00 += w[i] * compliance;
+    f01 += w_s[i] * compliance;
+    f10 += w_arm[i] * compliance;
+    f11 += w_arm_s[i] * compliance;
   }
-  sums.store(clamp_moment, tip_force, from, to);
+  to.clamp_moment = clamp_moment;
+  to.tip_force = tip_force;
+  to.rotation = rotation;
+  to.deflection = deflection;
+  to.flexibility << f00, -f01, f10, -f11;
+  to.dissipated = from.dissipated + dissipated;
 }
 
 }  // namespace
