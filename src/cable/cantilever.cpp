@@ -235,6 +235,7 @@ Cantilever::Cantilever(Cable cable, CantileverOptions options)
     : cable_(std::move(cable)),
       options_(validated(options)),
       state_(CableState::virgin(cable_)),
+      inverse_length_(1.0 / cable_.length()),
       elastic_flexibility_(state_.committed().flexibility),
       candidate_(state_.committed()) {}
 
@@ -279,38 +280,42 @@ void Cantilever::set_trial_loads(double clamp_moment, double tip_force) {
 StateDetermination Cantilever::set_trial_tip(double deflection, double rotation) {
   require_finite("deflection", deflection, "m");
   require_finite("rotation", rotation, "rad");
-  return solve<2>(Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity(),
-                  Eigen::Vector2d(rotation, deflection / cable_.length()));
+  return solve<2>(Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity(),
+                  Eigen::Vector2d(rotation, deflection * inverse_length_));
 }
 
 StateDetermination Cantilever::set_trial_deflection(double deflection) {
   require_finite("deflection", deflection, "m");
   // Q = 0: T = F l, i.e. scaled loads (T, F l) = (1, 1) q; only x is prescribed.
-  return solve<1>(Eigen::Vector2d(1.0, 1.0), Eigen::RowVector2d(0.0, 1.0),
+  return solve<1>(Eigen::Vector2d(1.0, 1.0), Eigen::RowVector2d(0.5, 0.5), Eigen::RowVector2d(0.0, 1.0),
                   Eigen::Matrix<double, 1, 1>(deflection / cable_.length()));
 }
 
 // Newton's method in scaled variables: loads p = (T, F l) in N m, kinematics
-// k = (phi, x / l) in rad. The unknowns q give p = B q; the residual is C k - target.
+// k = (phi, x / l) in rad. The unknowns q give p = B q (B+ is B's pseudo-inverse,
+// given so that no step divides by it); the residual is C k - target. Norms are
+// compared squared (no square root a step: this runs for every sample of every pass).
 template <int K>
-StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const Eigen::Matrix<double, K, 2>& C,
-                                     const Eigen::Matrix<double, K, 1>& target) {
+StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const Eigen::Matrix<double, K, 2>& B_plus,
+                                     const Eigen::Matrix<double, K, 2>& C, const Eigen::Matrix<double, K, 1>& target) {
   using VectorK = Eigen::Matrix<double, K, 1>;
   using MatrixK = Eigen::Matrix<double, K, K>;
   const double l = cable_.length();
-  const Eigen::Vector2d scale_loads(1.0, l);           // (T, F) -> (T, F l)
-  const Eigen::Vector2d scale_kinematics(1.0, 1.0 / l);  // (phi, x) -> (phi, x / l)
+  const double inverse_l = inverse_length_;
+  const Eigen::Vector2d scale_loads(1.0, l);                // (T, F) -> (T, F l)
+  const Eigen::Vector2d unscale_loads(1.0, inverse_l);      // (T, F l) -> (T, F)
+  const Eigen::Vector2d scale_kinematics(1.0, inverse_l);   // (phi, x) -> (phi, x / l)
   auto scaled_kinematics = [&](const CableState& s) {
     return Eigen::Vector2d(s.rotation, s.deflection).cwiseProduct(scale_kinematics).eval();
   };
   auto scaled_jacobian = [&](const Eigen::Matrix2d& f) -> MatrixK {
-    const Eigen::Matrix2d g = scale_kinematics.asDiagonal() * f * scale_loads.cwiseInverse().asDiagonal();
+    const Eigen::Matrix2d g = scale_kinematics.asDiagonal() * f * unscale_loads.asDiagonal();
     return C * g * B;
   };
   const CableState& from = state_.committed();
   StateDetermination result;
   auto evaluate = [&](const VectorK& q, CableState& into) -> VectorK {
-    const Eigen::Vector2d p = (B * q).cwiseQuotient(scale_loads);
+    const Eigen::Vector2d p = (B * q).cwiseProduct(unscale_loads);
     apply_loads(cable_, from, p(0), p(1), into, workspace_);
     ++result.evaluations;
     return C * scaled_kinematics(into) - target;
@@ -320,7 +325,7 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
   // the all-stick tangent after a reversal (where every element sticks again).
   const Eigen::Vector2d committed_loads =
       Eigen::Vector2d(from.clamp_moment, from.tip_force).cwiseProduct(scale_loads);
-  VectorK q = (B.transpose() * B).inverse() * (B.transpose() * committed_loads);
+  VectorK q = B_plus * committed_loads;
   const VectorK committed_kinematics = C * scaled_kinematics(from);
   const VectorK increment = target - committed_kinematics;
   const bool continuing = (C * last_increment_).dot(increment) > 0.0;
@@ -329,15 +334,16 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
 
   const double scale = std::max({target.template lpNorm<Eigen::Infinity>(),
                                  committed_kinematics.template lpNorm<Eigen::Infinity>(), 1e-12});
+  const double tolerance_squared = std::pow(options_.tolerance * scale, 2);
   CableState& trial = state_.trial();
   VectorK residual = evaluate(q, trial);
-  double norm = residual.norm();
+  double norm_squared = residual.squaredNorm();
   while (true) {
-    if (norm <= options_.tolerance * scale) {
+    if (norm_squared <= tolerance_squared) {
       result.termination = Termination::converged;
       break;
     }
-    if (!std::isfinite(norm)) {
+    if (!std::isfinite(norm_squared)) {
       result.termination = Termination::non_finite;
       break;
     }
@@ -357,11 +363,11 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
     for (int halving = 0; halving <= options_.max_halvings; ++halving, alpha *= 0.5) {
       const VectorK q_try = q + alpha * step;
       const VectorK residual_try = evaluate(q_try, candidate_);
-      const double norm_try = residual_try.norm();
-      if (norm_try <= (1.0 - 1e-4 * alpha) * norm) {
+      const double norm_squared_try = residual_try.squaredNorm();
+      if (norm_squared_try <= std::pow(1.0 - 1e-4 * alpha, 2) * norm_squared) {  // sufficient decrease of the norm
         q = q_try;
         residual = residual_try;
-        norm = norm_try;
+        norm_squared = norm_squared_try;
         std::swap(trial, candidate_);
         accepted = true;
         break;
@@ -372,13 +378,13 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
       break;
     }
   }
-  result.residual = norm;
+  result.residual = std::sqrt(norm_squared);
   return result;
 }
 
 template StateDetermination Cantilever::solve<1>(const Eigen::Matrix<double, 2, 1>&, const Eigen::Matrix<double, 1, 2>&,
-                                                 const Eigen::Matrix<double, 1, 1>&);
+                                                 const Eigen::Matrix<double, 1, 2>&, const Eigen::Matrix<double, 1, 1>&);
 template StateDetermination Cantilever::solve<2>(const Eigen::Matrix<double, 2, 2>&, const Eigen::Matrix<double, 2, 2>&,
-                                                 const Eigen::Matrix<double, 2, 1>&);
+                                                 const Eigen::Matrix<double, 2, 2>&, const Eigen::Matrix<double, 2, 1>&);
 
 }  // namespace stockbridge::cable

@@ -119,12 +119,14 @@ class Cantilever {
  private:
   template <int K>
   StateDetermination solve(const Eigen::Matrix<double, 2, K>& loads_from_unknowns,
+                           const Eigen::Matrix<double, K, 2>& unknowns_from_loads,
                            const Eigen::Matrix<double, K, 2>& kinematics_selected,
                            const Eigen::Matrix<double, K, 1>& target);
 
   Cable cable_;
   CantileverOptions options_;
   Committable<CableState> state_;
+  double inverse_length_;                // 1 / l
   Eigen::Matrix2d elastic_flexibility_;  // every element sticking: the predictor after a reversal
   Eigen::Vector2d last_increment_ = Eigen::Vector2d::Zero();  // of (phi, x / l) in the last committed step
   CableWorkspace workspace_;
