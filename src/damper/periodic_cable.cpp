@@ -156,19 +156,18 @@ void PeriodicCable::set_sample_derivative(const Eigen::MatrixXd& basis, int samp
   }
 }
 
-void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const cable::CableState& to, int sample,
-                                          Eigen::MatrixXd* sensitivity) {
+// Which elements stick in the step `from` -> `to`; where a section's sticking set
+// changed or an element sticks again after a step in which its whole section slipped
+// (its anchor set from that step's load derivatives), the section is recounted.
+void PeriodicCable::update_sticking(const cable::CableState& from, const cable::CableState& to) {
   const std::size_t n_sections = cable().sections();
   const std::size_t m = cable().elements();
-  const double l = cable().length();
   const auto s = cable().positions();
-  const auto w = cable().weights();
   sticking_.resize(n_sections * m);
   partial_.assign(n_sections, 0);
   for (std::size_t i = 0; i < n_sections; ++i) {
     const double dkappa = to.curvature[i] - from.curvature[i];
     const auto jenkin = cable().jenkin(i);
-    const double k = to.tangent[i];
     bool any_stick = false, any_slip = false, changed = false;
     for (std::size_t e = 0; e < m; ++e) {
       const std::size_t ie = i * m + e;
@@ -185,15 +184,52 @@ void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const c
       }
     }
     partial_[i] = any_stick && any_slip;
-    if (changed) recount_section(i, k);
+    if (changed) recount_section(i, to.tangent[i]);
+  }
+}
+
+// update_sticking for one element per section with constant slip moments: the step's
+// tangent says whether the element slipped (exactly ei then, apply_loads), no section is
+// partial, and a slipping section's anchor waits for the step in which it sticks again.
+void PeriodicCable::update_one_element_sticking(const cable::CableState& to) {
+  const std::size_t n_sections = cable().sections();
+  const cable::OneElementColumns& col = cable().one_element_columns();
+  sticking_.resize(n_sections);
+  for (std::size_t i = 0; i < n_sections; ++i) {
+    const bool sticks = to.tangent[i] != col.ei[i];
+    sticking_[i] = sticks;
+    bool changed = counted_sticking_[i] != static_cast<unsigned char>(sticks);
+    if (!sticks) {
+      pending_[i] = 1;
+      pending_compliance_[i] = col.slip_compliance[i];
+    } else if (pending_[i]) {
+      anchor_.col(static_cast<Eigen::Index>(i)) =
+          col.slip_compliance[i] * (previous_d_clamp_moment_ - col.position[i] * previous_d_tip_force_);
+      pending_[i] = 0;
+      changed = true;
+    }
+    if (changed) recount_section(i, to.tangent[i]);
+  }
+}
+
+void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const cable::CableState& to, int sample,
+                                          Eigen::MatrixXd* sensitivity) {
+  const std::size_t n_sections = cable().sections();
+  const std::size_t m = cable().elements();
+  const double l = cable().length();
+  const auto s = cable().positions();
+  const bool one_element = !cable().one_element_columns().ei.empty();
+  if (one_element) {
+    update_one_element_sticking(to);
+  } else {
+    update_sticking(from, to);
   }
   rhs_phi_ -= sticking_sum_phi_;
   rhs_x_ -= sticking_sum_x_;
   const Eigen::Matrix2d inverse = to.flexibility.inverse();
   d_clamp_moment_ = inverse(0, 0) * rhs_phi_ + inverse(0, 1) * rhs_x_;
   d_tip_force_ = inverse(1, 0) * rhs_phi_ + inverse(1, 1) * rhs_x_;
-  for (std::size_t i = 0; i < n_sections; ++i) {
-    const auto jenkin = cable().jenkin(i);
+  for (std::size_t i = 0; !one_element && i < n_sections; ++i) {  // one element: done in the sticking update
     const double k = to.tangent[i];
     if (partial_[i]) {
       // d kappa_new = da_i + dM_i / k_i becomes the anchor of every slipping element.

@@ -92,6 +92,9 @@ class PeriodicCable {
   void set_sample_derivative(const Eigen::MatrixXd& basis, int sample);
   void propagate_sensitivity(const cable::CableState& from, const cable::CableState& to, int sample,
                              Eigen::MatrixXd* sensitivity);
+  /// The sticking sets of the step `from` -> `to`, sections recounted where they changed.
+  void update_sticking(const cable::CableState& from, const cable::CableState& to);
+  void update_one_element_sticking(const cable::CableState& to);
   /// Section i's sticking elements' part of the sensitivities' right-hand side, anew.
   void recount_section(std::size_t i, double k);
   /// The right-hand side's sticking part summed anew over the sections.
