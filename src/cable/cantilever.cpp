@@ -246,17 +246,17 @@ void Cantilever::commit() {
 }
 
 void Cantilever::reset() {
-  state_ = Committable<CableState>(CableState::virgin(cable_));
+  state_ = SwappingCommittable<CableState>(CableState::virgin(cable_));
   last_increment_.setZero();
 }
 
 void Cantilever::restore(const CableState& state) {
-  state_ = Committable<CableState>(state);
+  state_ = SwappingCommittable<CableState>(state);
   last_increment_.setZero();
 }
 
 void Cantilever::mirror() {
-  CableState& mirrored = state_.trial();
+  CableState& mirrored = state_.trial_to_overwrite();
   mirrored = state_.committed();
   mirrored.mirror();
   state_.commit();
@@ -264,7 +264,7 @@ void Cantilever::mirror() {
 }
 
 void Cantilever::commit_halfway_to(const CableState& other) {
-  CableState& moved = state_.trial();
+  CableState& moved = state_.trial_to_overwrite();
   moved = state_.committed();
   moved.move_halfway_to(other);
   state_.commit();
@@ -274,7 +274,7 @@ void Cantilever::commit_halfway_to(const CableState& other) {
 void Cantilever::set_trial_loads(double clamp_moment, double tip_force) {
   require_finite("clamp_moment", clamp_moment, "N m");
   require_finite("tip_force", tip_force, "N");
-  apply_loads(cable_, state_.committed(), clamp_moment, tip_force, state_.trial(), workspace_);
+  apply_loads(cable_, state_.committed(), clamp_moment, tip_force, state_.trial_to_overwrite(), workspace_);
 }
 
 StateDetermination Cantilever::set_trial_tip(double deflection, double rotation) {
@@ -335,7 +335,7 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
   const double scale = std::max({target.template lpNorm<Eigen::Infinity>(),
                                  committed_kinematics.template lpNorm<Eigen::Infinity>(), 1e-12});
   const double tolerance_squared = std::pow(options_.tolerance * scale, 2);
-  CableState& trial = state_.trial();
+  CableState& trial = state_.trial_to_overwrite();  // apply_loads fills every field
   VectorK residual = evaluate(q, trial);
   double norm_squared = residual.squaredNorm();
   while (true) {

@@ -125,7 +125,7 @@ class Cantilever {
 
   Cable cable_;
   CantileverOptions options_;
-  Committable<CableState> state_;
+  SwappingCommittable<CableState> state_;
   double inverse_length_;                // 1 / l
   Eigen::Matrix2d elastic_flexibility_;  // every element sticking: the predictor after a reversal
   Eigen::Vector2d last_increment_ = Eigen::Vector2d::Zero();  // of (phi, x / l) in the last committed step
