@@ -113,7 +113,17 @@ inline double lane_pick(std::uint64_t mask, double if_set, double otherwise) {
 
 // x86-64 builds carry an AVX2 copy of the loop chosen at load time where the processor
 // has it (4 sections a step); the baseline copy serves every other x86-64 processor.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+// Not under ThreadSanitizer: the loader runs the copy's resolver before the sanitizer's
+// runtime is up, and the program dies before main.
+#if defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+#define STOCKBRIDGE_THREAD_SANITIZER 1
+#endif
+#endif
+#if defined(__SANITIZE_THREAD__)
+#define STOCKBRIDGE_THREAD_SANITIZER 1
+#endif
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(STOCKBRIDGE_THREAD_SANITIZER)
 #define STOCKBRIDGE_SECTION_LOOP_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define STOCKBRIDGE_SECTION_LOOP_CLONES
