@@ -14,7 +14,7 @@ void SolverFlags::add_to(CLI::App& command) {
       fmt::format("Harmonics H (hb: default {}, collocation: default {})", defaults.harmonic_balance.harmonics,
                   defaults.collocation.harmonics));
   samples_flag_ = command.add_option(
-      "--samples", samples_, "Time samples per period for hb (default: 8 H rounded up to a power of 2, at least 64)");
+      "--samples", samples_, "Time samples per period for hb (default: 8 H rounded up to a multiple of 16, at least 64)");
   command.add_flag(
       "--full-period", full_period_, "hb: every harmonic and the mean over whole periods (default: odd harmonics over half "
                        "periods, as the symmetric law and drive allow)");

@@ -33,9 +33,9 @@ bool HarmonicBalanceOptions::uses_half_wave() const { return half_wave && !collo
 int HarmonicBalanceOptions::sample_count() const {
   if (collocation) return 2 * harmonics + 1;
   if (samples > 0) return samples;
-  int n = 64;
-  while (n < 8 * harmonics) n *= 2;
-  return n;
+  // No FFT: any even count serves (half-wave symmetry halves it); multiples of 16 keep
+  // the half period's samples a multiple of 8.
+  return std::max(64, (8 * harmonics + 15) / 16 * 16);
 }
 
 namespace {

@@ -23,8 +23,12 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// Points whose held amplitudes lie within this ratio of a curve's smallest belong to it.
 constexpr double kCurveAmplitudeRatio = 1.1;
+/// The model runs converged to this (the harmonic balance's residual and periodicity
+/// tolerances, tighter than the sweep's defaults): the difference quotients divide by
+/// the step below.
+constexpr double kModelTolerance = 1e-8;
 /// The forward-difference step of the log parameters: about the square root of the
-/// model's relative accuracy (the harmonic balance's tolerance 1e-8).
+/// model's relative accuracy.
 constexpr double kDifferenceStep = 1e-4;
 /// The scatter of Z (relative, per real component) at which parameters' resolutions are stated.
 constexpr double kStatedScatter = 0.01;
@@ -604,8 +608,13 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
     throw InvalidParameter(fmt::format("measurement: {} points for {} parameters: expected at least {}",
                                        measurement.points.size(), variables.size(), (variables.size() + 1) / 2));
   }
-  ImpedanceProblem coarse(variables, measurement, options, kExploreSections);
-  ImpedanceProblem problem(variables, measurement, options);
+  ImpedanceIdentificationOptions converged = options;
+  for (damper::HarmonicBalanceOptions* o : {&converged.solver.harmonic_balance, &converged.solver.collocation}) {
+    o->tolerance = std::min(o->tolerance, kModelTolerance);
+    o->periodicity_tolerance = std::min(o->periodicity_tolerance, kModelTolerance);
+  }
+  ImpedanceProblem coarse(variables, measurement, converged, kExploreSections);
+  ImpedanceProblem problem(variables, measurement, converged);
 
   // Each start explored briefly on coarse cables, the best polished to convergence.
   least_squares::Run best;

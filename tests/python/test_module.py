@@ -77,7 +77,7 @@ def test_arrays_have_the_documented_shapes_and_dtypes():
     assert z["re_z_n_s_m"].shape == (1, 3) and z["re_z_n_s_m"].dtype == np.float64
     assert z["converged"].dtype == np.bool_ and z["converged"].all()
     r = sb.response(damper, 20.0, velocity=0.2)
-    assert r["time_s"].shape == (128,) and r["x_m"].shape == (2, 128) and r["force_n"].dtype == np.float64
+    assert r["time_s"].shape == (144,) and r["x_m"].shape == (2, 144) and r["force_n"].dtype == np.float64
     assert isinstance(r["impedance"], complex)
     assert r["power_w"] == pytest.approx(r["dissipated_power_w"], rel=1e-3)
     c = sb.cycle(sb.load_cable(CABLE), "a", 0.03, cycles=2, points=400)

@@ -37,7 +37,7 @@ struct SolverOptions {
   ShootingOptions shooting;
   /// A point whose energy balance (SolverSummary::energy_error, relative to the
   /// apparent power) is off by more than this is not trusted: converged = false.
-  /// Typical errors: 1e-4 (harmonic balance, 128 samples), 1e-3 (time, 64 steps).
+  /// Typical errors: 1e-4 (harmonic balance, 144 samples), 1e-3 (time, 64 steps).
   double energy_tolerance = 0.01;
 
   void validate() const;

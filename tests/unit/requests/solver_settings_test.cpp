@@ -35,7 +35,7 @@ damper::Damper damper_named(const std::vector<std::string>& names) {
 TEST(SolverSettings, UnsetSettingsTakeTheMethodsOwnDefaults) {
   const damper::SolverOptions hb = solver_options({});
   EXPECT_EQ(hb.method, Method::harmonic_balance);
-  EXPECT_EQ(hb.harmonic_balance.harmonics, 15);
+  EXPECT_EQ(hb.harmonic_balance.harmonics, 17);
   EXPECT_TRUE(hb.harmonic_balance.half_wave);
   SolverSettings collocation;
   collocation.method = "collocation";
@@ -55,7 +55,7 @@ TEST(SolverSettings, EachSettingReachesTheChosenMethod) {
   EXPECT_EQ(co.collocation.harmonics, 25);
   EXPECT_EQ(co.collocation.max_iterations, 70);
   EXPECT_EQ(co.energy_tolerance, 0.05);
-  EXPECT_EQ(co.harmonic_balance.harmonics, 15);  // the other method's options are untouched
+  EXPECT_EQ(co.harmonic_balance.harmonics, 17);  // the other method's options are untouched
   SolverSettings t;
   t.method = "time";
   t.steps = 64;
