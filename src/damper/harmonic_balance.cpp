@@ -310,14 +310,20 @@ bool NewtonSolve::settle(const Eigen::VectorXd& q) {
 
 NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
   Eigen::VectorXd direction;
-  const double reciprocal_condition =
-      numerics::solve_checked(jacobian_, Eigen::VectorXd(-current_.residual), direction);
-  if (numerics::is_singular(reciprocal_condition, direction)) {
-    // A stored Jacobian may belong to another piece: an exact one decides.
-    if (!exact_) return StepOutcome::retry_with_exact_jacobian;
-    summary_.reciprocal_condition = reciprocal_condition;
-    fail(Termination::singular_jacobian);
-    return StepOutcome::failed;
+  if (exact_) {
+    const double reciprocal_condition =
+        numerics::solve_checked(jacobian_, Eigen::VectorXd(-current_.residual), direction);
+    if (numerics::is_singular(reciprocal_condition, direction)) {
+      summary_.reciprocal_condition = reciprocal_condition;
+      fail(Termination::singular_jacobian);
+      return StepOutcome::failed;
+    }
+  } else {
+    // A stored Jacobian's step is tried once and an exact Jacobian decides if it
+    // fails, so its conditioning is not estimated (that cost half a factorisation);
+    // a singular one gives a non-finite step.
+    direction = Eigen::PartialPivLU<Eigen::MatrixXd>(jacobian_).solve(Eigen::VectorXd(-current_.residual));
+    if (!direction.allFinite()) return StepOutcome::retry_with_exact_jacobian;
   }
   const double norm2 = current_.residual.norm();
   // With a stored Jacobian only the full step is tried: if it fails, an exact one is cheaper than halving.
