@@ -287,66 +287,94 @@ void Cantilever::set_trial_loads(double clamp_moment, double tip_force) {
   apply_loads(cable_, state_.committed(), clamp_moment, tip_force, state_.trial_to_overwrite(), workspace_);
 }
 
+// What a state determination prescribes, in scaled variables: loads p = (T, F l) in
+// N m, kinematics k = (phi, x / l) in rad. Its unknowns q give the loads p = B q and
+// are given by them, q = B+ p (B's pseudo-inverse); the residual is C k - target, and
+// the Jacobian of C k by q is C g B for the scaled flexibility g. Each case spells its
+// B, B+ and C out, so that no step multiplies by an identity.
+struct Cantilever::BothTipCoordinates {  // B = B+ = C = I: the unknowns are the loads
+  static constexpr int K = 2;
+  using Vector = Eigen::Vector2d;
+  static Eigen::Vector2d loads(const Vector& q) { return q; }
+  static Vector unknowns(const Eigen::Vector2d& p) { return p; }
+  static Vector prescribed(const Eigen::Vector2d& k) { return k; }
+  static Eigen::Matrix2d jacobian(const Eigen::Matrix2d& g) { return g; }
+};
+struct Cantilever::DeflectionOnly {  // Q = 0: T = F l, p = (1, 1) q, only x / l prescribed
+  static constexpr int K = 1;
+  using Vector = Eigen::Matrix<double, 1, 1>;
+  static Eigen::Vector2d loads(const Vector& q) { return {q(0), q(0)}; }
+  static Vector unknowns(const Eigen::Vector2d& p) { return Vector(0.5 * (p(0) + p(1))); }
+  static Vector prescribed(const Eigen::Vector2d& k) { return Vector(k(1)); }
+  static Eigen::Matrix<double, 1, 1> jacobian(const Eigen::Matrix2d& g) {
+    return Eigen::Matrix<double, 1, 1>(g(1, 0) + g(1, 1));
+  }
+};
+
 StateDetermination Cantilever::set_trial_tip(double deflection, double rotation) {
   require_finite("deflection", deflection, "m");
   require_finite("rotation", rotation, "rad");
-  return solve<2>(Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity(),
-                  Eigen::Vector2d(rotation, deflection * inverse_length_));
+  return solve<BothTipCoordinates>(Eigen::Vector2d(rotation, deflection * inverse_length_));
 }
 
 StateDetermination Cantilever::set_trial_deflection(double deflection) {
   require_finite("deflection", deflection, "m");
-  // Q = 0: T = F l, i.e. scaled loads (T, F l) = (1, 1) q; only x is prescribed.
-  return solve<1>(Eigen::Vector2d(1.0, 1.0), Eigen::RowVector2d(0.5, 0.5), Eigen::RowVector2d(0.0, 1.0),
-                  Eigen::Matrix<double, 1, 1>(deflection / cable_.length()));
+  return solve<DeflectionOnly>(DeflectionOnly::Vector(deflection / cable_.length()));
 }
 
-// Newton's method in scaled variables: loads p = (T, F l) in N m, kinematics
-// k = (phi, x / l) in rad. The unknowns q give p = B q (B+ is B's pseudo-inverse,
-// given so that no step divides by it); the residual is C k - target. Norms are
-// compared squared (no square root a step: this runs for every sample of every pass).
-template <int K>
-StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const Eigen::Matrix<double, K, 2>& B_plus,
-                                     const Eigen::Matrix<double, K, 2>& C, const Eigen::Matrix<double, K, 1>& target) {
-  using VectorK = Eigen::Matrix<double, K, 1>;
-  using MatrixK = Eigen::Matrix<double, K, K>;
-  const double l = cable_.length();
+/// The Jacobian's inverse applied to a vector, as Eigen's inverse() then product
+/// would (the same roundings), in scalars: the compiler built Eigen's version from
+/// two scalar stores and a stalled vector load (this runs for every sample of every
+/// pass; the example sweep 3 % faster).
+inline Eigen::Matrix<double, 1, 1> inverse_times(const Eigen::Matrix<double, 1, 1>& a,
+                                                 const Eigen::Matrix<double, 1, 1>& v) {
+  return Eigen::Matrix<double, 1, 1>((1.0 / a(0, 0)) * v(0));
+}
+inline Eigen::Vector2d inverse_times(const Eigen::Matrix2d& a, const Eigen::Vector2d& v) {
+  const double inverse_determinant = 1.0 / (a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0));
+  const double i00 = a(1, 1) * inverse_determinant, i01 = -a(0, 1) * inverse_determinant;
+  const double i10 = -a(1, 0) * inverse_determinant, i11 = a(0, 0) * inverse_determinant;
+  return {i00 * v(0) + i01 * v(1), i10 * v(0) + i11 * v(1)};
+}
+
+// Newton's method in the scaled variables. Norms are compared squared (no square
+// root a step: this runs for every sample of every pass).
+template <class Prescribed>
+StateDetermination Cantilever::solve(const typename Prescribed::Vector& target) {
+  using Vector = typename Prescribed::Vector;
   const double inverse_l = inverse_length_;
-  const Eigen::Vector2d scale_loads(1.0, l);                // (T, F) -> (T, F l)
-  const Eigen::Vector2d unscale_loads(1.0, inverse_l);      // (T, F l) -> (T, F)
-  const Eigen::Vector2d scale_kinematics(1.0, inverse_l);   // (phi, x) -> (phi, x / l)
-  auto scaled_kinematics = [&](const CableState& s) {
-    return Eigen::Vector2d(s.rotation, s.deflection).cwiseProduct(scale_kinematics).eval();
+  auto scaled_kinematics = [inverse_l](const CableState& s) {
+    return Eigen::Vector2d(s.rotation, s.deflection * inverse_l);
   };
-  auto scaled_jacobian = [&](const Eigen::Matrix2d& f) -> MatrixK {
-    const Eigen::Matrix2d g = scale_kinematics.asDiagonal() * f * unscale_loads.asDiagonal();
-    return C * g * B;
+  // g = diag(1, 1/l) f diag(1, 1/l): (T, F l) -> (phi, x / l)
+  auto jacobian = [inverse_l](const Eigen::Matrix2d& f) {
+    Eigen::Matrix2d g;
+    g << f(0, 0), f(0, 1) * inverse_l, f(1, 0) * inverse_l, f(1, 1) * inverse_l * inverse_l;
+    return Prescribed::jacobian(g);
   };
   const CableState& from = state_.committed();
   StateDetermination result;
-  auto evaluate = [&](const VectorK& q, CableState& into) -> VectorK {
-    const Eigen::Vector2d p = (B * q).cwiseProduct(unscale_loads);
-    apply_loads(cable_, from, p(0), p(1), into, workspace_);
+  auto evaluate = [&](const Vector& q, CableState& into) -> Vector {
+    const Eigen::Vector2d p = Prescribed::loads(q);
+    apply_loads(cable_, from, p(0), p(1) * inverse_l, into, workspace_);
     ++result.evaluations;
-    return C * scaled_kinematics(into) - target;
+    return Prescribed::prescribed(scaled_kinematics(into)) - target;
   };
 
   // Predictor: the committed tangent when loading goes on in the same direction,
   // the all-stick tangent after a reversal (where every element sticks again).
-  const Eigen::Vector2d committed_loads =
-      Eigen::Vector2d(from.clamp_moment, from.tip_force).cwiseProduct(scale_loads);
-  VectorK q = B_plus * committed_loads;
-  const VectorK committed_kinematics = C * scaled_kinematics(from);
-  const VectorK increment = target - committed_kinematics;
-  const bool continuing = (C * last_increment_).dot(increment) > 0.0;
-  const VectorK predicted = q + scaled_jacobian(continuing ? from.flexibility : elastic_flexibility_).inverse() * increment;
+  Vector q = Prescribed::unknowns(Eigen::Vector2d(from.clamp_moment, from.tip_force * cable_.length()));
+  const Vector committed_kinematics = Prescribed::prescribed(scaled_kinematics(from));
+  const Vector increment = target - committed_kinematics;
+  const bool continuing = Prescribed::prescribed(last_increment_).dot(increment) > 0.0;
+  const Vector predicted = q + inverse_times(jacobian(continuing ? from.flexibility : elastic_flexibility_), increment);
   if (predicted.allFinite()) q = predicted;  // else start from the committed loads
 
   const double scale = std::max({target.template lpNorm<Eigen::Infinity>(),
                                  committed_kinematics.template lpNorm<Eigen::Infinity>(), 1e-12});
   const double tolerance_squared = std::pow(options_.tolerance * scale, 2);
   CableState& trial = state_.trial_to_overwrite();  // apply_loads fills every field
-  VectorK residual = evaluate(q, trial);
+  Vector residual = evaluate(q, trial);
   double norm_squared = residual.squaredNorm();
   while (true) {
     if (norm_squared <= tolerance_squared) {
@@ -362,7 +390,7 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
       break;
     }
     ++result.newton_iterations;
-    const VectorK step = -scaled_jacobian(trial.flexibility).inverse() * residual;
+    const Vector step = -inverse_times(jacobian(trial.flexibility), residual);
     if (!step.allFinite()) {  // a singular flexibility
       result.termination = Termination::singular_jacobian;
       result.reciprocal_condition = 0.0;
@@ -371,8 +399,8 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
     bool accepted = false;
     double alpha = 1.0;
     for (int halving = 0; halving <= options_.max_halvings; ++halving, alpha *= 0.5) {
-      const VectorK q_try = q + alpha * step;
-      const VectorK residual_try = evaluate(q_try, candidate_);
+      const Vector q_try = q + alpha * step;
+      const Vector residual_try = evaluate(q_try, candidate_);
       const double norm_squared_try = residual_try.squaredNorm();
       if (norm_squared_try <= std::pow(1.0 - 1e-4 * alpha, 2) * norm_squared) {  // sufficient decrease of the norm
         q = q_try;
@@ -391,10 +419,5 @@ StateDetermination Cantilever::solve(const Eigen::Matrix<double, 2, K>& B, const
   result.residual = std::sqrt(norm_squared);
   return result;
 }
-
-template StateDetermination Cantilever::solve<1>(const Eigen::Matrix<double, 2, 1>&, const Eigen::Matrix<double, 1, 2>&,
-                                                 const Eigen::Matrix<double, 1, 2>&, const Eigen::Matrix<double, 1, 1>&);
-template StateDetermination Cantilever::solve<2>(const Eigen::Matrix<double, 2, 2>&, const Eigen::Matrix<double, 2, 2>&,
-                                                 const Eigen::Matrix<double, 2, 2>&, const Eigen::Matrix<double, 2, 1>&);
 
 }  // namespace stockbridge::cable

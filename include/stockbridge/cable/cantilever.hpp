@@ -117,11 +117,10 @@ class Cantilever {
   void commit_halfway_to(const CableState& other);
 
  private:
-  template <int K>
-  StateDetermination solve(const Eigen::Matrix<double, 2, K>& loads_from_unknowns,
-                           const Eigen::Matrix<double, K, 2>& unknowns_from_loads,
-                           const Eigen::Matrix<double, K, 2>& kinematics_selected,
-                           const Eigen::Matrix<double, K, 1>& target);
+  struct BothTipCoordinates;  // what a state determination prescribes (cantilever.cpp)
+  struct DeflectionOnly;
+  template <class Prescribed>
+  StateDetermination solve(const typename Prescribed::Vector& target);
 
   Cable cable_;
   CantileverOptions options_;
