@@ -187,9 +187,10 @@ class FrequencyBalance {
         if (fixed_[e][j]) return fixed_[e][j];
         return tables_[layout.damper[j]].at(index_, v);
       };
-      EndSolution s = options_.damper_model == DamperModel::travelling
-                          ? solve_end(wave_, layout.positions, z, y, options_.fixed_point, last_velocities_[e])
-                          : weak_end(layout, z, y);
+      EndSolution s = options_.damper_model == DamperModel::weak ? weak_end(layout, z, y)
+                      : all_fixed(e)                             ? fixed_end(e, y)
+                                                                 : solve_end(wave_, layout.positions, z, y,
+                                                                             options_.fixed_point, last_velocities_[e]);
       if (!s.converged) {
         out.known = false;
         out.failure = fmt::format("end {}: {}", e + 1, s.failure);
@@ -213,6 +214,7 @@ class FrequencyBalance {
   /// Back to the tables' impedances (the polish's fixed ones dropped).
   void release() {
     for (auto& end : fixed_) std::fill(end.begin(), end.end(), std::nullopt);
+    absorbed_per_square_.reset();
   }
 
   /// Makes damper j of end e's impedance the directly solved one `direct`, whatever
@@ -220,11 +222,43 @@ class FrequencyBalance {
   void fix(std::size_t e, std::size_t j, const damper::ImpedancePoint& direct) {
     fixed_[e][j] = direct.impedance;
     curvatures_[e][j] = direct.messenger_curvature_max;
+    absorbed_per_square_.reset();
+  }
+
+  /// P_d / y^2 while every damper's impedance is fixed (the polish's trials): the
+  /// string is linear then, the dampers absorb in proportion to y^2. None otherwise.
+  std::optional<double> absorbed_per_square() {
+    if (!absorbed_per_square_) {
+      for (std::size_t e = 0; e < layouts_.size(); ++e) {
+        if (!all_fixed(e)) return std::nullopt;
+      }
+      absorbed_per_square_ = dampers(1.0).absorbed;
+    }
+    return absorbed_per_square_;
   }
   /// Damper j of end e's messenger curvature from its last direct solve (NaN: none).
   double messenger_curvature(std::size_t e, std::size_t j) const { return curvatures_[e][j]; }
 
  private:
+  bool all_fixed(std::size_t e) const {
+    return std::all_of(fixed_[e].begin(), fixed_[e].end(), [](const auto& z) { return z.has_value(); });
+  }
+
+  /// An end whose every impedance the polish fixed: the string is linear then, and its
+  /// response is the travelling-wave solution with these impedances, whose clamp
+  /// velocities w |Y_j| are the fixed point itself (solve_end would find them again
+  /// by iterating; the polish's root search asks for some 200 amplitudes a trial).
+  EndSolution fixed_end(std::size_t e, double y) const {
+    EndSolution s;
+    for (const auto& z : fixed_[e]) s.impedances.push_back(*z);
+    s.response = end_response(wave_, layouts_[e].positions, s.impedances, y);
+    for (const std::complex<double>& yj : s.response.damper_displacement) {
+      s.velocities.push_back(std::max(wave_.angular_frequency * std::abs(yj), options_.fixed_point.velocity_floor));
+    }
+    s.converged = true;
+    return s;
+  }
+
   /// The weak-damper form: the string's own standing wave, Y_j = Y sin(k a_j), each
   /// damper absorbing Re Z w^2 |Y_j|^2 / 2 at v_j = w |Y_j|; no fixed point.
   EndSolution weak_end(const EndLayout& layout, const ClampImpedance& z, double y) const {
@@ -260,6 +294,7 @@ class FrequencyBalance {
   /// Per end and damper: the impedance fixed by the polish (none: the table's at v).
   std::vector<std::vector<std::optional<std::complex<double>>>> fixed_;
   std::vector<std::vector<double>> curvatures_;  ///< per end and damper: the last direct solve's messenger curvature
+  std::optional<double> absorbed_per_square_;    ///< cached by absorbed_per_square()
 };
 
 void fill_undamped(const Span& span, double f, BalancePoint& p) {
@@ -323,6 +358,9 @@ constexpr double kIdentityTolerance = 1e-8;
 /// impedances (NaN where the ends' fixed point fails; `failure` says the first).
 std::function<double(double)> net_power(FrequencyBalance& balance, std::string& failure) {
   return [&balance, &failure](double y) {
+    if (const std::optional<double> per_square = balance.absorbed_per_square()) {
+      return balance.wind(y) - balance.self_damping(y) - *per_square * y * y;
+    }
     const EndsAtAmplitude at = balance.dampers(y);
     if (!at.known) {
       if (failure.empty()) failure = fmt::format("at Y = {:.3g} m: {}", y, at.failure);

@@ -50,6 +50,27 @@ TEST(EndFixedPoint, EachDampersVelocityIsThatOfItsOwnResponse) {
   }
 }
 
+// The polish's balance rests on this (span/balance.cpp): with every impedance held
+// fixed the end is linear, its fixed point is the response itself, and the power
+// absorbed grows as the antinode amplitude squared.
+TEST(EndFixedPoint, ConstantImpedancesGiveTheResponseItselfAndPowerAsTheSquare) {
+  const StringWave wave = wave_at(20.0);
+  const std::vector<double> positions{0.8, 1.6, 2.9};
+  const std::vector<std::complex<double>> z{120.0 + 30.0i, 80.0 - 20.0i, 40.0 + 90.0i};
+  const auto constant = [&](std::size_t j, double) { return std::optional<std::complex<double>>(z[j]); };
+  const double per_square = end_response(wave, positions, z, 1.0).absorbed_power;
+  for (const double antinode : {1e-4, 3e-3, 2e-2}) {
+    const EndSolution s = solve_end(wave, positions, constant, antinode, {});
+    ASSERT_TRUE(s.converged) << s.failure;
+    const EndResponse direct = end_response(wave, positions, z, antinode);
+    for (std::size_t j = 0; j < positions.size(); ++j) {
+      const double v = wave.angular_frequency * std::abs(direct.damper_displacement[j]);
+      EXPECT_NEAR(s.velocities[j], v, 1e-12 * v);
+    }
+    EXPECT_NEAR(direct.absorbed_power, per_square * antinode * antinode, 1e-12 * direct.absorbed_power);
+  }
+}
+
 TEST(EndFixedPoint, AnUnknownImpedanceIsAFailureNotANumber) {
   const auto none = [](std::size_t, double v) {
     return v < 0.01 ? std::optional<std::complex<double>>(100.0) : std::nullopt;
