@@ -96,6 +96,31 @@ Eigen::VectorXd HarmonicBalance::linear_guess(const Excitation& excitation) cons
   return q;
 }
 
+Eigen::VectorXd HarmonicBalance::residual_change(const Excitation& from, const Excitation& to,
+                                                 const Eigen::VectorXd& q) const {
+  const int c_count = static_cast<int>(harmonic_.size());
+  const double w0 = from.angular_frequency(), w1 = to.angular_frequency();
+  const Eigen::Map<const Eigen::Matrix2Xd> coefficients(q.data(), 2, c_count);
+  Eigen::Matrix2Xd d_inertia(2, c_count);  // of M u'': -k^2 W^2 M per harmonic
+  for (int c = 0; c < c_count; ++c) {
+    const double k = harmonic_[static_cast<std::size_t>(c)];
+    d_inertia.col(c) = -k * k * (w1 * w1 - w0 * w0) * (arm_.mass_matrix() * coefficients.col(c));
+  }
+  // R holds +W^2 X L sin(W t).
+  const Eigen::Vector2d d_excitation =
+      (w1 * w1 * to.displacement_amplitude - w0 * w0 * from.displacement_amplitude) * arm_.load_vector();
+  Eigen::VectorXd d(unknown_count());
+  if (!options_.collocation) {
+    Eigen::Map<Eigen::Matrix2Xd> change(d.data(), 2, c_count);
+    change = d_inertia;
+    change.col(excitation_column_) += d_excitation;
+  } else {
+    Eigen::Map<Eigen::Matrix2Xd> change(d.data(), 2, samples_);
+    change = d_inertia * basis_.transpose() + d_excitation * basis_.col(excitation_column_).transpose();
+  }
+  return d;
+}
+
 HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation, const Eigen::VectorXd& q,
                                                     const cable::CableState* start, int periods, unsigned derivatives,
                                                     HarmonicBalanceWorkspace& workspace) const {

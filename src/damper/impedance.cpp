@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include <Eigen/LU>
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
@@ -49,15 +50,21 @@ void SolverOptions::validate() const {
 
 bool same_amplitude(double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); }
 
-Eigen::VectorXd Continuation::predictor(const Excitation& target) const {
-  Eigen::VectorXd scaled = unknowns * (target.displacement_amplitude / excitation.displacement_amplitude);
-  if (previous_unknowns.size() != unknowns.size()) return scaled;
+bool Continuation::secant_applies(const Excitation& target) const {
+  if (previous_unknowns.size() != unknowns.size()) return false;
   const double last_step = std::log(excitation.frequency_hz / previous_excitation.frequency_hz);
   const double step = std::log(target.frequency_hz / excitation.frequency_hz);
   const double v = excitation.velocity_amplitude();
   const bool one_velocity =
       same_amplitude(previous_excitation.velocity_amplitude(), v) && same_amplitude(target.velocity_amplitude(), v);
-  if (!(last_step > 0.0 && step > 0.0 && step <= 2.0 * last_step && one_velocity)) return scaled;
+  return last_step > 0.0 && step > 0.0 && step <= 2.0 * last_step && one_velocity;
+}
+
+Eigen::VectorXd Continuation::predictor(const Excitation& target) const {
+  Eigen::VectorXd scaled = unknowns * (target.displacement_amplitude / excitation.displacement_amplitude);
+  if (!secant_applies(target)) return scaled;
+  const double last_step = std::log(excitation.frequency_hz / previous_excitation.frequency_hz);
+  const double step = std::log(target.frequency_hz / excitation.frequency_hz);
   const Eigen::VectorXd previous_scaled =
       previous_unknowns * (target.displacement_amplitude / previous_excitation.displacement_amplitude);
   return scaled + (step / last_step) * (scaled - previous_scaled);
@@ -88,7 +95,7 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
   // of SweepRobustness.TinyAmplitudeNearTheStickResonance then fails at 39.6 Hz.)
   ArmSolution solve(const Excitation& excitation, Continuation& path) override {
     ArmSolution solution = path.empty() ? model_.solve(excitation, model_.linear_guess(excitation), path.memory, workspace_)
-                                        : model_.solve(excitation, path.predictor(excitation), path.memory, workspace_);
+                                        : model_.solve(excitation, predictor(excitation, path), path.memory, workspace_);
     if (!solution.summary.converged() && !path.empty()) {
       // The predictor may lie on another piece: retry from the virgin state and the linear guess.
       HarmonicBalanceMemory cold;
@@ -116,6 +123,17 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
   }
 
  private:
+  /// Where the path's secant does not apply (another amplitude: the span's polish),
+  /// a Newton step from the last solution on the equations at `target` with the
+  /// stored Jacobian: exact in the cable's loads, which depend on q alone.
+  Eigen::VectorXd predictor(const Excitation& target, const Continuation& path) const {
+    if (path.memory.force_jacobian.size() == 0 || path.secant_applies(target)) return path.predictor(target);
+    const Eigen::MatrixXd j = model_.jacobian(target, path.memory.force_jacobian);
+    const Eigen::VectorXd q = path.unknowns - Eigen::PartialPivLU<Eigen::MatrixXd>(j).solve(
+                                                   model_.residual_change(path.excitation, target, path.unknowns));
+    return q.allFinite() ? q : path.predictor(target);
+  }
+
   HarmonicBalance model_;
   HarmonicBalanceWorkspace workspace_;
 };

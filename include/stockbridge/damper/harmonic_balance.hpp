@@ -125,6 +125,9 @@ class HarmonicBalance {
   [[nodiscard]] HarmonicBalanceEvaluation evaluate(const Excitation& excitation, const Eigen::VectorXd& q,
                                                    const cable::CableState* start, int periods, unsigned derivatives,
                                                    HarmonicBalanceWorkspace& workspace) const;
+  /// R(q) at `to` minus R(q) at `from`: what the inertia and the excitation change
+  /// (the cable's loads depend on the coefficients q alone).
+  Eigen::VectorXd residual_change(const Excitation& from, const Excitation& to, const Eigen::VectorXd& q) const;
   /// J = the force Jacobian + the inertia terms at this frequency.
   Eigen::MatrixXd jacobian(const Excitation& excitation, const Eigen::MatrixXd& force_jacobian) const;
   /// The same into `jacobian`, reusing its storage (Newton's inner loop).

@@ -63,6 +63,8 @@ struct Continuation {
   /// on upwards by a step at most twice the last, the secant through the last two
   /// solutions (so scaled) extrapolated in log frequency.
   Eigen::VectorXd predictor(const Excitation& target) const;
+  /// Whether predictor() takes the secant at `target`.
+  bool secant_applies(const Excitation& target) const;
   /// Moves on to a converged solution (the current one becomes the previous).
   void advance(const Eigen::VectorXd& solution, const Excitation& at);
 };

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/LU>
 #include <gtest/gtest.h>
 
 #include "stockbridge/core/error.hpp"
@@ -15,6 +16,7 @@
 #include "stockbridge/damper/impedance.hpp"
 #include "stockbridge/damper/steady_state.hpp"
 #include "stockbridge/damper/sweep.hpp"
+#include "stockbridge/damper/tracker.hpp"
 #include "support/damper_fixtures.hpp"
 
 namespace stockbridge::damper {
@@ -149,6 +151,55 @@ TEST(HarmonicBalance, FrequencyDerivativeMatchesFiniteDifferences) {
   ASSERT_TRUE(at.ok() && plus.ok() && minus.ok());
   const Eigen::VectorXd fd = (plus.residual - minus.residual) / (2.0 * h * 2.0 * std::numbers::pi);
   EXPECT_LT((at.d_frequency - fd).norm(), 1e-6 * at.d_frequency.norm());
+}
+
+// The predictor off the secant (impedance.cpp) rests on this: between two
+// excitations, at the same coefficients and start state, the residual changes by
+// what the inertia and the excitation change, exactly (the cable's loads depend on
+// q alone). Harmonic balance and collocation, frequency and amplitude both moved.
+TEST(HarmonicBalance, ResidualChangeIsTheDifferenceOfTwoEvaluations) {
+  const Arm arm(sauter_arm());
+  for (const bool collocation : {false, true}) {
+    HarmonicBalanceOptions options;
+    options.collocation = collocation;
+    HarmonicBalance hb(arm, options);
+    const Excitation from = Excitation::from_velocity(15.0, 0.2), to = Excitation::from_velocity(17.0, 0.26);
+    const Eigen::VectorXd q = hb.linear_guess(from) * 1.4;  // slipping
+    HarmonicBalanceWorkspace workspace = hb.make_workspace();
+    const HarmonicBalanceEvaluation a = hb.evaluate(from, q, nullptr, 2, HarmonicBalance::kNone, workspace);
+    const HarmonicBalanceEvaluation b = hb.evaluate(to, q, nullptr, 2, HarmonicBalance::kNone, workspace);
+    ASSERT_TRUE(a.ok() && b.ok());
+    const Eigen::VectorXd change = hb.residual_change(from, to, q);
+    EXPECT_LT((b.residual - a.residual - change).norm(), 1e-12 * change.norm()) << "collocation " << collocation;
+    EXPECT_GT(change.norm(), 1e-3 * a.residual.norm());  // a change worth testing
+  }
+}
+
+// Solved again at another velocity of the same frequency (the span's polish), from
+// the last solution: the Newton step with its stored Jacobian starts far closer to
+// the new solution than the last one scaled to the new amplitude does.
+TEST(HarmonicBalance, AnotherAmplitudeStartsFromTheNewtonStepOfTheLastSolution) {
+  const Damper damper = damper_of({sauter_arm()}, 0.0);
+  SolverOptions options;
+  DamperTracker tracker(damper, options);
+  const double f = 15.0;
+  ASSERT_TRUE(tracker.solve(Excitation::from_velocity(f, 0.2)).converged());
+  const DamperTracker::Checkpoint anchor = tracker.checkpoint();
+  const Continuation& last = anchor.front();
+  const Excitation target = Excitation::from_velocity(f, 0.21);
+  const DamperSteadyState exact = solve_steady_state(damper, target, options);
+  ASSERT_TRUE(exact.point.converged());
+  const ImpedancePoint tracked = tracker.solve(target);
+  ASSERT_TRUE(tracked.converged());
+  EXPECT_NEAR(std::abs(tracked.impedance - exact.point.impedance), 0.0, 1e-5 * std::abs(exact.point.impedance));
+  HarmonicBalance hb(damper.arms().front(), options.harmonic_balance);
+  const Eigen::VectorXd solution = tracker.checkpoint().front().unknowns;
+  const Eigen::VectorXd scaled = last.predictor(target);
+  const Eigen::VectorXd newton =
+      last.unknowns - hb.jacobian(target, last.memory.force_jacobian)
+                          .partialPivLu()
+                          .solve(hb.residual_change(last.excitation, target, last.unknowns));
+  EXPECT_LT((newton - solution).norm(), 0.1 * (scaled - solution).norm());  // 0.028 when written
 }
 
 std::complex<double> arm_impedance(const HarmonicBalanceOptions& options, const Excitation& e,
