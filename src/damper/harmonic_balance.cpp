@@ -96,6 +96,17 @@ Eigen::VectorXd HarmonicBalance::linear_guess(const Excitation& excitation) cons
   return q;
 }
 
+Eigen::VectorXd HarmonicBalance::whole_period_unknowns(const Eigen::VectorXd& q) const {
+  if (symmetry_ != PathSymmetry::half_wave) return q;
+  Eigen::VectorXd whole = Eigen::VectorXd::Zero(2 * (1 + 2 * static_cast<Eigen::Index>(options_.harmonics)));
+  for (std::size_t c = 0; c < harmonic_.size(); ++c) {
+    // Whole periods' columns: the mean, then cos k, sin k for k = 1, 2, ...; here cos k, sin k for odd k.
+    const Eigen::Index column = 2 * harmonic_[c] - 1 + static_cast<Eigen::Index>(c % 2);
+    whole.segment<2>(2 * column) = q.segment<2>(2 * static_cast<Eigen::Index>(c));
+  }
+  return whole;
+}
+
 Eigen::VectorXd HarmonicBalance::residual_change(const Excitation& from, const Excitation& to,
                                                  const Eigen::VectorXd& q) const {
   const int c_count = static_cast<int>(harmonic_.size());

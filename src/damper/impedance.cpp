@@ -105,6 +105,12 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
         path.memory = std::move(cold);
       }
     }
+    if (!solution.summary.converged() && model_.options().uses_half_wave()) {
+      // No symmetric steady state found: look for one over whole periods, which need
+      // not be symmetric. The path stays at its last symmetric solution.
+      ArmSolution whole = solve_over_whole_periods(excitation, solution.unknowns, path);
+      if (whole.summary.converged()) return whole;
+    }
     if (solution.summary.converged()) advance(path, solution, excitation);
     return solution;
   }
@@ -134,8 +140,38 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
     return q.allFinite() ? q : path.predictor(target);
   }
 
+  /// The harmonic balance over whole periods (every harmonic and the mean) from the
+  /// virgin cable: from `failed`, where the symmetric solve ended (often close, its
+  /// line search stalled at a kink), else from the path's predictor. Its Jacobian's
+  /// sign belongs to another system than the path's: no fold is read off it.
+  ArmSolution solve_over_whole_periods(const Excitation& excitation, const Eigen::VectorXd& failed,
+                                       const Continuation& path) {
+    if (!whole_periods_) {
+      HarmonicBalanceOptions options = model_.options();
+      options.half_wave = false;
+      whole_periods_.emplace(model_.arm(), options);
+    }
+    HarmonicBalance& model = whole_periods_->model;
+    ArmSolution solution;
+    for (const Eigen::VectorXd& start : {failed, path.empty() ? Eigen::VectorXd() : path.predictor(excitation)}) {
+      if (start.size() != model_.unknown_count() || !start.allFinite()) continue;
+      HarmonicBalanceMemory virgin;
+      solution = model.solve(excitation, model_.whole_period_unknowns(start), virgin, whole_periods_->workspace);
+      if (solution.summary.converged()) break;
+    }
+    solution.jacobian_sign = 0;
+    return solution;
+  }
+
   HarmonicBalance model_;
   HarmonicBalanceWorkspace workspace_;
+  struct WholePeriods {
+    WholePeriods(const Arm& arm, const HarmonicBalanceOptions& options)
+        : model(arm, options), workspace(model.make_workspace()) {}
+    HarmonicBalance model;
+    HarmonicBalanceWorkspace workspace;
+  };
+  std::optional<WholePeriods> whole_periods_;  ///< built at the first fallback
 };
 
 /// Time integration and shooting always start from the all-stick linear steady state

@@ -125,6 +125,10 @@ class HarmonicBalance {
   [[nodiscard]] HarmonicBalanceEvaluation evaluate(const Excitation& excitation, const Eigen::VectorXd& q,
                                                    const cable::CableState* start, int periods, unsigned derivatives,
                                                    HarmonicBalanceWorkspace& workspace) const;
+  /// Coefficients q of this model in the layout of the same model over whole periods
+  /// (half_wave = false): the odd harmonics in their places, the mean and the even
+  /// harmonics zero. q itself where this model uses whole periods already.
+  Eigen::VectorXd whole_period_unknowns(const Eigen::VectorXd& q) const;
   /// R(q) at `to` minus R(q) at `from`: what the inertia and the excitation change
   /// (the cable's loads depend on the coefficients q alone).
   Eigen::VectorXd residual_change(const Excitation& from, const Excitation& to, const Eigen::VectorXd& q) const;
