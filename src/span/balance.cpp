@@ -182,15 +182,7 @@ class FrequencyBalance {
   EndsAtAmplitude dampers(double y) {
     EndsAtAmplitude out;
     for (std::size_t e = 0; e < layouts_.size(); ++e) {
-      const EndLayout& layout = layouts_[e];
-      const ClampImpedance z = [&](std::size_t j, double v) -> std::optional<std::complex<double>> {
-        if (fixed_[e][j]) return fixed_[e][j];
-        return tables_[layout.damper[j]].at(index_, v);
-      };
-      EndSolution s = options_.damper_model == DamperModel::weak ? weak_end(layout, z, y)
-                      : all_fixed(e)                             ? fixed_end(e, y)
-                                                                 : solve_end(wave_, layout.positions, z, y,
-                                                                             options_.fixed_point, last_velocities_[e]);
+      EndSolution s = end(e, y);
       if (!s.converged) {
         out.known = false;
         out.failure = fmt::format("end {}: {}", e + 1, s.failure);
@@ -232,7 +224,9 @@ class FrequencyBalance {
       for (std::size_t e = 0; e < layouts_.size(); ++e) {
         if (!all_fixed(e)) return std::nullopt;
       }
-      absorbed_per_square_ = dampers(1.0).absorbed;
+      double absorbed = 0.0;
+      for (std::size_t e = 0; e < layouts_.size(); ++e) absorbed += end(e, 1.0).response.absorbed_power;
+      absorbed_per_square_ = absorbed;
     }
     return absorbed_per_square_;
   }
@@ -240,6 +234,18 @@ class FrequencyBalance {
   double messenger_curvature(std::size_t e, std::size_t j) const { return curvatures_[e][j]; }
 
  private:
+  /// End e's dampers at antinode amplitude y (its fixed point from the last one solved).
+  EndSolution end(std::size_t e, double y) const {
+    const EndLayout& layout = layouts_[e];
+    const ClampImpedance z = [&](std::size_t j, double v) -> std::optional<std::complex<double>> {
+      if (fixed_[e][j]) return fixed_[e][j];
+      return tables_[layout.damper[j]].at(index_, v);
+    };
+    if (options_.damper_model == DamperModel::weak) return weak_end(layout, z, y);
+    if (all_fixed(e)) return fixed_end(e, y);
+    return solve_end(wave_, layout.positions, z, y, options_.fixed_point, last_velocities_[e]);
+  }
+
   bool all_fixed(std::size_t e) const {
     return std::all_of(fixed_[e].begin(), fixed_[e].end(), [](const auto& z) { return z.has_value(); });
   }
