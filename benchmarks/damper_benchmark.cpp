@@ -1,6 +1,6 @@
 // The product's main job: the impedance sweep of examples/sauter2003.toml
 // (200 frequencies log-spaced over 1-100 Hz at 0.05 and 0.2 m/s, harmonic
-// balance, 9 harmonics), on 1 and 2 threads, with and without continuation blocks,
+// balance at its defaults), on 1 and 2 threads, with and without continuation blocks,
 // and at one amplitude; and the cost of one point per method.
 
 #include <string>

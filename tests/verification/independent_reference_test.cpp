@@ -5,15 +5,15 @@
 // catch an error in the cable law.
 //
 // Tolerance: Re Z and Im Z each within 0.3 % of |Z|. Why (measured in Release):
-// * the library at its defaults (40 Gauss points, 9 harmonics, 128 samples) is off
-//   its refined self (160 points; 15 harmonics and 1024 samples, or time integration
-//   with 1024 steps) by at most 0.1 % of |Z| (15 Hz, 0.05 m/s: 284.16 + 176.49i
-//   against 284.00 + 176.76i);
+// * the library at its defaults (40 Gauss points, 17 harmonics, 144 samples) is off
+//   its refined self (160 points; 41 harmonics and 1024 samples) by at most 0.04 %
+//   of |Z| at these points (15 Hz, 0.05 m/s: 284.07 + 176.65i against 284.00 +
+//   176.77i; with the defaults before issue 18, 9 harmonics and 128 samples, 0.1 %);
 // * the reference with n = 80 sections is off n = 160 by at most 0.02 % of |Z|
 //   (n = 40: 0.08 %); halving its time step changes Z by about 1e-6 |Z|;
 // * refined, the two agree to 1e-4 |Z| (40 Hz, 0.2 m/s: 140.674 + 139.892i against
 //   140.677 + 139.904i), see ReferenceConvergesTowardRefinedLibrary.
-// So the sum of the discretisation errors is at most 0.12 % (0.2 % with the short
+// So the sum of the discretisation errors is at most 0.06 % (0.12 % with the short
 // scale's coarser reference) and 0.3 % leaves a margin. An error of 5 % in the slip
 // moment h (given to the library only) moves its Z by 2.6 to 6.9 % of |Z| at these
 // points: every point then fails, at both scales.
@@ -173,13 +173,13 @@ INSTANTIATE_TEST_SUITE_P(Points, IndependentReference,
 TEST(IndependentReference, ReferenceConvergesTowardRefinedLibrary) {
   const double f = 40.0, v = 0.2;
   SolverOptions fine;
-  if (!testing::short_tests()) {  // under the sanitizers this costs too much; 9 harmonics suffice
+  if (!testing::short_tests()) {  // under the sanitizers this costs too much; the defaults suffice
     fine.harmonic_balance.harmonics = 15;
     fine.harmonic_balance.samples = 1024;
   }
   const std::complex<double> library =
       library_point(library_damper(sauter_damper_numbers(160), 160), Excitation::from_velocity(f, v), fine).impedance;
-  // Short scale: the library's 9 harmonics leave it about 4e-4 |Z| off, so only n = 20, 40.
+  // Short scale: the library's defaults leave it about 2e-4 |Z| off, so only n = 20, 40.
   const int coarsest = testing::scaled(40, 20), levels = testing::scaled(3, 2);
   std::vector<double> errors;
   for (int n = coarsest; static_cast<int>(errors.size()) < levels; n *= 2) {
