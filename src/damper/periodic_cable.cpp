@@ -285,18 +285,58 @@ void PeriodicCable::resum_sticking() {
   }
 }
 
-// The parabola through u_{j-1}, u_j, u_{j+1} (at tau = -1, 0, 1) of a coordinate with
-// a discrete extreme at sample j turns at tau* = -b / (2 a), b = (u+ - u-) / 2,
-// a = (u+ - 2 u0 + u-) / 2. There the turning coordinate's value depends on the
-// samples through the parabola's weights only (its slope is zero); the other
-// coordinate's also through tau*, whose derivatives follow from a and b.
+// The path between samples j and j + 1 is the cubic through u_{j-1} .. u_{j+2} with
+// the central differences as its slopes at j and j + 1 (Catmull-Rom): one C1 curve
+// through every sample, for both coordinates alike. A coordinate turns where the
+// cubic's slope, a quadratic in tau (0 < tau < 1), changes sign. A turning point so
+// defined moves continuously with the samples (through a sample, where the slope
+// there is zero, from one interval into the next), and so does the residual; the
+// parabola through three samples had two candidates at each interval's middle,
+// whose values differ. There the turning coordinate's value depends on the samples
+// through the cubic's weights only (its slope is zero); the other coordinate's also
+// through tau*, d tau* / d u_k = -w_k'(tau*) / p''(tau*).
+namespace {
+
+struct CubicWeights {
+  double value[4], slope[4];  // w_k(tau), w_k'(tau) for u_{j-1}, u_j, u_{j+1}, u_{j+2}
+  explicit CubicWeights(double t)
+      : value{0.5 * t * (-1.0 + t * (2.0 - t)), 1.0 + t * t * (-2.5 + 1.5 * t), 0.5 * t * (1.0 + t * (4.0 - 3.0 * t)),
+              0.5 * t * t * (t - 1.0)},
+        slope{0.5 * (-1.0 + t * (4.0 - 3.0 * t)), t * (-5.0 + 4.5 * t), 0.5 * (1.0 + t * (8.0 - 9.0 * t)),
+              t * (1.5 * t - 1.0)} {}
+};
+
+/// The roots of the cubic's slope c1 + 2 c2 tau + 3 c3 tau^2 strictly inside (0, 1),
+/// away from the samples (within 1e-6 of one the turning point is the sample).
+int slope_roots(double c1, double c2, double c3, double roots[2]) {
+  int count = 0;
+  auto keep = [&](double tau) {
+    if (tau > 1e-6 && tau < 1.0 - 1e-6) roots[count++] = tau;
+  };
+  const double a = 3.0 * c3, b = 2.0 * c2;
+  if (std::abs(a) <= 1e-12 * (std::abs(b) + std::abs(c1))) {
+    if (b != 0.0) keep(-c1 / b);
+    return count;
+  }
+  const double discriminant = b * b - 4.0 * a * c1;
+  if (!(discriminant > 0.0)) return 0;
+  // The root of larger magnitude first, then the other from the product: no cancellation.
+  const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
+  const double r1 = q / a, r2 = q != 0.0 ? c1 / q : r1;
+  keep(std::min(r1, r2));
+  keep(std::max(r1, r2));
+  return count;
+}
+
+}  // namespace
+
 void PeriodicCable::find_turning_points(const Eigen::Matrix2Xd& kinematics, bool half_wave,
                                         const Eigen::MatrixXd* basis) {
   const int n = static_cast<int>(kinematics.cols());
   const double wrap = half_wave ? -1.0 : 1.0;  // u_{j + n} = wrap u_j
   turning_points_.clear();
   if (n < 3) return;
-  // Sample j of the periodic path, j from -1 to n: which column, with which sign.
+  // Sample j of the periodic path, j from -1 to n + 1: which column, with which sign.
   struct Wrapped {
     int column;
     double sign;
@@ -306,42 +346,46 @@ void PeriodicCable::find_turning_points(const Eigen::Matrix2Xd& kinematics, bool
     const Wrapped w = wrapped(j);
     return w.sign * kinematics(d, w.column);
   };
-  for (int j = 0; j < n; ++j) {
-    for (int d = 0; d < 2; ++d) {
-      const double um = sample(j - 1, d), u0 = sample(j, d), up = sample(j + 1, d);
-      if (!((u0 - um) * (up - u0) < 0.0)) continue;
-      const double a = 0.5 * (up - 2.0 * u0 + um), b = 0.5 * (up - um);
-      const double tau = -b / (2.0 * a);
-      if (!(std::abs(tau) > 1e-6 && std::abs(tau) <= 0.5)) continue;
-      TurningPoint t;
-      t.time = j + tau;
-      const double weights[3] = {0.5 * tau * (tau - 1.0), 1.0 - tau * tau, 0.5 * tau * (tau + 1.0)};
-      // d tau* / d(u-, u0, u+) of the turning coordinate.
-      const double dtau[3] = {0.25 / a + 0.25 * b / (a * a), -0.5 * b / (a * a), -0.25 / a + 0.25 * b / (a * a)};
-      for (int e = 0; e < 2; ++e) {
-        const double em = sample(j - 1, e), e0 = sample(j, e), ep = sample(j + 1, e);
-        t.kinematics(e) = weights[0] * em + weights[1] * e0 + weights[2] * ep;
-      }
-      if (basis) {
-        const Eigen::Index p = 2 * basis->cols();
-        t.d_x.setZero(p);
-        t.d_phi.setZero(p);
-        const int other = 1 - d;
-        const double em = sample(j - 1, other), ep = sample(j + 1, other), e0 = sample(j, other);
-        const double other_slope = 0.5 * (ep - em) + (ep - 2.0 * e0 + em) * tau;
-        for (int k = -1; k <= 1; ++k) {
-          const Wrapped w = wrapped(j + k);
-          for (Eigen::Index c = 0; c < basis->cols(); ++c) {
-            const double bk = w.sign * (*basis)(w.column, c);
-            t.d_x(2 * c) += weights[k + 1] * bk;
-            t.d_phi(2 * c + 1) += weights[k + 1] * bk;
-            // The other coordinate moves with tau*, which the turning one's samples set.
-            Eigen::VectorXd& d_other = other == 0 ? t.d_x : t.d_phi;
-            d_other(2 * c + d) += other_slope * dtau[k + 1] * bk;
-          }
+  // A turning point of coordinate d at j + tau, where the cubic's p'' is `curvature`.
+  auto add = [&](int j, int d, double tau, double curvature) {
+    const CubicWeights w(tau);
+    TurningPoint t;
+    t.time = j + tau;
+    for (int e = 0; e < 2; ++e) {
+      t.kinematics(e) = 0.0;
+      for (int k = 0; k < 4; ++k) t.kinematics(e) += w.value[k] * sample(j - 1 + k, e);
+    }
+    if (basis) {
+      const Eigen::Index p = 2 * basis->cols();
+      t.d_x.setZero(p);
+      t.d_phi.setZero(p);
+      const int other = 1 - d;
+      double other_slope = 0.0;
+      for (int k = 0; k < 4; ++k) other_slope += w.slope[k] * sample(j - 1 + k, other);
+      Eigen::VectorXd& d_other = other == 0 ? t.d_x : t.d_phi;
+      for (int k = 0; k < 4; ++k) {
+        const Wrapped at = wrapped(j - 1 + k);
+        const double d_tau = -w.slope[k] / curvature;
+        for (Eigen::Index c = 0; c < basis->cols(); ++c) {
+          const double bk = at.sign * (*basis)(at.column, c);
+          t.d_x(2 * c) += w.value[k] * bk;
+          t.d_phi(2 * c + 1) += w.value[k] * bk;
+          // The other coordinate moves with tau*, which the turning one's samples set.
+          d_other(2 * c + d) += other_slope * d_tau * bk;
         }
       }
-      turning_points_.push_back(std::move(t));
+    }
+    turning_points_.push_back(std::move(t));
+  };
+  for (int j = 0; j < n; ++j) {
+    for (int d = 0; d < 2; ++d) {
+      const double u[4] = {sample(j - 1, d), sample(j, d), sample(j + 1, d), sample(j + 2, d)};
+      // The cubic's slope, 0.5 (c1 + 2 c2 tau + 3 c3 tau^2).
+      const double c1 = u[2] - u[0], c2 = 2.0 * u[0] - 5.0 * u[1] + 4.0 * u[2] - u[3],
+                   c3 = -u[0] + 3.0 * u[1] - 3.0 * u[2] + u[3];
+      double roots[2];
+      const int count = slope_roots(c1, c2, c3, roots);
+      for (int r = 0; r < count; ++r) add(j, d, roots[r], c2 + 3.0 * c3 * roots[r]);
     }
   }
   // In time order; those past the last sample come before the next pass's first.

@@ -7,7 +7,7 @@
 // 512 samples are within 1.0e-4 of it, a tenth of the tolerance.
 //
 // The bound holds on this grid, not at every frequency: on 1000 frequencies the
-// defaults are off by more than 0.1 % at 3 of 2000 points (0.153 % at 7.57 Hz,
+// defaults are off by more than 0.1 % at 3 of 2000 points (0.155 % at 7.57 Hz,
 // 0.2 m/s, where the harmonics limit; 0.140 % at 21.5 Hz, 0.05 m/s, where the
 // samples do). docs/damper.md says so.
 //

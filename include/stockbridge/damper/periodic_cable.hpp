@@ -75,9 +75,10 @@ class PeriodicCable {
   const cable::Cable& cable() const { return cantilever_.cable(); }
 
  private:
-  /// A point between two samples where the smooth path through them (the parabola
-  /// through three samples) turns in x or phi: driven, not recorded, so that the cable
-  /// reaches the path's extreme rather than the nearest sample (the loop's tips).
+  /// A point between two samples where the smooth path through them (the cubic
+  /// through four samples with central-difference slopes, one C1 curve for the whole
+  /// period) turns in x or phi: driven, not recorded, so that the cable reaches the
+  /// path's extreme rather than the nearest sample (the loop's tips).
   struct TurningPoint {
     double time = 0.0;             ///< in samples from the pass's start (-1 < time < N - 1)
     Eigen::Vector2d kinematics;    ///< (x, phi)
