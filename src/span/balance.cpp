@@ -535,11 +535,18 @@ std::optional<double> Polisher::run(FrequencyBalance& balance, const double y, s
         }
         // The first step of a frequency takes the slope the last frequency ended with.
         const double secant = -h[e][j] / slopes_[e][j];
-        const double step = std::isfinite(secant) && std::abs(secant) <= 1.0 ? secant
-                            : h_prev.empty()                                  ? h[e][j]
-                                                                              : 0.5 * h[e][j];
-        u_next[e][j] = u[e][j] + step;
+        double step = std::isfinite(secant) && std::abs(secant) <= 1.0 ? secant
+                      : h_prev.empty()                                  ? h[e][j]
+                                                                        : 0.5 * h[e][j];
         const double a = above[e][j], b = below[e][j];
+        // h > 0 at small v and h < 0 at large v: until a bracket is known, a root lies
+        // on the side h points to. Where h is not monotone the secant may point the
+        // other way (and wander); step then as h points, as far as the last step went.
+        if ((std::isnan(a) || std::isnan(b)) && step * h[e][j] < 0.0) {
+          const double last = u_prev.empty() ? 0.0 : std::abs(u[e][j] - u_prev[e][j]);
+          step = std::copysign(std::max(std::abs(h[e][j]), last), h[e][j]);
+        }
+        u_next[e][j] = u[e][j] + step;
         const bool collapsed = std::abs(a - b) <= options_.polish_tolerance;
         // A bracket narrower than the tolerance around a step in h no larger than the
         // direct solves' own scatter (their convergence tolerance) is a solution.
