@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -64,6 +65,21 @@ void print_design_report(const design::DesignStudy& study, const design::DesignR
   }
 }
 
+/// On stderr, as the span command does for its points: which candidates did not
+/// converge, and why (the span, the frequency, the solver's report).
+void print_unconverged_candidates(const design::DesignResult& result, const std::string& output) {
+  std::vector<const design::StudyEvaluation*> unconverged;
+  for (const design::StudyEvaluation& e : result.evaluations) {
+    if (!e.evaluation.converged) unconverged.push_back(&e);
+  }
+  if (unconverged.empty()) return;
+  fmt::print(stderr, "design: {} candidate(s) did not converge (converged = 0, numbers left empty in {}):\n",
+             unconverged.size(), output);
+  for (const design::StudyEvaluation* e : unconverged) {
+    fmt::print(stderr, "  {} {}: {}\n", design::stage_name(e->stage), e->run, e->evaluation.failure);
+  }
+}
+
 int run_design_command(const DesignOptions& options) {
   Processes processes;
   if (processes.mpirun_without_mpi()) {
@@ -101,6 +117,7 @@ int run_design_command(const DesignOptions& options) {
   }
   fmt::print(stderr, "design: {} candidates in {:.1f} s on {} rank(s) x {} thread(s)\n", result.evaluations.size(),
              seconds, processes.size(), options.threads);
+  print_unconverged_candidates(result, options.output);
   if (best) return kSuccess;
   fmt::print(stderr, "design: no candidate is feasible ({} written, {} not)\n", options.output, options.best);
   return kNotConverged;

@@ -1,7 +1,8 @@
 // `stockbridge design` as users run it: a small study end to end (CSV, best.toml,
 // --json), the best design through `stockbridge span` reproducing its objective,
 // the same designs.csv on 1 and 2 threads and on 1 and 2 MPI ranks, a study with
-// no feasible candidate (exit 3), and bad design files (exit 2, one line, no file).
+// no feasible candidate (exit 3), candidates that did not converge listed on stderr,
+// and bad design files (exit 2, one line, no file).
 
 #include <cmath>
 #include <cstdio>
@@ -130,6 +131,38 @@ TEST(DesignCli, AStudyWithNoFeasibleCandidateSaysSoAndExits3) {
   EXPECT_NE(r.err.find("design: no candidate is feasible (designs.csv written, best.toml not)"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "designs.csv"));
   EXPECT_FALSE(std::filesystem::exists(dir / "best.toml"));
+}
+
+// A candidate that does not converge is listed on stderr with the reason, as the
+// span command lists its points: here cables longer than twice the mirror method's
+// specimen (mirror_length 0.3 m), which make the candidate damper invalid.
+TEST(DesignCli, CandidatesThatDidNotConvergeAreListedWithTheReason) {
+  std::string damper = read_text(kDesignExamples + "sauter2003.toml");
+  for (std::size_t at = damper.find("sections = 40"); at != std::string::npos; at = damper.find("sections = 40", at + 1)) {
+    damper.insert(at, "mirror_length = 0.3\n");
+    at += 20;
+  }
+  const std::string study = "damper = \"damper.toml\"\nspans = [\"" + kDesignExamples +
+                            "aster570_400m.toml\"]\nsamples = 4\npolish = 0\npoints = " + std::to_string(kPoints) +
+                            "\nseed = 3\n"
+                            "[[variable]]\nname = \"arm.left.cable.length\"\nmin = 0.1\nmax = 0.9\n"
+                            "[[tie]]\nname = \"arm.right.cable.length\"\nequals = \"arm.left.cable.length\"\n";
+  const auto dir = study_folder("design-unconverged", study);
+  std::ofstream(dir / "damper.toml") << damper;
+  const CliResult r = run_cli("design study.toml --quiet -o designs.csv --best best.toml", dir);
+  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 3) << r.err;
+  const std::string csv = read_text(dir / "designs.csv");
+  int unconverged = 0;
+  for (std::size_t at = csv.find(",0,0\n"); at != std::string::npos; at = csv.find(",0,0\n", at + 1)) ++unconverged;
+  ASSERT_GT(unconverged, 0) << csv;
+  EXPECT_NE(r.err.find("design: " + std::to_string(unconverged) +
+                       " candidate(s) did not converge (converged = 0, numbers left empty in designs.csv):\n  sample "),
+            std::string::npos)
+      << r.err;
+  int reasons = 0;
+  const std::string reason = "the candidate damper is not valid: ";
+  for (std::size_t at = r.err.find(reason); at != std::string::npos; at = r.err.find(reason, at + 1)) ++reasons;
+  EXPECT_EQ(reasons, unconverged) << r.err;
 }
 
 struct BadStudy {
