@@ -134,17 +134,23 @@ TEST(SpanBalance, InterpolatedColumnsArePolishedToTheDirectSolution) {
   for (const BalancePoint& p : b.points) expect_the_direct_solution(span, p);
 }
 
+/// A candidate of examples/design_aster570.toml on the span: the example damper with
+/// both arms' mass and cable length set (the inertia keeping the arm's radius of
+/// gyration, as the study does), both span ends' dampers at `position`.
+Span design_candidate_span(double mass, double cable_length, double position) {
+  damper::ArmDescription arm = stockbridge::testing::sauter_arm();
+  arm.inertia *= mass / arm.mass;
+  arm.mass = mass;
+  arm.cable = cable::CableDescription::uniform(cable_length, 40, 2.8, {{20.0, 0.7}});
+  return aster_span({{stockbridge::testing::damper_of({arm, arm}), position, true, "candidate"}});
+}
+
 // A candidate of examples/design_aster570.toml (heavier masses on longer cables, far
 // out on the span) whose direct solve at 14.15 Hz finds no steady state with
 // half-wave symmetry (the line search stalls); harmonic balance over whole periods
 // finds it, and the point converges.
 TEST(SpanBalance, ADirectSolveWithoutASymmetricSteadyStateFallsBackToWholePeriods) {
-  damper::ArmDescription arm = stockbridge::testing::sauter_arm();
-  const double mass = 1.4206291098962538;
-  arm.inertia *= mass / arm.mass;
-  arm.mass = mass;
-  arm.cable = cable::CableDescription::uniform(0.2921970480191521, 40, 2.8, {{20.0, 0.7}});
-  const Span span = aster_span({{stockbridge::testing::damper_of({arm, arm}), 2.433679807698354, true, "candidate"}});
+  const Span span = design_candidate_span(1.4206291098962538, 0.2921970480191521, 2.433679807698354);
   const std::vector<double> f{14.148462654115345};
   const BalanceOptions options = fast_options();
   const SpanBalance b = run_balance(span, f, impedance_tables(span, f, options), options);
@@ -159,12 +165,7 @@ TEST(SpanBalance, ADirectSolveWithoutASymmetricSteadyStateFallsBackToWholePeriod
 // pointed back and forth across the dip until the polish gave up after 60 trials;
 // until a bracket is found a step now goes where h points.
 TEST(SpanBalance, APolishWhoseSecantPointsAwayFromTheRootStillFindsIt) {
-  damper::ArmDescription arm = stockbridge::testing::sauter_arm();
-  const double mass = 0.8737541098962538;
-  arm.inertia *= mass / arm.mass;
-  arm.mass = mass;
-  arm.cable = cable::CableDescription::uniform(0.2853220480191521, 40, 2.8, {{20.0, 0.7}});
-  const Span span = aster_span({{stockbridge::testing::damper_of({arm, arm}), 0.8711798076983541, true, "candidate"}});
+  const Span span = design_candidate_span(0.8737541098962538, 0.2853220480191521, 0.8711798076983541);
   const std::vector<double> f = band_frequencies(span, 100);
   const BalanceOptions options = fast_options();
   const SpanBalance b = run_balance(span, f, impedance_tables(span, f, options), options);
