@@ -1,6 +1,6 @@
 // libFuzzer target: strand description files. Either one InputError line naming
 // the file, or a strand whose bending-stiffness bounds are finite and ordered
-// (or a NumericalError for sizes that overflow a double, as documented).
+// (or a NumericalError for sizes outside a double's range, as documented).
 
 #include <cmath>
 

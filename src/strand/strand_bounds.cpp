@@ -85,8 +85,10 @@ StrandBounds strand_bounds(const Strand& strand) {
     no_slip += n / 2.0 * std::numbers::pi * r * r * (r * r / 2.0 + R * R) * std::pow(cos_lay_angle(layer), 3);
   }
   const StrandBounds bounds{strand.youngs_modulus * free_wires, strand.youngs_modulus * no_slip};
-  if (!std::isfinite(bounds.ei_min) || !std::isfinite(bounds.ei_max)) {
-    throw NumericalError(fmt::format("strand bending stiffness overflows (ei_min = {}, ei_max = {} N m^2)",
+  // Absurd sizes leave a double's range: r^4 overflows, or underflows to zero or to
+  // subnormals whose few digits no longer keep ei_min <= ei_max.
+  if (!std::isnormal(bounds.ei_min) || !std::isnormal(bounds.ei_max)) {
+    throw NumericalError(fmt::format("strand bending stiffness outside a double's range (ei_min = {}, ei_max = {} N m^2)",
                                      format_value(bounds.ei_min), format_value(bounds.ei_max)));
   }
   return bounds;

@@ -74,7 +74,8 @@ void check_lay_angle(const StrandLayer& layer, std::string_view name);
 void validate(const Strand& strand);
 
 /// EI_min and EI_max of `strand` (validated first; throws InvalidParameter, or
-/// NumericalError if absurd sizes overflow a double).
+/// NumericalError if absurd sizes take them outside a double's range, overflowing or
+/// underflowing).
 StrandBounds strand_bounds(const Strand& strand);
 
 }  // namespace stockbridge::strand

@@ -125,6 +125,17 @@ TEST(StrandBounds, SingleWireHasEqualBoundsAndScalesWithE) {
   EXPECT_EQ(Strand{}.youngs_modulus, 210e9);
 }
 
+// Sizes a double cannot hold the stiffness of: r^4 overflows (a 1e100 m core), or
+// underflows to zero (1e-300 m: 0 < ei_min failed, a fuzzing finding) or to
+// subnormals (1e-80 m: ei of order 1e-310, a few digits left). A NumericalError,
+// not bounds that break 0 < ei_min <= ei_max.
+TEST(StrandBounds, SizesOutsideADoublesRangeAreANumericalError) {
+  for (const double radius : {1e100, 1e-300, 1e-80}) {
+    EXPECT_THROW(strand_bounds(Strand{radius, kE, {}}), NumericalError) << radius;
+  }
+  EXPECT_GT(strand_bounds(Strand{1e-70, kE, {}}).ei_min, 0.0);  // 1.6e-269 N m^2: still normal
+}
+
 TEST(StrandValidation, NamesTheFieldTheValueAndTheExpectation) {
   auto with = [](const std::function<void(Strand&)>& change) {
     Strand strand = nineteen_wire();
