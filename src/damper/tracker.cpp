@@ -92,6 +92,10 @@ void DamperTracker::restore(const Checkpoint& checkpoint) {
   for (std::size_t k = 0; k < arms_.size(); ++k) arms_[k].set_path(checkpoint[k]);
 }
 
+void DamperTracker::forget() {
+  for (ArmTracker& arm : arms_) arm.set_path(Continuation{});
+}
+
 ImpedancePoint DamperTracker::solve(const Excitation& excitation) {
   excitation.validate();
   ++solves_;

@@ -15,6 +15,8 @@ std::string_view termination_name(Termination termination) {
     case Termination::not_periodic: return "not_periodic";
     case Termination::energy_mismatch: return "energy_mismatch";
     case Termination::inner_failure: return "inner_failure";
+    case Termination::no_progress: return "no_progress";
+    case Termination::no_root: return "no_root";
   }
   return "unknown";
 }
@@ -43,6 +45,9 @@ std::string what_happened(const SolverSummary& s) {
     case Termination::energy_mismatch:
       return fmt::format("energy balance off by {:.3g} of the apparent power", s.energy_error);
     case Termination::inner_failure: return "a nested solve failed";
+    case Termination::no_progress:
+      return fmt::format("no progress after {} evaluations (residual {:.3g})", s.evaluations, s.residual);
+    case Termination::no_root: return "no root in the range searched";
   }
   return "unknown termination";
 }

@@ -6,10 +6,12 @@
 #include <limits>
 #include <numbers>
 
+#include <Eigen/Dense>
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/damper/tracker.hpp"
+#include "../numerics/nonlinear_system.hpp"
 
 namespace stockbridge::span {
 
@@ -183,9 +185,9 @@ class FrequencyBalance {
     EndsAtAmplitude out;
     for (std::size_t e = 0; e < layouts_.size(); ++e) {
       EndSolution s = end(e, y);
-      if (!s.converged) {
+      if (!s.converged()) {
         out.known = false;
-        out.failure = fmt::format("end {}: {}", e + 1, s.failure);
+        out.failure = fmt::format("end {}: {}", e + 1, brief_report(s.summary));
         return out;
       }
       last_velocities_[e] = s.velocities;
@@ -230,6 +232,15 @@ class FrequencyBalance {
     }
     return absorbed_per_square_;
   }
+  /// d(P_w - P_s)/dY at y (a central difference: the laws are smooth or piecewise linear).
+  double net_power_slope(double y) const {
+    const double dy = 1e-6 * y;
+    return (wind(y + dy) - self_damping(y + dy) - wind(y - dy) + self_damping(y - dy)) / (2.0 * dy);
+  }
+  /// Z of span damper `damper` at clamp velocity v from its table at this frequency.
+  std::optional<std::complex<double>> table_impedance(std::size_t damper, double v) const {
+    return tables_[damper].at(index_, v);
+  }
   /// Damper j of end e's messenger curvature from its last direct solve (NaN: none).
   double messenger_curvature(std::size_t e, std::size_t j) const { return curvatures_[e][j]; }
 
@@ -261,7 +272,7 @@ class FrequencyBalance {
     for (const std::complex<double>& yj : s.response.damper_displacement) {
       s.velocities.push_back(std::max(wave_.angular_frequency * std::abs(yj), options_.fixed_point.velocity_floor));
     }
-    s.converged = true;
+    s.summary.termination = Termination::converged;
     return s;
   }
 
@@ -275,7 +286,8 @@ class FrequencyBalance {
       const double yj = y * std::abs(std::sin(wave_.wavenumber * layout.positions[j]));
       const auto zj = z(j, w * yj);
       if (!zj) {
-        s.failure = fmt::format("damper {}: its impedance is not known near {:.3g} m/s", j + 1, w * yj);
+        s.summary.termination = Termination::inner_failure;
+        s.summary.where = fmt::format("damper {}: its impedance is not known near {:.3g} m/s", j + 1, w * yj);
         return s;
       }
       s.velocities.push_back(w * yj);
@@ -285,7 +297,7 @@ class FrequencyBalance {
       s.response.damper_power += p;
       s.response.absorbed_power += p;
     }
-    s.converged = true;
+    s.summary.termination = Termination::converged;
     return s;
   }
 
@@ -385,35 +397,39 @@ std::optional<double> balanced_amplitude(const Span& span, FrequencyBalance& bal
                               options.amplitude_max_over_diameter * d, options.root);
 }
 
-std::vector<std::vector<double>> velocities_of(const EndsAtAmplitude& at) {
-  std::vector<std::vector<double>> v;
-  for (const EndSolution& end : at.ends) v.push_back(end.velocities);
-  return v;
-}
 
 /// The polish (BalanceOptions::polish): the balance found on the tables refined with
-/// each damper's impedance solved directly. At trial clamp velocities v, each
-/// damper is solved directly there (Z_j = Z(v_j)) and the span balanced with these
-/// impedances held fixed: the smallest stable amplitude of P_w - P_s - P_d with
-/// constant impedances (a smooth function of them: no fixed point in v, no table),
-/// whose dampers move at velocities G(v). The root of h(u) = log G(v) - u, u = log v,
-/// is found by the secant method for each damper, bracketed. At the root every
-/// damper's Z is the directly solved one at its own clamp velocity.
+/// each damper's impedance solved directly, all dampers' clamp velocities as one
+/// system. At trial clamp velocities v (u = log v, one unknown per damper of end 1
+/// where end 2 mirrors it, else per damper and end), each damper is solved directly
+/// there (Z_k = Z(v_k)) and the span balanced with these impedances held fixed: the
+/// smallest stable amplitude of P_w - P_s - P_d with constant impedances, whose
+/// dampers move at velocities G(v). The root of h(u) = log G(v) - u is found by
+/// Newton's method with the Jacobian
+///     dh/du = d log G / dZ . diag(dZ_k / du_k) - I,
+/// where d log G / dZ is exact (the balance with fixed impedances is smooth in them:
+/// end_response_tangent and the root's slope) and dZ_k / du_k, the one costly
+/// derivative, a secant through the damper's last two direct solves (a damper's Z
+/// depends on its own velocity alone). At the root every damper's Z is the directly
+/// solved one at its own clamp velocity.
 ///
 /// Along the band, each damper is followed by harmonic balance solved from its last
 /// solution (a DamperTracker; every trial of one frequency from that frequency's
 /// first solution, so that Z is a function of v even where two steady states of
 /// the damper coexist), the first trial is the line through the last two
-/// frequencies' solutions in (log f, log v) and the secant starts with the last
-/// frequency's slope: a few direct solves a frequency.
+/// frequencies' solutions in (log f, log v) and the secants start with the last
+/// frequency's slopes: a few direct solves a frequency.
 class Polisher {
  public:
   Polisher(const Span& span, const BalanceOptions& options) : span_(span), options_(options) {
     for (const SpanDamper& d : span.dampers()) trackers_.emplace_back(d.damper, options.table.solver);
   }
 
-  /// The balance amplitude with directly solved impedances, from the tables' one, y.
-  std::optional<double> run(FrequencyBalance& balance, double y, std::string& failure);
+  /// The balance amplitude with directly solved impedances: from the tables' balance
+  /// amplitude y, or without it from the last frequencies' solutions (continues()).
+  std::optional<double> run(FrequencyBalance& balance, std::optional<double> y, std::string& failure);
+  /// Whether a frequency was polished before (since forget()): run can continue from it.
+  bool continues() const { return !history_.empty(); }
   /// Drops what the last frequencies handed on (after a failure: it may mislead).
   void forget() {
     slopes_.clear();
@@ -427,154 +443,240 @@ class Polisher {
   }
 
  private:
-  bool solve_at_velocities(FrequencyBalance& balance, const std::vector<std::vector<double>>& velocities,
-                           std::string& failure);
-  /// The first trial velocities (log) of a frequency: from the last two, else `u`.
-  void first_trial(double log_f, std::vector<std::vector<double>>& u) const;
+  /// One unknown: a damper of the span and the (end, index) slots whose velocity it is.
+  struct Unknown {
+    std::size_t damper;
+    std::vector<std::pair<std::size_t, std::size_t>> slots;
+  };
+  /// The span at trial velocities: the balance with the directly solved impedances.
+  struct Trial {
+    Eigen::VectorXd u;                          ///< log v
+    std::vector<damper::ImpedancePoint> direct;  ///< per unknown, its damper solved directly
+    std::vector<std::complex<double>> z;        ///< per unknown
+    double absorbed_per_square = 0.0;           ///< P_d(1): the ends' P_d / Y^2, W/m^2
+    double amplitude = 0.0;                     ///< Y with these impedances held fixed
+    Eigen::VectorXd h;                          ///< log G - u
+    double norm = 0.0;                          ///< max |h|
+  };
+
+  std::vector<Unknown> unknowns_of(const FrequencyBalance& balance) const;
+  /// Solves every damper directly at exp(u) and balances the span with those impedances.
+  std::optional<Trial> evaluate(FrequencyBalance& balance, const Eigen::VectorXd& u, std::string& failure);
+  /// dh/du at a trial (the impedances fixed in `balance` are the trial's).
+  Eigen::MatrixXd jacobian(FrequencyBalance& balance, const Trial& trial) const;
+  /// The first trial velocities (log) of a frequency from the last frequencies'
+  /// solutions (the line through the last two, or the last); false without any.
+  bool first_trial(double log_f, Eigen::VectorXd& u) const;
+  void update_slopes(const Trial& trial);
 
   const Span& span_;
   const BalanceOptions& options_;
   std::vector<damper::DamperTracker> trackers_;  ///< one per damper of the span
   std::vector<std::optional<damper::DamperTracker::Checkpoint>> anchors_;  ///< per damper: this frequency's first solution
-  std::vector<std::vector<double>> slopes_;  ///< dh/du at the last solution, per end and damper (NaN: unknown)
+  std::vector<Unknown> unknowns_;
+  std::vector<std::complex<double>> slopes_;  ///< dZ/du per unknown, the last secant (NaN: unknown)
+  std::optional<Trial> last_solved_;          ///< this frequency's last trial, for the secants
   struct Solution {
     double log_f;
-    std::vector<std::vector<double>> u;  ///< log v* per end and damper
+    Eigen::VectorXd u;  ///< log v* per unknown
   };
   std::vector<Solution> history_;  ///< the frequencies polished
 };
 
-/// Solves every damper directly at its clamp velocity and fixes its impedance there.
-bool Polisher::solve_at_velocities(FrequencyBalance& balance, const std::vector<std::vector<double>>& velocities,
-                                   std::string& failure) {
-  const double f = balance.wave().angular_frequency / (2.0 * std::numbers::pi);
-  struct Solved {
-    std::size_t damper;
-    double velocity;
-    damper::ImpedancePoint point;
-  };
-  std::vector<Solved> solved;  // the ends of a symmetric span ask for the same point twice
-  for (std::size_t e = 0; e < velocities.size(); ++e) {
-    for (std::size_t j = 0; j < velocities[e].size(); ++j) {
-      const double v = velocities[e][j];
-      const std::size_t which = balance.layouts()[e].damper[j];
-      auto known = std::find_if(solved.begin(), solved.end(), [&](const Solved& s) {
-        return s.damper == which && std::abs(s.velocity - v) <= 1e-12 * v;
-      });
-      if (known == solved.end()) {
-        damper::DamperTracker& tracker = trackers_[which];
-        if (anchors_[which]) tracker.restore(*anchors_[which]);
-        const damper::ImpedancePoint direct = tracker.solve(damper::Excitation::from_velocity(f, v));
-        if (!direct.converged()) {
-          failure = fmt::format("end {}, damper {} solved directly at {:.4g} m/s: {}", e + 1, j + 1, v, direct.failure);
-          return false;
-        }
-        if (!anchors_[which]) anchors_[which] = tracker.checkpoint();
-        known = solved.insert(solved.end(), Solved{which, v, direct});
+std::vector<Polisher::Unknown> Polisher::unknowns_of(const FrequencyBalance& balance) const {
+  const std::vector<EndLayout>& ends = balance.layouts();
+  std::vector<Unknown> unknowns;
+  const bool mirrored = ends.size() == 2 && ends[1].damper == ends[0].damper;
+  for (std::size_t e = 0; e < ends.size(); ++e) {
+    for (std::size_t j = 0; j < ends[e].damper.size(); ++j) {
+      if (mirrored && e == 1) {
+        unknowns[j].slots.emplace_back(e, j);
+      } else {
+        unknowns.push_back({ends[e].damper[j], {{e, j}}});
       }
-      balance.fix(e, j, known->point);
     }
   }
+  return unknowns;
+}
+
+std::optional<Polisher::Trial> Polisher::evaluate(FrequencyBalance& balance, const Eigen::VectorXd& u,
+                                                  std::string& failure) {
+  const double f = balance.wave().angular_frequency / (2.0 * std::numbers::pi);
+  Trial t;
+  t.u = u;
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    const Unknown& unknown = unknowns_[k];
+    damper::DamperTracker& tracker = trackers_[unknown.damper];
+    if (anchors_[unknown.damper]) tracker.restore(*anchors_[unknown.damper]);
+    const double v = std::exp(u[static_cast<Eigen::Index>(k)]);
+    const damper::Excitation excitation = damper::Excitation::from_velocity(f, v);
+    damper::ImpedancePoint direct = tracker.solve(excitation);
+    if (!direct.converged() && !anchors_[unknown.damper]) {
+      // Where the path from the last frequency fails (the arm's stick resonance
+      // passed between them, say), from a cold start.
+      tracker.forget();
+      direct = tracker.solve(excitation);
+    }
+    if (!direct.converged()) {
+      failure = fmt::format("end {}, damper {} solved directly at {:.4g} m/s: {}", unknown.slots[0].first + 1,
+                            unknown.slots[0].second + 1, v, direct.failure);
+      return std::nullopt;
+    }
+    if (!anchors_[unknown.damper]) anchors_[unknown.damper] = tracker.checkpoint();
+    for (const auto& [e, j] : unknown.slots) balance.fix(e, j, direct);
+    t.z.push_back(direct.impedance);
+    t.direct.push_back(direct);
+  }
+  t.absorbed_per_square = *balance.absorbed_per_square();
+  const auto y = balanced_amplitude(span_, balance, options_, failure);
+  if (!y) return std::nullopt;
+  t.amplitude = *y;
+  t.h = Eigen::VectorXd::Zero(u.size());
+  if (*y <= 0.0) return t;  // with these impedances nothing builds up
+  const EndsAtAmplitude at = balance.dampers(*y);
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    const auto [e, j] = unknowns_[k].slots[0];
+    const auto i = static_cast<Eigen::Index>(k);
+    t.h[i] = std::log(at.ends[e].velocities[j]) - u[i];
+  }
+  t.norm = t.h.cwiseAbs().maxCoeff();
+  return t;
+}
+
+Eigen::MatrixXd Polisher::jacobian(FrequencyBalance& balance, const Trial& trial) const {
+  const auto n = static_cast<Eigen::Index>(unknowns_.size());
+  const std::vector<EndLayout>& ends = balance.layouts();
+  const double y = trial.amplitude;
+  const double per_square = trial.absorbed_per_square;
+  // The root of P_w - P_s - P_d(1) Y^2 moves by dY = Y^2 dP_d(1) / N'(Y).
+  const double slope = balance.net_power_slope(y) - 2.0 * per_square * y;
+  std::vector<std::vector<std::complex<double>>> z(ends.size());
+  for (std::size_t e = 0; e < ends.size(); ++e) z[e].resize(ends[e].positions.size());
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    for (const auto& [e, j] : unknowns_[k].slots) z[e][j] = trial.z[k];
+  }
+  Eigen::MatrixXd jac = -Eigen::MatrixXd::Identity(n, n);
+  for (Eigen::Index m = 0; m < n; ++m) {
+    const std::complex<double> dz = slopes_[static_cast<std::size_t>(m)];
+    std::vector<EndResponseTangent> tangents;
+    double d_absorbed = 0.0;
+    for (std::size_t e = 0; e < ends.size(); ++e) {
+      std::vector<std::complex<double>> direction(ends[e].positions.size(), 0.0);
+      for (const auto& [se, sj] : unknowns_[static_cast<std::size_t>(m)].slots) {
+        if (se == e) direction[sj] = dz;
+      }
+      tangents.push_back(end_response_tangent(balance.wave(), ends[e].positions, z[e], direction, 1.0));
+      d_absorbed += tangents.back().absorbed_power;
+    }
+    const double d_log_y = y * d_absorbed / slope;
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const auto [e, j] = unknowns_[static_cast<std::size_t>(k)].slots[0];
+      jac(k, m) += d_log_y + tangents[e].log_displacement[j];
+    }
+  }
+  return jac;
+}
+
+void Polisher::update_slopes(const Trial& trial) {
+  if (last_solved_) {
+    for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+      const auto i = static_cast<Eigen::Index>(k);
+      const double du = trial.u[i] - last_solved_->u[i];
+      if (std::abs(du) > 1e-9) slopes_[k] = (trial.z[k] - last_solved_->z[k]) / du;
+    }
+  }
+  last_solved_ = trial;
+}
+
+bool Polisher::first_trial(double log_f, Eigen::VectorXd& u) const {
+  if (history_.empty() || history_.back().u.size() != u.size()) return false;
+  const Solution& b = history_.back();
+  if (history_.size() < 2) {
+    u = b.u;
+    return true;
+  }
+  const Solution& a = history_[history_.size() - 2];
+  const double t = (log_f - b.log_f) / (b.log_f - a.log_f);
+  u = b.u + t * (b.u - a.u);
   return true;
 }
 
-void Polisher::first_trial(double log_f, std::vector<std::vector<double>>& u) const {
-  if (history_.size() < 2 || history_.back().u.size() != u.size()) return;
-  const Solution& a = history_[history_.size() - 2];
-  const Solution& b = history_.back();
-  const double t = (log_f - b.log_f) / (b.log_f - a.log_f);
-  for (std::size_t e = 0; e < u.size(); ++e) {
-    for (std::size_t j = 0; j < u[e].size(); ++j) u[e][j] = b.u[e][j] + t * (b.u[e][j] - a.u[e][j]);
-  }
-}
-
-std::optional<double> Polisher::run(FrequencyBalance& balance, const double y, std::string& failure) {
-  if (y <= 0.0) return y;  // nothing builds up: the dampers stand still
-  const EndsAtAmplitude first = balance.dampers(y);
-  if (!first.known) {
-    failure = first.failure;
+std::optional<double> Polisher::run(FrequencyBalance& balance, std::optional<double> y, std::string& failure) {
+  unknowns_ = unknowns_of(balance);
+  const auto n = static_cast<Eigen::Index>(unknowns_.size());
+  const double log_f = std::log(balance.wave().angular_frequency);
+  Eigen::VectorXd u(n);
+  if (y) {
+    if (*y <= 0.0) return y;  // nothing builds up: the dampers stand still
+    const EndsAtAmplitude first = balance.dampers(*y);
+    if (!first.known) {
+      failure = first.failure;
+      return std::nullopt;
+    }
+    for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+      const auto [e, j] = unknowns_[k].slots[0];
+      u[static_cast<Eigen::Index>(k)] = std::log(first.ends[e].velocities[j]);
+    }
+    slopes_.clear();
+  } else if (!first_trial(log_f, u)) {
+    failure = "no earlier frequency to continue from";
     return std::nullopt;
   }
   anchors_.assign(trackers_.size(), std::nullopt);
-  std::vector<std::vector<double>> u = velocities_of(first), u_prev, h_prev;
-  for (auto& end : u) {
-    for (double& x : end) x = std::log(x);
-  }
-  const double log_f = std::log(balance.wave().angular_frequency);
-  first_trial(log_f, u);
-  if (slopes_.size() != u.size()) {
-    slopes_ = u;
-    for (auto& end : slopes_) std::fill(end.begin(), end.end(), kNaN);
-  }
-  // Per damper, the trial velocities (log) known to give h > 0 and h < 0: once both
-  // are known, a secant step that leaves the bracket is replaced by its midpoint.
-  std::vector<std::vector<double>> above = u, below = u;
-  for (auto& end : above) std::fill(end.begin(), end.end(), kNaN);
-  for (auto& end : below) std::fill(end.begin(), end.end(), kNaN);
-  double worst = std::numeric_limits<double>::infinity();
-  for (int iteration = 0; iteration < options_.max_polish_iterations; ++iteration) {
-    std::vector<std::vector<double>> v = u;
-    for (auto& end : v) {
-      for (double& x : end) x = std::exp(x);
+  last_solved_.reset();
+  if (slopes_.size() != unknowns_.size()) {
+    // The tables' slopes in log v where the last frequency left none.
+    slopes_.assign(unknowns_.size(), 0.0);
+    for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+      const double v = std::exp(u[static_cast<Eigen::Index>(k)]);
+      const auto hi = balance.table_impedance(unknowns_[k].damper, v * std::exp(0.05));
+      const auto lo = balance.table_impedance(unknowns_[k].damper, v * std::exp(-0.05));
+      if (hi && lo) slopes_[k] = (*hi - *lo) / 0.1;
     }
-    if (!solve_at_velocities(balance, v, failure)) return std::nullopt;
-    const auto next = balanced_amplitude(span_, balance, options_, failure);
-    if (!next) return std::nullopt;
-    if (*next <= 0.0) return *next;  // with the direct impedances nothing builds up
-    const EndsAtAmplitude after = balance.dampers(*next);
-    std::vector<std::vector<double>> h = u, u_next = u;
-    worst = 0.0;
-    bool unsettled = false;
-    for (std::size_t e = 0; e < u.size(); ++e) {
-      for (std::size_t j = 0; j < u[e].size(); ++j) {
-        h[e][j] = std::log(after.ends[e].velocities[j]) - u[e][j];
-        worst = std::max(worst, std::abs(h[e][j]));
-        (h[e][j] > 0.0 ? above : below)[e][j] = u[e][j];
-        if (!h_prev.empty() && h_prev[e][j] != h[e][j]) {
-          slopes_[e][j] = (h[e][j] - h_prev[e][j]) / (u[e][j] - u_prev[e][j]);
-        }
-        // The first step of a frequency takes the slope the last frequency ended with.
-        const double secant = -h[e][j] / slopes_[e][j];
-        double step = std::isfinite(secant) && std::abs(secant) <= 1.0 ? secant
-                      : h_prev.empty()                                  ? h[e][j]
-                                                                        : 0.5 * h[e][j];
-        const double a = above[e][j], b = below[e][j];
-        // h > 0 at small v and h < 0 at large v: until a bracket is known, a root lies
-        // on the side h points to. Where h is not monotone the secant may point the
-        // other way (and wander); step then as h points, as far as the last step went.
-        if ((std::isnan(a) || std::isnan(b)) && step * h[e][j] < 0.0) {
-          const double last = u_prev.empty() ? 0.0 : std::abs(u[e][j] - u_prev[e][j]);
-          step = std::copysign(std::max(std::abs(h[e][j]), last), h[e][j]);
-        }
-        u_next[e][j] = u[e][j] + step;
-        const bool collapsed = std::abs(a - b) <= options_.polish_tolerance;
-        // A bracket narrower than the tolerance around a step in h no larger than the
-        // direct solves' own scatter (their convergence tolerance) is a solution.
-        if (collapsed && std::abs(h[e][j]) <= kPolishScatter * options_.polish_tolerance) continue;
-        unsettled = unsettled || std::abs(h[e][j]) > options_.polish_tolerance;
-        if (collapsed) {
-          failure = fmt::format("end {}, damper {}: no self-consistent clamp velocity: as the trial passes {:.4g} m/s "
-                                "(damper solved directly) the balance's velocity jumps by {:.3g} %",
-                                e + 1, j + 1, std::exp(u[e][j]), 100.0 * std::expm1(std::abs(h[e][j])));
-          return std::nullopt;
-        }
-        if (!std::isnan(a) && !std::isnan(b) && !(u_next[e][j] > std::min(a, b) && u_next[e][j] < std::max(a, b))) {
-          u_next[e][j] = 0.5 * (a + b);
-        }
-      }
-    }
-    if (!unsettled) {
-      history_.push_back({log_f, u});
-      return *next;
-    }
-    u_prev = std::move(u);
-    h_prev = std::move(h);
-    u = std::move(u_next);
   }
-  failure = fmt::format("the polish with directly solved impedances still moved the clamp velocities by {:.3g} after {} "
-                        "iterations (tolerance {:.3g})",
-                        worst, options_.max_polish_iterations, options_.polish_tolerance);
-  return std::nullopt;
+  std::vector<Trial> trials;  // this frequency's, for the Jacobian at the solver's point
+  std::optional<double> still;  // an amplitude <= 0: with these impedances nothing builds up
+  const numerics::Residual residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+    std::optional<Trial> trial = evaluate(balance, x, failure);
+    if (!trial) return false;
+    if (trial->amplitude <= 0.0) {
+      still = trial->amplitude;
+      r = Eigen::VectorXd::Zero(n);
+      return true;
+    }
+    update_slopes(*trial);
+    r = trial->h;
+    trials.push_back(std::move(*trial));
+    return true;
+  };
+  const numerics::ResidualJacobian jacobian_at = [&](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
+    const auto trial = std::find_if(trials.rbegin(), trials.rend(), [&](const Trial& t) { return t.u == x; });
+    if (trial == trials.rend()) return false;
+    jac = jacobian(balance, *trial);
+    return true;
+  };
+  numerics::NonlinearSystemOptions system;
+  system.tolerance = options_.polish_tolerance;
+  system.max_evaluations = options_.max_polish_iterations;
+  const numerics::NonlinearSystemResult solved =
+      numerics::solve_fixed_point(residual, jacobian_at, u, system, kPolishScatter * options_.polish_tolerance);
+  if (still) return *still;
+  if (!solved.summary.converged()) {
+    if (solved.summary.termination != Termination::inner_failure) {
+      failure = fmt::format("the clamp velocities with directly solved impedances: {} (tolerance {:.3g})",
+                            brief_report(solved.summary), options_.polish_tolerance);
+    } else if (failure.empty()) {
+      failure = "the polish's Jacobian could not be evaluated";
+    }
+    return std::nullopt;
+  }
+  history_.push_back({log_f, solved.x});
+  // The balance ends with the solution's impedances fixed.
+  const auto trial = std::find_if(trials.rbegin(), trials.rend(), [&](const Trial& t) { return t.u == solved.x; });
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    for (const auto& [e, j] : unknowns_[k].slots) balance.fix(e, j, trial->direct[k]);
+  }
+  return trial->amplitude;
 }
 
 BalancePoint balance_at(const Span& span, std::size_t i, double f, const std::vector<ImpedanceTable>& tables,
@@ -586,17 +688,19 @@ BalancePoint balance_at(const Span& span, std::size_t i, double f, const std::ve
   fill_undamped(span, f, p);
   FrequencyBalance balance(span, i, f, tables, options);
   std::string failure;
-  auto y = balanced_amplitude(span, balance, options, failure);
-  if (y && polisher) {
-    const double from_tables = *y;
-    y = polisher->run(balance, from_tables, failure);
+  std::optional<double> y;
+  if (polisher && polisher->continues()) {
+    y = polisher->run(balance, std::nullopt, failure);
     if (!y) {
       // Once more from the tables alone, without what earlier frequencies handed on.
       polisher->forget();
       balance.release();
       failure.clear();
-      y = polisher->run(balance, from_tables, failure);
     }
+  }
+  if (!y) {
+    y = balanced_amplitude(span, balance, options, failure);
+    if (y && polisher) y = polisher->run(balance, *y, failure);
   }
   if (!y) {
     const double y_max = options.amplitude_max_over_diameter * span.conductor().diameter;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "../numerics/nonlinear_system.hpp"
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::span {
@@ -17,37 +18,63 @@ void FixedPointOptions::validate() const {
 
 namespace {
 
-/// The end at the given velocities: the impedances there and the response; none if
-/// an impedance is not known.
-struct EndState {
-  std::vector<std::complex<double>> z;
-  EndResponse response;
+/// The end of one antinode amplitude, its responses counted.
+class EndProblem {
+ public:
+  EndProblem(const StringWave& wave, const std::vector<double>& positions, const ClampImpedance& impedance,
+             double antinode, const FixedPointOptions& options)
+      : wave_(wave), positions_(positions), impedance_(impedance), antinode_(antinode), options_(options) {}
+
+  /// The impedances at velocities v; none (and `unknown_` says where) if one is not known.
+  std::optional<std::vector<std::complex<double>>> impedances(const std::vector<double>& v) {
+    std::vector<std::complex<double>> z;
+    for (std::size_t j = 0; j < v.size(); ++j) {
+      const auto zj = impedance_(j, v[j]);
+      if (!zj) {
+        unknown_ = fmt::format("damper {}: its impedance is not known near {:.3g} m/s", j + 1, v[j]);
+        return std::nullopt;
+      }
+      z.push_back(*zj);
+    }
+    return z;
+  }
+  EndResponse response(const std::vector<std::complex<double>>& z) {
+    ++evaluations_;
+    return end_response(wave_, positions_, z, antinode_);
+  }
+  /// log of damper j's velocity in a response (held at the floor at a node).
+  double log_velocity(const EndResponse& r, std::size_t j) const {
+    return std::log(std::max(wave_.angular_frequency * std::abs(r.damper_displacement[j]), options_.velocity_floor));
+  }
+
+  /// Damper j's velocity consistent with the others' (the scalar root in log v); none
+  /// if an impedance is not known on the way or no sign change is found.
+  std::optional<double> consistent_velocity(std::vector<double> v, std::size_t j);
+  /// Every velocity at once (Powell's hybrid method), from v.
+  numerics::NonlinearSystemResult solve_system(const std::vector<double>& v);
+
+  const std::vector<double>& positions() const { return positions_; }
+  int evaluations() const { return evaluations_; }
+  const std::string& unknown() const { return unknown_; }
+
+ private:
+  const StringWave& wave_;
+  const std::vector<double>& positions_;
+  const ClampImpedance& impedance_;
+  double antinode_;
+  const FixedPointOptions& options_;
+  int evaluations_ = 0;
+  std::string unknown_;  ///< where an impedance was not known
 };
 
-std::optional<EndState> end_at(const StringWave& wave, const std::vector<double>& positions, const ClampImpedance& impedance,
-                               double antinode, const std::vector<double>& v) {
-  EndState s;
-  for (std::size_t j = 0; j < v.size(); ++j) {
-    const auto z = impedance(j, v[j]);
-    if (!z) return std::nullopt;
-    s.z.push_back(*z);
-  }
-  s.response = end_response(wave, positions, s.z, antinode);
-  return s;
-}
-
-/// Damper j's velocity consistent with the others' (the scalar root in log v); none
-/// if an impedance is not known on the way.
-std::optional<double> consistent_velocity(const StringWave& wave, const std::vector<double>& positions,
-                                          const ClampImpedance& impedance, double antinode, std::vector<double> v,
-                                          std::size_t j, double floor) {
+std::optional<double> EndProblem::consistent_velocity(std::vector<double> v, std::size_t j) {
   const auto g = [&](double u) -> std::optional<double> {
     v[j] = std::exp(u);
-    const auto s = end_at(wave, positions, impedance, antinode, v);
-    if (!s) return std::nullopt;
-    return std::log(std::max(wave.angular_frequency * std::abs(s->response.damper_displacement[j]), floor)) - u;
+    const auto z = impedances(v);
+    if (!z) return std::nullopt;
+    return log_velocity(response(*z), j) - u;
   };
-  double a = std::log(std::max(v[j], floor));
+  double a = std::log(std::max(v[j], options_.velocity_floor));
   auto ga = g(a);
   if (!ga) return std::nullopt;
   if (*ga == 0.0) return std::exp(a);
@@ -84,10 +111,60 @@ std::optional<double> consistent_velocity(const StringWave& wave, const std::vec
   return std::exp(b);
 }
 
+numerics::NonlinearSystemResult EndProblem::solve_system(const std::vector<double>& start) {
+  const std::size_t n = start.size();
+  const auto velocities = [n](const Eigen::VectorXd& u) {
+    std::vector<double> v(n);
+    for (std::size_t j = 0; j < n; ++j) v[j] = std::exp(u[static_cast<Eigen::Index>(j)]);
+    return v;
+  };
+  const numerics::Residual residual = [&](const Eigen::VectorXd& u, Eigen::VectorXd& g) {
+    const auto z = impedances(velocities(u));
+    if (!z) return false;
+    const EndResponse r = response(*z);
+    g.resize(u.size());
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto i = static_cast<Eigen::Index>(j);
+      g[i] = log_velocity(r, j) - u[i];
+    }
+    return true;
+  };
+  // dZ_m/du_m by central differences of the impedance (a table's cubic: exact but
+  // for round-off), then the response's exact tangent along each.
+  const numerics::ResidualJacobian jacobian = [&](const Eigen::VectorXd& u, Eigen::MatrixXd& jac) {
+    constexpr double kStep = 1e-4;
+    const std::vector<double> v = velocities(u);
+    const auto z = impedances(v);
+    if (!z) return false;
+    const EndResponse r = response(*z);
+    jac = -Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    for (std::size_t m = 0; m < n; ++m) {
+      const auto hi = impedance_(m, v[m] * std::exp(kStep)), lo = impedance_(m, v[m] * std::exp(-kStep));
+      if (!hi || !lo) return false;
+      std::vector<std::complex<double>> direction(n, 0.0);
+      direction[m] = (*hi - *lo) / (2.0 * kStep);
+      const EndResponseTangent t = end_response_tangent(wave_, positions_, *z, direction, antinode_);
+      for (std::size_t j = 0; j < n; ++j) {
+        // A damper held at the velocity floor (near a node) does not move with the others.
+        const bool floored = wave_.angular_frequency * std::abs(r.damper_displacement[j]) <= options_.velocity_floor;
+        if (!floored) jac(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(m)) += t.log_displacement[j];
+      }
+    }
+    return true;
+  };
+  Eigen::VectorXd u(static_cast<Eigen::Index>(n));
+  for (std::size_t j = 0; j < n; ++j) u[static_cast<Eigen::Index>(j)] = std::log(std::max(start[j], options_.velocity_floor));
+  numerics::NonlinearSystemOptions system;
+  system.tolerance = options_.tolerance;
+  system.max_evaluations = options_.max_sweeps;
+  return numerics::solve_nonlinear_system(residual, jacobian, u, system);
+}
+
 }  // namespace
 
 EndSolution solve_end(const StringWave& wave, const std::vector<double>& positions, const ClampImpedance& impedance,
                       double antinode, const FixedPointOptions& options, std::vector<double> start) {
+  EndProblem problem(wave, positions, impedance, antinode, options);
   EndSolution out;
   std::vector<double>& v = out.velocities;
   v = std::move(start);
@@ -97,32 +174,49 @@ EndSolution solve_end(const StringWave& wave, const std::vector<double>& positio
       v.push_back(std::max(wave.angular_frequency * antinode * std::abs(std::sin(wave.wavenumber * a)), options.velocity_floor));
     }
   }
+  SolverSummary& summary = out.summary;
+  const auto fail = [&](Termination termination, std::string where) {
+    summary.termination = termination;
+    summary.where = std::move(where);
+    summary.evaluations = problem.evaluations();
+    return out;
+  };
+  bool solved = false;
+  if (v.size() >= 2) {
+    const numerics::NonlinearSystemResult system = problem.solve_system(v);
+    if (system.summary.converged()) {
+      for (std::size_t j = 0; j < v.size(); ++j) v[j] = std::exp(system.x[static_cast<Eigen::Index>(j)]);
+      summary.residual = system.summary.residual;
+      solved = true;
+    }
+  }
+  // One damper, or several one at a time (Gauss-Seidel sweeps) where the system solve failed.
   double change = 0.0;
-  for (out.sweeps = 1; out.sweeps <= options.max_sweeps; ++out.sweeps) {
+  for (int sweep = 1; !solved && sweep <= options.max_sweeps; ++sweep) {
     change = 0.0;
     for (std::size_t j = 0; j < v.size(); ++j) {
-      const auto vj = consistent_velocity(wave, positions, impedance, antinode, v, j, options.velocity_floor);
+      const auto vj = problem.consistent_velocity(v, j);
       if (!vj) {
-        out.failure = fmt::format("damper {}: its impedance is not known near {:.3g} m/s", j + 1, v[j]);
-        return out;
+        if (!problem.unknown().empty()) return fail(Termination::inner_failure, problem.unknown());
+        return fail(Termination::no_root, fmt::format("damper {}: no velocity reproduces itself", j + 1));
       }
       change = std::max(change, std::abs(*vj - v[j]) / std::max(*vj, options.velocity_floor));
       v[j] = *vj;
     }
-    if (change <= options.tolerance || v.size() <= 1) break;
+    solved = change <= options.tolerance || v.size() <= 1;
+    summary.residual = change;
   }
-  const auto state = end_at(wave, positions, impedance, antinode, v);
-  if (!state) {
-    out.failure = "an impedance is not known at the fixed point";
-    return out;
+  if (!solved) {
+    return fail(Termination::max_iterations,
+                fmt::format("the dampers' velocities still changed by {:.3g} (relative) after {} sweeps", change,
+                            options.max_sweeps));
   }
-  out.response = state->response;
-  out.impedances = state->z;
-  out.converged = change <= options.tolerance || v.size() <= 1;
-  if (!out.converged) {
-    out.failure = fmt::format("the dampers' velocities still changed by {:.3g} (relative) after {} sweeps", change,
-                              options.max_sweeps);
-  }
+  const auto z = problem.impedances(v);
+  if (!z) return fail(Termination::inner_failure, problem.unknown());
+  out.response = problem.response(*z);
+  out.impedances = *z;
+  summary.termination = Termination::converged;
+  summary.evaluations = problem.evaluations();
   return out;
 }
 

@@ -15,6 +15,12 @@ void propagate(std::complex<double>& y, std::complex<double>& slope, double k, d
   y = y_next;
 }
 
+/// The change of |q| when q changes by dq (one-sided where q = 0).
+double abs_change(std::complex<double> q, std::complex<double> dq) {
+  const double r = std::abs(q);
+  return r > 0.0 ? (std::conj(q) * dq).real() / r : std::abs(dq);
+}
+
 }  // namespace
 
 std::vector<double> EndResponse::damper_velocities(double angular_frequency) const {
@@ -52,6 +58,43 @@ EndResponse end_response(const StringWave& wave, const std::vector<double>& posi
     r.damper_power += 0.5 * impedances[j].real() * w2 * std::norm(r.damper_displacement.back());
   }
   return r;
+}
+
+EndResponseTangent end_response_tangent(const StringWave& wave, const std::vector<double>& positions,
+                                        const std::vector<std::complex<double>>& impedances,
+                                        const std::vector<std::complex<double>>& direction, double antinode) {
+  assert(positions.size() == impedances.size() && positions.size() == direction.size());
+  const double k = wave.wavenumber;
+  const std::complex<double> jk(0.0, k);
+  // The recursion of end_response (unit slope at the fixed end) and its derivative.
+  std::complex<double> y = 0.0, slope = 1.0, dy = 0.0, dslope = 0.0;
+  double x = 0.0;
+  std::vector<std::complex<double>> at_dampers, d_at_dampers;
+  for (std::size_t j = 0; j < positions.size(); ++j) {
+    propagate(y, slope, k, positions[j] - x);
+    propagate(dy, dslope, k, positions[j] - x);  // linear: the same transfer
+    x = positions[j];
+    at_dampers.push_back(y);
+    d_at_dampers.push_back(dy);
+    slope += jk * (impedances[j] / wave.wave_impedance) * y;
+    dslope += jk * ((direction[j] * y + impedances[j] * dy) / wave.wave_impedance);
+  }
+  const std::complex<double> b = 0.5 * (y + slope / jk), a = 0.5 * (y - slope / jk);
+  const std::complex<double> db = 0.5 * (dy + dslope / jk), da = 0.5 * (dy - dslope / jk);
+  const double sum = std::abs(a) + std::abs(b);
+  const double scale = antinode / sum;
+  const double d_log_scale = -(abs_change(a, da) + abs_change(b, db)) / sum;
+  EndResponseTangent t;
+  for (std::size_t j = 0; j < at_dampers.size(); ++j) {
+    const bool node = std::abs(at_dampers[j]) == 0.0;
+    t.log_displacement.push_back(node ? 0.0 : d_log_scale + (d_at_dampers[j] / at_dampers[j]).real());
+  }
+  // P_d = Z0 w^2 scale^2 (|b|^2 - |a|^2) / 2
+  const double w2 = wave.angular_frequency * wave.angular_frequency;
+  const double waves = std::norm(b) - std::norm(a);
+  const double d_waves = 2.0 * (std::conj(b) * db - std::conj(a) * da).real();
+  t.absorbed_power = 0.5 * wave.wave_impedance * w2 * scale * scale * (2.0 * d_log_scale * waves + d_waves);
+  return t;
 }
 
 }  // namespace stockbridge::span

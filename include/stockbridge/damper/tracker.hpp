@@ -62,6 +62,8 @@ class DamperTracker {
   using Checkpoint = std::vector<Continuation>;
   Checkpoint checkpoint() const;
   void restore(const Checkpoint& checkpoint);
+  /// The next solve starts cold (with the lead-in where a cold start fails).
+  void forget();
 
  private:
   const Damper* damper_;

@@ -1,7 +1,8 @@
 #pragma once
 // How a solver ended, for every iterative solver of the library: the cantilever's
 // state determination, the periodic cable, harmonic balance, collocation, time
-// integration and shooting (Ceres's Summary / TerminationType). Callers branch
+// integration and shooting, the span balance's root search and its systems, the
+// fits and optimisers (Ceres's Summary / TerminationType). Callers branch
 // and tests match on `termination`; messages are made from it and the figures by
 // brief_report(), never parsed.
 
@@ -21,6 +22,8 @@ enum class Termination {
   not_periodic,        ///< the state did not repeat within the periods allowed
   energy_mismatch,     ///< the equations hold but the energy balance is off beyond its tolerance
   inner_failure,       ///< a nested solve failed (e.g. a cable state determination); `where` says which
+  no_progress,         ///< the iteration stopped making progress (the residual stopped falling, the step shrank to round-off)
+  no_root,             ///< the function keeps its sign over the whole range searched: no root there
 };
 
 /// snake_case name, as in JSON output and Python ("line_search_failed").

@@ -2,10 +2,14 @@
 // The nonlinear dampers of one span end at a given antinode amplitude Y: each
 // damper's impedance depends on its own clamp velocity amplitude v_j = w |Y_j|,
 // which depends on every damper's impedance (travelling_wave.hpp). A fixed point
-// in v: for one damper at a time (Gauss-Seidel over the end's dampers), the root in
-// log v of g(v) = log(w |Y_j(Z_j(v))|) - log v, bracketed outward from the last
-// value and closed by regula falsi (Illinois). g > 0 for small v (Z tends to the
-// all-stick value, Y_j stays finite) and g < 0 for large v, so a root exists.
+// in v, the root in u = log v of g_j(u) = log(w |Y_j(Z(v))|) - u_j:
+// * one damper: bracketed outward from the last value and closed by regula falsi
+//   (Illinois). g > 0 for small v (Z tends to the all-stick value, Y_j stays finite)
+//   and g < 0 for large v, so a root exists;
+// * several: all velocities as one system, Powell's hybrid method with the
+//   Jacobian dg/du = d log|Y| / dZ . diag(dZ_j / du_j) - I (end_response_tangent,
+//   dZ/du by central differences of the impedance), and where that fails, one
+//   damper at a time as above (Gauss-Seidel sweeps).
 
 #include <complex>
 #include <functional>
@@ -13,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "stockbridge/numerics/solver_summary.hpp"
 #include "stockbridge/span/travelling_wave.hpp"
 
 namespace stockbridge::span {
@@ -22,8 +27,10 @@ namespace stockbridge::span {
 using ClampImpedance = std::function<std::optional<std::complex<double>>(std::size_t damper, double velocity)>;
 
 struct FixedPointOptions {
-  double tolerance = 1e-10;  ///< relative change of every velocity between Gauss-Seidel sweeps
-  int max_sweeps = 200;
+  /// On every |g_j| (several dampers), or the relative change of every velocity
+  /// between Gauss-Seidel sweeps.
+  double tolerance = 1e-10;
+  int max_sweeps = 200;  ///< Gauss-Seidel sweeps; the system solve evaluates g at most this often
   double velocity_floor = 1e-9;  ///< m/s: below it a damper is taken as still
 
   void validate() const;
@@ -33,9 +40,13 @@ struct EndSolution {
   EndResponse response;                      ///< at the fixed point
   std::vector<double> velocities;            ///< v_j, m/s
   std::vector<std::complex<double>> impedances;  ///< Z_j(v_j), N s/m
-  int sweeps = 0;
-  bool converged = false;
-  std::string failure;                       ///< where and by how much, if not converged
+  /// converged; inner_failure (an impedance not known on the way: `where` says
+  /// which damper and velocity); no_root (one damper: no sign change of g found);
+  /// max_iterations (the sweeps still moved the velocities: residual says by how
+  /// much). evaluations: of the end's response.
+  SolverSummary summary;
+
+  bool converged() const { return summary.converged(); }
 };
 
 /// The end's dampers at `positions` (m from the end, ascending) at antinode amplitude

@@ -39,4 +39,15 @@ struct EndResponse {
 EndResponse end_response(const StringWave& wave, const std::vector<double>& positions,
                          const std::vector<std::complex<double>>& impedances, double antinode);
 
+/// The first-order change of end_response(wave, positions, impedances, antinode)
+/// when the impedances move by dZ_j = `direction`[j] (N s/m): the response's
+/// recursion is linear in each Z_j, so this is exact (forward mode through it).
+struct EndResponseTangent {
+  std::vector<double> log_displacement;  ///< d log|Y_j| per damper (0 for a damper at a node, Y_j = 0)
+  double absorbed_power = 0.0;           ///< d P_d, W
+};
+EndResponseTangent end_response_tangent(const StringWave& wave, const std::vector<double>& positions,
+                                        const std::vector<std::complex<double>>& impedances,
+                                        const std::vector<std::complex<double>>& direction, double antinode);
+
 }  // namespace stockbridge::span
