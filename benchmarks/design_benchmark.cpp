@@ -23,7 +23,7 @@ void BM_DesignCandidate(benchmark::State& state) {
   const stockbridge::io::DesignFile file = example();
   Evaluation e;
   for (auto _ : state) e = evaluate(file.study, file.study.base_values());
-  state.counters["converged"] = e.converged;
+  state.counters["converged"] = e.converged();
   state.counters["objective"] = e.objective;
 }
 BENCHMARK(BM_DesignCandidate)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);

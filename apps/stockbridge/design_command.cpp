@@ -43,14 +43,17 @@ std::string design_value(double value) { return fmt::format("{:.4g}", value); }
 void print_design_report(const design::DesignStudy& study, const design::DesignResult& result) {
   const auto line = [&](std::string_view label, const design::Evaluation& e) {
     std::string text = fmt::format("{}: ", label);
-    if (!e.converged) return text + "not converged (" + e.failure + ")";
+    if (!e.converged()) {
+      return text + (e.termination == Termination::not_run ? "not valid (" + e.infeasibility + ")"
+                                                           : "not converged (" + e.failure + ")");
+    }
     text += study.objective() == design::Objective::life
                 ? fmt::format("shortest life {} years", design_value(e.shortest_life_years))
                 : fmt::format("largest stress {} of the endurance limit ({} MPa at {} Hz)", design_value(e.max_stress_ratio),
                               design_value(e.max_stress / 1e6), design_value(e.frequency_at_max_hz));
     text += fmt::format(", {} kg, messenger curvature {} 1/m", design_value(e.total_mass),
                         design_value(e.messenger_curvature_max));
-    if (!e.feasible) text += " (infeasible: " + e.failure + ")";
+    if (!e.feasible()) text += " (infeasible: " + e.infeasibility + ")";
     return text;
   };
   fmt::print("{}\n", line("base", result.evaluations[result.base].evaluation));
@@ -63,20 +66,35 @@ void print_design_report(const design::DesignStudy& study, const design::DesignR
   for (std::size_t d = 0; d < study.variables().size(); ++d) {
     fmt::print("  {} = {}\n", study.variables()[d].name, design_value(best.x[d]));
   }
+  for (std::size_t j = 0; j < result.polishes.size(); ++j) {
+    const SolverSummary& p = result.polishes[j];
+    fmt::print("polish {}: {} after {} candidates{}\n", j, p.converged() ? "converged" : "stopped", p.evaluations,
+               p.converged() ? "" : fmt::format(" ({})", termination_name(p.termination)));
+  }
 }
 
 /// On stderr, as the span command does for its points: which candidates did not
-/// converge, and why (the span, the frequency, the solver's report).
+/// converge, and why (the span, the frequency, the solver's report); then which
+/// could not be built (a damper or span that is not valid).
 void print_unconverged_candidates(const design::DesignResult& result, const std::string& output) {
-  std::vector<const design::StudyEvaluation*> unconverged;
+  std::vector<const design::StudyEvaluation*> unconverged, invalid;
   for (const design::StudyEvaluation& e : result.evaluations) {
-    if (!e.evaluation.converged) unconverged.push_back(&e);
+    if (e.evaluation.converged()) continue;
+    (e.evaluation.termination == Termination::not_run ? invalid : unconverged).push_back(&e);
   }
-  if (unconverged.empty()) return;
-  fmt::print(stderr, "design: {} candidate(s) did not converge (converged = 0, numbers left empty in {}):\n",
-             unconverged.size(), output);
-  for (const design::StudyEvaluation* e : unconverged) {
-    fmt::print(stderr, "  {} {}: {}\n", design::stage_name(e->stage), e->run, e->evaluation.failure);
+  if (!unconverged.empty()) {
+    fmt::print(stderr, "design: {} candidate(s) did not converge (converged = 0, numbers left empty in {}):\n",
+               unconverged.size(), output);
+    for (const design::StudyEvaluation* e : unconverged) {
+      fmt::print(stderr, "  {} {}: {}\n", design::stage_name(e->stage), e->run, e->evaluation.failure);
+    }
+  }
+  if (!invalid.empty()) {
+    fmt::print(stderr, "design: {} candidate(s) not valid, not evaluated (converged = 0, feasible = 0 in {}):\n",
+               invalid.size(), output);
+    for (const design::StudyEvaluation* e : invalid) {
+      fmt::print(stderr, "  {} {}: {}\n", design::stage_name(e->stage), e->run, e->evaluation.infeasibility);
+    }
   }
 }
 

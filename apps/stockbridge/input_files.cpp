@@ -30,12 +30,12 @@ damper::Damper read_damper_input(const std::string& path, const std::vector<Comm
   return std::move(file.damper);
 }
 
-span::Span read_span_input(const std::string& path, const std::vector<CommandFile>& outputs) {
+io::SpanFile read_span_input(const std::string& path, const std::vector<CommandFile>& outputs) {
   require_outputs_apart(outputs, {{"the span file", path}});
   io::SpanFile file = io::load_span_file(path);
   require_apart_from_references(outputs, "a file the span file references", file.inputs);
   print_warnings(file.warnings);
-  return std::move(file.span);
+  return file;
 }
 
 io::DesignFile read_design_input(const std::string& path, const std::vector<CommandFile>& outputs) {

@@ -11,16 +11,17 @@
 #include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/damper/damper.hpp"
 #include "stockbridge/io/design_file.hpp"
-#include "stockbridge/span/balance.hpp"
+#include "stockbridge/io/span_file.hpp"
 
 namespace stockbridge::cli {
 
 /// The damper file at `path`; throws InvalidParameter if an output would overwrite
 /// it or a cable file it references.
 damper::Damper read_damper_input(const std::string& path, const std::vector<CommandFile>& outputs);
-/// The span file at `path`; throws InvalidParameter if an output would overwrite it
-/// or a file it references (damper files, their cable files, a wind table).
-span::Span read_span_input(const std::string& path, const std::vector<CommandFile>& outputs);
+/// The span file at `path` (the span and its balance options); throws
+/// InvalidParameter if an output would overwrite it or a file it references (damper
+/// files, their cable files, a wind table).
+io::SpanFile read_span_input(const std::string& path, const std::vector<CommandFile>& outputs);
 /// The design file at `path`; throws InvalidParameter if an output would overwrite
 /// it or a file it reads (the damper, its cable files, the span files and theirs).
 io::DesignFile read_design_input(const std::string& path, const std::vector<CommandFile>& outputs);

@@ -34,7 +34,7 @@ struct SpanOptions {
   std::optional<std::string> frequencies;
   int points = requests::SpanRequest{}.points;
   bool no_dampers = false;
-  std::string damper_model = requests::SpanRequest{}.damper_model;
+  std::optional<std::string> damper_model;
   std::optional<std::string> optimize_position;
   int threads = 1;
   bool json = false;
@@ -64,9 +64,9 @@ requests::SpanRequest span_request_of(const SpanOptions& options) {
   return request;
 }
 
-std::string span_csv(const requests::SpanResult& result) {
-  io::CsvWriter csv(requests::span_columns(result.span));
-  for (const span::BalancePoint& p : result.balance.points) csv.add_row(requests::span_row(result.span, p));
+std::string span_csv(const span::SpanAnalysis& a) {
+  io::CsvWriter csv(requests::span_columns(a.span));
+  for (const span::BalancePoint& p : a.balance.points) csv.add_row(requests::span_row(a.span, p));
   return csv.text();
 }
 
@@ -76,10 +76,21 @@ std::string span_years(const span::LifeEstimate& life) {
   return std::isfinite(life.life_years) ? fmt::format("{:.3g} years", life.life_years) : "unlimited (no damage)";
 }
 
+/// A life, or why there is none.
+std::string span_life(const std::optional<span::LifeEstimate>& life, int missing) {
+  return life ? span_years(*life) : fmt::format("unknown ({} points missing)", missing);
+}
+
 void print_span_report(const requests::SpanResult& result) {
-  const span::Span& s = result.span;
-  const span::BalanceSummary& summary = result.balance.summary;
-  const std::vector<double>& f = result.frequencies;
+  const span::SpanAnalysis& a = result.analysis;
+  const span::Span& s = a.span;
+  const span::BalanceSummary& summary = a.balance.summary;
+  const std::vector<double>& f = a.frequencies;
+  if (!summary.all_converged()) {
+    fmt::print("converged {} of {} frequencies: the largest stresses below are of those {} only; the verdict and the "
+               "life need every point\n",
+               summary.converged, summary.points, summary.converged);
+  }
   fmt::print("span: {}{} m at {:.6g} N, {} frequencies from {:.4g} to {:.4g} Hz\n",
              s.conductor().name.empty() ? "" : s.conductor().name + ", ", format_value(s.length()), s.tension(),
              f.size(), f.front(), f.back());
@@ -91,47 +102,60 @@ void print_span_report(const requests::SpanResult& result) {
                  d.both_ends ? "both ends" : "one end", span::damper_model_name(result.damper_model));
     }
   }
-  if (result.position) {
-    fmt::print("position: {:.4g} m minimises the largest fymax stress ({} balances)\n", result.position->position,
-               result.position->balances);
+  if (a.position) {
+    fmt::print("position: {:.4g} m minimises the largest fymax stress ({} balances)\n", a.position->position,
+               a.position->balances);
   }
-  fmt::print("largest fymax stress: {} at {:.4g} Hz (undamped {} at {:.4g} Hz)\n", span_megapascal(summary.max_stress_fymax),
-             summary.max_stress_frequency_hz, span_megapascal(summary.undamped_max_stress_fymax),
-             summary.undamped_max_stress_frequency_hz);
-  if (!s.dampers().empty()) fmt::print("largest stress at a damper clamp: {}\n", span_megapascal(summary.max_damper_clamp_stress));
+  if (summary.converged > 0) {
+    fmt::print("largest fymax stress: {} at {:.4g} Hz (undamped {} at {:.4g} Hz)\n",
+               span_megapascal(summary.max_stress_fymax), summary.max_stress_frequency_hz,
+               span_megapascal(summary.undamped_max_stress_fymax), summary.undamped_max_stress_frequency_hz);
+    if (!s.dampers().empty()) {
+      fmt::print("largest stress at a damper clamp: {}\n", span_megapascal(summary.max_damper_clamp_stress));
+    }
+  }
   fmt::print("endurance limit: {}: {} (undamped: {})\n", span_megapascal(summary.endurance_limit),
-             summary.safe ? "safe" : "unsafe",
-             summary.undamped_max_stress_fymax <= summary.endurance_limit ? "safe" : "unsafe");
-  if (summary.life && summary.undamped_life) {
-    fmt::print("life: {} (undamped {})\n", span_years(*summary.life), span_years(*summary.undamped_life));
+             span::verdict_name(summary.verdict), span::verdict_name(summary.undamped_verdict));
+  if (s.fatigue().life) {
+    fmt::print("life: {} (undamped {})\n", span_life(summary.life, summary.life_missing_points),
+               span_life(summary.undamped_life, summary.undamped_life_missing_points));
+  }
+  if (summary.several_states > 0) {
+    fmt::print("several self-consistent states at {} frequencies (the state continued from the band's low end is "
+               "reported; CSV column several_states)\n",
+               summary.several_states);
   }
 }
 
 int run_span_command(const SpanOptions& options) {
   const requests::SpanRequest request = span_request_of(options);
-  const span::Span span = read_span_input(options.span_file, {{"-o", options.output}});
+  const io::SpanFile file = read_span_input(options.span_file, {{"-o", options.output}});
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress("span: impedance tables", options.quiet);
-  const requests::SpanResult result = requests::run_span(span, request, std::ref(progress));
+  const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  io::write_file_atomically(options.output, span_csv(result));
+  const span::SpanAnalysis& a = result.analysis;
+  io::write_file_atomically(options.output, span_csv(a));
 
-  const span::BalanceSummary& summary = result.balance.summary;
+  const span::BalanceSummary& summary = a.balance.summary;
   if (options.json) {
     fmt::print("{}\n", requests::span_summary(result).add("seconds", seconds).str());
   } else {
     print_span_report(result);
   }
   fmt::print(stderr, "span: {} points in {:.2f} s, {} converged\n", summary.points, seconds, summary.converged);
+  for (const span::BalancePoint& p : a.balance.points) {
+    if (p.several_states) fmt::print(stderr, "  note: f = {:.4g} Hz: {}\n", p.frequency_hz, p.note);
+  }
   const int failed = summary.points - summary.converged;
   if (failed == 0) return kSuccess;
   fmt::print(stderr, "span: {} points did not converge (converged = 0, numbers left empty in {}):\n", failed,
              options.output);
   int shown = 0;
-  for (const span::BalancePoint& p : result.balance.points) {
+  for (const span::BalancePoint& p : a.balance.points) {
     if (p.converged()) continue;
     if (++shown > 10) break;
-    fmt::print(stderr, "  f = {:.4g} Hz: {}\n", p.frequency_hz, p.failure);
+    fmt::print(stderr, "  f = {:.4g} Hz: {}\n", p.frequency_hz, brief_report(p.summary));
   }
   if (failed > 10) fmt::print(stderr, "  ... and {} more\n", failed - 10);
   return kNotConverged;
@@ -151,8 +175,8 @@ void add_span_command(CLI::App& app, int& exit_code) {
       ->excludes(frequencies);
   sub->add_flag("--no-dampers", options->no_dampers, "Balance the span without its dampers");
   sub->add_option("--damper-model", options->damper_model,
-                  "travelling (the dampers' standing wave, MODEL.md 9) or weak (|Z| << Z0)")
-      ->capture_default_str();
+                  "travelling (the dampers' standing wave, MODEL.md 9) or weak (|Z| << Z0); default: the span "
+                  "file's [balance] damper_model, travelling");
   sub->add_option("--optimize-position", options->optimize_position,
                   "AMIN:AMAX, m: search the dampers' position (all moved together) minimising the largest fymax "
                   "stress, then balance there");

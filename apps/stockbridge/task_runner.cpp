@@ -25,7 +25,7 @@ bool launched_by_mpirun() {
 
 #ifdef STOCKBRIDGE_WITH_MPI
 
-/// Evaluations to bytes and back (the ranks are the same program on the same
+/// Evaluations and summaries to bytes and back (the ranks are the same program on the same
 /// kind of machine: raw doubles keep every bit).
 class Bytes {
  public:
@@ -44,14 +44,19 @@ class Bytes {
   void put(const design::Evaluation& e) {
     put<std::uint64_t>(e.x.size());
     put(e.x.data(), e.x.size() * sizeof(double));
-    put<std::uint8_t>(e.converged);
-    put<std::uint8_t>(e.feasible);
+    put<std::int32_t>(static_cast<std::int32_t>(e.termination));
     for (const double v : {e.objective, e.max_stress_ratio, e.max_stress, e.frequency_at_max_hz, e.total_mass,
                            e.messenger_curvature_max, e.shortest_life_years}) {
       put(v);
     }
     put<std::uint64_t>(e.span_at_max);
     put(e.failure);
+    put(e.infeasibility);
+  }
+  void put(const SolverSummary& s) {
+    put<std::int32_t>(static_cast<std::int32_t>(s.termination));
+    put<std::int32_t>(s.evaluations);
+    put(s.where);
   }
   std::vector<char>& buffer() { return buffer_; }
 
@@ -83,15 +88,22 @@ class Reader {
     design::Evaluation e;
     e.x.resize(get<std::uint64_t>());
     get(e.x.data(), e.x.size() * sizeof(double));
-    e.converged = get<std::uint8_t>() != 0;
-    e.feasible = get<std::uint8_t>() != 0;
+    e.termination = static_cast<Termination>(get<std::int32_t>());
     for (double* v : {&e.objective, &e.max_stress_ratio, &e.max_stress, &e.frequency_at_max_hz, &e.total_mass,
                       &e.messenger_curvature_max, &e.shortest_life_years}) {
       *v = get<double>();
     }
     e.span_at_max = get<std::uint64_t>();
     e.failure = text();
+    e.infeasibility = text();
     return e;
+  }
+  SolverSummary summary() {
+    SolverSummary s;
+    s.termination = static_cast<Termination>(get<std::int32_t>());
+    s.evaluations = get<std::int32_t>();
+    s.where = text();
+    return s;
   }
 
  private:
@@ -106,8 +118,7 @@ class MpiRunner final : public design::TaskRunner {
  public:
   MpiRunner(int rank, int size, int threads) : rank_(rank), size_(size), threads_(threads) {}
 
-  std::vector<std::vector<design::Evaluation>> run(
-      int tasks, const std::function<std::vector<design::Evaluation>(int)>& task) override {
+  std::vector<design::TaskOutput> run(int tasks, const std::function<design::TaskOutput(int)>& task) override {
     std::vector<int> mine;
     for (int t = rank_; t < tasks; t += size_) mine.push_back(t);
     Bytes bytes;
@@ -117,8 +128,9 @@ class MpiRunner final : public design::TaskRunner {
       bytes.put<std::uint8_t>(0);
       for (std::size_t k = 0; k < mine.size(); ++k) {
         bytes.put<std::int64_t>(mine[k]);
-        bytes.put<std::uint64_t>(results[k].size());
-        for (const design::Evaluation& e : results[k]) bytes.put(e);
+        bytes.put<std::uint64_t>(results[k].evaluations.size());
+        for (const design::Evaluation& e : results[k].evaluations) bytes.put(e);
+        bytes.put(results[k].optimiser);
       }
     } catch (const std::exception& error) {
       bytes = Bytes();
@@ -136,14 +148,15 @@ class MpiRunner final : public design::TaskRunner {
     }
     std::vector<char> all(static_cast<std::size_t>(total));
     MPI_Allgatherv(send.data(), size, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
-    std::vector<std::vector<design::Evaluation>> out(static_cast<std::size_t>(tasks));
+    std::vector<design::TaskOutput> out(static_cast<std::size_t>(tasks));
     for (int r = 0; r < size_; ++r) {
       Reader in(all.data() + offsets[static_cast<std::size_t>(r)], static_cast<std::size_t>(sizes[static_cast<std::size_t>(r)]));
       if (in.get<std::uint8_t>() != 0) throw std::runtime_error(in.text());
       while (!in.done()) {
         const auto t = static_cast<std::size_t>(in.get<std::int64_t>());
         const auto n = in.get<std::uint64_t>();
-        for (std::uint64_t k = 0; k < n; ++k) out.at(t).push_back(in.evaluation());
+        for (std::uint64_t k = 0; k < n; ++k) out.at(t).evaluations.push_back(in.evaluation());
+        out.at(t).optimiser = in.summary();
       }
     }
     return out;

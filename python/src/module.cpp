@@ -415,8 +415,8 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
 /// summary as JSON text (the package's span() parses it into a dict).
 py::dict span_balance(const std::optional<std::string>& path, const std::optional<std::string>& text,
                       const std::optional<std::vector<double>>& frequencies, int points, bool no_dampers,
-                      const std::string& damper_model, const std::optional<std::pair<double, double>>& optimize_position,
-                      int threads) {
+                      const std::optional<std::string>& damper_model,
+                      const std::optional<std::pair<double, double>>& optimize_position, int threads) {
   if (path.has_value() == text.has_value()) {
     throw InvalidParameter("give either file (a span file's path) or text (a span file's contents), one of the two");
   }
@@ -439,30 +439,36 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   std::optional<requests::SpanResult> result;
   {
     py::gil_scoped_release release;
-    result.emplace(requests::run_span(file.span, request));
+    result.emplace(requests::run_span(file.span, file.balance, request));
   }
-  const std::vector<std::string> columns = requests::span_columns(result->span);
-  const std::size_t n = result->balance.points.size();
+  const span::SpanAnalysis& a = result->analysis;
+  const std::vector<std::string> columns = requests::span_columns(a.span);
+  const std::size_t n = a.balance.points.size();
   std::vector<std::vector<double>> values(columns.size(), std::vector<double>(n));
-  py::array_t<bool> converged(n);
+  py::array_t<bool> converged(n), several(n);
   auto ok = converged.mutable_unchecked<1>();
-  py::list terminations, messages;
+  auto folds = several.mutable_unchecked<1>();
+  py::list terminations, messages, notes;
   for (std::size_t i = 0; i < n; ++i) {
-    const span::BalancePoint& p = result->balance.points[i];
-    const std::vector<double> row = requests::span_row(result->span, p);
+    const span::BalancePoint& p = a.balance.points[i];
+    const std::vector<double> row = requests::span_row(a.span, p);
     for (std::size_t c = 0; c < columns.size(); ++c) values[c][i] = row[c];
     ok(i) = p.converged();
-    terminations.append(std::string(termination_name(p.termination)));
-    messages.append(p.failure);
+    folds(i) = p.several_states;
+    terminations.append(std::string(termination_name(p.summary.termination)));
+    messages.append(p.converged() ? std::string() : brief_report(p.summary));
+    notes.append(p.note);
   }
   py::dict out;
   for (std::size_t c = 0; c < columns.size(); ++c) {
-    if (columns[c] != "converged") out[py::str(columns[c])] = array(values[c]);
+    if (columns[c] != "converged" && columns[c] != "several_states") out[py::str(columns[c])] = array(values[c]);
   }
   out["converged"] = converged;
+  out["several_states"] = several;
   out["termination"] = terminations;
   out["messages"] = messages;
-  out["dampers"] = requests::span_damper_prefixes(result->span);  // the <name> of the per-damper columns
+  out["notes"] = notes;
+  out["dampers"] = requests::span_damper_prefixes(a.span);  // the <name> of the per-damper columns
   out["columns"] = columns;
   out["summary_json"] = requests::span_summary(*result).str();
   return out;
@@ -675,7 +681,7 @@ PYBIND11_MODULE(_core, m) {
         "The point's design figures are numbers named as the impedance CSV's columns.");
   m.def("_span", &span_balance, py::arg("file") = py::none(), py::arg("text") = py::none(),
         py::arg("frequencies") = py::none(), py::arg("points") = requests::SpanRequest{}.points,
-        py::arg("no_dampers") = false, py::arg("damper_model") = requests::SpanRequest{}.damper_model,
+        py::arg("no_dampers") = false, py::arg("damper_model") = py::none(),
         py::arg("optimize_position") = py::none(), py::arg("threads") = 1,
         "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
         "'converged', 'termination', 'messages', 'dampers', 'columns' and the --json summary as 'summary_json'.");

@@ -84,20 +84,22 @@ def make_damper(clamp_mass, arms):
     return _from_values(_damper_from_toml, text, "make_damper")
 
 
-def span(file=None, frequencies=None, points=100, no_dampers=False, damper_model="travelling",
+def span(file=None, frequencies=None, points=100, no_dampers=False, damper_model=None,
          optimize_position=None, threads=1, text=None):
     """The energy balance of a span over the wind band, as ``stockbridge span``: a span
     file's path (`file`) or its contents (`text`, damper files relative to the working
     directory); `frequencies` (Hz, increasing) or `points` log-spaced over the band;
-    `no_dampers`; `damper_model` "travelling" or "weak"; `optimize_position` = (amin,
+    `no_dampers`; `damper_model` "travelling" or "weak" (None: the span file's
+    [balance] damper_model, travelling by default); `optimize_position` = (amin,
     amax) in m to search the dampers' position first; `threads` for the dampers'
     impedance tables.
 
     Returns a dict: one array per column of the span CSV, by the CSV's names (stresses
-    in MPa; NaN where a point did not converge), 'converged' (bool array),
-    'termination' and 'messages' (per point), 'dampers' (the <name> of the per-damper
-    columns), 'columns' (the CSV's order) and 'summary': the --json summary's keys
-    (None where the JSON has null)."""
+    in MPa; NaN where a point did not converge), 'converged' and 'several_states'
+    (bool arrays), 'termination', 'messages' and 'notes' (per point), 'dampers' (the
+    <name> of the per-damper columns), 'columns' (the CSV's order) and 'summary': the
+    --json summary's keys (None where the JSON has null; a life is None where a point
+    is missing, life_missing_points says how many)."""
     out = _span(file=None if file is None else str(file), text=text, frequencies=frequencies, points=points,
                 no_dampers=no_dampers, damper_model=damper_model,
                 optimize_position=None if optimize_position is None else tuple(optimize_position), threads=threads)

@@ -75,10 +75,10 @@ ArmSolution ArmTracker::lead_in(const Excitation& target) {
   return advance_to(target);
 }
 
-DamperTracker::DamperTracker(const Damper& damper, const SolverOptions& options, HeldAmplitude held)
-    : damper_(&damper), energy_tolerance_(options.energy_tolerance) {
+DamperTracker::DamperTracker(Damper damper, const SolverOptions& options, HeldAmplitude held)
+    : damper_(std::move(damper)), energy_tolerance_(options.energy_tolerance) {
   options.validate();
-  for (const std::size_t k : damper.distinct()) arms_.emplace_back(damper.arms()[k], options, held);
+  for (const std::size_t k : damper_.distinct()) arms_.emplace_back(damper_.arms()[k], options, held);
 }
 
 DamperTracker::Checkpoint DamperTracker::checkpoint() const {
@@ -99,16 +99,16 @@ void DamperTracker::forget() {
 ImpedancePoint DamperTracker::solve(const Excitation& excitation) {
   excitation.validate();
   ++solves_;
-  const std::vector<std::size_t>& distinct = damper_->distinct();
+  const std::vector<std::size_t>& distinct = damper_.distinct();
   std::vector<ArmSolution> solved;
   solved.reserve(arms_.size());
   for (ArmTracker& arm : arms_) solved.push_back(arm.solve(excitation));
-  std::vector<const ArmSolution*> per_arm(damper_->arms().size());
+  std::vector<const ArmSolution*> per_arm(damper_.arms().size());
   for (std::size_t k = 0; k < per_arm.size(); ++k) {
-    const auto d = std::find(distinct.begin(), distinct.end(), damper_->representative()[k]) - distinct.begin();
+    const auto d = std::find(distinct.begin(), distinct.end(), damper_.representative()[k]) - distinct.begin();
     per_arm[k] = &solved[static_cast<std::size_t>(d)];
   }
-  return combine(*damper_, excitation, per_arm, energy_tolerance_);
+  return combine(damper_, excitation, per_arm, energy_tolerance_);
 }
 
 }  // namespace stockbridge::damper

@@ -25,8 +25,8 @@ void SearchOptions::validate() const {
 
 ThreadRunner::ThreadRunner(int threads) : threads_(threads) { require_in_range("threads", threads, 1, 256); }
 
-std::vector<std::vector<Evaluation>> ThreadRunner::run(int tasks, const std::function<std::vector<Evaluation>(int)>& task) {
-  std::vector<std::vector<Evaluation>> results(static_cast<std::size_t>(std::max(tasks, 0)));
+std::vector<TaskOutput> ThreadRunner::run(int tasks, const std::function<TaskOutput(int)>& task) {
+  std::vector<TaskOutput> results(static_cast<std::size_t>(std::max(tasks, 0)));
   std::atomic<int> next{0};
   std::mutex failure_mutex;
   std::exception_ptr failure;
@@ -57,8 +57,8 @@ std::string_view stage_name(Stage stage) {
 }
 
 bool better(const Evaluation& a, const Evaluation& b) {
-  if (a.feasible != b.feasible) return a.feasible;
-  if (a.converged != b.converged) return a.converged;
+  if (a.feasible() != b.feasible()) return a.feasible();
+  if (a.converged() != b.converged()) return a.converged();
   return a.objective < b.objective;
 }
 
@@ -86,6 +86,19 @@ std::vector<std::vector<double>> space_filling_sample(const std::vector<DesignVa
 
 namespace {
 
+/// How an NLopt run that returned (did not throw) ended.
+Termination polish_termination(nlopt::result result) {
+  switch (result) {
+    case nlopt::MAXEVAL_REACHED:
+    case nlopt::MAXTIME_REACHED: return Termination::max_iterations;
+    case nlopt::SUCCESS:
+    case nlopt::STOPVAL_REACHED:
+    case nlopt::FTOL_REACHED:
+    case nlopt::XTOL_REACHED: return Termination::converged;
+    default: return Termination::inner_failure;
+  }
+}
+
 /// One local polish from `start`: COBYLA on the variables scaled to [0, 1], the
 /// constraints as inequalities g <= 0; every distinct candidate it evaluates, in order.
 class Polish {
@@ -93,8 +106,10 @@ class Polish {
   Polish(const DesignStudy& study, const SearchOptions& options, TableCache& cache, const std::function<void()>& tick)
       : study_(study), options_(options), cache_(cache), tick_(tick) {}
 
-  /// From `start` (an evaluation already made: not made or recorded again).
-  std::vector<Evaluation> run(const Evaluation& start) {
+  /// From `start` (an evaluation already made: not made or recorded again): the
+  /// candidates evaluated, and how the optimiser ended.
+  TaskOutput run(const Evaluation& start) {
+    SolverSummary& summary = output_.optimiser;
     start_ = &start;
     const std::size_t n = study_.variables().size();
     nlopt::opt opt(nlopt::LN_COBYLA, static_cast<unsigned>(n));
@@ -114,13 +129,20 @@ class Polish {
     }
     double value = 0.0;
     try {
-      opt.optimize(z, value);
+      summary.termination = polish_termination(opt.optimize(z, value));
     } catch (const nlopt::roundoff_limited&) {
-      // Stopped by round-off: the evaluations made stand.
+      summary.termination = Termination::no_progress;  // stopped by round-off: the evaluations made stand
     } catch (const nlopt::forced_stop&) {
       if (failure_) std::rethrow_exception(failure_);
+      summary.termination = Termination::inner_failure;
+      summary.where = "(NLopt was stopped)";
+    } catch (const std::exception& e) {  // NLopt's own failures (invalid arguments, out of memory)
+      summary.termination = Termination::inner_failure;
+      summary.where = fmt::format("(NLopt: {})", e.what());
     }
-    return std::move(evaluations_);
+    summary.evaluations = opt.get_numevals();
+    output_.evaluations = std::move(evaluations_);
+    return std::move(output_);
   }
 
  private:
@@ -156,7 +178,7 @@ class Polish {
   }
 
   static double objective(unsigned, const double* z, double*, void* self) {
-    return guarded(self, z, [](const Evaluation& e) { return e.converged ? e.objective : kNotConverged; });
+    return guarded(self, z, [](const Evaluation& e) { return e.converged() ? e.objective : kNotConverged; });
   }
   static double mass(unsigned, const double* z, double*, void* self) {
     const double max = *static_cast<Polish*>(self)->study_.constraints().total_mass_max;
@@ -165,7 +187,7 @@ class Polish {
   static double curvature(unsigned, const double* z, double*, void* self) {
     const double max = *static_cast<Polish*>(self)->study_.constraints().messenger_curvature_max;
     return guarded(self, z, [max](const Evaluation& e) {
-      return e.converged ? (e.messenger_curvature_max - max) / max : kNotConverged;
+      return e.converged() ? (e.messenger_curvature_max - max) / max : kNotConverged;
     });
   }
 
@@ -175,6 +197,7 @@ class Polish {
   const std::function<void()>& tick_;
   const Evaluation* start_ = nullptr;
   std::vector<Evaluation> evaluations_;
+  TaskOutput output_;
   std::exception_ptr failure_;
 };
 
@@ -182,7 +205,7 @@ class Polish {
 std::vector<std::size_t> polish_starts(const std::vector<StudyEvaluation>& evaluations, int count) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < evaluations.size(); ++i) {
-    if (evaluations[i].evaluation.feasible) order.push_back(i);
+    if (evaluations[i].evaluation.feasible()) order.push_back(i);
   }
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return better(evaluations[a].evaluation, evaluations[b].evaluation);
@@ -216,13 +239,13 @@ DesignResult run_search(const DesignStudy& study, const SearchOptions& options, 
   std::vector<std::vector<double>> candidates{study.base_values()};
   for (auto& x : space_filling_sample(study.variables(), options.samples, options.seed)) candidates.push_back(std::move(x));
   const auto first = runner.run(static_cast<int>(candidates.size()), [&](int i) {
-    std::vector<Evaluation> e{evaluate(study, candidates[static_cast<std::size_t>(i)], &cache)};
+    TaskOutput out{{evaluate(study, candidates[static_cast<std::size_t>(i)], &cache)}, {}};
     tick();
-    return e;
+    return out;
   });
   DesignResult result;
   for (std::size_t i = 0; i < first.size(); ++i) {
-    result.evaluations.push_back({i == 0 ? Stage::base : Stage::sample, static_cast<int>(i), first[i].at(0)});
+    result.evaluations.push_back({i == 0 ? Stage::base : Stage::sample, static_cast<int>(i), first[i].evaluations.at(0)});
   }
 
   const std::vector<std::size_t> starts = polish_starts(result.evaluations, options.polish);
@@ -230,12 +253,13 @@ DesignResult run_search(const DesignStudy& study, const SearchOptions& options, 
     return Polish(study, options, cache, tick).run(result.evaluations[starts[static_cast<std::size_t>(j)]].evaluation);
   });
   for (std::size_t j = 0; j < polished.size(); ++j) {
-    for (const Evaluation& e : polished[j]) result.evaluations.push_back({Stage::polish, static_cast<int>(j), e});
+    for (const Evaluation& e : polished[j].evaluations) result.evaluations.push_back({Stage::polish, static_cast<int>(j), e});
+    result.polishes.push_back(polished[j].optimiser);
   }
 
   for (std::size_t i = 0; i < result.evaluations.size(); ++i) {
     const Evaluation& e = result.evaluations[i].evaluation;
-    if (e.feasible && (!result.best || better(e, result.evaluations[*result.best].evaluation))) result.best = i;
+    if (e.feasible() && (!result.best || better(e, result.evaluations[*result.best].evaluation))) result.best = i;
   }
   if (progress) progress(planned, planned);  // done (polishes may stop before their budget)
   return result;

@@ -158,24 +158,35 @@ span::Span DesignStudy::span_with(std::size_t k, const damper::Damper& damper, s
 
 namespace {
 
-/// The first point of a balance that did not converge, as one line.
-std::string first_failure(const span::SpanBalance& b) {
+/// The first point of a balance that did not converge.
+const span::BalancePoint* first_failure(const span::SpanBalance& b) {
   for (const span::BalancePoint& p : b.points) {
-    if (!p.converged()) return fmt::format("at {:.4g} Hz: {}", p.frequency_hz, p.failure);
+    if (!p.converged()) return &p;
+  }
+  return nullptr;
+}
+
+/// The constraint a converged candidate breaks, if any.
+std::string broken_constraint(const DesignConstraints& c, const Evaluation& e) {
+  if (c.total_mass_max && e.total_mass > *c.total_mass_max) {
+    return fmt::format("total mass {:.4g} kg > total_mass_max {:.4g} kg", e.total_mass, *c.total_mass_max);
+  }
+  if (c.messenger_curvature_max && !(e.messenger_curvature_max <= *c.messenger_curvature_max)) {
+    return fmt::format("messenger curvature {:.4g} 1/m > messenger_curvature_max {:.4g} 1/m", e.messenger_curvature_max,
+                       *c.messenger_curvature_max);
   }
   return {};
 }
 
 }  // namespace
 
-std::shared_ptr<const TableCache::Tables> TableCache::get(std::size_t k, const std::vector<double>& key,
-                                                           const std::function<Tables()>& make) {
+std::shared_ptr<const span::SpanTables> TableCache::get(std::size_t k, const std::vector<double>& key, const Make& make) {
   const auto id = std::make_pair(k, key);
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (const auto found = tables_.find(id); found != tables_.end()) return found->second;
   }
-  auto made = std::make_shared<const Tables>(make());  // outside the lock: other threads go on
+  auto made = make();  // outside the lock: other threads go on
   const std::lock_guard<std::mutex> lock(mutex_);
   return tables_.emplace(id, std::move(made)).first->second;
 }
@@ -187,7 +198,7 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
   try {
     damper.emplace(study.damper_of(x));
   } catch (const InvalidParameter& error) {
-    e.failure = fmt::format("the candidate damper is not valid: {}", error.what());
+    e.infeasibility = fmt::format("the candidate damper is not valid: {}", error.what());
     return e;
   }
   e.total_mass = damper->clamp_mass();
@@ -198,51 +209,49 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
     if (study.variables()[i].name != kPosition) damper_key.push_back(x[i]);
   }
   double ratio = 0.0, curvature = 0.0, life = std::numeric_limits<double>::infinity();
-  const span::BalanceOptions options;
   for (std::size_t k = 0; k < study.spans().size(); ++k) {
+    const DesignSpan& design_span = study.spans()[k];
     std::optional<span::Span> s;
     try {
       s.emplace(study.span_with(k, *damper, position));
     } catch (const InvalidParameter& error) {
-      e.failure = fmt::format("span {}: {}", study.spans()[k].name, error.what());
+      e.infeasibility = fmt::format("span {}: {}", design_span.name, error.what());
       return e;
     }
-    const std::vector<double> f = span::band_frequencies(*s, study.points());
-    const auto make = [&] { return span::impedance_tables(*s, f, options); };
-    const std::shared_ptr<const TableCache::Tables> tables =
-        cache ? cache->get(k, damper_key, make) : std::make_shared<const TableCache::Tables>(make());
-    const span::SpanBalance b = span::run_balance(*s, f, *tables, options);
-    if (b.summary.converged != b.summary.points) {
-      e.failure = fmt::format("span {}: {} of {} points did not converge, first {}", study.spans()[k].name,
-                              b.summary.points - b.summary.converged, b.summary.points, first_failure(b));
+    span::AnalysisOptions options;
+    options.balance = design_span.balance;
+    const span::TableSource tables = [&](const span::Span& with, const std::vector<double>& f,
+                                         const span::ImpedanceTableOptions& table) {
+      const auto make = [&] { return std::make_shared<const span::SpanTables>(with, f, table); };
+      return cache ? cache->get(k, damper_key, make) : make();
+    };
+    const span::SpanAnalysis a = span::analyse_span(*s, span::band_frequencies(*s, study.points()), options, {}, tables);
+    const span::BalanceSummary& b = a.balance.summary;
+    if (const span::BalancePoint* p = first_failure(a.balance)) {
+      e.termination = p->summary.termination;
+      e.failure = fmt::format("span {}: {} of {} points did not converge, first at {:.4g} Hz: {}", design_span.name,
+                              b.points - b.converged, b.points, p->frequency_hz, brief_report(p->summary));
       return e;
     }
-    const double r = b.summary.max_stress_fymax / b.summary.endurance_limit;
+    const double r = b.max_stress_fymax / b.endurance_limit;
     if (k == 0 || r > ratio) {
       ratio = r;
-      e.max_stress = b.summary.max_stress_fymax;
-      e.frequency_at_max_hz = b.summary.max_stress_frequency_hz;
+      e.max_stress = b.max_stress_fymax;
+      e.frequency_at_max_hz = b.max_stress_frequency_hz;
       e.span_at_max = k;
     }
-    for (const span::BalancePoint& p : b.points) {
+    for (const span::BalancePoint& p : a.balance.points) {
       for (const span::DamperAtBalance& d : p.dampers) curvature = std::max(curvature, d.messenger_curvature_max);
     }
-    if (b.summary.life) life = std::min(life, b.summary.life->life_years);
+    if (b.life) life = std::min(life, b.life->life_years);
   }
-  e.converged = true;
+  e.termination = Termination::converged;
   e.max_stress_ratio = ratio;
   e.messenger_curvature_max = curvature;
   if (study.objective() == Objective::life) e.shortest_life_years = life;
   // An infinite life (no damage at all) is capped for the comparison (and the optimiser).
   e.objective = study.objective() == Objective::life ? -std::min(life, 1e12) : ratio;
-  const DesignConstraints& c = study.constraints();
-  if (c.total_mass_max && e.total_mass > *c.total_mass_max) {
-    e.failure = fmt::format("total mass {:.4g} kg > total_mass_max {:.4g} kg", e.total_mass, *c.total_mass_max);
-  } else if (c.messenger_curvature_max && !(curvature <= *c.messenger_curvature_max)) {
-    e.failure = fmt::format("messenger curvature {:.4g} 1/m > messenger_curvature_max {:.4g} 1/m", curvature,
-                            *c.messenger_curvature_max);
-  }
-  e.feasible = e.failure.empty();
+  e.infeasibility = broken_constraint(study.constraints(), e);
   return e;
 }
 

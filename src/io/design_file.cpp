@@ -74,7 +74,7 @@ DesignReading read_design(const TomlTable& top, const std::filesystem::path& bas
     r.inputs.push_back(path);
     r.inputs.insert(r.inputs.end(), s.inputs.begin(), s.inputs.end());
     r.warnings.insert(r.warnings.end(), s.warnings.begin(), s.warnings.end());
-    r.spans.push_back({std::move(s.span), path.stem().string()});
+    r.spans.push_back({std::move(s.span), path.stem().string(), s.balance});
   }
   if (const auto objective = top.optional_string("objective")) {
     try {

@@ -29,6 +29,7 @@ struct SpanReading {
   span::SelfDampingModel self_damping;
   std::vector<span::SpanDamper> dampers;
   span::FatigueSpec fatigue;
+  span::BalanceOptions balance;
   std::vector<std::filesystem::path> inputs;
   std::vector<std::string> warnings;
 };
@@ -200,8 +201,36 @@ span::FatigueSpec read_fatigue(const TomlTable& table) {
   return fatigue;
 }
 
+/// The optional [balance] table: how the span is balanced (span::BalanceOptions, whose
+/// defaults stand for every key left out; the model checks the ranges).
+span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
+  span::BalanceOptions options;
+  if (!table) return options;
+  span_accept_only(*table, {"damper_model", "polish", "polish_tolerance", "max_polish_evaluations",
+                            "amplitude_min_over_diameter", "amplitude_max_over_diameter", "table"});
+  if (const auto model = table->optional_string("damper_model")) {
+    options.damper_model = span_parsed_name(*table, "damper_model", *model, span::parse_damper_model);
+  }
+  options.polish = table->optional_boolean("polish").value_or(options.polish);
+  options.polish_tolerance = table->optional_number("polish_tolerance").value_or(options.polish_tolerance);
+  if (const auto n = table->optional_integer("max_polish_evaluations", 1, 1000)) options.max_polish_evaluations = static_cast<int>(*n);
+  options.amplitude_min_over_diameter =
+      table->optional_number("amplitude_min_over_diameter").value_or(options.amplitude_min_over_diameter);
+  options.amplitude_max_over_diameter =
+      table->optional_number("amplitude_max_over_diameter").value_or(options.amplitude_max_over_diameter);
+  if (const std::optional<TomlTable> t = table->optional_table("table")) {
+    span_accept_only(*t, {"velocities", "velocity_min", "velocity_max", "column_ratio"});
+    span::ImpedanceTableOptions& o = options.table;
+    if (const auto n = t->optional_integer("velocities", 2, 1000)) o.velocities = static_cast<int>(*n);
+    o.velocity_min = t->optional_number("velocity_min").value_or(o.velocity_min);
+    o.velocity_max = t->optional_number("velocity_max").value_or(o.velocity_max);
+    o.column_ratio = t->optional_number("column_ratio").value_or(o.column_ratio);
+  }
+  return options;
+}
+
 SpanReading read_span_document(const TomlTable& top, const std::filesystem::path& base_directory) {
-  span_accept_only(top, {"conductor", "span", "wind", "self_damping", "damper", "fatigue"});
+  span_accept_only(top, {"conductor", "span", "wind", "self_damping", "damper", "fatigue", "balance"});
   SpanReading reading;
   reading.conductor = read_conductor(top.table("conductor"));
   read_span_table(top.table("span"), reading);
@@ -211,6 +240,7 @@ SpanReading read_span_document(const TomlTable& top, const std::filesystem::path
     reading.dampers.push_back(read_span_damper(table, base_directory, reading));
   }
   reading.fatigue = read_fatigue(top.table("fatigue"));
+  reading.balance = read_balance(top.optional_table("balance"));
   return reading;
 }
 
@@ -220,10 +250,11 @@ SpanFile build_span(const toml::table& document, const TomlSource& source, const
     const double tension = reading.tension ? *reading.tension : within_field("span", [&] {
       return span::tension_from_fraction(reading.conductor, *reading.tension_fraction);
     });
+    within_field("balance", [&] { reading.balance.validate(); });
     return span::Span(std::move(reading.conductor), reading.length, tension, std::move(reading.wind),
                       std::move(reading.self_damping), std::move(reading.dampers), std::move(reading.fatigue));
   });
-  return SpanFile{std::move(built), std::move(reading.inputs), std::move(reading.warnings)};
+  return SpanFile{std::move(built), reading.balance, std::move(reading.inputs), std::move(reading.warnings)};
 }
 
 }  // namespace

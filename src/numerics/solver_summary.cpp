@@ -1,5 +1,7 @@
 #include "stockbridge/numerics/solver_summary.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace stockbridge {
@@ -30,6 +32,10 @@ std::string what_happened(const SolverSummary& s) {
       return fmt::format("converged in {} Newton iterations and {} periods (residual {:.3g})", s.newton_iterations,
                          s.periods, s.residual);
     case Termination::max_iterations:
+      if (s.newton_iterations == 0 && s.evaluations > 0) {
+        return fmt::format("no convergence in {} evaluations{}", s.evaluations,
+                           std::isnan(s.residual) ? "" : fmt::format(" (residual {:.3g})", s.residual));
+      }
       return fmt::format("no convergence in {} Newton iterations (residual {:.3g})", s.newton_iterations, s.residual);
     case Termination::line_search_failed:
       return fmt::format("line search failed at Newton iteration {} (residual {:.3g})", s.newton_iterations + 1,
@@ -46,7 +52,8 @@ std::string what_happened(const SolverSummary& s) {
       return fmt::format("energy balance off by {:.3g} of the apparent power", s.energy_error);
     case Termination::inner_failure: return "a nested solve failed";
     case Termination::no_progress:
-      return fmt::format("no progress after {} evaluations (residual {:.3g})", s.evaluations, s.residual);
+      return fmt::format("no progress after {} evaluations{}", s.evaluations,
+                         std::isnan(s.residual) ? "" : fmt::format(" (residual {:.3g})", s.residual));
     case Termination::no_root: return "no root in the range searched";
   }
   return "unknown termination";

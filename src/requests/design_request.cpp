@@ -31,7 +31,7 @@ constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 
 /// The objective as reported: the stress ratio, or the shortest life in years.
 double reported_objective(const design::DesignStudy& study, const design::Evaluation& e) {
-  if (!e.converged) return kNotComputed;
+  if (!e.converged()) return kNotComputed;
   return study.objective() == design::Objective::life ? e.shortest_life_years : e.max_stress_ratio;
 }
 
@@ -46,14 +46,18 @@ io::JsonObject design_figures(const design::DesignStudy& study, const design::Ev
       .add("total_mass_kg", e.total_mass)
       .add("messenger_curvature_max_per_m", e.messenger_curvature_max)
       .add("shortest_life_years", e.shortest_life_years)
-      .add("feasible", e.feasible);
+      .add("feasible", e.feasible());
   if (const auto position = study.position_of(e.x)) {
     o.add("position_m", *position);
   } else {
     o.add_null("position_m");
   }
   o.add("variables", variables);
-  if (!e.failure.empty()) o.add("note", e.failure);
+  if (!e.converged() && e.termination != Termination::not_run) {
+    o.add("termination", termination_name(e.termination)).add("note", e.failure);
+  } else if (!e.infeasibility.empty()) {
+    o.add("note", e.infeasibility);
+  }
   return o;
 }
 
@@ -73,10 +77,10 @@ std::vector<double> design_row(const design::DesignStudy& study, const design::S
   const design::Evaluation& e = evaluation.evaluation;
   std::vector<double> row{static_cast<double>(evaluation.run)};
   row.insert(row.end(), e.x.begin(), e.x.end());
-  const bool c = e.converged;
+  const bool c = e.converged();
   for (const double v : {reported_objective(study, e), c ? e.max_stress_ratio : kNotComputed, c ? e.max_stress / 1e6 : kNotComputed,
                          c ? e.frequency_at_max_hz : kNotComputed, e.total_mass, c ? e.messenger_curvature_max : kNotComputed,
-                         c ? e.shortest_life_years : kNotComputed, c ? 1.0 : 0.0, e.feasible ? 1.0 : 0.0}) {
+                         c ? e.shortest_life_years : kNotComputed, c ? 1.0 : 0.0, e.feasible() ? 1.0 : 0.0}) {
     row.push_back(v);
   }
   return row;
@@ -96,8 +100,15 @@ std::string design_csv(const design::DesignStudy& study, const design::DesignRes
 io::JsonObject design_summary(const design::DesignStudy& study, const design::DesignResult& result) {
   int converged = 0, feasible = 0;
   for (const design::StudyEvaluation& e : result.evaluations) {
-    converged += e.evaluation.converged ? 1 : 0;
-    feasible += e.evaluation.feasible ? 1 : 0;
+    converged += e.evaluation.converged() ? 1 : 0;
+    feasible += e.evaluation.feasible() ? 1 : 0;
+  }
+  std::vector<io::JsonObject> polishes;
+  for (const SolverSummary& p : result.polishes) {
+    polishes.push_back(io::JsonObject()
+                           .add("termination", termination_name(p.termination))
+                           .add("evaluations", p.evaluations)
+                           .add("reason", p.converged() ? std::string() : brief_report(p)));
   }
   io::JsonObject o;
   o.add("objective", design::objective_name(study.objective()))
@@ -113,6 +124,7 @@ io::JsonObject design_summary(const design::DesignStudy& study, const design::De
   } else {
     o.add_null("best").add("improved", false);
   }
+  o.add("polishes", polishes);
   return o;
 }
 

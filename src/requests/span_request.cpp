@@ -27,7 +27,8 @@ const std::vector<std::string>& span_point_columns() {
       "self_damping_power_w",  "damper_power_w",          "clamp_loop_amplitude_m",
       "damper_clamp_velocity_m_s", "stress_fymax_mpa",    "stress_ps_mpa",
       "damper_clamp_stress_mpa", "undamped_amplitude_m",  "undamped_stress_fymax_mpa",
-      "converged",             "endurance_limit_mpa",     "energy_identity_error"};
+      "converged",             "endurance_limit_mpa",     "energy_identity_error",
+      "undamped_stress_ps_mpa", "several_states"};
   return columns;
 }
 
@@ -77,7 +78,7 @@ void check_span_frequencies(const std::vector<double>& frequencies) {
 void validate(const SpanRequest& request) {
   check_span_frequencies(request.frequencies);
   if (request.frequencies.empty()) require_in_range("points", request.points, 2, kSpanMaxPoints);
-  span::parse_damper_model(request.damper_model);
+  if (request.damper_model) span::parse_damper_model(*request.damper_model);
   require_in_range("threads", request.threads, 1, 1024);
   if (request.position_min.has_value() != request.position_max.has_value()) {
     throw InvalidParameter("optimize_position", ": expected both ends of the range, AMIN:AMAX (m)");
@@ -95,34 +96,27 @@ void validate(const SpanRequest& request) {
   }
 }
 
-span::BalanceOptions balance_options(const SpanRequest& request) {
-  span::BalanceOptions options;
-  options.damper_model = span::parse_damper_model(request.damper_model);
-  // A position search compares positions on the tables alone: the finer table.
-  if (request.position_min) options.table = span::ImpedanceTableOptions::position_search();
-  options.table.threads = request.threads;
+span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const SpanRequest& request) {
+  validate(request);
+  span::AnalysisOptions options;
+  options.balance = file;
+  if (request.damper_model) options.balance.damper_model = span::parse_damper_model(*request.damper_model);
+  options.balance.table.threads = request.threads;
+  if (request.position_min) options.position_range = span::Interval{*request.position_min, *request.position_max};
   options.validate();
   return options;
 }
 
-SpanResult run_span(const span::Span& file_span, const SpanRequest& request, const damper::SweepProgress& progress) {
-  validate(request);
-  const span::BalanceOptions options = balance_options(request);
-  span::Span span = request.no_dampers ? file_span.without_dampers() : file_span;
+SpanResult run_span(const span::Span& file_span, const span::BalanceOptions& file, const SpanRequest& request,
+                    const damper::SweepProgress& progress) {
+  const span::AnalysisOptions options = analysis_options(file, request);
+  const span::Span span = request.no_dampers ? file_span.without_dampers() : file_span;
   if (request.position_min && span.dampers().empty()) {
     throw InvalidParameter("optimize_position", ": the span file has no [[damper]] to place");
   }
   std::vector<double> frequencies =
       request.frequencies.empty() ? span::band_frequencies(span, request.points) : request.frequencies;
-  std::vector<span::ImpedanceTable> tables;
-  if (!span.dampers().empty()) tables = span::impedance_tables(span, frequencies, options, progress);
-  std::optional<span::PositionSearch> search;
-  if (request.position_min) {
-    search = span::optimise_position(span, frequencies, tables, options, *request.position_min, *request.position_max);
-    span = span.with_dampers_at(search->position);
-  }
-  span::SpanBalance balance = span::run_balance(span, frequencies, tables, options);
-  return SpanResult{std::move(span), std::move(frequencies), std::move(balance), search, options.damper_model};
+  return SpanResult{span::analyse_span(span, std::move(frequencies), options, progress), options.balance.damper_model};
 }
 
 std::vector<std::string> span_damper_prefixes(const span::Span& span) {
@@ -175,7 +169,9 @@ std::vector<double> span_row(const span::Span& span, const span::BalancePoint& p
                           mpa(p.undamped_stress_fymax),
                           ok ? 1.0 : 0.0,
                           span.endurance_limit() / kPascalPerMegapascal,
-                          masked(p.identity_error)};
+                          masked(p.identity_error),
+                          mpa(p.undamped_stress_poffenberger_swart),
+                          ok ? (p.several_states ? 1.0 : 0.0) : kSpanNoValue};
   // Per damper and end, in the columns' order; the point's entries by their slot.
   for (const auto& slot : span_column_slots(span)) {
     const auto at = std::find(slots.begin(), slots.end(), slot);
@@ -192,44 +188,53 @@ std::vector<double> span_row(const span::Span& span, const span::BalancePoint& p
 }
 
 io::JsonObject span_summary(const SpanResult& result) {
-  const span::BalanceSummary& s = result.balance.summary;
-  const double limit = s.endurance_limit;
+  const span::SpanAnalysis& a = result.analysis;
+  const span::BalanceSummary& s = a.balance.summary;
+  const auto mpa = [](double pascal) { return pascal / kPascalPerMegapascal; };
+  const bool dampers = !a.span.dampers().empty();
   io::JsonObject json;
   json.add("points", s.points)
       .add("converged", s.converged)
       .add("damper_model", span::damper_model_name(result.damper_model))
-      .add("dampers", static_cast<int>(result.span.dampers().size()))
-      .add("endurance_limit_mpa", limit / kPascalPerMegapascal)
-      .add("verdict", s.safe ? "safe" : "unsafe")
-      .add("max_stress_fymax_mpa", s.max_stress_fymax / kPascalPerMegapascal)
-      .add("max_stress_frequency_hz", s.max_stress_frequency_hz)
-      .add("max_damper_clamp_stress_mpa",
-           result.span.dampers().empty() ? kSpanNoValue : s.max_damper_clamp_stress / kPascalPerMegapascal)
-      .add("undamped_max_stress_fymax_mpa", s.undamped_max_stress_fymax / kPascalPerMegapascal)
+      .add("dampers", static_cast<int>(a.span.dampers().size()))
+      .add("endurance_limit_mpa", mpa(s.endurance_limit))
+      .add("verdict", span::verdict_name(s.verdict))
+      .add("max_stress_fymax_mpa", s.converged > 0 ? mpa(s.max_stress_fymax) : kSpanNoValue)
+      .add("max_stress_frequency_hz", s.converged > 0 ? s.max_stress_frequency_hz : kSpanNoValue)
+      .add("max_damper_clamp_stress_mpa", dampers && s.converged > 0 ? mpa(s.max_damper_clamp_stress) : kSpanNoValue)
+      .add("undamped_max_stress_fymax_mpa", mpa(s.undamped_max_stress_fymax))
       .add("undamped_max_stress_frequency_hz", s.undamped_max_stress_frequency_hz)
-      .add("undamped_verdict", s.undamped_max_stress_fymax <= limit ? "safe" : "unsafe")
-      .add("position_m", result.span.dampers().empty() ? kSpanNoValue : result.span.dampers().front().position)
-      .add("position_optimized", result.position.has_value());
-  if (s.life) json.add("life_years", s.life->life_years).add("damage_per_year", s.life->damage_per_year);
-  if (s.undamped_life) {
-    json.add("undamped_life_years", s.undamped_life->life_years)
-        .add("undamped_damage_per_year", s.undamped_life->damage_per_year);
+      .add("undamped_verdict", span::verdict_name(s.undamped_verdict))
+      .add("position_m", dampers ? a.span.dampers().front().position : kSpanNoValue)
+      .add("position_optimized", a.position.has_value());
+  if (a.span.fatigue().life) {
+    const auto add_life = [&json](std::string_view prefix, const std::optional<span::LifeEstimate>& life, int missing) {
+      json.add(fmt::format("{}life_years", prefix), life ? life->life_years : kSpanNoValue)
+          .add(fmt::format("{}damage_per_year", prefix), life ? life->damage_per_year : kSpanNoValue)
+          .add(fmt::format("{}life_missing_points", prefix), missing);
+    };
+    add_life("", s.life, s.life_missing_points);
+    add_life("undamped_", s.undamped_life, s.undamped_life_missing_points);
   }
   double identity = kSpanNoValue;
   std::vector<io::JsonObject> failed;
-  for (const span::BalancePoint& p : result.balance.points) {
+  std::vector<double> several;
+  for (const span::BalancePoint& p : a.balance.points) {
     if (p.converged()) {
       identity = std::isnan(identity) ? p.identity_error : std::max(identity, p.identity_error);
+      if (p.several_states) several.push_back(p.frequency_hz);
       continue;
     }
     failed.push_back(io::JsonObject()
                          .add("frequency_hz", p.frequency_hz)
-                         .add("termination", termination_name(p.termination))
-                         .add("reason", p.failure));
+                         .add("termination", termination_name(p.summary.termination))
+                         .add("reason", brief_report(p.summary)));
   }
   json.add("impedance_nodes", s.impedance_nodes)
       .add("failed_impedance_nodes", s.failed_impedance_nodes)
+      .add("direct_solves", s.direct_solves)
       .add("max_energy_identity_error", identity)
+      .add("several_states_hz", several)
       .add("failed", failed);
   return json;
 }

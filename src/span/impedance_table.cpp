@@ -17,10 +17,10 @@ void ImpedanceTableOptions::validate() const {
   solver.validate();
 }
 
-ImpedanceTableOptions ImpedanceTableOptions::position_search() {
-  ImpedanceTableOptions options;
-  options.velocities = 25;
-  options.column_ratio = 1.2;
+ImpedanceTableOptions ImpedanceTableOptions::for_position_search() const {
+  ImpedanceTableOptions options = *this;
+  options.velocities = std::max(velocities, 25);
+  options.column_ratio = std::min(column_ratio, 1.2);
   return options;
 }
 

@@ -319,9 +319,9 @@ def test_span_equals_the_programs_csv_and_json(tmp_path):
 
 def test_span_returns_the_documented_keys_and_takes_the_cli_options(tmp_path):
     s = sb.span(SPAN, frequencies=[10.0, 20.0, 30.0, 40.0], no_dampers=True)
-    assert set(s) == set(s["columns"]) | {"termination", "messages", "dampers", "columns", "summary"}
+    assert set(s) == set(s["columns"]) | {"termination", "messages", "notes", "dampers", "columns", "summary"}
     documented = documented_keys("span", ["sauter2003"])
-    assert {"converged", "termination", "messages", "dampers", "columns", "summary"} <= documented
+    assert {"converged", "several_states", "termination", "messages", "notes", "dampers", "columns", "summary"} <= documented
     # MODEL.md section 9's undamped check numbers.
     assert s["amplitude_m"] == pytest.approx([26.5e-3, 10.6e-3, 3.04e-3, 1.58e-3], rel=0.005)
     assert np.array_equal(s["amplitude_m"], s["undamped_amplitude_m"])

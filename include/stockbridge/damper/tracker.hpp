@@ -47,8 +47,8 @@ class ArmTracker {
 /// combined into the clamp's impedance as a sweep's point.
 class DamperTracker {
  public:
-  /// `damper` must outlive the tracker.
-  DamperTracker(const Damper& damper, const SolverOptions& options, HeldAmplitude held = HeldAmplitude::velocity);
+  /// The tracker keeps its own copy of the damper.
+  DamperTracker(Damper damper, const SolverOptions& options, HeldAmplitude held = HeldAmplitude::velocity);
 
   /// The damper at `excitation`; converged() false (with the failure) where an arm did not converge.
   ImpedancePoint solve(const Excitation& excitation);
@@ -66,7 +66,7 @@ class DamperTracker {
   void forget();
 
  private:
-  const Damper* damper_;
+  Damper damper_;
   double energy_tolerance_;
   std::vector<ArmTracker> arms_;  ///< one per distinct arm
   int solves_ = 0;

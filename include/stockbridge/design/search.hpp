@@ -26,19 +26,26 @@ struct SearchOptions {
   void validate() const;
 };
 
-/// Runs independent tasks, each giving evaluations, and returns every task's in
-/// task order (to every caller, on MPI every rank).
+/// What one task of a search gives: its evaluations and, for a local polish, how the
+/// optimiser ended (not_run for a task that is no optimisation).
+struct TaskOutput {
+  std::vector<Evaluation> evaluations;
+  SolverSummary optimiser;
+};
+
+/// Runs independent tasks and returns every task's output in task order (to every
+/// caller, on MPI every rank).
 class TaskRunner {
  public:
   virtual ~TaskRunner() = default;
-  virtual std::vector<std::vector<Evaluation>> run(int tasks, const std::function<std::vector<Evaluation>(int)>& task) = 0;
+  virtual std::vector<TaskOutput> run(int tasks, const std::function<TaskOutput(int)>& task) = 0;
 };
 
 /// Tasks on `threads` threads of this process (tasks taken in turn as threads free up).
 class ThreadRunner final : public TaskRunner {
  public:
   explicit ThreadRunner(int threads);
-  std::vector<std::vector<Evaluation>> run(int tasks, const std::function<std::vector<Evaluation>(int)>& task) override;
+  std::vector<TaskOutput> run(int tasks, const std::function<TaskOutput(int)>& task) override;
 
  private:
   int threads_;
@@ -56,6 +63,10 @@ struct StudyEvaluation {
 
 struct DesignResult {
   std::vector<StudyEvaluation> evaluations;  ///< base, samples in order, then each polish's in order
+  /// How each local polish (COBYLA) ended: converged (the step fell below the
+  /// tolerance), max_iterations (polish_evaluations used up), no_progress (stopped
+  /// by round-off), inner_failure (NLopt failed: `where` says how); evaluations.
+  std::vector<SolverSummary> polishes;
   /// The best feasible evaluation (index into evaluations); none when no candidate is feasible.
   std::optional<std::size_t> best;
   std::size_t base = 0;  ///< the base design's index (0)

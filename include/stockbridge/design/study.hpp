@@ -17,7 +17,8 @@
 #include <functional>
 #include <vector>
 
-#include "stockbridge/span/balance.hpp"
+#include "stockbridge/numerics/solver_summary.hpp"
+#include "stockbridge/span/analysis.hpp"
 
 namespace stockbridge::design {
 
@@ -47,10 +48,12 @@ struct DesignConstraints {
   std::optional<double> messenger_curvature_max;  ///< 1/m, every arm, span and frequency
 };
 
-/// A span the candidates serve, and the name the results give it.
+/// A span the candidates serve, the name the results give it, and how it is
+/// balanced (its span file's [balance] table).
 struct DesignSpan {
   span::Span span;
   std::string name;
+  span::BalanceOptions balance;
 };
 
 class DesignStudy {
@@ -97,8 +100,15 @@ class DesignStudy {
 /// for both objectives: the stress ratio, or minus the shortest life in years).
 struct Evaluation {
   std::vector<double> x;
-  bool converged = false;      ///< every span's every point balanced (else `failure`)
-  bool feasible = false;       ///< converged and within every constraint
+  /// How the candidate's balances ended: converged (every span's every point
+  /// balanced), else the termination of the first point that did not (`failure`
+  /// names the span, the frequency and the solver's report); not_run where the
+  /// candidate could not be built (`infeasibility` says why).
+  Termination termination = Termination::not_run;
+  std::string failure;
+  /// Why the candidate lies outside the design space: a broken constraint, or a
+  /// damper or span that is not valid. Empty: within it.
+  std::string infeasibility;
   double objective = std::numeric_limits<double>::infinity();
   double max_stress_ratio = std::numeric_limits<double>::quiet_NaN();  ///< largest fymax stress / endurance limit
   double max_stress = std::numeric_limits<double>::quiet_NaN();        ///< Pa, where the ratio is largest
@@ -107,7 +117,10 @@ struct Evaluation {
   double total_mass = std::numeric_limits<double>::quiet_NaN();        ///< kg
   double messenger_curvature_max = std::numeric_limits<double>::quiet_NaN();  ///< 1/m
   double shortest_life_years = std::numeric_limits<double>::quiet_NaN();     ///< with objective life
-  std::string failure;         ///< why not converged, or which constraint is broken
+
+  bool converged() const { return termination == Termination::converged; }
+  /// Converged and within the design space: the only candidates a study ranks as answers.
+  bool feasible() const { return converged() && infeasibility.empty(); }
 };
 
 /// The dampers' impedance tables of the candidates evaluated so far, by the values
@@ -116,18 +129,19 @@ struct Evaluation {
 /// so sharing changes no result). Safe to use from several threads.
 class TableCache {
  public:
-  using Tables = std::vector<span::ImpedanceTable>;
+  using Make = std::function<std::shared_ptr<const span::SpanTables>()>;
   /// The tables of span k for a damper made by `key`, made by `make` if not there yet.
-  std::shared_ptr<const Tables> get(std::size_t k, const std::vector<double>& key, const std::function<Tables()>& make);
+  std::shared_ptr<const span::SpanTables> get(std::size_t k, const std::vector<double>& key, const Make& make);
 
  private:
   std::mutex mutex_;
-  std::map<std::pair<std::size_t, std::vector<double>>, std::shared_ptr<const Tables>> tables_;
+  std::map<std::pair<std::size_t, std::vector<double>>, std::shared_ptr<const span::SpanTables>> tables_;
 };
 
-/// Evaluates a candidate (one thread), with tables from `cache` where given. A
+/// Evaluates a candidate (one thread): the span analysis (span::analyse_span) of
+/// every span with its own balance options, tables from `cache` where given. A
 /// candidate whose damper is invalid (an arm mass below zero, a cable too short)
-/// is not converged, with the reason.
+/// is infeasible, with the reason, and not run.
 Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, TableCache* cache = nullptr);
 
 }  // namespace stockbridge::design

@@ -29,6 +29,18 @@
 //   cycles = 5e8                     # or endurance_limit = Pa
 //   wind_weibull = { shape = 2.0, scale = 4.0 }  # optional, with aeolian_fraction
 //   aeolian_fraction = 0.3
+//   [balance]                        # optional, every key optional (span::BalanceOptions' defaults)
+//   damper_model = "travelling"      # travelling | weak
+//   polish = true                    # the dampers solved directly at their clamp velocities
+//   polish_tolerance = 1e-6          # in log v
+//   max_polish_evaluations = 60
+//   amplitude_min_over_diameter = 1e-6
+//   amplitude_max_over_diameter = 10
+//   [balance.table]                  # the dampers' impedance tables
+//   velocities = 9
+//   velocity_min = 1e-3              # m/s
+//   velocity_max = 3.0               # m/s
+//   column_ratio = 1.5
 //
 // The reader checks types and keys (a misspelt or unknown key is an error); the
 // span model validates the values (span::Span), and its InvalidParameter, named
@@ -41,15 +53,18 @@
 #include <vector>
 
 #include "stockbridge/span/balance.hpp"
+#include "stockbridge/span/span.hpp"
 
 namespace stockbridge::io {
 
-/// A span file as read: the (validated) span, the files it references (damper
-/// files, the cable files those reference, a wind table: inputs a command must not
-/// overwrite; the span file itself is not listed), and a located warning line for
-/// each value outside the typical ranges (those of the damper files).
+/// A span file as read: the (validated) span, how to balance it (validated), the
+/// files it references (damper files, the cable files those reference, a wind
+/// table: inputs a command must not overwrite; the span file itself is not listed),
+/// and a located warning line for each value outside the typical ranges (those of
+/// the damper files).
 struct SpanFile {
   span::Span span;
+  span::BalanceOptions balance;
   std::vector<std::filesystem::path> inputs;
   std::vector<std::string> warnings;
 };

@@ -43,7 +43,9 @@ std::string design_csv(const design::DesignStudy& study, const design::DesignRes
 /// objective, evaluations, converged, feasible, base and best (each: objective,
 /// max_stress_ratio, max_stress_mpa, frequency_at_max_hz, total_mass_kg,
 /// messenger_curvature_max_per_m, shortest_life_years, position_m, variables
-/// {name: value}; best null when nothing is feasible), improved.
+/// {name: value}, and for a candidate that is not feasible its termination and a
+/// note; best null when nothing is feasible), improved, polishes (each local
+/// polish's termination, evaluations and reason).
 io::JsonObject design_summary(const design::DesignStudy& study, const design::DesignResult& result);
 
 /// The best design as a complete damper file (the `impedance` and `span` commands

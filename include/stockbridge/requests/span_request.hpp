@@ -12,7 +12,7 @@
 
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/io/json_writer.hpp"
-#include "stockbridge/span/balance.hpp"
+#include "stockbridge/span/analysis.hpp"
 
 namespace stockbridge::requests {
 
@@ -20,7 +20,8 @@ struct SpanRequest {
   std::vector<double> frequencies;  ///< Hz, strictly increasing; empty: `points` over the wind band
   int points = 100;                 ///< log-spaced over the wind band (span::band_frequencies), >= 2
   bool no_dampers = false;          ///< balance the span without its dampers
-  std::string damper_model = "travelling";  ///< travelling | weak (span::parse_damper_model)
+  /// travelling | weak (span::parse_damper_model), instead of the span file's [balance] damper_model.
+  std::optional<std::string> damper_model;
   /// Search the dampers' position in [min, max] (m from the span end's clamp), every
   /// damper moved together, then balance the span there (span::optimise_position).
   std::optional<double> position_min, position_max;
@@ -31,23 +32,23 @@ struct SpanRequest {
 /// setting: "frequencies[1]", "points", "damper_model", "optimize_position", "threads").
 void validate(const SpanRequest& request);
 
-/// The balance's options for a request (validated).
-span::BalanceOptions balance_options(const SpanRequest& request);
+/// The analysis's options: the span file's balance options with the request's
+/// changes (validated).
+span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const SpanRequest& request);
 
-/// What a span request computed.
+/// What a span request computed: the analysis (its span as balanced: without
+/// dampers, or with them at the position found) and the damper model it used.
 struct SpanResult {
-  span::Span span;                  ///< as balanced: without dampers, or with them at the position found
-  std::vector<double> frequencies;  ///< Hz
-  span::SpanBalance balance;
-  std::optional<span::PositionSearch> position;  ///< with a position search
+  span::SpanAnalysis analysis;
   span::DamperModel damper_model = span::DamperModel::travelling;
 };
 
-/// Validates the request against the span (a position search needs dampers), builds
-/// the dampers' impedance tables (`progress` counts their nodes), searches the
-/// position if asked, and balances the span at every frequency. Non-convergence is
-/// in the points, never an exception.
-SpanResult run_span(const span::Span& span, const SpanRequest& request, const damper::SweepProgress& progress = {});
+/// Validates the request against the span (a position search needs dampers) and
+/// runs the analysis (span::analyse_span) at the request's frequencies, with the
+/// span file's balance options (`file`) and the request's changes; `progress`
+/// counts the tables' nodes. Non-convergence is in the points, never an exception.
+SpanResult run_span(const span::Span& span, const span::BalanceOptions& file, const SpanRequest& request,
+                    const damper::SweepProgress& progress = {});
 
 /// How the per-damper columns name each damper: the span's names (the damper files'
 /// stems) where every one is unique and made of letters, digits and '_', else
@@ -59,7 +60,7 @@ std::vector<std::string> span_damper_prefixes(const span::Span& span);
 ///   wind_power_w, self_damping_power_w, damper_power_w, clamp_loop_amplitude_m,
 ///   damper_clamp_velocity_m_s, stress_fymax_mpa, stress_ps_mpa, damper_clamp_stress_mpa,
 ///   undamped_amplitude_m, undamped_stress_fymax_mpa, converged, endurance_limit_mpa,
-///   energy_identity_error,
+///   energy_identity_error, undamped_stress_ps_mpa, several_states,
 /// then for each damper and each end it is at (k = 1, 2):
 ///   <prefix>_end<k>_velocity_m_s, <prefix>_end<k>_re_z_n_s_m, <prefix>_end<k>_im_z_n_s_m,
 ///   <prefix>_end<k>_power_w, <prefix>_end<k>_clamp_stress_mpa.
@@ -73,12 +74,15 @@ std::vector<std::string> span_columns(const span::Span& span);
 std::vector<double> span_row(const span::Span& span, const span::BalancePoint& point);
 
 /// The summary, as `stockbridge span --json` prints it and Python returns it:
-/// points, converged, damper_model, dampers, endurance_limit_mpa, verdict,
-/// max_stress_fymax_mpa, max_stress_frequency_hz, max_damper_clamp_stress_mpa,
-/// undamped_max_stress_fymax_mpa, undamped_max_stress_frequency_hz, undamped_verdict,
-/// position_m, position_optimized, [life_years, damage_per_year, undamped_life_years,
-/// undamped_damage_per_year when the span file gives the climate], impedance_nodes,
-/// failed_impedance_nodes, max_energy_identity_error, failed.
+/// points, converged, damper_model, dampers, endurance_limit_mpa, verdict (safe,
+/// unsafe or unknown), max_stress_fymax_mpa, max_stress_frequency_hz (over the
+/// converged points), max_damper_clamp_stress_mpa, undamped_max_stress_fymax_mpa,
+/// undamped_max_stress_frequency_hz, undamped_verdict, position_m,
+/// position_optimized, [life_years, damage_per_year, life_missing_points,
+/// undamped_life_years, undamped_damage_per_year, undamped_life_missing_points when
+/// the span file gives the climate: a life null where a point is missing],
+/// impedance_nodes, failed_impedance_nodes, direct_solves, max_energy_identity_error,
+/// several_states_hz, failed.
 io::JsonObject span_summary(const SpanResult& result);
 
 }  // namespace stockbridge::requests

@@ -6,105 +6,82 @@
 //     P_w(Y) = P_s(Y) + sum over ends P_d(Y),
 // the smallest Y > 0 where P_w - P_s - P_d changes from positive to negative
 // (vibration builds up from rest). Each end's P_d comes from the travelling-wave
-// model with every damper's impedance at its own clamp velocity (a fixed point,
-// end_fixed_point.hpp), or from the weak-damper form. The dampers' impedances come
-// from an ImpedanceTable per damper, solved once for the band, then (the polish)
-// from harmonic balance solved directly at each damper's clamp velocity, followed
-// along the band (damper::DamperTracker). Then the stresses at
+// model (travelling_wave.hpp), or from the weak-damper form. The dampers'
+// impedances come first from an ImpedanceTable per damper, solved once for the
+// band (end_fixed_point.hpp finds each end's clamp velocities on them), then (the
+// polish) from harmonic balance solved directly at every damper's clamp velocity:
+// all dampers' clamp velocities solved as one system, each frequency continuing
+// from the last (docs/span.md, "Several dampers per end"). Then the stresses at
 // the span clamp (fymax, Poffenberger-Swart) and at each damper clamp, and the
-// endurance limit of the Safe Border Line.
+// summary: the largest stress, the verdict and the life, from converged points only.
+//
+// Most callers want analysis.hpp (tables, position search, balance and summary in
+// one call); this is the balance itself.
 
 #include <complex>
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "stockbridge/damper/damper.hpp"
+#include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/numerics/solver_summary.hpp"
-#include "stockbridge/span/conductor.hpp"
 #include "stockbridge/span/end_fixed_point.hpp"
-#include "stockbridge/span/fatigue.hpp"
 #include "stockbridge/span/impedance_table.hpp"
 #include "stockbridge/span/life.hpp"
-#include "stockbridge/span/self_damping.hpp"
+#include "stockbridge/span/span.hpp"
 #include "stockbridge/span/undamped.hpp"
-#include "stockbridge/span/wind.hpp"
 
 namespace stockbridge::span {
 
-/// A damper on the span: at `position` (m from the span end's clamp) at one end, or
-/// at both ends (mirrored).
-struct SpanDamper {
-  damper::Damper damper;
-  double position = 0.0;
-  bool both_ends = true;
-  std::string name;  ///< how tables and messages call it ("damper 1" or the file's stem)
-};
-
-/// Where the fatigue verdict's endurance limit comes from: the Safe Border Line at
-/// `cycles`, or a given limit (Pa).
-struct FatigueSpec {
-  std::optional<double> cycles;
-  std::optional<double> endurance_limit;
-  std::optional<LifeModel> life;
-
-  void validate() const;
-};
-
-/// A span as a span file describes it, valid by construction.
-class Span {
- public:
-  Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
-       std::vector<SpanDamper> dampers, FatigueSpec fatigue);
-
-  const Conductor& conductor() const { return conductor_; }
-  double length() const { return length_; }
-  double tension() const { return tension_; }
-  const WindModel& wind() const { return wind_; }
-  const SelfDampingModel& self_damping() const { return self_damping_; }
-  const std::vector<SpanDamper>& dampers() const { return dampers_; }
-  const FatigueSpec& fatigue() const { return fatigue_; }
-  /// The endurance limit the verdict uses, Pa.
-  double endurance_limit() const;
-  /// The same span with every damper moved to `position` + (its position - the first's).
-  Span with_dampers_at(double position) const;
-  /// The same span without dampers.
-  Span without_dampers() const;
-
- private:
-  Conductor conductor_;
-  double length_;
-  double tension_;
-  WindModel wind_;
-  SelfDampingModel self_damping_;
-  std::vector<SpanDamper> dampers_;
-  FatigueSpec fatigue_;
-};
-
 enum class DamperModel { travelling, weak };
+/// "travelling" or "weak"; InvalidParameter naming "damper_model" otherwise.
 DamperModel parse_damper_model(std::string_view name);
 std::string_view damper_model_name(DamperModel model);
 
+/// How a span is balanced. Each default is here; a span file's [balance] table sets
+/// them by the same names (docs/file-formats.md).
 struct BalanceOptions {
   DamperModel damper_model = DamperModel::travelling;
   ImpedanceTableOptions table;
   FixedPointOptions fixed_point;
   RootSearchOptions root;
-  /// Polish with harmonic balance solved directly: at trial clamp velocities v each
-  /// damper is solved directly and the span balanced with those impedances held
-  /// fixed; the velocities that reproduce themselves are found by the secant method
-  /// in log v, to `polish_tolerance`; then every damper's Z is the directly solved
-  /// one at its v*. Without it the table's interpolation error stands (up to tens of
-  /// percent in Z where a resonance passes the frequency as v grows: docs/span.md).
+  /// Polish with harmonic balance solved directly at every damper's clamp velocity
+  /// (all dampers' velocities as one system, to `polish_tolerance` in log v). Without
+  /// it the tables' interpolation error stands (up to tens of percent in Z where a
+  /// resonance passes the frequency as v grows: docs/span.md).
   bool polish = true;
   double polish_tolerance = 1e-6;
-  int max_polish_iterations = 60;
+  /// The polish's evaluations of the system at one frequency at most (each solves
+  /// every damper once).
+  int max_polish_evaluations = 60;
   /// The amplitudes searched, as fractions of the conductor diameter.
   double amplitude_min_over_diameter = 1e-6;
   double amplitude_max_over_diameter = 10.0;
 
+  /// Throws InvalidParameter naming the field ("table.velocities", "polish_tolerance").
   void validate() const;
+};
+
+/// The dampers' impedance tables of a span over its frequencies: one per damper, in
+/// the span's order, all made for `frequencies()` (the balance takes them from here,
+/// so the two cannot disagree).
+class SpanTables {
+ public:
+  /// The tables of the span's dampers at `frequencies` (Hz, strictly increasing;
+  /// none without dampers); `progress` counts their nodes.
+  SpanTables(const Span& span, std::vector<double> frequencies, const ImpedanceTableOptions& options,
+             const damper::SweepProgress& progress = {});
+
+  const std::vector<double>& frequencies() const { return frequencies_; }
+  const std::vector<ImpedanceTable>& tables() const { return tables_; }
+  int nodes() const;
+  int failed_nodes() const;
+
+ private:
+  std::vector<double> frequencies_;
+  std::vector<ImpedanceTable> tables_;
 };
 
 /// One damper at one frequency's balance.
@@ -138,30 +115,60 @@ struct BalancePoint {
   /// difference of the incoming and outgoing waves' powers)
   double identity_error = 0.0;
   std::vector<DamperAtBalance> dampers; ///< end 1's by position from the end, then end 2's
-  double undamped_amplitude = 0.0;      ///< m
+  double undamped_amplitude = 0.0;      ///< m (NaN: no undamped balance)
   double undamped_stress_fymax = 0.0;   ///< Pa
-  Termination termination = Termination::not_run;
-  std::string failure;
+  double undamped_stress_poffenberger_swart = 0.0;  ///< Pa
+  /// How the balance ended: converged; no_root (the wind's power exceeds the
+  /// dissipation up to the amplitude limit: no stable balance); inner_failure (a
+  /// damper's impedance not known or not solved: `where`); max_iterations or
+  /// no_progress (the dampers' clamp velocities with directly solved impedances:
+  /// evaluations, residual = max |log G - log v|); energy_mismatch (the ends'
+  /// identity: residual = identity_error). brief_report(summary) is the message.
+  SolverSummary summary;
+  /// Several self-consistent states near this frequency: the continuation passed a
+  /// fold of the clamp velocities (the sign of det(dh/du) changed since the last
+  /// frequency), or the tables' start reached another state; `note` says which.
+  bool several_states = false;
+  std::string note;
 
-  bool converged() const { return termination == Termination::converged; }
+  bool converged() const { return summary.converged(); }
 };
 
-/// The span's figures over the band.
+/// Pass or fail against the endurance limit, from converged points only.
+enum class Verdict {
+  safe,     ///< every point converged, and every fymax stress within the limit
+  unsafe,   ///< a converged point's fymax stress exceeds the limit
+  unknown,  ///< some points did not converge and none of the others exceeds the limit
+};
+std::string_view verdict_name(Verdict verdict);
+
+/// The span's figures over the band; nothing here rests on a point that did not converge.
 struct BalanceSummary {
   int points = 0;
   int converged = 0;
   double endurance_limit = 0.0;          ///< Pa
-  double max_stress_fymax = 0.0;         ///< Pa, over the converged points
+  /// Over the converged points (a lower bound where converged < points), Pa.
+  double max_stress_fymax = 0.0;
   double max_stress_frequency_hz = 0.0;
   double max_damper_clamp_stress = 0.0;  ///< Pa
+  Verdict verdict = Verdict::unknown;
+  int undamped_points = 0;               ///< with an undamped balance (the rest: none up to 10 D)
   double undamped_max_stress_fymax = 0.0;
   double undamped_max_stress_frequency_hz = 0.0;
-  bool safe = false;                     ///< every converged point's fymax stress within the endurance limit
-  std::optional<LifeEstimate> life;      ///< with dampers (when the span file gives the wind climate)
+  Verdict undamped_verdict = Verdict::unknown;
+  /// Miner's life from the Poffenberger-Swart stresses (the Safe Border Line is stated
+  /// for them), when the span gives the climate and every point converged; none
+  /// otherwise (`life_missing_points` then says how many are missing).
+  std::optional<LifeEstimate> life;
   std::optional<LifeEstimate> undamped_life;
+  int life_missing_points = 0;
+  int undamped_life_missing_points = 0;
+  int several_states = 0;                ///< points with several self-consistent states
   int impedance_nodes = 0;               ///< the tables' (frequency, velocity) nodes
   int failed_impedance_nodes = 0;
   int direct_solves = 0;                 ///< the polish's harmonic-balance solves of a damper
+
+  bool all_converged() const { return converged == points; }
 };
 
 /// What a balance run returns.
@@ -173,27 +180,9 @@ struct SpanBalance {
 /// The frequencies of the wind band f = St U / D, U from speed_min to speed_max, log-spaced.
 std::vector<double> band_frequencies(const Span& span, int points);
 
-/// The dampers' impedance tables for `frequencies` (one per damper of the span).
-std::vector<ImpedanceTable> impedance_tables(const Span& span, const std::vector<double>& frequencies,
-                                             const BalanceOptions& options, const damper::SweepProgress& progress = {});
-
-/// The balance at every frequency (strictly increasing), with the dampers' tables
-/// (impedance_tables for the same frequencies; none needed without dampers).
-SpanBalance run_balance(const Span& span, const std::vector<double>& frequencies, const std::vector<ImpedanceTable>& tables,
-                        const BalanceOptions& options);
-
-/// The position (m from the span end) in [position_min, position_max] minimising the
-/// largest fymax stress over the band, every damper moved together: a scan of
-/// `scan_points` positions, then a golden-section refinement around the best; the
-/// balances of the search use the tables without the polish (max_stress_fymax is
-/// theirs), so balance the position found with the caller's options.
-struct PositionSearch {
-  double position = 0.0;
-  double max_stress_fymax = 0.0;  ///< Pa, at the position found
-  int balances = 0;               ///< balance runs made
-};
-PositionSearch optimise_position(const Span& span, const std::vector<double>& frequencies,
-                                 const std::vector<ImpedanceTable>& tables, const BalanceOptions& options,
-                                 double position_min, double position_max, int scan_points = 41);
+/// The balance at every frequency of the tables (made for this span's dampers, or
+/// for dampers alike: only the dampers' positions may differ; none without dampers).
+/// std::invalid_argument when the tables are not one per damper.
+SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options);
 
 }  // namespace stockbridge::span

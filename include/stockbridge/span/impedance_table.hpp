@@ -22,7 +22,7 @@ struct ImpedanceTableOptions {
   double velocity_max = 3.0;   ///< m/s, highest node
   /// Log-spaced nodes, >= 2. The polished balance takes only its start from the
   /// table (docs/span.md): a coarse one serves it; a balance on the table alone
-  /// (the position search) wants a finer one (position_search()).
+  /// (the position search) wants a finer one (for_position_search()).
   int velocities = 9;
   /// The frequencies solved (columns) lie at most this factor apart (the first and
   /// last always solved; 1 solves every frequency); between them Z is interpolated
@@ -32,10 +32,10 @@ struct ImpedanceTableOptions {
   int threads = 1;
 
   void validate() const;
-  /// The finer table a balance on the table alone wants: 25 velocities, columns at
-  /// most a factor 1.2 apart (Z within a few percent of the direct solution away
-  /// from the damper's resonances: docs/span.md).
-  static ImpedanceTableOptions position_search();
+  /// The finer table a balance on the table alone wants: at least 25 velocities,
+  /// columns at most a factor 1.2 apart (Z within a few percent of the direct
+  /// solution away from the damper's resonances: docs/span.md); the rest as here.
+  ImpedanceTableOptions for_position_search() const;
 };
 
 class ImpedanceTable {

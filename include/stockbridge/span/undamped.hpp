@@ -12,6 +12,7 @@
 #include <functional>
 #include <optional>
 
+#include "stockbridge/numerics/solver_summary.hpp"
 #include "stockbridge/span/conductor.hpp"
 #include "stockbridge/span/self_damping.hpp"
 #include "stockbridge/span/wind.hpp"
@@ -28,18 +29,31 @@ struct RootSearchOptions {
   void validate() const;
 };
 
+/// What smallest_stable_root found.
+struct StableRoot {
+  double amplitude = 0.0;  ///< the root (0: nothing builds up); meaningful only where converged
+  /// converged; no_root (the net power stays positive up to y_max: no balance in the
+  /// range); non_finite (the net power is not finite where it was evaluated before
+  /// the root was found: `where` says at which amplitude); max_iterations (the
+  /// refinement's iterations ran out: residual is the bracket's relative width).
+  /// evaluations: of the net power.
+  SolverSummary summary;
+
+  bool converged() const { return summary.converged(); }
+};
+
 /// The smallest amplitude in [y_min, y_max] (0 < y_min < y_max) where `net_power`
 /// changes from positive to negative:
 ///   * 0 when net_power(y_min) <= 0 (nothing builds up from rest);
 ///   * the root, refined to options.relative_tolerance, of the first grid interval
 ///     whose left end is > 0 and right end <= 0 (grid: options.points_per_decade
-///     log-spaced amplitudes per decade, from y_min to y_max);
-///   * none when the net power stays positive up to y_max (no balance in the range),
-///     or is not finite where it is evaluated before the root is found.
+///     log-spaced amplitudes per decade, from y_min to y_max), by TOMS 748;
+///   * none (no_root, non_finite: StableRoot) when the net power stays positive up
+///     to y_max, or is not finite where it is evaluated before the root is found.
 /// A dip of the net power below zero narrower than one grid step can be missed.
 /// Throws InvalidParameter naming "y_min", "y_max" or an option for a bad range.
-std::optional<double> smallest_stable_root(const std::function<double(double)>& net_power, double y_min,
-                                           double y_max, const RootSearchOptions& options = {});
+StableRoot smallest_stable_root(const std::function<double(double)>& net_power, double y_min, double y_max,
+                                const RootSearchOptions& options = {});
 
 /// The amplitudes the undamped balance searches, in conductor diameters: from
 /// 1e-6 D to 10 D (CIGRE's reduced power is negative beyond 1.022 D).

@@ -141,17 +141,19 @@ TEST(SpaceFillingSample, FillsTheBoxStratifiedAndFollowsTheSeed) {
 TEST(DesignEvaluation, ConstraintsMakeACandidateInfeasibleAndSaySo) {
   const DesignStudy heavy = study_of({{"arm.left.mass", 0.5, 3.0}}, {}, {1.0, std::nullopt});
   const Evaluation e = evaluate(heavy, heavy.base_values());
-  ASSERT_TRUE(e.converged) << e.failure;
-  EXPECT_FALSE(e.feasible);
-  EXPECT_NE(e.failure.find("total mass 2.412 kg > total_mass_max 1 kg"), std::string::npos) << e.failure;
+  ASSERT_TRUE(e.converged()) << e.failure;
+  EXPECT_FALSE(e.feasible());
+  EXPECT_TRUE(e.failure.empty()) << e.failure;
+  EXPECT_NE(e.infeasibility.find("total mass 2.412 kg > total_mass_max 1 kg"), std::string::npos) << e.infeasibility;
   const DesignStudy stiff = study_of({{"arm.left.mass", 0.5, 3.0}}, {}, {std::nullopt, 1e-3});
   const Evaluation c = evaluate(stiff, stiff.base_values());
-  EXPECT_FALSE(c.feasible);
-  EXPECT_NE(c.failure.find("messenger_curvature_max 0.001 1/m"), std::string::npos) << c.failure;
+  EXPECT_FALSE(c.feasible());
+  EXPECT_NE(c.infeasibility.find("messenger_curvature_max 0.001 1/m"), std::string::npos) << c.infeasibility;
   EXPECT_GT(c.messenger_curvature_max, 1e-3);
   const DesignStudy free = study_of({{"arm.left.mass", 0.5, 3.0}});
   const Evaluation f = evaluate(free, free.base_values());
-  EXPECT_TRUE(f.feasible);
+  EXPECT_TRUE(f.feasible());
+  EXPECT_EQ(f.termination, Termination::converged);
   EXPECT_EQ(f.objective, f.max_stress_ratio);
   EXPECT_NEAR(f.total_mass, 0.7 + 2 * 0.856, 1e-12);
 }
@@ -174,7 +176,7 @@ TEST(DesignSearch, OneVariableMatchesADenseScan) {
   TableCache cache;
   for (int k = 0; k <= steps; ++k) {
     const Evaluation e = evaluate(study, {0.5 + k * step}, &cache);
-    ASSERT_TRUE(e.converged) << e.failure;
+    ASSERT_TRUE(e.converged()) << e.failure;
     if (e.objective < scan_best) scan_best = e.objective, scan_at = 0.5 + k * step;
   }
   if (stockbridge::testing::short_tests()) return;  // too few evaluations to find the optimum: the paths are covered

@@ -12,6 +12,7 @@
 #include "aster570.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/span/balance.hpp"
+#include "stockbridge/span/position_search.hpp"
 #include "support/damper_fixtures.hpp"
 #include "support/test_scale.hpp"
 
@@ -40,10 +41,10 @@ BalanceOptions fast_options() { return BalanceOptions{}; }  // the defaults: a c
 TEST(SpanBalance, WithoutDampersItIsTheUndampedBalanceOfTheCheckNumbers) {
   const Span span = aster_span({});
   const std::vector<double> f{10.0, 20.0, 30.0, 40.0};
-  const SpanBalance b = run_balance(span, f, {}, BalanceOptions{});
+  const SpanBalance b = run_balance(span, SpanTables(span, f, {}), BalanceOptions{});
   const double expected[] = {26.5e-3, 10.6e-3, 3.04e-3, 1.58e-3};
   for (std::size_t i = 0; i < f.size(); ++i) {
-    ASSERT_TRUE(b.points[i].converged()) << b.points[i].failure;
+    ASSERT_TRUE(b.points[i].converged()) << brief_report(b.points[i].summary);
     expect_relative(b.points[i].amplitude, expected[i], 0.005);
     EXPECT_EQ(b.points[i].amplitude, b.points[i].undamped_amplitude);
     EXPECT_EQ(b.points[i].clamp_loop_amplitude, b.points[i].amplitude);
@@ -57,8 +58,8 @@ class NonlinearSpan : public ::testing::Test {
     span_ = new Span(aster_span({{sauter_damper(), 1.0, true, "sauter"}}));
     // Half the frequencies of the same band under the sanitizers (STOCKBRIDGE_TEST_SCALE=short).
     frequencies_ = damper::log_spaced(6.0, 40.0, stockbridge::testing::scaled(8, 4));
-    tables_ = new std::vector<ImpedanceTable>(impedance_tables(*span_, frequencies_, fast_options()));
-    balance_ = new SpanBalance(run_balance(*span_, frequencies_, *tables_, fast_options()));
+    tables_ = new SpanTables(*span_, frequencies_, fast_options().table);
+    balance_ = new SpanBalance(run_balance(*span_, *tables_, fast_options()));
   }
   static void TearDownTestSuite() {
     delete balance_;
@@ -67,18 +68,18 @@ class NonlinearSpan : public ::testing::Test {
   }
   static Span* span_;
   static std::vector<double> frequencies_;
-  static std::vector<ImpedanceTable>* tables_;
+  static SpanTables* tables_;
   static SpanBalance* balance_;
 };
 Span* NonlinearSpan::span_ = nullptr;
 std::vector<double> NonlinearSpan::frequencies_;
-std::vector<ImpedanceTable>* NonlinearSpan::tables_ = nullptr;
+SpanTables* NonlinearSpan::tables_ = nullptr;
 SpanBalance* NonlinearSpan::balance_ = nullptr;
 
 TEST_F(NonlinearSpan, EveryPointBalancesAndKeepsTheEnergyIdentity) {
   for (const BalancePoint& p : balance_->points) {
     SCOPED_TRACE(p.frequency_hz);
-    ASSERT_TRUE(p.converged()) << p.failure;
+    ASSERT_TRUE(p.converged()) << brief_report(p.summary);
     EXPECT_LE(p.identity_error, 1e-10);
     EXPECT_NEAR(p.wind_power - p.self_damping_power - p.damper_power, 0.0, 1e-8 * p.wind_power);
     double dampers = 0.0;
@@ -97,7 +98,7 @@ TEST_F(NonlinearSpan, EveryPointBalancesAndKeepsTheEnergyIdentity) {
 // polish's tolerance.
 void expect_the_direct_solution(const Span& span, const BalancePoint& p) {
   SCOPED_TRACE(p.frequency_hz);
-  ASSERT_TRUE(p.converged()) << p.failure;
+  ASSERT_TRUE(p.converged()) << brief_report(p.summary);
   const Conductor c = aster570();
   const double v = p.dampers[0].clamp_velocity;
   damper::SweepSpec lone;
@@ -127,9 +128,9 @@ TEST(SpanBalance, InterpolatedColumnsArePolishedToTheDirectSolution) {
   const std::vector<double> f = damper::log_spaced(6.0, 30.0, 15);
   BalanceOptions options = fast_options();
   options.table.column_ratio = 1.3;  // 15 frequencies 1.12 apart: every other one solved
-  const std::vector<ImpedanceTable> tables = impedance_tables(span, f, options);
-  ASSERT_EQ(tables[0].nodes(), 8 * options.table.velocities);
-  const SpanBalance b = run_balance(span, f, tables, options);
+  const SpanTables tables(span, f, options.table);
+  ASSERT_EQ(tables.tables()[0].nodes(), 8 * options.table.velocities);
+  const SpanBalance b = run_balance(span, tables, options);
   EXPECT_GT(b.summary.direct_solves, 0);
   for (const BalancePoint& p : b.points) expect_the_direct_solution(span, p);
 }
@@ -153,8 +154,8 @@ TEST(SpanBalance, ADirectSolveWithoutASymmetricSteadyStateFallsBackToWholePeriod
   const Span span = design_candidate_span(1.4206291098962538, 0.2921970480191521, 2.433679807698354);
   const std::vector<double> f{14.148462654115345};
   const BalanceOptions options = fast_options();
-  const SpanBalance b = run_balance(span, f, impedance_tables(span, f, options), options);
-  ASSERT_TRUE(b.points[0].converged()) << b.points[0].failure;
+  const SpanBalance b = run_balance(span, SpanTables(span, f, options.table), options);
+  ASSERT_TRUE(b.points[0].converged()) << brief_report(b.points[0].summary);
   expect_the_direct_solution(span, b.points[0]);
 }
 
@@ -168,8 +169,8 @@ TEST(SpanBalance, APolishWhoseSecantPointsAwayFromTheRootStillFindsIt) {
   const Span span = design_candidate_span(0.8737541098962538, 0.2853220480191521, 0.8711798076983541);
   const std::vector<double> f = band_frequencies(span, 100);
   const BalanceOptions options = fast_options();
-  const SpanBalance b = run_balance(span, f, impedance_tables(span, f, options), options);
-  for (const BalancePoint& p : b.points) ASSERT_TRUE(p.converged()) << p.frequency_hz << " Hz: " << p.failure;
+  const SpanBalance b = run_balance(span, SpanTables(span, f, options.table), options);
+  for (const BalancePoint& p : b.points) ASSERT_TRUE(p.converged()) << p.frequency_hz << " Hz: " << brief_report(p.summary);
   const BalancePoint& p = b.points[38];
   ASSERT_NEAR(p.frequency_hz, 12.5745, 1e-4);
   EXPECT_NEAR(p.dampers[0].clamp_velocity, 0.527, 0.001);
@@ -181,10 +182,10 @@ TEST(SpanBalance, ASmallDamperGivesTheWeakForm) {
   const std::vector<double> f{8.0, 15.0, 30.0};
   BalanceOptions travelling = fast_options(), weak = fast_options();
   weak.damper_model = DamperModel::weak;
-  const std::vector<ImpedanceTable> tables = impedance_tables(span, f, travelling);
-  const SpanBalance t = run_balance(span, f, tables, travelling), w = run_balance(span, f, tables, weak);
+  const SpanTables tables(span, f, travelling.table);
+  const SpanBalance t = run_balance(span, tables, travelling), w = run_balance(span, tables, weak);
   for (std::size_t i = 0; i < f.size(); ++i) {
-    ASSERT_TRUE(t.points[i].converged() && w.points[i].converged()) << t.points[i].failure << w.points[i].failure;
+    ASSERT_TRUE(t.points[i].converged() && w.points[i].converged()) << brief_report(t.points[i].summary) << brief_report(w.points[i].summary);
     expect_relative(t.points[i].amplitude, w.points[i].amplitude, 0.03);
     EXPECT_EQ(w.points[i].clamp_loop_amplitude, w.points[i].amplitude);
   }
@@ -195,12 +196,12 @@ TEST(SpanBalance, ThePositionSearchFindsTheBestOfAFineScan) {
   const std::vector<double> f{12.0, 25.0};
   BalanceOptions options = fast_options();
   options.polish = false;  // as the search balances
-  const std::vector<ImpedanceTable> tables = impedance_tables(span, f, options);
-  const PositionSearch found = optimise_position(span, f, tables, options, 0.3, 3.0, 21);
+  const SpanTables tables(span, f, options.table);
+  const PositionSearch found = optimise_position(span, tables, options, 0.3, 3.0, 21);
   double best = std::numeric_limits<double>::infinity(), best_at = 0.0;
   for (int k = 0; k <= 270; ++k) {
     const double a = 0.3 + 0.01 * k;
-    const double s = run_balance(span.with_dampers_at(a), f, tables, options).summary.max_stress_fymax;
+    const double s = run_balance(span.with_dampers_at(a), tables, options).summary.max_stress_fymax;
     if (s < best) best = s, best_at = a;
   }
   EXPECT_LE(found.max_stress_fymax, best * (1.0 + 1e-6)) << "scan's best " << best << " Pa at " << best_at << " m";

@@ -49,20 +49,29 @@ TEST(SpanRootSearch, FindsTheSmallestCrossingFromPositiveToNegative) {
   // + below 1, - from 1 to 2, + from 2 to 3, - beyond: the smallest stable root is 1,
   // the crossing at 3 is stable too but not reached from rest, the one at 2 unstable.
   auto net = [](double y) { return (1.0 - y) * (y - 2.0) * (y - 3.0); };
-  const std::optional<double> root = smallest_stable_root(net, 1e-3, 10.0);
-  ASSERT_TRUE(root.has_value());
-  EXPECT_NEAR(*root, 1.0, 1e-11);
+  const StableRoot root = smallest_stable_root(net, 1e-3, 10.0);
+  ASSERT_TRUE(root.converged()) << brief_report(root.summary);
+  EXPECT_NEAR(root.amplitude, 1.0, 1e-11);
+  EXPECT_LE(root.summary.residual, 1e-12);
+  EXPECT_GT(root.summary.evaluations, 120);  // the grid from 1e-3 to 1 at 40 points a decade, then the refinement
   // starting between 1 and 2 (net < 0 there): nothing builds up
-  EXPECT_EQ(smallest_stable_root(net, 1.5, 10.0), 0.0);
+  const StableRoot still = smallest_stable_root(net, 1.5, 10.0);
+  EXPECT_TRUE(still.converged());
+  EXPECT_EQ(still.amplitude, 0.0);
+  EXPECT_EQ(still.summary.evaluations, 1);
   // starting between 2 and 3: the next stable crossing
-  EXPECT_NEAR(*smallest_stable_root(net, 2.2, 10.0), 3.0, 1e-11);
+  EXPECT_NEAR(smallest_stable_root(net, 2.2, 10.0).amplitude, 3.0, 1e-11);
 }
 
 TEST(SpanRootSearch, ReportsNoBalanceWhenTheNetPowerStaysPositive) {
-  EXPECT_FALSE(smallest_stable_root([](double y) { return 1.0 + y; }, 1e-6, 1.0).has_value());
-  EXPECT_FALSE(smallest_stable_root([](double y) { return y < 0.1 ? 1.0 : NAN; }, 1e-6, 1.0).has_value());
+  const StableRoot positive = smallest_stable_root([](double y) { return 1.0 + y; }, 1e-6, 1.0);
+  EXPECT_EQ(positive.summary.termination, Termination::no_root);
+  EXPECT_EQ(brief_report(positive.summary), "no root in the range searched up to Y = 1 m");
+  const StableRoot nan = smallest_stable_root([](double y) { return y < 0.1 ? 1.0 : NAN; }, 1e-6, 1.0);
+  EXPECT_EQ(nan.summary.termination, Termination::non_finite);
+  EXPECT_NE(nan.summary.where.find("at Y = 0.1"), std::string::npos) << nan.summary.where;
   // a root exactly on a grid point
-  EXPECT_NEAR(*smallest_stable_root([](double y) { return 1.0 - y; }, 0.1, 10.0), 1.0, 1e-12);
+  EXPECT_NEAR(smallest_stable_root([](double y) { return 1.0 - y; }, 0.1, 10.0).amplitude, 1.0, 1e-12);
 }
 
 TEST(SpanRootSearch, RejectsABadRange) {

@@ -1,0 +1,71 @@
+#pragma once
+// A span as a span file describes it (MODEL.md section 9; docs/span.md): the
+// conductor and its tension, the span's length, the wind, the conductor's
+// self-damping, the dampers at one or both ends, and the fatigue criterion. A
+// constant description, valid by construction; the balance (balance.hpp) and the
+// analysis (analysis.hpp) take it as it is.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stockbridge/damper/damper.hpp"
+#include "stockbridge/span/conductor.hpp"
+#include "stockbridge/span/life.hpp"
+#include "stockbridge/span/self_damping.hpp"
+#include "stockbridge/span/wind.hpp"
+
+namespace stockbridge::span {
+
+/// A damper on the span: at `position` (m from the span end's clamp) at one end, or
+/// at both ends (mirrored).
+struct SpanDamper {
+  damper::Damper damper;
+  double position = 0.0;
+  bool both_ends = true;
+  std::string name;  ///< how tables and messages call it ("damper 1" or the file's stem)
+};
+
+/// Where the fatigue verdict's endurance limit comes from: the Safe Border Line at
+/// `cycles`, or a given limit (Pa); and the climate for the life.
+struct FatigueSpec {
+  std::optional<double> cycles;
+  std::optional<double> endurance_limit;
+  std::optional<LifeModel> life;
+
+  void validate() const;
+};
+
+/// A span as a span file describes it, valid by construction.
+class Span {
+ public:
+  /// Throws InvalidParameter naming the field as the span file spells it
+  /// ("span.length", "damper[1].position", "fatigue.cycles").
+  Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
+       std::vector<SpanDamper> dampers, FatigueSpec fatigue);
+
+  const Conductor& conductor() const { return conductor_; }
+  double length() const { return length_; }
+  double tension() const { return tension_; }
+  const WindModel& wind() const { return wind_; }
+  const SelfDampingModel& self_damping() const { return self_damping_; }
+  const std::vector<SpanDamper>& dampers() const { return dampers_; }
+  const FatigueSpec& fatigue() const { return fatigue_; }
+  /// The endurance limit the verdict uses, Pa.
+  double endurance_limit() const;
+  /// The same span with every damper moved to `position` + (its position - the first's).
+  Span with_dampers_at(double position) const;
+  /// The same span without dampers.
+  Span without_dampers() const;
+
+ private:
+  Conductor conductor_;
+  double length_;
+  double tension_;
+  WindModel wind_;
+  SelfDampingModel self_damping_;
+  std::vector<SpanDamper> dampers_;
+  FatigueSpec fatigue_;
+};
+
+}  // namespace stockbridge::span

@@ -1,0 +1,86 @@
+#include "balance_summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "stockbridge/span/fatigue.hpp"
+
+namespace stockbridge::span {
+
+std::string_view verdict_name(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::safe: return "safe";
+    case Verdict::unsafe: return "unsafe";
+    case Verdict::unknown: return "unknown";
+  }
+  return "unknown";
+}
+
+namespace {
+
+/// The largest of a stress over the points where it is known, and what it means.
+struct Largest {
+  double stress = 0.0;
+  double frequency_hz = 0.0;
+  int known = 0;  ///< points with the stress
+
+  void add(double frequency, double s) {
+    if (!std::isfinite(s)) return;
+    ++known;
+    if (s > stress) stress = s, frequency_hz = frequency;
+  }
+  /// Safe only when every point is known and within the limit; unsafe as soon as one
+  /// known point exceeds it.
+  Verdict verdict(int points, double limit) const {
+    if (stress > limit) return Verdict::unsafe;
+    return known == points ? Verdict::safe : Verdict::unknown;
+  }
+};
+
+/// Miner's life from one stress per frequency, none where a stress is missing.
+std::optional<LifeEstimate> life_of(const Span& span, const std::vector<double>& frequencies,
+                                    const std::vector<double>& stresses) {
+  if (!span.fatigue().life || frequencies.empty()) return std::nullopt;
+  if (std::any_of(stresses.begin(), stresses.end(), [](double s) { return !std::isfinite(s); })) return std::nullopt;
+  return estimate_life(frequencies, stresses, span.wind(), span.conductor().diameter, *span.fatigue().life,
+                       safe_border_line(span.conductor().aluminium_layers));
+}
+
+}  // namespace
+
+BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& points) {
+  BalanceSummary s;
+  s.points = static_cast<int>(points.size());
+  s.endurance_limit = span.endurance_limit();
+  Largest damped, undamped;
+  // The Safe Border Line is stated for the Poffenberger-Swart stress: the lives use it.
+  std::vector<double> frequencies, stresses, undamped_stresses;
+  for (const BalancePoint& p : points) {
+    frequencies.push_back(p.frequency_hz);
+    const double stress = p.converged() ? p.stress_poffenberger_swart : std::numeric_limits<double>::quiet_NaN();
+    stresses.push_back(stress);
+    undamped_stresses.push_back(p.undamped_stress_poffenberger_swart);
+    undamped.add(p.frequency_hz, p.undamped_stress_fymax);
+    if (!p.converged()) continue;
+    ++s.converged;
+    damped.add(p.frequency_hz, p.stress_fymax);
+    s.max_damper_clamp_stress = std::max(s.max_damper_clamp_stress, p.damper_clamp_stress);
+    if (p.several_states) ++s.several_states;
+  }
+  s.max_stress_fymax = damped.stress;
+  s.max_stress_frequency_hz = damped.frequency_hz;
+  s.verdict = damped.verdict(s.points, s.endurance_limit);
+  s.undamped_points = undamped.known;
+  s.undamped_max_stress_fymax = undamped.stress;
+  s.undamped_max_stress_frequency_hz = undamped.frequency_hz;
+  s.undamped_verdict = undamped.verdict(s.points, s.endurance_limit);
+  if (span.fatigue().life) {
+    s.life = life_of(span, frequencies, stresses);
+    s.undamped_life = life_of(span, frequencies, undamped_stresses);
+    s.life_missing_points = s.points - s.converged;
+    s.undamped_life_missing_points = s.points - s.undamped_points;
+  }
+  return s;
+}
+
+}  // namespace stockbridge::span

@@ -1,0 +1,93 @@
+#pragma once
+// One frequency of a span's balance (balance.hpp): the taut string there, the wind
+// and self-damping powers, and the ends' dampers at any antinode amplitude with
+// their impedances from the tables (each end's clamp velocities found by
+// end_fixed_point.hpp) or held fixed at directly solved values (the polish's
+// trials, polish.hpp). Library-internal.
+
+#include <complex>
+#include <optional>
+#include <vector>
+
+#include "stockbridge/damper/impedance.hpp"
+#include "stockbridge/span/balance.hpp"
+#include "stockbridge/span/end_fixed_point.hpp"
+#include "stockbridge/span/travelling_wave.hpp"
+
+namespace stockbridge::span {
+
+/// The dampers of one end: their positions (ascending) and which of the span's dampers each is.
+struct EndLayout {
+  std::vector<double> positions;
+  std::vector<std::size_t> damper;
+};
+
+/// End 1 holds every damper; end 2 those mounted at both ends (no ends without dampers).
+std::vector<EndLayout> end_layouts(const Span& span);
+
+/// What the dampers of all ends do at one amplitude.
+struct EndsAtAmplitude {
+  std::vector<EndSolution> ends;
+  double absorbed = 0.0;  ///< P_d of all ends, W
+  /// converged, or the first end that is not (`where` names it, with its report).
+  SolverSummary summary;
+};
+
+class FrequencyBalance {
+ public:
+  /// The span's frequency tables.frequencies[index]; `span`, `tables` and `options` must outlive it.
+  FrequencyBalance(const Span& span, const SpanTables& tables, std::size_t index, const BalanceOptions& options);
+
+  double frequency() const { return frequency_; }
+  const StringWave& wave() const { return wave_; }
+  const std::vector<EndLayout>& layouts() const { return layouts_; }
+  double wind(double y) const;
+  double self_damping(double y) const;
+  /// d(P_w - P_s)/dY at y (a central difference: the laws are smooth or piecewise linear).
+  double net_power_slope(double y) const;
+
+  /// The ends' dampers at antinode amplitude y (each end's fixed point on the tables
+  /// from the last one solved, or the fixed impedances' response).
+  EndsAtAmplitude dampers(double y);
+  /// The smallest stable amplitude of P_w - P_s - P_d with the dampers' current
+  /// impedances; where an end's fixed point fails on the way: inner_failure with it.
+  StableRoot balanced_amplitude();
+
+  /// Z of span damper `damper` at clamp velocity v from its table at this frequency.
+  std::optional<std::complex<double>> table_impedance(std::size_t damper, double v) const;
+  /// Makes damper j of end e's impedance the directly solved one `direct`, whatever
+  /// its clamp velocity (the polish's trial: the balance with these impedances).
+  void fix(std::size_t e, std::size_t j, const damper::ImpedancePoint& direct);
+  /// Back to the tables' impedances (the polish's fixed ones dropped).
+  void release();
+  /// P_d / y^2 while every damper's impedance is fixed (the polish's trials): the
+  /// string is linear then, the dampers absorb in proportion to y^2. None otherwise.
+  std::optional<double> absorbed_per_square();
+  /// End e's response at antinode amplitude 1 to a change `direction` (per damper,
+  /// N s/m) of its impedances `z` (end_response_tangent; the weak form's own).
+  EndResponseTangent end_tangent(std::size_t e, const std::vector<std::complex<double>>& z,
+                                 const std::vector<std::complex<double>>& direction) const;
+  /// Damper j of end e's messenger curvature from its last direct solve (NaN: none).
+  double messenger_curvature(std::size_t e, std::size_t j) const { return curvatures_[e][j]; }
+
+ private:
+  EndSolution end(std::size_t e, double y) const;
+  bool all_fixed(std::size_t e) const;
+  EndSolution fixed_end(std::size_t e, double y) const;
+  EndSolution weak_end(const EndLayout& layout, const ClampImpedance& z, double y) const;
+
+  const Span& span_;
+  const SpanTables& tables_;
+  std::size_t index_;
+  double frequency_;
+  const BalanceOptions& options_;
+  std::vector<EndLayout> layouts_;
+  StringWave wave_;
+  std::vector<std::vector<double>> last_velocities_;  ///< per end: where its next fixed point starts
+  /// Per end and damper: the impedance fixed by the polish (none: the table's at v).
+  std::vector<std::vector<std::optional<std::complex<double>>>> fixed_;
+  std::vector<std::vector<double>> curvatures_;  ///< per end and damper: the last direct solve's messenger curvature
+  std::optional<double> absorbed_per_square_;    ///< cached by absorbed_per_square()
+};
+
+}  // namespace stockbridge::span

@@ -1,0 +1,268 @@
+#include "polish.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/LU>
+#include <fmt/format.h>
+
+#include "../numerics/nonlinear_system.hpp"
+
+namespace stockbridge::span {
+
+namespace {
+
+/// How far (in polish tolerances) the directly solved impedances' own scatter can
+/// move the balance's velocity: a jump of h that small is round-off, not a jump.
+constexpr double kPolishScatter = 10.0;
+/// The step in log v of the tables' slope dZ/du where a frequency starts from them.
+constexpr double kTableSlopeStep = 0.05;
+
+}  // namespace
+
+Polish::Polish(const Span& span, const BalanceOptions& options) : options_(options) {
+  for (const SpanDamper& d : span.dampers()) trackers_.emplace_back(d.damper, options.table.solver);
+}
+
+void Polish::forget() {
+  slopes_.clear();
+  history_.clear();
+}
+
+int Polish::direct_solves() const {
+  int n = 0;
+  for (const damper::DamperTracker& t : trackers_) n += t.solves();
+  return n;
+}
+
+std::vector<Polish::Unknown> Polish::unknowns_of(const FrequencyBalance& balance) const {
+  const std::vector<EndLayout>& ends = balance.layouts();
+  std::vector<Unknown> unknowns;
+  const bool mirrored = ends.size() == 2 && ends[1].damper == ends[0].damper;
+  for (std::size_t e = 0; e < ends.size(); ++e) {
+    for (std::size_t j = 0; j < ends[e].damper.size(); ++j) {
+      if (mirrored && e == 1) {
+        unknowns[j].slots.emplace_back(e, j);
+      } else {
+        unknowns.push_back({ends[e].damper[j], {{e, j}}});
+      }
+    }
+  }
+  return unknowns;
+}
+
+std::optional<Eigen::VectorXd> Polish::start(FrequencyBalance& balance, std::optional<double> from_tables,
+                                             SolverSummary& failure) {
+  const auto n = static_cast<Eigen::Index>(unknowns_.size());
+  Eigen::VectorXd u(n);
+  if (!from_tables) {
+    const Solution& b = history_.back();
+    if (history_.size() < 2) return b.u;
+    const Solution& a = history_[history_.size() - 2];
+    const double t = (std::log(balance.wave().angular_frequency) - b.log_f) / (b.log_f - a.log_f);
+    return Eigen::VectorXd(b.u + t * (b.u - a.u));
+  }
+  const EndsAtAmplitude first = balance.dampers(*from_tables);
+  if (!first.summary.converged()) {
+    failure = first.summary;
+    return std::nullopt;
+  }
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    const auto [e, j] = unknowns_[k].slots[0];
+    u[static_cast<Eigen::Index>(k)] = std::log(first.ends[e].velocities[j]);
+  }
+  return u;
+}
+
+void Polish::start_slopes(const FrequencyBalance& balance, const Eigen::VectorXd& u) {
+  if (slopes_.size() == unknowns_.size()) return;  // the last frequency's
+  slopes_.assign(unknowns_.size(), 0.0);
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    const double v = std::exp(u[static_cast<Eigen::Index>(k)]);
+    const auto hi = balance.table_impedance(unknowns_[k].damper, v * std::exp(kTableSlopeStep));
+    const auto lo = balance.table_impedance(unknowns_[k].damper, v * std::exp(-kTableSlopeStep));
+    if (hi && lo) slopes_[k] = (*hi - *lo) / (2.0 * kTableSlopeStep);
+  }
+}
+
+damper::ImpedancePoint Polish::solve_directly(const Unknown& unknown, const damper::Excitation& excitation) {
+  damper::DamperTracker& tracker = trackers_[unknown.damper];
+  std::optional<damper::DamperTracker::Checkpoint>& anchor = anchors_[unknown.damper];
+  if (anchor) tracker.restore(*anchor);
+  damper::ImpedancePoint direct = tracker.solve(excitation);
+  if (!direct.converged() && !anchor) {
+    // Where the path from the last frequency fails (the arm's stick resonance passed
+    // between them, say), from a cold start.
+    tracker.forget();
+    direct = tracker.solve(excitation);
+  }
+  if (direct.converged() && !anchor) anchor = tracker.checkpoint();
+  return direct;
+}
+
+std::optional<Polish::Trial> Polish::evaluate(FrequencyBalance& balance, const Eigen::VectorXd& u,
+                                              SolverSummary& failure) {
+  Trial t;
+  t.u = u;
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    const Unknown& unknown = unknowns_[k];
+    const double v = std::exp(u[static_cast<Eigen::Index>(k)]);
+    damper::ImpedancePoint direct = solve_directly(unknown, damper::Excitation::from_velocity(balance.frequency(), v));
+    if (!direct.converged()) {
+      failure.termination = Termination::inner_failure;
+      failure.where = fmt::format("end {}, damper {} solved directly at {:.4g} m/s: {}", unknown.slots[0].first + 1,
+                                  unknown.slots[0].second + 1, v, direct.failure);
+      return std::nullopt;
+    }
+    for (const auto& [e, j] : unknown.slots) balance.fix(e, j, direct);
+    t.direct.push_back(std::move(direct));
+  }
+  t.absorbed_per_square = *balance.absorbed_per_square();
+  const StableRoot y = balance.balanced_amplitude();
+  if (!y.converged()) {
+    failure = y.summary;
+    return std::nullopt;
+  }
+  t.amplitude = y.amplitude;
+  t.h = Eigen::VectorXd::Zero(u.size());
+  if (y.amplitude <= 0.0) return t;  // with these impedances nothing builds up
+  const EndsAtAmplitude at = balance.dampers(y.amplitude);
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    const auto [e, j] = unknowns_[k].slots[0];
+    const auto i = static_cast<Eigen::Index>(k);
+    t.h[i] = std::log(at.ends[e].velocities[j]) - u[i];
+  }
+  return t;
+}
+
+Eigen::MatrixXd Polish::jacobian(FrequencyBalance& balance, const Trial& trial) const {
+  const auto n = static_cast<Eigen::Index>(unknowns_.size());
+  const std::vector<EndLayout>& ends = balance.layouts();
+  const double y = trial.amplitude;
+  // The root of N(Y) = P_w - P_s - P_d(1) Y^2 moves by dY = Y^2 dP_d(1) / N'(Y).
+  const double slope = balance.net_power_slope(y) - 2.0 * trial.absorbed_per_square * y;
+  std::vector<std::vector<std::complex<double>>> z(ends.size());
+  for (std::size_t e = 0; e < ends.size(); ++e) z[e].resize(ends[e].positions.size());
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    for (const auto& [e, j] : unknowns_[k].slots) z[e][j] = trial.direct[k].impedance;
+  }
+  Eigen::MatrixXd jac = -Eigen::MatrixXd::Identity(n, n);
+  for (Eigen::Index m = 0; m < n; ++m) {
+    std::vector<EndResponseTangent> tangents;
+    double d_absorbed = 0.0;
+    for (std::size_t e = 0; e < ends.size(); ++e) {
+      std::vector<std::complex<double>> direction(ends[e].positions.size(), 0.0);
+      for (const auto& [se, sj] : unknowns_[static_cast<std::size_t>(m)].slots) {
+        if (se == e) direction[sj] = slopes_[static_cast<std::size_t>(m)];
+      }
+      tangents.push_back(balance.end_tangent(e, z[e], direction));
+      d_absorbed += tangents.back().absorbed_power;
+    }
+    const double d_log_y = y * d_absorbed / slope;
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const auto [e, j] = unknowns_[static_cast<std::size_t>(k)].slots[0];
+      jac(k, m) += d_log_y + tangents[e].log_displacement[j];
+    }
+  }
+  return jac;
+}
+
+void Polish::update_slopes(const Trial& trial) {
+  if (last_solved_) {
+    for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+      const auto i = static_cast<Eigen::Index>(k);
+      const double du = trial.u[i] - last_solved_->u[i];
+      if (std::abs(du) > 1e-9) slopes_[k] = (trial.direct[k].impedance - last_solved_->direct[k].impedance) / du;
+    }
+  }
+  last_solved_ = trial;
+}
+
+StableRoot Polish::run(FrequencyBalance& balance, std::optional<double> from_tables) {
+  StableRoot out;
+  if (from_tables && *from_tables <= 0.0) {  // nothing builds up: the dampers stand still
+    out.summary.termination = Termination::converged;
+    return out;
+  }
+  unknowns_ = unknowns_of(balance);
+  if (!from_tables && (history_.empty() || history_.back().u.size() != static_cast<Eigen::Index>(unknowns_.size()))) {
+    out.summary.termination = Termination::inner_failure;
+    out.summary.where = "no earlier frequency to continue from";
+    return out;
+  }
+  if (from_tables) slopes_.clear();
+  const std::optional<Eigen::VectorXd> u = start(balance, from_tables, out.summary);
+  if (!u) return out;
+  start_slopes(balance, *u);
+  anchors_.assign(trackers_.size(), std::nullopt);
+  last_solved_.reset();
+
+  std::vector<Trial> trials;    // this frequency's, for the Jacobian at the solver's point
+  std::optional<double> still;  // an amplitude <= 0: with these impedances nothing builds up
+  SolverSummary failure;
+  const numerics::Residual residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& h) {
+    std::optional<Trial> trial = evaluate(balance, x, failure);
+    if (!trial) return false;
+    if (trial->amplitude <= 0.0) {
+      still = trial->amplitude;
+      h = Eigen::VectorXd::Zero(x.size());  // stops the solve: converged
+      return true;
+    }
+    update_slopes(*trial);
+    h = trial->h;
+    trials.push_back(std::move(*trial));
+    return true;
+  };
+  const auto trial_at = [&](const Eigen::VectorXd& x) {
+    return std::find_if(trials.rbegin(), trials.rend(), [&](const Trial& t) { return t.u == x; });
+  };
+  const numerics::ResidualJacobian jacobian_at = [&](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
+    const auto trial = trial_at(x);
+    if (trial == trials.rend()) return false;
+    jac = jacobian(balance, *trial);
+    return true;
+  };
+  numerics::NonlinearSystemOptions system;
+  system.tolerance = options_.polish_tolerance;
+  system.max_evaluations = options_.max_polish_evaluations;
+  const numerics::NonlinearSystemResult solved =
+      numerics::solve_fixed_point(residual, jacobian_at, *u, system, kPolishScatter * options_.polish_tolerance);
+  out.summary = solved.summary;
+  out.summary.where.clear();
+  if (still) {
+    out.summary.termination = Termination::converged;  // with the direct impedances nothing builds up
+    return out;
+  }
+  if (solved.summary.termination == Termination::inner_failure) {
+    out.summary.where = failure.termination == Termination::inner_failure ? failure.where : brief_report(failure);
+    return out;
+  }
+  if (!solved.summary.converged()) {
+    out.summary.where = fmt::format("in the dampers' clamp velocities with directly solved impedances (tolerance {:.3g})",
+                                    options_.polish_tolerance);
+    if (solved.jump_at.size() > 0) {
+      Eigen::Index worst = 0;
+      const double jump = solved.jump_residual.cwiseAbs().maxCoeff(&worst);
+      const Unknown& k = unknowns_[static_cast<std::size_t>(worst)];
+      out.summary.where += fmt::format(": as end {}, damper {}'s trial passes {:.4g} m/s its balance velocity jumps by "
+                                       "{:.3g} % (no self-consistent state there)",
+                                       k.slots[0].first + 1, k.slots[0].second + 1, std::exp(solved.jump_at[worst]),
+                                       100.0 * std::expm1(jump));
+    }
+    return out;
+  }
+  // The balance ends with the solution's impedances fixed.
+  const Trial& solution = *trial_at(solved.x);
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    for (const auto& [e, j] : unknowns_[k].slots) balance.fix(e, j, solution.direct[k]);
+  }
+  const double det = jacobian(balance, solution).partialPivLu().determinant();
+  const int sign = det > 0.0 ? 1 : det < 0.0 ? -1 : 0;
+  passed_fold_ = !from_tables && sign != 0 && history_.back().jacobian_sign != 0 && sign != history_.back().jacobian_sign;
+  history_.push_back({std::log(balance.wave().angular_frequency), solved.x, sign});
+  out.amplitude = solution.amplitude;
+  return out;
+}
+
+}  // namespace stockbridge::span

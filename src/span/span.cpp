@@ -1,0 +1,68 @@
+#include "stockbridge/span/span.hpp"
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/span/fatigue.hpp"
+
+namespace stockbridge::span {
+
+namespace {
+
+void require_one_of(const std::optional<double>& a, std::string_view a_name, const std::optional<double>& b,
+                    std::string_view b_name) {
+  if (a.has_value() == b.has_value()) {
+    throw InvalidParameter(std::string(a.has_value() ? a_name : b_name),
+                           fmt::format(": give exactly one of {} and {}", a_name, b_name));
+  }
+}
+
+}  // namespace
+
+void FatigueSpec::validate() const {
+  require_one_of(cycles, "cycles", endurance_limit, "endurance_limit");
+  if (cycles) require_plausible("cycles", *cycles, "");
+  if (endurance_limit) require_plausible("endurance_limit", *endurance_limit, "Pa");
+  if (life) life->validate();
+}
+
+Span::Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
+           std::vector<SpanDamper> dampers, FatigueSpec fatigue)
+    : conductor_(std::move(conductor)),
+      length_(length),
+      tension_(tension),
+      wind_(std::move(wind)),
+      self_damping_(std::move(self_damping)),
+      dampers_(std::move(dampers)),
+      fatigue_(std::move(fatigue)) {
+  within_field("conductor", [&] { conductor_.validate(); });
+  require_plausible("span.length", length_, "m");
+  check_tension(conductor_, tension_, "span.tension");
+  within_field("wind", [&] { wind_.validate(); });
+  within_field("self_damping", [&] { self_damping_.validate(); });
+  self_damping_.validate_with(conductor_);  // names conductor.ei_max itself
+  for (std::size_t j = 0; j < dampers_.size(); ++j) {
+    const double a = dampers_[j].position;
+    if (!(a > 0.0 && a < 0.5 * length_)) {
+      throw_invalid(fmt::format("damper[{}].position", j), a,
+                    fmt::format("a distance from the span end > 0 and < half the span, {} m", 0.5 * length_));
+    }
+  }
+  within_field("fatigue", [&] { fatigue_.validate(); });
+}
+
+double Span::endurance_limit() const {
+  if (fatigue_.endurance_limit) return *fatigue_.endurance_limit;
+  return safe_border_line(conductor_.aluminium_layers).endurance_limit(*fatigue_.cycles);
+}
+
+Span Span::with_dampers_at(double position) const {
+  std::vector<SpanDamper> moved = dampers_;
+  const double shift = dampers_.empty() ? 0.0 : position - dampers_.front().position;
+  for (SpanDamper& d : moved) d.position += shift;
+  return Span(conductor_, length_, tension_, wind_, self_damping_, std::move(moved), fatigue_);
+}
+
+Span Span::without_dampers() const { return Span(conductor_, length_, tension_, wind_, self_damping_, {}, fatigue_); }
+
+}  // namespace stockbridge::span
