@@ -147,12 +147,15 @@ TEST(SpanCli, JsonSummaryHasEveryKey) {
                           "max_damper_clamp_stress_mpa", "undamped_max_stress_fymax_mpa",
                           "undamped_max_stress_frequency_hz", "position_m", "life_years", "damage_per_year",
                           "undamped_life_years", "undamped_damage_per_year", "impedance_nodes",
-                          "failed_impedance_nodes", "max_energy_identity_error", "seconds"}) {
+                          "failed_impedance_nodes", "direct_solves", "max_energy_identity_error", "life_missing_points",
+                          "undamped_life_missing_points", "seconds"}) {
     EXPECT_NE(r.out.find(std::string("\"") + key + "\": "), std::string::npos) << key << " in " << r.out;
   }
-  EXPECT_TRUE(r.out.find("\"verdict\": \"safe\"") != std::string::npos ||
-              r.out.find("\"verdict\": \"unsafe\"") != std::string::npos)
-      << r.out;
+  // The band's first frequency, 5.96 Hz, is among the points: 26.1 MPa there, above the 8.73 MPa limit.
+  EXPECT_NE(r.out.find("\"verdict\": \"unsafe\""), std::string::npos) << r.out;
+  EXPECT_GT(span_json_number(r.out, "max_stress_fymax_mpa"), span_json_number(r.out, "endurance_limit_mpa"));
+  EXPECT_EQ(span_json_number(r.out, "life_missing_points"), 0.0);
+  EXPECT_NE(r.out.find("\"several_states_hz\": ["), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"position_optimized\": false"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"failed\": []"), std::string::npos) << r.out;
   EXPECT_EQ(span_json_number(r.out, "position_m"), 1.0);
@@ -188,13 +191,62 @@ TEST(SpanCli, WithoutDampersTheColumnsAreTheUndampedOnes) {
   EXPECT_NE(r.out.find("dampers: none"), std::string::npos) << r.out;
 }
 
-TEST(SpanCli, TheWeakDamperModelRuns) {
-  const auto dir = scratch_directory("span-weak");
+// The weak model's dampers sit in the string's own standing wave: v = w Y |sin(k a)|,
+// S = Y. The span file's [balance] damper_model gives the same as the option.
+TEST(SpanCli, TheWeakDamperModelIsTheStringsOwnStandingWave) {
+  const auto dir = example_copy("span-weak");
   const std::string frequencies = scaled<std::string>("10,20,30", "10,15");
-  const CliResult r =
-      run_cli("span '" + kSpanExample + "' --frequencies " + frequencies + " --damper-model weak --json -o span.csv", dir);
+  const CliResult r = run_cli("span span.toml --frequencies " + frequencies + " --damper-model weak --json -o span.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"damper_model\": \"weak\""), std::string::npos) << r.out;
+  const Csv csv = read_csv(dir / "span.csv");
+  const auto f = csv.column("frequency_hz"), y = csv.column("amplitude_m"), s = csv.column("clamp_loop_amplitude_m");
+  const auto lambda = csv.column("wavelength_m"), v = csv.column("sauter2003_end1_velocity_m_s");
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    EXPECT_EQ(s[i], y[i]);
+    const double expected = 2.0 * M_PI * f[i] * y[i] * std::abs(std::sin(2.0 * M_PI * 1.0 / lambda[i]));
+    EXPECT_NEAR(v[i], expected, 1e-9 * expected) << f[i];
+  }
+  std::ofstream(dir / "span.toml", std::ios::app) << "\n[balance]\ndamper_model = \"weak\"\n";
+  const CliResult from_file = run_cli("span span.toml --frequencies " + frequencies + " -o file.csv", dir);
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
+  EXPECT_EQ(read_text(dir / "file.csv"), read_text(dir / "span.csv"));
+  EXPECT_NE(from_file.out.find("(weak model)"), std::string::npos) << from_file.out;
+}
+
+// Points that do not converge (no balance below an amplitude limit of 0.2 D at 10
+// and 20 Hz) are said first, kept out of the life (unknown) and of the verdict
+// (unsafe only because a converged point exceeds the limit), and listed on stderr.
+TEST(SpanCli, PointsThatDidNotConvergeNeverEnterTheLifeOrTheVerdict) {
+  const auto dir = example_copy("span-failed");
+  std::ofstream(dir / "span.toml", std::ios::app) << "\n[balance]\namplitude_max_over_diameter = 0.2\n";
+  const std::string run = "span span.toml --no-dampers --frequencies 10,20,30,40 ";
+  const CliResult r = run_cli(run + "-o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(r.out.rfind("converged 2 of 4 frequencies: ", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("endurance limit: 8.73 MPa: unsafe (undamped: unsafe)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("life: unknown (2 points missing) (undamped "), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("span: 2 points did not converge"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("f = 10 Hz: no root in the range searched (the wind's power exceeds the dissipation up to "
+                       "Y = 0.00621 m)"),
+            std::string::npos)
+      << r.err;
+  const Csv csv = read_csv(dir / "span.csv");
+  EXPECT_EQ(csv.column("converged"), (std::vector<double>{0.0, 0.0, 1.0, 1.0}));
+  EXPECT_TRUE(std::isnan(csv.column("stress_fymax_mpa")[0]));
+  const CliResult json = run_cli(run + "--json -o span.csv", dir);
+  ASSERT_EQ(json.exit_code, 3) << json.err;
+  EXPECT_TRUE(std::isnan(span_json_number(json.out, "life_years"))) << json.out;
+  EXPECT_EQ(span_json_number(json.out, "life_missing_points"), 2.0);
+  EXPECT_GT(span_json_number(json.out, "undamped_life_years"), 0.0);
+  EXPECT_NE(json.out.find("\"termination\": \"no_root\""), std::string::npos) << json.out;
+  // Every converged point within a limit of 1000 MPa, two missing: neither safe nor unsafe.
+  std::string text = read_text(dir / "span.toml");
+  text.replace(text.find("cycles = 5e8"), 12, "endurance_limit = 1e9");
+  std::ofstream(dir / "span.toml") << text;
+  const CliResult unknown = run_cli(run + "--json -o span.csv", dir);
+  EXPECT_NE(unknown.out.find("\"verdict\": \"unknown\""), std::string::npos) << unknown.out;
+  EXPECT_NE(unknown.out.find("\"undamped_verdict\": \"safe\""), std::string::npos) << unknown.out;
 }
 
 TEST(SpanCli, PositionSearchReportsAndBalancesAtThePositionFound) {

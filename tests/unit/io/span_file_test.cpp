@@ -258,6 +258,56 @@ TEST(SpanFile, BadValuesAreReportedAtTheirLine) {
                  "unknown key 'fatigue.wind_weibull.k'");
 }
 
+// The optional [balance] table: every key read into span::BalanceOptions, every key
+// left out at its default, bad values at their line.
+TEST(SpanFile, TheBalanceTableSetsTheBalanceOptions) {
+  const span::BalanceOptions defaults;
+  const SpanFile plain = load_span_file(write_span(kSpan));
+  EXPECT_EQ(plain.balance.polish_tolerance, defaults.polish_tolerance);
+  EXPECT_EQ(plain.balance.table.velocities, defaults.table.velocities);
+  const SpanFile file = load_span_file(write_span(kSpan + R"(
+[balance]
+damper_model = "weak"
+polish = false
+polish_tolerance = 1e-7
+max_polish_evaluations = 80
+amplitude_min_over_diameter = 1e-5
+amplitude_max_over_diameter = 2
+
+[balance.table]
+velocities = 13
+velocity_min = 0.002
+velocity_max = 2.0
+column_ratio = 1.25
+)"));
+  const span::BalanceOptions& b = file.balance;
+  EXPECT_EQ(b.damper_model, span::DamperModel::weak);
+  EXPECT_FALSE(b.polish);
+  EXPECT_EQ(b.polish_tolerance, 1e-7);
+  EXPECT_EQ(b.max_polish_evaluations, 80);
+  EXPECT_EQ(b.amplitude_min_over_diameter, 1e-5);
+  EXPECT_EQ(b.amplitude_max_over_diameter, 2.0);
+  EXPECT_EQ(b.table.velocities, 13);
+  EXPECT_EQ(b.table.velocity_min, 0.002);
+  EXPECT_EQ(b.table.velocity_max, 2.0);
+  EXPECT_EQ(b.table.column_ratio, 1.25);
+  EXPECT_EQ(b.fixed_point.tolerance, defaults.fixed_point.tolerance);  // not a file key
+  const std::string balance = "\n[balance]\npolish_tolerance = 1e-6\n[balance.table]\nvelocities = 9\n";
+  const auto bad = [&](const std::string& from, const std::string& to, const std::string& message) {
+    const std::string text = kSpan + replaced(balance, from, to);
+    const std::string expected = at_line(line_of(text, to)) + message;
+    const std::string error = span_error_of(text);
+    EXPECT_EQ(error.rfind(expected, 0), 0u) << error << "\nexpected the start: " << expected;
+  };
+  bad("polish_tolerance = 1e-6", "polish_tolerance = -1", "balance.polish_tolerance = -1: expected a finite value > 0");
+  bad("polish_tolerance = 1e-6", "damper_model = \"strong\"",
+      "balance.damper_model = 'strong': expected travelling or weak");
+  bad("polish_tolerance = 1e-6", "polish = 1", "balance.polish: the integer 1: expected true or false");
+  bad("velocities = 9", "velocities = 1", "balance.table.velocities: 1: expected an integer from 2 to 1000");
+  bad("velocities = 9", "column_ratio = 0.5", "balance.table.column_ratio = 0.5: expected a factor from 1 to 10");
+  bad("polish_tolerance = 1e-6", "polish_tolerence = 1e-6", "unknown key 'balance.polish_tolerence'");
+}
+
 TEST(SpanFile, TensionIsGivenExactlyOnce) {
   expect_at_line("tension_fraction = 0.15", "tension_fraction = 0.15\ntension = 30000",
                  "span.tension_fraction: given beside span.tension: expected one of", true);

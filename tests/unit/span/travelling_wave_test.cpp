@@ -95,5 +95,41 @@ TEST(TravellingWave, TheEndAbsorbsWhatItsDampersDissipate) {
   }
 }
 
+// The polish's Jacobian rests on this: the exact change of the response with the
+// impedances, against central differences along random directions (the response
+// is smooth in Z away from a node of a damper, where log |Y_j| is not).
+TEST(TravellingWave, TheTangentIsTheDifferenceQuotientOfTheResponse) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 40; ++trial) {
+    const StringWave wave = aster_wave(5.0 + 40.0 * u(random));
+    std::vector<double> positions;
+    std::vector<std::complex<double>> z, direction;
+    double a = 0.0;
+    for (int j = 0; j < 1 + trial % 3; ++j) {
+      a += 0.3 + 1.5 * u(random);
+      positions.push_back(a);
+      z.emplace_back(50.0 + 300.0 * u(random), 400.0 * (u(random) - 0.5));
+      direction.emplace_back(u(random) - 0.5, u(random) - 0.5);
+    }
+    const double antinode = 0.01;
+    const EndResponseTangent t = end_response_tangent(wave, positions, z, direction, antinode);
+    const double h = 1e-4;
+    const auto moved = [&](double step) {
+      std::vector<std::complex<double>> zs = z;
+      for (std::size_t j = 0; j < zs.size(); ++j) zs[j] += step * direction[j];
+      return end_response(wave, positions, zs, antinode);
+    };
+    const EndResponse plus = moved(h), minus = moved(-h);
+    const double d_power = (plus.absorbed_power - minus.absorbed_power) / (2.0 * h);
+    EXPECT_NEAR(t.absorbed_power, d_power, 1e-6 * std::max(1.0, std::abs(d_power))) << trial;
+    for (std::size_t j = 0; j < positions.size(); ++j) {
+      const double d_log = (std::log(std::abs(plus.damper_displacement[j])) - std::log(std::abs(minus.damper_displacement[j]))) /
+                           (2.0 * h);
+      EXPECT_NEAR(t.log_displacement[j], d_log, 1e-6 * std::max(1.0, std::abs(d_log))) << trial << ", damper " << j;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace stockbridge::span

@@ -1,0 +1,94 @@
+// Small nonlinear systems (src/numerics/nonlinear_system.hpp): Powell's hybrid
+// method on a smooth system, and the fixed point of a bounded map past a minimum
+// of |h| off the root (the span polish's hard case), and where h jumps (no root).
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "numerics/nonlinear_system.hpp"
+
+namespace stockbridge::numerics {
+namespace {
+
+TEST(NonlinearSystem, ASmoothSystemConvergesInAFewEvaluations) {
+  // x^2 + y^2 = 4, x y = 1: a root near (1.932, 0.518).
+  const Residual r = [](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    f.resize(2);
+    f << x[0] * x[0] + x[1] * x[1] - 4.0, x[0] * x[1] - 1.0;
+    return true;
+  };
+  const ResidualJacobian j = [](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
+    jac.resize(2, 2);
+    jac << 2.0 * x[0], 2.0 * x[1], x[1], x[0];
+    return true;
+  };
+  NonlinearSystemOptions options;
+  options.tolerance = 1e-12;
+  const NonlinearSystemResult s = solve_nonlinear_system(r, j, Eigen::Vector2d(2.0, 0.3), options);
+  ASSERT_EQ(s.summary.termination, Termination::converged) << brief_report(s.summary);
+  EXPECT_NEAR(s.x[0] * s.x[1], 1.0, 1e-12);
+  EXPECT_NEAR(s.x.squaredNorm(), 4.0, 1e-12);
+  EXPECT_LE(s.summary.evaluations, 10);
+  EXPECT_LE(s.summary.residual, 1e-12);
+}
+
+TEST(NonlinearSystem, AFixedPointIsFoundPastAMinimumOfTheResidualOffTheRoot) {
+  // h > 0 for u < u*, < 0 beyond, but nearly flat around a local minimum of |h|
+  // far from the root, where a Newton step points the wrong way.
+  const auto h = [](double u) { return 0.4 * std::tanh(-3.0 * (u + 0.64)) * (u > -1.0 ? 1.0 : 0.0) +
+                                       (u <= -1.0 ? 0.035 + 0.3 * (u + 2.0) * (u + 2.0) : 0.0); };
+  ASSERT_GT(h(-1.0 - 1e-9), 0.0);
+  const Residual r = [&](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    f = Eigen::VectorXd::Constant(1, h(x[0]));
+    return true;
+  };
+  const ResidualJacobian j = [&](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
+    const double d = 1e-7;
+    jac = Eigen::MatrixXd::Constant(1, 1, (h(x[0] + d) - h(x[0] - d)) / (2.0 * d));
+    return true;
+  };
+  NonlinearSystemOptions options;
+  options.tolerance = 1e-10;
+  options.max_evaluations = 60;
+  const NonlinearSystemResult plain = solve_nonlinear_system(r, j, Eigen::VectorXd::Constant(1, -2.3), options);
+  EXPECT_NE(plain.summary.termination, Termination::converged);  // stuck at the minimum of |h| near -2
+  const NonlinearSystemResult s = solve_fixed_point(r, j, Eigen::VectorXd::Constant(1, -2.3), options);
+  ASSERT_EQ(s.summary.termination, Termination::converged) << brief_report(s.summary);
+  EXPECT_NEAR(s.x[0], -0.64, 1e-9);
+}
+
+TEST(NonlinearSystem, AJumpOfTheResidualIsNoRootAndSaysWhere) {
+  // h = 0.5 for u < 0.3, -0.5 beyond: a bracket closes on the jump, no fixed point.
+  const Residual r = [](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    f = Eigen::VectorXd::Constant(1, x[0] < 0.3 ? 0.5 : -0.5);
+    return true;
+  };
+  const ResidualJacobian j = [](const Eigen::VectorXd&, Eigen::MatrixXd& jac) {
+    jac = Eigen::MatrixXd::Constant(1, 1, -1.0);
+    return true;
+  };
+  NonlinearSystemOptions options;
+  options.tolerance = 1e-8;
+  const NonlinearSystemResult s = solve_fixed_point(r, j, Eigen::VectorXd::Constant(1, -1.0), options);
+  EXPECT_EQ(s.summary.termination, Termination::no_progress) << brief_report(s.summary);
+  ASSERT_EQ(s.jump_at.size(), 1);
+  EXPECT_NEAR(s.jump_at[0], 0.3, 1e-7);
+  EXPECT_NE(brief_report(s.summary).find("jumps by 0.5"), std::string::npos) << brief_report(s.summary);
+}
+
+TEST(NonlinearSystem, AResidualThatCannotBeEvaluatedIsAnInnerFailure) {
+  const Residual r = [](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    f = Eigen::VectorXd::Constant(1, 1.0 - x[0]);
+    return x[0] < 0.5;  // not defined beyond 0.5
+  };
+  const ResidualJacobian j = [](const Eigen::VectorXd&, Eigen::MatrixXd& jac) {
+    jac = Eigen::MatrixXd::Constant(1, 1, -1.0);
+    return true;
+  };
+  const NonlinearSystemResult s = solve_fixed_point(r, j, Eigen::VectorXd::Constant(1, 0.0), NonlinearSystemOptions{});
+  EXPECT_EQ(s.summary.termination, Termination::inner_failure);
+}
+
+}  // namespace
+}  // namespace stockbridge::numerics
