@@ -25,6 +25,12 @@ namespace stockbridge::cli {
 
 namespace {
 
+/// What the summary line adds where the optimiser's run did not meet its tolerance.
+std::string optimiser_note(Termination termination) {
+  if (termination == Termination::converged || termination == Termination::not_run) return "";
+  return fmt::format("; the optimiser stopped short of its tolerance ({}): the best point reached", termination_name(termination));
+}
+
 struct LocalOptions {
   std::string input;
   int elements = 1;
@@ -78,13 +84,14 @@ int run_local(const LocalOptions& options) {
                            .add("moment_offset_n_m", fit.moment_offset)
                            .add("cycle_errors", fit.cycle_errors)
                            .add("evaluations", fit.evaluations)
+                           .add("termination", termination_name(fit.termination))
                            .str());
   }
   std::string summary = fmt::format("identify local: ei = {:.6g} N m^2", fit.parameters.ei);
   for (const section::Jenkin& e : fit.parameters.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c, e.h);
-  fmt::print(stderr, "{}; relative L1 error {:.3g} ({} cycles, worst {:.3g}), {} model runs\n", summary, fit.error,
+  fmt::print(stderr, "{}; relative L1 error {:.3g} ({} cycles, worst {:.3g}), {} model runs{}\n", summary, fit.error,
              fit.cycle_errors.size(), *std::max_element(fit.cycle_errors.begin(), fit.cycle_errors.end()),
-             fit.evaluations);
+             fit.evaluations, optimiser_note(fit.termination));
   return kSuccess;
 }
 
@@ -185,12 +192,13 @@ int run_global(const GlobalOptions& options) {
                            .add("method", options.method)
                            .add("output_offset", fit.output_offset)
                            .add("evaluations", fit.evaluations)
+                           .add("termination", termination_name(fit.termination))
                            .str());
   }
   std::string summary = fmt::format("identify global ({}): ei = {:.6g} N m^2", options.method, c.ei.at(0.0));
   for (const cable::JenkinProfile& e : c.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c.at(0.0), e.h.at(0.0));
-  fmt::print(stderr, "{}; relative L1 error {:.3g}{}\n", summary, fit.error,
-             fit.evaluations ? fmt::format(", {} cable simulations", fit.evaluations) : "");
+  fmt::print(stderr, "{}; relative L1 error {:.3g}{}{}\n", summary, fit.error,
+             fit.evaluations ? fmt::format(", {} cable simulations", fit.evaluations) : "", optimiser_note(fit.termination));
   return kSuccess;
 }
 

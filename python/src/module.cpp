@@ -304,6 +304,7 @@ py::dict identify_local(const std::vector<double>& curvature, const std::vector<
   out["error"] = fit.error;
   out["moment_offset_n_m"] = fit.moment_offset;
   out["cycle_errors"] = array(fit.cycle_errors);
+  out["termination"] = std::string(termination_name(fit.termination));
   return out;
 }
 
@@ -332,6 +333,7 @@ py::dict identify_global(const std::string& experiment, double length, const std
   out["jenkin"] = jenkin_list(c_h);
   out["error"] = fit.error;
   out["cable"] = cable::Cable(fit.cable);
+  out["termination"] = std::string(termination_name(fit.termination));
   return out;
 }
 

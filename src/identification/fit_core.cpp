@@ -108,6 +108,19 @@ double nlopt_objective(const std::vector<double>& x, std::vector<double>& /*grad
   }
 }
 
+/// How an NLopt run that returned (did not throw) ended.
+Termination nlopt_termination(nlopt::result result) {
+  switch (result) {
+    case nlopt::MAXEVAL_REACHED:
+    case nlopt::MAXTIME_REACHED: return Termination::max_iterations;
+    case nlopt::SUCCESS:
+    case nlopt::STOPVAL_REACHED:
+    case nlopt::FTOL_REACHED:
+    case nlopt::XTOL_REACHED: return Termination::converged;
+    default: return Termination::inner_failure;
+  }
+}
+
 /// The candidate where it is lower than the incumbent, else the incumbent.
 Minimum better(Minimum incumbent, Minimum candidate) {
   return candidate.value < incumbent.value ? std::move(candidate) : std::move(incumbent);
@@ -133,16 +146,18 @@ Minimum Search::run(std::vector<double> x, const SearchSettings& settings) {
   opt.set_maxeval(settings.max_evaluations);
   opt.set_initial_step(settings.initial_step);
   double value = evaluate(x);  // the start's value, should NLopt stop before improving on it
+  Termination termination = Termination::inner_failure;
   try {
-    opt.optimize(x, value);
+    termination = nlopt_termination(opt.optimize(x, value));
   } catch (const nlopt::roundoff_limited&) {
     value = evaluate(x);  // x is the run's best point
+    termination = Termination::no_progress;
   } catch (const nlopt::forced_stop&) {
     if (context.failure) std::rethrow_exception(context.failure);
     value = evaluate(x);  // the objective asked to stop: x is the best point so far
   }
   ++runs_;
-  return {std::move(x), value};
+  return {std::move(x), value, termination};
 }
 
 Minimum Search::from_each(const std::vector<std::vector<double>>& starts, const SearchSettings& settings) {

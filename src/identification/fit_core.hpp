@@ -15,6 +15,8 @@
 #include <string_view>
 #include <vector>
 
+#include "stockbridge/numerics/solver_summary.hpp"
+
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/section/masing_law.hpp"
 
@@ -86,6 +88,10 @@ struct SearchSettings {
 struct Minimum {
   std::vector<double> x;
   double value = std::numeric_limits<double>::infinity();
+  /// How the NLopt run that reached it ended: converged (the step or the change of
+  /// the objective fell below the tolerance), max_iterations (its evaluations used
+  /// up), no_progress (stopped by round-off), inner_failure (NLopt failed).
+  Termination termination = Termination::not_run;
 };
 
 /// Minimises an objective of the packed variables with NLopt, counting evaluations

@@ -126,6 +126,7 @@ GlobalIdentification identify_fit(const ExperimentMeasurement& m, const GlobalId
   result.output_offset = packing.offset(best.x);
   result.error = best.value;
   result.evaluations = coarse.evaluations() + fine.evaluations();
+  result.termination = best.termination;
   return result;
 }
 

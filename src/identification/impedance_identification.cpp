@@ -646,6 +646,12 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
   result.not_converged = static_cast<int>(
       std::count_if(result.fitted.begin(), result.fitted.end(), [](const damper::ImpedancePoint& p) { return !p.converged(); }));
   result.notes = determination_notes(result.parameters, statistics, result.stick_stiffness, result.fitted);
+  result.fit = best.summary;
+  if (!best.summary.converged()) {
+    result.notes.push_back(fmt::format("the fit stopped short of its tolerance after {} iterations ({}): the estimates are "
+                                       "the best point reached",
+                                       best.jacobians, termination_name(best.summary.termination)));
+  }
   result.model_evaluations = coarse.evaluations() + problem.evaluations() + 1;
   result.starts = starts;
   return result;

@@ -31,6 +31,21 @@ struct Functor : Eigen::DenseFunctor<double> {
   Problem& problem;
 };
 
+Termination termination_of(Eigen::LevenbergMarquardtSpace::Status status) {
+  using namespace Eigen::LevenbergMarquardtSpace;
+  switch (status) {
+    case RelativeReductionTooSmall:
+    case RelativeErrorTooSmall:
+    case RelativeErrorAndReductionTooSmall:
+    case CosinusTooSmall: return Termination::converged;
+    case TooManyFunctionEvaluation: return Termination::max_iterations;
+    case FtolTooSmall:
+    case XtolTooSmall:
+    case GtolTooSmall: return Termination::no_progress;
+    default: return Termination::inner_failure;  // improper input, user asked
+  }
+}
+
 }  // namespace
 
 Run levenberg_marquardt(Problem& problem, Eigen::VectorXd x, int max_jacobians, double first_step) {
@@ -44,13 +59,20 @@ Run levenberg_marquardt(Problem& problem, Eigen::VectorXd x, int max_jacobians, 
   // MINPACK's default, the Jacobian's column norms, lets a variable the residuals
   // hardly see (a slip moment where nothing slips) take arbitrarily long steps.
   lm.setExternalScaling(true);
-  lm.diag() = Eigen::VectorXd::Ones(x.size());  Eigen::LevenbergMarquardtSpace::Status status = lm.minimizeInit(x);
+  lm.diag() = Eigen::VectorXd::Ones(x.size());
+  Eigen::LevenbergMarquardtSpace::Status status = lm.minimizeInit(x);
+  bool exhausted = false;
   while (status == Eigen::LevenbergMarquardtSpace::NotStarted || status == Eigen::LevenbergMarquardtSpace::Running) {
-    if (lm.njev() >= max_jacobians) break;
+    if ((exhausted = lm.njev() >= max_jacobians)) break;
     status = lm.minimizeOneStep(x);
   }
   // MINPACK keeps x at the best accepted point; fnorm() is |r| there.
-  return {x, lm.fnorm() * lm.fnorm(), static_cast<int>(lm.njev())};
+  Run run{x, lm.fnorm() * lm.fnorm(), static_cast<int>(lm.njev()), {}};
+  run.summary.termination = exhausted ? Termination::max_iterations : termination_of(status);
+  run.summary.residual = lm.fnorm();
+  run.summary.jacobians = run.jacobians;
+  run.summary.evaluations = static_cast<int>(lm.nfev());
+  return run;
 }
 
 double Statistics::resolution_of(const Eigen::VectorXd& g) const {

@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "stockbridge/numerics/solver_summary.hpp"
+
 namespace stockbridge::identification::least_squares {
 
 /// Residuals r(x) (m of them) of n <= m variables, and their Jacobian dr/dx.
@@ -24,6 +26,11 @@ struct Run {
   Eigen::VectorXd x;          ///< the best point reached
   double sum_of_squares = 0;  ///< |r(x)|^2
   int jacobians = 0;          ///< iterations
+  /// converged (a step changed |r| or x by less than the tolerance, or r is
+  /// orthogonal to J's columns); max_iterations (max_jacobians used up); no_progress
+  /// (the tolerances cannot be met in floating point); inner_failure (bad input).
+  /// residual: |r|, jacobians, evaluations.
+  SolverSummary summary;
 };
 
 /// Levenberg-Marquardt from x for at most `max_jacobians` iterations; stops earlier

@@ -146,6 +146,7 @@ LocalIdentification identify_local(const MomentCurvatureRecord& record, const Lo
   fit.cycle_errors = cycle_errors(record, model_moments(fit.parameters, fit.moment_offset, record), turns);
   fit.evaluations = search.evaluations();
   fit.starts = search.runs();
+  fit.termination = best.termination;
   return fit;
 }
 

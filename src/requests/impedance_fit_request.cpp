@@ -112,7 +112,9 @@ io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measureme
       .add("notes", fit.notes)
       .add("cables", cables)
       .add("model_runs", fit.model_evaluations)
-      .add("starts", fit.starts);
+      .add("starts", fit.starts)
+      .add("termination", termination_name(fit.fit.termination))
+      .add("iterations", fit.fit.jacobians);
 }
 
 std::string fit_summary_line(const identification::ImpedanceMeasurement& measurement,

@@ -44,6 +44,9 @@ struct GlobalIdentification {
   double output_offset = 0.0;     ///< constant offset of the measured output (fit), N or N m
   double error = 0.0;             ///< relative L1 error of the model's output, from the first extreme
   int evaluations = 0;            ///< cable simulations (fit)
+  /// How the fit's last optimiser run ended (converged, max_iterations,
+  /// no_progress); not_run for the four-step method (no optimiser).
+  Termination termination = Termination::not_run;
 };
 
 /// The dissertation's four steps; error computed with the model for comparison.

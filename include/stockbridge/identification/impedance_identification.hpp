@@ -102,6 +102,10 @@ struct ImpedanceIdentification {
   std::vector<damper::ImpedancePoint> fitted;      ///< the model at each measured point, in the measurement's order
   int not_converged = 0;           ///< measured points the fitted model does not converge at
   int model_evaluations = 0;       ///< model runs over all points (Jacobian columns included)
+  /// How the final Levenberg-Marquardt run ended: converged, max_iterations
+  /// (max_jacobians used up: the estimates are the best point reached, and a note
+  /// says so), no_progress; residual |r| there, jacobians (iterations).
+  SolverSummary fit;
   int starts = 0;
 };
 

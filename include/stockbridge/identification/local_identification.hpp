@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "stockbridge/numerics/solver_summary.hpp"
 #include "stockbridge/section/masing_law.hpp"
 
 namespace stockbridge::identification {
@@ -47,6 +48,9 @@ struct LocalIdentification {
   std::vector<double> cycle_errors;  ///< the same, per cycle (between every second reversal)
   int evaluations = 0;               ///< model runs in all starts
   int starts = 0;
+  /// How the optimiser's run that reached these parameters ended (converged,
+  /// max_iterations, no_progress; SearchSettings' tolerance and evaluations).
+  Termination termination = Termination::not_run;
 };
 
 /// The relative L1 error of `parameters` (and offset m0) on the record, from the first extreme.

@@ -108,7 +108,17 @@ TEST(IdentificationCore, BothOptimizersFindTheMinimum) {
     EXPECT_EQ(m.value, bowl(m.x));
     EXPECT_EQ(search.runs(), 1);
     EXPECT_GT(search.evaluations(), 10);
+    EXPECT_EQ(m.termination, Termination::converged);
   }
+}
+
+// How a run ended is kept with its minimum: out of evaluations is not converged.
+TEST(IdentificationCore, ARunOutOfEvaluationsSaysSo) {
+  SearchSettings few = settings();
+  few.max_evaluations = 5;
+  const Minimum m = Search(bowl).run({0.0, 0.0}, few);
+  EXPECT_EQ(m.termination, Termination::max_iterations);
+  EXPECT_GT(m.value, 1e-3);  // far from the minimum at (1, -2)
 }
 
 TEST(IdentificationCore, TheBestOfSeveralStartsWinsAndRestartsNeverLoseIt) {

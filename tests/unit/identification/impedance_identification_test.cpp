@@ -75,6 +75,8 @@ TEST(ImpedanceIdentification, RecoversOneElementExactlyFromNoiseFreeCurves) {
   EXPECT_LT(relative_error(fit.cables[0].jenkin[0].h, 0.7), 1e-5);
   EXPECT_LT(fit.rms_relative_error, 1e-6);
   EXPECT_EQ(fit.not_converged, 0);
+  EXPECT_EQ(fit.fit.termination, Termination::converged) << brief_report(fit.fit);
+  EXPECT_GE(fit.fit.jacobians, 1);
   for (const ParameterEstimate& p : fit.parameters) EXPECT_TRUE(p.determined) << p.name;
   EXPECT_TRUE(fit.notes.empty()) << fit.notes.front();
   // Every arm gets the type's parameters; the fitted points are the model's.
@@ -253,6 +255,12 @@ TEST(LeastSquares, SolvesALinearProblemAndGivesItsClassicalCovariance) {
   EXPECT_NEAR(st.correlation(0, 1), c(0, 1) / std::sqrt(c(0, 0) * c(1, 1)), 1e-12);
   EXPECT_NEAR(st.sensitivity(1), std::sqrt(14.0 / 4.0), 1e-12);
   EXPECT_NEAR(st.resolution_of(Eigen::Vector2d(1.0, 1.0)), 0.01 * std::sqrt(c.sum()), 1e-12);
+  EXPECT_EQ(run.summary.termination, Termination::converged);
+  EXPECT_NEAR(run.summary.residual, std::sqrt(s), 1e-12);
+  // One iteration allowed: the run says it was cut short.
+  const least_squares::Run cut = least_squares::levenberg_marquardt(problem, Eigen::Vector2d(-50.0, 40.0), 1, 1e-3);
+  EXPECT_EQ(cut.summary.termination, Termination::max_iterations);
+  EXPECT_EQ(cut.summary.jacobians, 1);
 }
 
 TEST(LeastSquares, FindsTheNullSpaceOfAZeroColumnAndOfEqualColumns) {
