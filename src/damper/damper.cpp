@@ -15,6 +15,14 @@ bool ArmDescription::same_mechanics(const ArmDescription& other) const {
   return mass == other.mass && inertia == other.inertia && offset == other.offset && cable == other.cable;
 }
 
+bool DamperDescription::same_mechanics(const DamperDescription& other) const {
+  if (clamp_mass != other.clamp_mass || arms.size() != other.arms.size()) return false;
+  for (std::size_t k = 0; k < arms.size(); ++k) {
+    if (!arms[k].same_mechanics(other.arms[k])) return false;
+  }
+  return true;
+}
+
 namespace {
 
 /// The arm's own numbers (the cable validates itself when it is built).

@@ -35,18 +35,6 @@ void BalanceOptions::validate() const {
   }
 }
 
-int SpanTables::nodes() const {
-  int n = 0;
-  for (const ImpedanceTable& t : tables_) n += t.nodes();
-  return n;
-}
-
-int SpanTables::failed_nodes() const {
-  int n = 0;
-  for (const ImpedanceTable& t : tables_) n += t.failed_nodes();
-  return n;
-}
-
 std::vector<double> band_frequencies(const Span& span, int points) {
   const Interval band = span.wind().frequency_band(span.conductor().diameter);
   return damper::log_spaced(band.lo, band.hi, points);
@@ -56,16 +44,32 @@ SpanTables::SpanTables(const Span& span, std::vector<double> frequencies, const 
                        const damper::SweepProgress& progress)
     : frequencies_(std::move(frequencies)) {
   options.validate();
+  // Dampers of the same mechanics (several [[damper]] of one file) share a table.
+  const std::vector<SpanDamper>& dampers = span.dampers();
+  const auto same_as_earlier = [&](std::size_t j) {
+    for (std::size_t i = 0; i < j; ++i) {
+      if (dampers[i].damper.description().same_mechanics(dampers[j].damper.description())) return i;
+    }
+    return j;
+  };
+  std::size_t distinct = 0;
+  for (std::size_t j = 0; j < dampers.size(); ++j) distinct += same_as_earlier(j) == j ? 1 : 0;
   const std::size_t columns = ImpedanceTable::solved_frequencies(frequencies_, options.column_ratio).size();
-  const int total = static_cast<int>(span.dampers().size() * columns * options.velocities);
+  const int total = static_cast<int>(distinct * columns * static_cast<std::size_t>(options.velocities));
   int done_before = 0;
-  for (const SpanDamper& d : span.dampers()) {
+  for (std::size_t j = 0; j < dampers.size(); ++j) {
+    if (const std::size_t i = same_as_earlier(j); i != j) {
+      tables_.push_back(tables_[i]);
+      continue;
+    }
     const damper::SweepProgress per_table = [&](int done, int) {
       if (progress) progress(done_before + done, total);
     };
-    tables_.emplace_back(d.damper, frequencies_, options, per_table);
+    tables_.emplace_back(dampers[j].damper, frequencies_, options, per_table);
     done_before += tables_.back().nodes();
+    failed_nodes_ += tables_.back().failed_nodes();
   }
+  nodes_ = done_before;
 }
 
 namespace {

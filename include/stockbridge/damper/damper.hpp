@@ -41,6 +41,9 @@ struct DamperDescription {
   /// (core/typical_ranges.hpp), named as a damper file spells them ("arm[1].mass",
   /// "arm[0].cable.ei"); a clamp mass of 0 (left out on purpose) is not one.
   std::vector<UnusualValue> unusual_values() const;
+  /// Same mechanics (the clamp mass and every arm's, in order; names aside): such
+  /// dampers have the same impedance.
+  bool same_mechanics(const DamperDescription& other) const;
 };
 
 /// One arm: its constant model (mass matrix, load vector, discretised cable),

@@ -70,18 +70,22 @@ struct BalanceOptions {
 class SpanTables {
  public:
   /// The tables of the span's dampers at `frequencies` (Hz, strictly increasing;
-  /// none without dampers); `progress` counts their nodes.
+  /// none without dampers), one solved per damper of distinct mechanics (dampers
+  /// alike share it); `progress` counts their nodes.
   SpanTables(const Span& span, std::vector<double> frequencies, const ImpedanceTableOptions& options,
              const damper::SweepProgress& progress = {});
 
   const std::vector<double>& frequencies() const { return frequencies_; }
   const std::vector<ImpedanceTable>& tables() const { return tables_; }
-  int nodes() const;
-  int failed_nodes() const;
+  /// The (frequency, velocity) nodes solved, a shared table's once; of which did not converge.
+  int nodes() const { return nodes_; }
+  int failed_nodes() const { return failed_nodes_; }
 
  private:
   std::vector<double> frequencies_;
   std::vector<ImpedanceTable> tables_;
+  int nodes_ = 0;
+  int failed_nodes_ = 0;
 };
 
 /// One damper at one frequency's balance.

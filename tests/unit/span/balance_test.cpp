@@ -301,6 +301,22 @@ TEST(SpanBalance, TheLifeUsesThePoffenbergerSwartStress) {
   EXPECT_NE(b.summary.life->damage_per_year, by_fymax.damage_per_year);
 }
 
+// Several [[damper]] of one file have one impedance: its table is solved once.
+TEST(SpanTables, DampersAlikeShareOneTable) {
+  const std::vector<double> f{8.0, 12.0};
+  const SpanTables one(aster_span({{sauter_damper(), 1.0, true, "a"}}), f, {});
+  const SpanTables alike(aster_span({{sauter_damper(), 1.0, true, "a"}, {sauter_damper(), 2.0, true, "b"}}), f, {});
+  const SpanTables apart(aster_span({{sauter_damper(), 1.0, true, "a"}, {scaled_damper(0.5), 2.0, true, "b"}}), f, {});
+  ASSERT_EQ(alike.tables().size(), 2u);
+  EXPECT_EQ(alike.nodes(), one.nodes());
+  EXPECT_EQ(apart.nodes(), 2 * one.nodes());
+  for (const double v : {0.01, 0.1, 0.5}) {
+    EXPECT_EQ(*alike.tables()[1].at(1, v), *one.tables()[0].at(1, v));
+    EXPECT_NEAR(std::abs(*apart.tables()[1].at(1, v)), 0.5 * std::abs(*one.tables()[0].at(1, v)),
+                1e-5 * std::abs(*one.tables()[0].at(1, v)));
+  }
+}
+
 TEST(SpanBalance, ThePositionSearchFindsTheBestOfAFineScan) {
   const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter"}});
   const std::vector<double> f{12.0, 25.0};
