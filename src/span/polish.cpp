@@ -7,7 +7,6 @@
 #include <Eigen/LU>
 #include <fmt/format.h>
 
-#include "../numerics/nonlinear_system.hpp"
 
 namespace stockbridge::span {
 
@@ -179,6 +178,70 @@ void Polish::update_slopes(const Trial& trial) {
   last_solved_ = trial;
 }
 
+Polish::Search Polish::search(FrequencyBalance& balance, const Eigen::VectorXd& start) {
+  anchors_.assign(trackers_.size(), std::nullopt);
+  last_solved_.reset();
+  Search out;
+  const numerics::Residual residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& h) {
+    std::optional<Trial> trial = evaluate(balance, x, out.failure);
+    if (!trial) return false;
+    if (trial->amplitude <= 0.0) {
+      out.still = trial->amplitude;
+      h = Eigen::VectorXd::Zero(x.size());  // stops the solve: converged
+      return true;
+    }
+    update_slopes(*trial);
+    h = trial->h;
+    out.trials.push_back(std::move(*trial));
+    return true;
+  };
+  const numerics::ResidualJacobian jacobian_at = [&](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
+    const Trial* trial = out.trial_at(x);
+    if (!trial) return false;
+    jac = jacobian(balance, *trial);
+    return true;
+  };
+  numerics::NonlinearSystemOptions system;
+  system.tolerance = options_.polish_tolerance;
+  system.max_evaluations = options_.max_polish_evaluations;
+  out.solved = numerics::solve_fixed_point(residual, jacobian_at, start, system, kPolishScatter * options_.polish_tolerance);
+  return out;
+}
+
+const Polish::Trial* Polish::Search::trial_at(const Eigen::VectorXd& x) const {
+  const auto found = std::find_if(trials.rbegin(), trials.rend(), [&](const Trial& t) { return t.u == x; });
+  return found == trials.rend() ? nullptr : &*found;
+}
+
+std::string Polish::failure_where(const Search& search) const {
+  if (search.solved.summary.termination == Termination::inner_failure) {
+    return search.failure.termination == Termination::inner_failure ? search.failure.where : brief_report(search.failure);
+  }
+  std::string where = fmt::format("in the dampers' clamp velocities with directly solved impedances (tolerance {:.3g})",
+                                  options_.polish_tolerance);
+  if (search.solved.jump_at.size() > 0) {
+    Eigen::Index worst = 0;
+    const double jump = search.solved.jump_residual.cwiseAbs().maxCoeff(&worst);
+    const Unknown& k = unknowns_[static_cast<std::size_t>(worst)];
+    where += fmt::format(": as end {}, damper {}'s trial passes {:.4g} m/s its balance velocity jumps by {:.3g} % (no "
+                         "self-consistent state there)",
+                         k.slots[0].first + 1, k.slots[0].second + 1, std::exp(search.solved.jump_at[worst]),
+                         100.0 * std::expm1(jump));
+  }
+  return where;
+}
+
+double Polish::accept(FrequencyBalance& balance, const Trial& solution, bool continued) {
+  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+    for (const auto& [e, j] : unknowns_[k].slots) balance.fix(e, j, solution.direct[k]);
+  }
+  const double det = jacobian(balance, solution).partialPivLu().determinant();
+  const int sign = det > 0.0 ? 1 : det < 0.0 ? -1 : 0;
+  passed_fold_ = continued && sign != 0 && history_.back().jacobian_sign != 0 && sign != history_.back().jacobian_sign;
+  history_.push_back({std::log(balance.wave().angular_frequency), solution.u, sign});
+  return solution.amplitude;
+}
+
 StableRoot Polish::run(FrequencyBalance& balance, std::optional<double> from_tables) {
   StableRoot out;
   if (from_tables && *from_tables <= 0.0) {  // nothing builds up: the dampers stand still
@@ -195,73 +258,16 @@ StableRoot Polish::run(FrequencyBalance& balance, std::optional<double> from_tab
   const std::optional<Eigen::VectorXd> u = start(balance, from_tables, out.summary);
   if (!u) return out;
   start_slopes(balance, *u);
-  anchors_.assign(trackers_.size(), std::nullopt);
-  last_solved_.reset();
-
-  std::vector<Trial> trials;    // this frequency's, for the Jacobian at the solver's point
-  std::optional<double> still;  // an amplitude <= 0: with these impedances nothing builds up
-  SolverSummary failure;
-  const numerics::Residual residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& h) {
-    std::optional<Trial> trial = evaluate(balance, x, failure);
-    if (!trial) return false;
-    if (trial->amplitude <= 0.0) {
-      still = trial->amplitude;
-      h = Eigen::VectorXd::Zero(x.size());  // stops the solve: converged
-      return true;
-    }
-    update_slopes(*trial);
-    h = trial->h;
-    trials.push_back(std::move(*trial));
-    return true;
-  };
-  const auto trial_at = [&](const Eigen::VectorXd& x) {
-    return std::find_if(trials.rbegin(), trials.rend(), [&](const Trial& t) { return t.u == x; });
-  };
-  const numerics::ResidualJacobian jacobian_at = [&](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
-    const auto trial = trial_at(x);
-    if (trial == trials.rend()) return false;
-    jac = jacobian(balance, *trial);
-    return true;
-  };
-  numerics::NonlinearSystemOptions system;
-  system.tolerance = options_.polish_tolerance;
-  system.max_evaluations = options_.max_polish_evaluations;
-  const numerics::NonlinearSystemResult solved =
-      numerics::solve_fixed_point(residual, jacobian_at, *u, system, kPolishScatter * options_.polish_tolerance);
-  out.summary = solved.summary;
+  const Search found = search(balance, *u);
+  out.summary = found.solved.summary;
   out.summary.where.clear();
-  if (still) {
+  if (found.still) {
     out.summary.termination = Termination::converged;  // with the direct impedances nothing builds up
-    return out;
+  } else if (!found.solved.summary.converged()) {
+    out.summary.where = failure_where(found);
+  } else {
+    out.amplitude = accept(balance, *found.trial_at(found.solved.x), !from_tables);
   }
-  if (solved.summary.termination == Termination::inner_failure) {
-    out.summary.where = failure.termination == Termination::inner_failure ? failure.where : brief_report(failure);
-    return out;
-  }
-  if (!solved.summary.converged()) {
-    out.summary.where = fmt::format("in the dampers' clamp velocities with directly solved impedances (tolerance {:.3g})",
-                                    options_.polish_tolerance);
-    if (solved.jump_at.size() > 0) {
-      Eigen::Index worst = 0;
-      const double jump = solved.jump_residual.cwiseAbs().maxCoeff(&worst);
-      const Unknown& k = unknowns_[static_cast<std::size_t>(worst)];
-      out.summary.where += fmt::format(": as end {}, damper {}'s trial passes {:.4g} m/s its balance velocity jumps by "
-                                       "{:.3g} % (no self-consistent state there)",
-                                       k.slots[0].first + 1, k.slots[0].second + 1, std::exp(solved.jump_at[worst]),
-                                       100.0 * std::expm1(jump));
-    }
-    return out;
-  }
-  // The balance ends with the solution's impedances fixed.
-  const Trial& solution = *trial_at(solved.x);
-  for (std::size_t k = 0; k < unknowns_.size(); ++k) {
-    for (const auto& [e, j] : unknowns_[k].slots) balance.fix(e, j, solution.direct[k]);
-  }
-  const double det = jacobian(balance, solution).partialPivLu().determinant();
-  const int sign = det > 0.0 ? 1 : det < 0.0 ? -1 : 0;
-  passed_fold_ = !from_tables && sign != 0 && history_.back().jacobian_sign != 0 && sign != history_.back().jacobian_sign;
-  history_.push_back({std::log(balance.wave().angular_frequency), solved.x, sign});
-  out.amplitude = solution.amplitude;
   return out;
 }
 

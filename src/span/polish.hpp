@@ -33,6 +33,7 @@
 
 #include <Eigen/Core>
 
+#include "../numerics/nonlinear_system.hpp"
 #include "frequency_balance.hpp"
 #include "stockbridge/damper/tracker.hpp"
 
@@ -79,7 +80,24 @@ class Polish {
     int jacobian_sign;  ///< of det(dh/du) there
   };
 
+  /// One frequency's solve: the system's result, the trials it made, and why it
+  /// stopped where an evaluation failed.
+  struct Search {
+    numerics::NonlinearSystemResult solved;
+    std::vector<Trial> trials;
+    std::optional<double> still;  ///< a trial's amplitude <= 0: with its impedances nothing builds up
+    SolverSummary failure;        ///< the evaluation that failed (a direct solve, the balance)
+    const Trial* trial_at(const Eigen::VectorXd& u) const;
+  };
+
   std::vector<Unknown> unknowns_of(const FrequencyBalance& balance) const;
+  /// The clamp velocities that reproduce themselves, from `start` (log v).
+  Search search(FrequencyBalance& balance, const Eigen::VectorXd& start);
+  /// Where and by how much a search that did not converge failed.
+  std::string failure_where(const Search& search) const;
+  /// Fixes the solution's impedances in the balance and hands it on along the band;
+  /// its amplitude.
+  double accept(FrequencyBalance& balance, const Trial& solution, bool continued);
   /// Where a frequency starts: the tables' clamp velocities at `from_tables`, or the
   /// last frequencies' solutions; none (with the reason) where neither is known.
   std::optional<Eigen::VectorXd> start(FrequencyBalance& balance, std::optional<double> from_tables,
