@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <nlopt.hpp>
 
+#include "../numerics/nlopt_termination.hpp"
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::design {
@@ -86,19 +87,6 @@ std::vector<std::vector<double>> space_filling_sample(const std::vector<DesignVa
 
 namespace {
 
-/// How an NLopt run that returned (did not throw) ended.
-Termination polish_termination(nlopt::result result) {
-  switch (result) {
-    case nlopt::MAXEVAL_REACHED:
-    case nlopt::MAXTIME_REACHED: return Termination::max_iterations;
-    case nlopt::SUCCESS:
-    case nlopt::STOPVAL_REACHED:
-    case nlopt::FTOL_REACHED:
-    case nlopt::XTOL_REACHED: return Termination::converged;
-    default: return Termination::inner_failure;
-  }
-}
-
 /// One local polish from `start`: COBYLA on the variables scaled to [0, 1], the
 /// constraints as inequalities g <= 0; every distinct candidate it evaluates, in order.
 class Polish {
@@ -129,7 +117,7 @@ class Polish {
     }
     double value = 0.0;
     try {
-      summary.termination = polish_termination(opt.optimize(z, value));
+      summary.termination = numerics::nlopt_termination(opt.optimize(z, value));
     } catch (const nlopt::roundoff_limited&) {
       summary.termination = Termination::no_progress;  // stopped by round-off: the evaluations made stand
     } catch (const nlopt::forced_stop&) {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlopt.hpp>
 
+#include "../numerics/nlopt_termination.hpp"
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::identification::fit_core {
@@ -108,19 +109,6 @@ double nlopt_objective(const std::vector<double>& x, std::vector<double>& /*grad
   }
 }
 
-/// How an NLopt run that returned (did not throw) ended.
-Termination nlopt_termination(nlopt::result result) {
-  switch (result) {
-    case nlopt::MAXEVAL_REACHED:
-    case nlopt::MAXTIME_REACHED: return Termination::max_iterations;
-    case nlopt::SUCCESS:
-    case nlopt::STOPVAL_REACHED:
-    case nlopt::FTOL_REACHED:
-    case nlopt::XTOL_REACHED: return Termination::converged;
-    default: return Termination::inner_failure;
-  }
-}
-
 /// The candidate where it is lower than the incumbent, else the incumbent.
 Minimum better(Minimum incumbent, Minimum candidate) {
   return candidate.value < incumbent.value ? std::move(candidate) : std::move(incumbent);
@@ -148,7 +136,7 @@ Minimum Search::run(std::vector<double> x, const SearchSettings& settings) {
   double value = evaluate(x);  // the start's value, should NLopt stop before improving on it
   Termination termination = Termination::inner_failure;
   try {
-    termination = nlopt_termination(opt.optimize(x, value));
+    termination = numerics::nlopt_termination(opt.optimize(x, value));
   } catch (const nlopt::roundoff_limited&) {
     value = evaluate(x);  // x is the run's best point
     termination = Termination::no_progress;

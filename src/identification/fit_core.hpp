@@ -15,9 +15,8 @@
 #include <string_view>
 #include <vector>
 
-#include "stockbridge/numerics/solver_summary.hpp"
-
 #include "stockbridge/identification/local_identification.hpp"
+#include "stockbridge/numerics/solver_summary.hpp"
 #include "stockbridge/section/masing_law.hpp"
 
 namespace stockbridge::identification::fit_core {

@@ -222,14 +222,17 @@ TEST(SpanFile, AMissingTableIsNamed) {
       << span_error_of(no_fatigue);
 }
 
-/// A bad value is reported at its own line, named by its full path: the line of
-/// `to` (of its last line where it holds several, unless `first` says otherwise).
-void expect_at_line(const std::string& from, const std::string& to, const std::string& message, bool first = false) {
-  const std::string text = replaced(kSpan, from, to);
-  const std::string key_line = first ? to.substr(0, to.find('\n')) : to.substr(to.rfind('\n') + 1);
+/// The span file `text` is refused with `message` at the line that starts with `key_line`.
+void expect_error_at(const std::string& text, const std::string& key_line, const std::string& message) {
   const std::string expected = at_line(line_of(text, key_line)) + message;
   const std::string error = span_error_of(text);
   EXPECT_EQ(error.rfind(expected, 0), 0u) << error << "\nexpected the start: " << expected;
+}
+
+/// A bad value is reported at its own line, named by its full path: the line of
+/// `to` (of its last line where it holds several, unless `first` says otherwise).
+void expect_at_line(const std::string& from, const std::string& to, const std::string& message, bool first = false) {
+  expect_error_at(replaced(kSpan, from, to), first ? to.substr(0, to.find('\n')) : to.substr(to.rfind('\n') + 1), message);
 }
 
 TEST(SpanFile, BadValuesAreReportedAtTheirLine) {
@@ -294,10 +297,7 @@ column_ratio = 1.25
   EXPECT_EQ(b.fixed_point.tolerance, defaults.fixed_point.tolerance);  // not a file key
   const std::string balance = "\n[balance]\npolish_tolerance = 1e-6\n[balance.table]\nvelocities = 9\n";
   const auto bad = [&](const std::string& from, const std::string& to, const std::string& message) {
-    const std::string text = kSpan + replaced(balance, from, to);
-    const std::string expected = at_line(line_of(text, to)) + message;
-    const std::string error = span_error_of(text);
-    EXPECT_EQ(error.rfind(expected, 0), 0u) << error << "\nexpected the start: " << expected;
+    expect_error_at(kSpan + replaced(balance, from, to), to, message);
   };
   bad("polish_tolerance = 1e-6", "polish_tolerance = -1", "balance.polish_tolerance = -1: expected a finite value > 0");
   bad("polish_tolerance = 1e-6", "damper_model = \"strong\"",

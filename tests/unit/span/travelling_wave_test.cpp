@@ -76,19 +76,29 @@ TEST(TravellingWave, APureMassIsTheClosedFormOfAStringWithAPointMass) {
   }
 }
 
+/// 1 to 3 dampers (by `trial`) at random positions along an end, with random impedances.
+struct RandomEnd {
+  std::vector<double> positions;
+  std::vector<std::complex<double>> z;
+};
+RandomEnd random_end(std::mt19937& random, int trial, double spacing, double re_z, double im_z) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  RandomEnd end;
+  double a = 0.0;
+  for (int j = 0; j < 1 + trial % 3; ++j) {
+    a += spacing * (0.2 + u(random));
+    end.positions.push_back(a);
+    end.z.emplace_back(re_z * u(random), im_z * (u(random) - 0.5));
+  }
+  return end;
+}
+
 TEST(TravellingWave, TheEndAbsorbsWhatItsDampersDissipate) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int trial = 0; trial < 50; ++trial) {
     const StringWave wave = aster_wave(5.0 + 100.0 * u(random));
-    std::vector<double> positions;
-    std::vector<std::complex<double>> z;
-    double a = 0.0;
-    for (int j = 0; j < 1 + trial % 3; ++j) {
-      a += 0.2 + 2.0 * u(random);
-      positions.push_back(a);
-      z.emplace_back(400.0 * u(random), 600.0 * (u(random) - 0.5));
-    }
+    const auto [positions, z] = random_end(random, trial, 2.0, 400.0, 600.0);
     const EndResponse r = end_response(wave, positions, z, 0.005 + 0.02 * u(random));
     EXPECT_NEAR(r.absorbed_power, r.damper_power, 1e-10 * std::max(1.0, r.damper_power)) << trial;
     EXPECT_GE(r.damper_power, 0.0);
@@ -103,13 +113,10 @@ TEST(TravellingWave, TheTangentIsTheDifferenceQuotientOfTheResponse) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int trial = 0; trial < 40; ++trial) {
     const StringWave wave = aster_wave(5.0 + 40.0 * u(random));
-    std::vector<double> positions;
-    std::vector<std::complex<double>> z, direction;
-    double a = 0.0;
-    for (int j = 0; j < 1 + trial % 3; ++j) {
-      a += 0.3 + 1.5 * u(random);
-      positions.push_back(a);
-      z.emplace_back(50.0 + 300.0 * u(random), 400.0 * (u(random) - 0.5));
+    auto [positions, z] = random_end(random, trial, 1.5, 300.0, 400.0);
+    std::vector<std::complex<double>> direction;
+    for (std::complex<double>& zj : z) {
+      zj += 50.0;  // away from a damper of no resistance
       direction.emplace_back(u(random) - 0.5, u(random) - 0.5);
     }
     const double antinode = 0.01;
