@@ -98,8 +98,8 @@ TEST(TravellingWave, TheEndAbsorbsWhatItsDampersDissipate) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int trial = 0; trial < 50; ++trial) {
     const StringWave wave = aster_wave(5.0 + 100.0 * u(random));
-    const auto [positions, z] = random_end(random, trial, 2.0, 400.0, 600.0);
-    const EndResponse r = end_response(wave, positions, z, 0.005 + 0.02 * u(random));
+    const RandomEnd end = random_end(random, trial, 2.0, 400.0, 600.0);
+    const EndResponse r = end_response(wave, end.positions, end.z, 0.005 + 0.02 * u(random));
     EXPECT_NEAR(r.absorbed_power, r.damper_power, 1e-10 * std::max(1.0, r.damper_power)) << trial;
     EXPECT_GE(r.damper_power, 0.0);
   }
@@ -113,7 +113,9 @@ TEST(TravellingWave, TheTangentIsTheDifferenceQuotientOfTheResponse) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int trial = 0; trial < 40; ++trial) {
     const StringWave wave = aster_wave(5.0 + 40.0 * u(random));
-    auto [positions, z] = random_end(random, trial, 1.5, 300.0, 400.0);
+    RandomEnd end = random_end(random, trial, 1.5, 300.0, 400.0);
+    const std::vector<double>& positions = end.positions;
+    std::vector<std::complex<double>>& z = end.z;
     std::vector<std::complex<double>> direction;
     for (std::complex<double>& zj : z) {
       zj += 50.0;  // away from a damper of no resistance
