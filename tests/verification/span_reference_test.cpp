@@ -113,7 +113,7 @@ TEST(SpanReference, NonlinearDampersTwoAndThreePerEnd) {
 }
 
 TEST(SpanReference, EveryPointOfTheExampleWithTwoAndThreeDampersPerEndIsSelfConsistent) {
-  const int points = stockbridge::testing::scaled(100, 6);
+  const int points = stockbridge::testing::scaled(100, 3);
   for (const std::vector<double>& layout : kLayouts) {
     SCOPED_TRACE(layout.size());
     const Span span = example_with_dampers_at(layout);
