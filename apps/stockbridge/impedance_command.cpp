@@ -59,11 +59,11 @@ requests::SweepRequest sweep_request(const ImpedanceOptions& options) {
 }
 
 std::string impedance_csv(const damper::Damper& damper, const std::vector<damper::SweepRun>& runs) {
-  io::CsvWriter csv(requests::impedance_columns(damper));
+  std::vector<const damper::ImpedancePoint*> points;
   for (const damper::SweepRun& run : runs) {
-    for (const damper::ImpedancePoint& p : run.points) csv.add_row(requests::impedance_row(p));
+    for (const damper::ImpedancePoint& p : run.points) points.push_back(&p);
   }
-  return csv.text();
+  return requests::impedance_table(damper).values(points).csv();
 }
 
 int run_impedance_command(const ImpedanceOptions& options) {

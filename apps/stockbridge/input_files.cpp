@@ -57,6 +57,21 @@ void print_warnings(const std::vector<std::string>& lines) {
   for (const std::string& line : lines) fmt::print(stderr, "warning: {}\n", line);
 }
 
+void print_warnings(const std::vector<Warning>& warnings) {
+  for (const Warning& w : warnings) {
+    if (!w.setting) {
+      print_warnings({w.message});
+      continue;
+    }
+    // The setting's name (up to the first space) as its flag: max_iterations -> --max-iterations.
+    std::string line = "--" + w.message;
+    for (std::size_t i = 2; i < line.size() && line[i] != ' '; ++i) {
+      if (line[i] == '_') line[i] = '-';
+    }
+    print_warnings({line});
+  }
+}
+
 void warn_unusual_options(const std::vector<UnusualValue>& values) {
   for (UnusualValue u : values) {
     u.field = "--" + u.field;

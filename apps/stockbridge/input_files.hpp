@@ -9,6 +9,7 @@
 #include "option_parsing.hpp"
 #include "stockbridge/cable/cable.hpp"
 #include "stockbridge/core/typical_ranges.hpp"
+#include "stockbridge/core/warning.hpp"
 #include "stockbridge/damper/damper.hpp"
 #include "stockbridge/io/design_file.hpp"
 #include "stockbridge/io/span_file.hpp"
@@ -30,6 +31,9 @@ cable::Cable read_cable_input(const std::string& path, const std::vector<Command
 
 /// "warning: <line>" on stderr for each line.
 void print_warnings(const std::vector<std::string>& lines);
+/// The same for the library's warnings, a setting's name shown as its flag
+/// ("--velocity = 100: ...").
+void print_warnings(const std::vector<Warning>& warnings);
 /// A warning for each option value outside its typical range, the field named as
 /// the option ("--velocity = 100: outside the typical ...").
 void warn_unusual_options(const std::vector<UnusualValue>& values);

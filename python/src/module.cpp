@@ -5,6 +5,7 @@
 #include <complex>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@
 #include "stockbridge/requests/design_request.hpp"
 #include "stockbridge/requests/impedance_fit_request.hpp"
 #include "stockbridge/requests/plausibility.hpp"
+#include "stockbridge/requests/response_request.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/span_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
@@ -75,6 +77,70 @@ auto warned(Loaded loaded) {
 
 py::array_t<double> array(const std::vector<double>& values) { return py::array_t<double>(values.size(), values.data()); }
 
+/// One column's values as a numpy array of `shape` (rows in C order): numbers as
+/// float64, counts as int64, flags as bool; a label column as a list of str.
+py::object column_array(const requests::TableValues::Column& c, const std::vector<std::size_t>& shape) {
+  switch (c.kind) {
+    case requests::ColumnKind::label: return py::cast(c.labels);
+    case requests::ColumnKind::flag: {
+      py::array_t<bool> a(shape);
+      bool* out = a.mutable_data();
+      for (std::size_t i = 0; i < c.numbers.size(); ++i) out[i] = c.numbers[i] != 0.0;
+      return std::move(a);
+    }
+    case requests::ColumnKind::count: {
+      py::array_t<long long> a(shape);
+      long long* out = a.mutable_data();
+      for (std::size_t i = 0; i < c.numbers.size(); ++i) out[i] = static_cast<long long>(c.numbers[i]);
+      return std::move(a);
+    }
+    case requests::ColumnKind::number: break;
+  }
+  py::array_t<double> a(shape);
+  std::copy(c.numbers.begin(), c.numbers.end(), a.mutable_data());
+  return std::move(a);
+}
+
+/// A table's columns as a dict of arrays by the CSV's names, each of `shape`; with
+/// `stack_families`, a family's columns (one per arm) stacked into one array of
+/// (members, *shape) by the family's name ("x_m").
+py::dict table_arrays(const requests::TableValues& table, const std::vector<std::size_t>& shape,
+                      bool stack_families = false) {
+  py::dict out;
+  std::map<std::string, std::vector<const requests::TableValues::Column*>> families;
+  std::vector<std::string> order;
+  for (const requests::TableValues::Column& c : table.columns) {
+    if (!stack_families || c.family.empty()) {
+      out[py::str(c.name)] = column_array(c, shape);
+      continue;
+    }
+    if (!families.contains(c.family)) order.push_back(c.family);
+    families[c.family].push_back(&c);
+  }
+  for (const std::string& family : order) {
+    const auto& members = families[family];
+    std::vector<std::size_t> stacked{members.size()};
+    stacked.insert(stacked.end(), shape.begin(), shape.end());
+    py::array_t<double> a(stacked);
+    double* data = a.mutable_data();
+    for (const auto* c : members) data = std::copy(c->numbers.begin(), c->numbers.end(), data);
+    out[py::str(family)] = a;
+  }
+  return out;
+}
+
+/// Row r of a table as Python scalars by name: float, int, bool or str.
+void add_row(py::dict& out, const requests::TableValues& table, std::size_t r) {
+  for (const requests::TableValues::Column& c : table.columns) {
+    switch (c.kind) {
+      case requests::ColumnKind::label: out[py::str(c.name)] = c.labels[r]; break;
+      case requests::ColumnKind::flag: out[py::str(c.name)] = c.numbers[r] != 0.0; break;
+      case requests::ColumnKind::count: out[py::str(c.name)] = static_cast<long long>(c.numbers[r]); break;
+      case requests::ColumnKind::number: out[py::str(c.name)] = c.numbers[r]; break;
+    }
+  }
+}
+
 std::vector<double> amplitudes_of(const py::object& value) {
   if (value.is_none()) return {};
   if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) return {value.cast<double>()};
@@ -113,56 +179,25 @@ py::dict impedance(const damper::Damper& d, const std::optional<std::vector<doub
     py::gil_scoped_release release;
     runs = damper::run_sweep(d, spec);
   }
-  const std::vector<std::string> columns = requests::impedance_columns(d);
   const std::size_t na = runs.size(), nf = spec.frequencies.size();
-  std::vector<py::array_t<double>> arrays;
-  for (std::size_t c = 0; c < columns.size(); ++c) arrays.emplace_back(std::vector<std::size_t>{na, nf});
-  py::array_t<bool> converged({na, nf}), non_unique({na, nf});
-  auto ok = converged.mutable_unchecked<2>();
-  auto several = non_unique.mutable_unchecked<2>();
+  std::vector<const damper::ImpedancePoint*> rows;
   py::list terminations, messages;
   for (std::size_t a = 0; a < na; ++a) {
     py::list termination_row, message_row;
-    for (std::size_t i = 0; i < nf; ++i) {
-      const damper::ImpedancePoint& p = runs[a].points[i];
-      const std::vector<double> row = requests::impedance_row(p);
-      for (std::size_t c = 0; c < columns.size(); ++c) arrays[c].mutable_at(a, i) = row[c];
-      ok(a, i) = p.converged();
-      several(a, i) = p.non_unique;
+    for (const damper::ImpedancePoint& p : runs[a].points) {
+      rows.push_back(&p);
       termination_row.append(std::string(termination_name(p.termination)));
       message_row.append(p.converged() ? p.note : p.failure);
     }
     terminations.append(termination_row);
     messages.append(message_row);
   }
-  py::dict out;
-  // frequency_hz (1-D), converged and non_unique (bool) have arrays of their own below.
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    if (columns[c] != "frequency_hz" && columns[c] != "converged" && columns[c] != "non_unique") {
-      out[py::str(columns[c])] = arrays[c];
-    }
-  }
-  out["frequency_hz"] = array(spec.frequencies);
+  py::dict out = table_arrays(requests::impedance_table(d).values(rows), {na, nf});
+  out["frequency_hz"] = array(spec.frequencies);  // 1-D: the frequencies
   out["amplitude"] = array(spec.amplitudes);
   out["arms"] = requests::arm_column_prefixes(d);  // the <arm> of the per-arm columns, as the CSV's
-  out["converged"] = converged;
-  out["non_unique"] = non_unique;
   out["termination"] = terminations;
   out["messages"] = messages;
-  return out;
-}
-
-/// Per-arm rows (arms x samples) of one field of the arms' periods; NaN where an arm has no period.
-template <class Field>
-py::array_t<double> per_arm(const damper::DamperSteadyState& state, std::size_t n, Field field) {
-  py::array_t<double> out({state.arms.size(), n});
-  auto view = out.mutable_unchecked<2>();
-  for (std::size_t k = 0; k < state.arms.size(); ++k) {
-    const damper::ArmPeriod& p = state.arms[k].period;
-    for (std::size_t j = 0; j < n; ++j) {
-      view(k, j) = j < static_cast<std::size_t>(p.loads.cols()) ? field(p, static_cast<Eigen::Index>(j)) : kNaN;
-    }
-  }
   return out;
 }
 
@@ -170,54 +205,23 @@ py::dict response(const damper::Damper& d, double frequency, std::optional<doubl
                   const std::string& method, std::optional<int> harmonics, std::optional<int> samples,
                   std::optional<int> steps, std::optional<int> max_iterations, std::optional<int> max_periods,
                   std::optional<double> energy_tolerance, bool full_period) {
-  const damper::Excitation e = requests::excitation(frequency, velocity, displacement);
-  warn(unusual_messages(requests::unusual_excitation(frequency, velocity, displacement)));
-  const damper::SolverOptions options = requests::solver_options(
-      solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance, full_period));
-  damper::DamperSteadyState state;
+  const requests::ResponseRequest request{
+      frequency, velocity, displacement,
+      solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance, full_period)};
+  requests::validate(request);
+  std::optional<requests::ResponseResult> result;
   {
     py::gil_scoped_release release;
-    state = damper::solve_steady_state(d, e, options);
+    result.emplace(requests::run_response(d, request));
   }
-  const damper::ImpedancePoint& point = state.point;
-  std::size_t n = 0;
-  for (const auto& s : state.arms) n = std::max(n, static_cast<std::size_t>(s.period.loads.cols()));
-  const std::vector<double> time = damper::time_grid(e, static_cast<int>(n));
-  std::vector<double> clamp(n), shaker(n, kNaN);
-  for (std::size_t j = 0; j < n; ++j) clamp[j] = e.displacement_amplitude * std::sin(e.angular_frequency() * time[j]);
-  std::vector<const damper::ArmSolution*> arms;
-  for (const auto& s : state.arms) arms.push_back(&s);
-  const Eigen::RowVectorXd force = damper::shaker_force(d, e, arms);  // the last iterate's too, as the CLI writes it
-  if (static_cast<std::size_t>(force.size()) == n) shaker.assign(force.data(), force.data() + force.size());
-  py::dict out;
-  out["time_s"] = array(time);
-  out["clamp_displacement_m"] = array(clamp);
-  out["shaker_force_n"] = array(shaker);
-  out["x_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) { return p.kinematics(0, j); });
-  out["phi_rad"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) { return p.kinematics(1, j); });
-  out["force_n"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) { return p.loads(0, j); });
-  out["tip_moment_n_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) { return p.loads(1, j); });
-  out["clamp_moment_n_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) {
-    return p.clamp_moment[static_cast<std::size_t>(j)];
-  });
-  out["clamp_curvature_per_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) {
-    return p.clamp_curvature[static_cast<std::size_t>(j)];
-  });
-  out["clamp_section_moment_n_m"] = per_arm(state, n, [](const damper::ArmPeriod& p, Eigen::Index j) {
-    return p.clamp_section_moment[static_cast<std::size_t>(j)];
-  });
+  warn(warning_messages(result->warnings));
+  const damper::ImpedancePoint& point = result->state.point;
+  py::dict out = table_arrays(requests::response_table(d).values(requests::response_samples(*result)),
+                              {result->time.size()}, true);
+  add_row(out, requests::point_summary_table(d).values(point), 0);  // converged, termination, power_w, figures, ...
   out["arms"] = requests::arm_column_prefixes(d);  // the rows of the per-arm arrays, named as the CSV's columns
-  out["converged"] = point.converged();
-  out["termination"] = std::string(termination_name(point.termination));
   out["message"] = point.converged() ? point.note : point.failure;
   out["impedance"] = point.converged() ? point.impedance : std::complex<double>(kNaN, kNaN);
-  out["power_w"] = point.converged() ? point.power : kNaN;
-  out["dissipated_power_w"] = point.converged() ? point.dissipated_power : kNaN;
-  out["energy_error"] = point.energy_error;
-  // The design figures by the impedance CSV's names, as the response command's --json.
-  const std::vector<std::string> figure_names = requests::figure_columns(d);
-  const std::vector<double> figures = requests::figure_values(point);
-  for (std::size_t i = 0; i < figure_names.size(); ++i) out[py::str(figure_names[i])] = figures[i];
   return out;
 }
 

@@ -39,14 +39,8 @@ damper::SweepSpec sweep_spec(const SweepRequest& request) {
 
 namespace {
 
-/// The columns every point has, whatever the damper.
-const std::vector<std::string>& point_columns() {
-  static const std::vector<std::string> columns{
-      "frequency_hz", "velocity_m_s", "re_z_n_s_m", "im_z_n_s_m",         "abs_z_n_s_m", "phase_deg",
-      "power_w",      "converged",    "displacement_m", "dissipated_power_w", "energy_error", "residual",
-      "iterations",   "periods",      "non_unique"};
-  return columns;
-}
+using Point = damper::ImpedancePoint;
+using PointQuantity = Quantity<Point>;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -56,77 +50,131 @@ double without_round_off(double value, double scale) { return std::abs(value) < 
 /// The apparent power V^2 |Z| / 2 of an impedance at the velocity amplitude v.
 double apparent_power(double v, std::complex<double> z) { return 0.5 * v * v * std::abs(z); }
 
+/// Z with a real part that is round-off of zero against |Z| (nothing slips) as 0.
+std::complex<double> cleaned_impedance(const Point& p) {
+  return {without_round_off(p.impedance.real(), std::abs(p.impedance)), p.impedance.imag()};
+}
+
+/// A quantity of a converged point (NaN otherwise).
+PointQuantity computed(std::string name, std::string unit, std::string meaning, std::function<double(const Point&)> value) {
+  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
+          [value = std::move(value)](const Point& p, std::size_t) { return p.converged() ? value(p) : kNaN; }, {}};
+}
+
+/// A quantity every point has.
+PointQuantity given(std::string name, std::string unit, std::string meaning, ColumnKind kind,
+                    std::function<double(const Point&)> value) {
+  return {std::move(name), std::move(unit), std::move(meaning), kind,
+          [value = std::move(value)](const Point& p, std::size_t) { return value(p); }, {}};
+}
+
+PointQuantity frequency_quantity() {
+  return given("frequency_hz", "Hz", "the excitation frequency f", ColumnKind::number,
+               [](const Point& p) { return p.frequency_hz; });
+}
+PointQuantity velocity_quantity() {
+  return given("velocity_m_s", "m/s", "the clamp's velocity amplitude V = W X", ColumnKind::number,
+               [](const Point& p) { return p.velocity_amplitude; });
+}
+PointQuantity displacement_quantity() {
+  return given("displacement_m", "m", "the clamp's displacement amplitude X", ColumnKind::number,
+               [](const Point& p) { return p.displacement_amplitude; });
+}
+PointQuantity converged_quantity() {
+  return given("converged", "", "1 where every arm converged within the energy tolerance, else 0", ColumnKind::flag,
+               [](const Point& p) { return p.converged() ? 1.0 : 0.0; });
+}
+PointQuantity dissipated_quantity() {
+  return computed("dissipated_power_w", "W", "the energy the sliders dissipate per period / T (equal to power_w)",
+                  [](const Point& p) { return p.dissipated_power; });
+}
+
 }  // namespace
 
-std::vector<std::string> impedance_columns(const damper::Damper& damper) {
-  std::vector<std::string> columns = point_columns();
-  const std::vector<std::string> figures = figure_columns(damper);
-  columns.insert(columns.end(), figures.begin(), figures.end());
-  return columns;
+std::vector<PointQuantity> design_figures() {
+  return {
+      computed("messenger_curvature_max_per_m", "1/m",
+               "the largest, over the arms, of the curvature amplitude of the arm's clamp section (<arm>_clamp_curvature_per_m "
+               "of response, the integration point nearest the clamp): the damper cable's own fatigue load, where it bends most",
+               [](const Point& p) { return p.messenger_curvature_max; }),
+      {"<arm>_power_w", "W",
+       "the mean power that arm takes from the clamp, V^2 Re(Z_k) / 2 with Z_k = F1_k / V the arm's part of Z; it equals "
+       "what the arm's sliders dissipate per period / T, and the arms' powers add up to power_w. An arm that does not slip "
+       "shows 0 (round-off), as power_w does",
+       ColumnKind::number,
+       [](const Point& p, std::size_t k) {
+         if (!p.converged()) return kNaN;
+         const damper::ArmFigures& arm = p.arms.at(k);
+         // An arm that does not slip takes no power but for round-off of its own |Z_k|: 0, as the damper's.
+         return without_round_off(arm.power, apparent_power(p.velocity_amplitude, arm.impedance));
+       },
+       {}},
+      {"<arm>_mass_amplitude_m", "m",
+       "the amplitude of x - b phi: how far the mass's centre of gravity moves relative to the clamp, the clearance its "
+       "motion needs",
+       ColumnKind::number, [](const Point& p, std::size_t k) { return p.converged() ? p.arms.at(k).mass_amplitude : kNaN; },
+       {}},
+  };
 }
 
-std::vector<double> impedance_row(const damper::ImpedancePoint& p) {
-  const bool ok = p.converged();
-  const auto masked = [ok](double value) { return ok ? value : kNaN; };
-  // Where nothing slips, Re Z and P are zero but for round-off (1e-16 of |Z|): shown as 0.
-  const double magnitude = std::abs(p.impedance);
-  const std::complex<double> z(without_round_off(p.impedance.real(), magnitude), p.impedance.imag());
-  std::vector<double> row{p.frequency_hz,
-                          p.velocity_amplitude,
-                          masked(z.real()),
-                          masked(z.imag()),
-                          masked(std::abs(z)),
-                          masked(std::arg(z) * 180.0 / std::numbers::pi),
-                          masked(without_round_off(p.power, apparent_power(p.velocity_amplitude, p.impedance))),
-                          ok ? 1.0 : 0.0,
-                          p.displacement_amplitude,
-                          masked(p.dissipated_power),
-                          masked(p.energy_error),
-                          masked(p.residual),
-                          static_cast<double>(p.newton_iterations),
-                          static_cast<double>(p.periods),
-                          p.non_unique ? 1.0 : 0.0};
-  const std::vector<double> figures = figure_values(p);
-  row.insert(row.end(), figures.begin(), figures.end());
-  return row;
+Table<Point> impedance_table(const damper::Damper& damper) {
+  std::vector<PointQuantity> q{
+      frequency_quantity(),
+      velocity_quantity(),
+      computed("re_z_n_s_m", "N s/m", "Re Z: the damping part (0 where nothing slips)",
+               [](const Point& p) { return cleaned_impedance(p).real(); }),
+      computed("im_z_n_s_m", "N s/m", "Im Z: the inertia and stiffness part",
+               [](const Point& p) { return cleaned_impedance(p).imag(); }),
+      computed("abs_z_n_s_m", "N s/m", "|Z|", [](const Point& p) { return std::abs(cleaned_impedance(p)); }),
+      computed("phase_deg", "deg", "arg Z",
+               [](const Point& p) { return std::arg(cleaned_impedance(p)) * 180.0 / std::numbers::pi; }),
+      computed("power_w", "W", "the mean power the damper takes, V^2 Re Z / 2",
+               [](const Point& p) {
+                 return without_round_off(p.power, apparent_power(p.velocity_amplitude, p.impedance));
+               }),
+      converged_quantity(),
+      displacement_quantity(),
+      dissipated_quantity(),
+      computed("energy_error", "", "|P - D / T| relative to the apparent power V^2 |Z| / 2 (the energy check)",
+               [](const Point& p) { return p.energy_error; }),
+      computed("residual", "", "the solver's final residual, relative to its scale (largest over the arms)",
+               [](const Point& p) { return p.residual; }),
+      given("iterations", "", "Newton iterations, the largest over the arms (0 for the time method)", ColumnKind::count,
+            [](const Point& p) { return static_cast<double>(p.newton_iterations); }),
+      given("periods", "", "periods integrated, the largest over the arms (hb and collocation: with the settling periods)",
+            ColumnKind::count, [](const Point& p) { return static_cast<double>(p.periods); }),
+      given("non_unique", "", "1 where the response curve folds near this frequency: several steady states",
+            ColumnKind::flag, [](const Point& p) { return p.non_unique ? 1.0 : 0.0; }),
+  };
+  for (PointQuantity& f : design_figures()) q.push_back(std::move(f));
+  return Table<Point>(std::move(q), {{"<arm>", arm_column_prefixes(damper)}});
 }
 
-std::vector<std::string> figure_columns(const damper::Damper& damper) {
-  std::vector<std::string> columns{"messenger_curvature_max_per_m"};
-  for (const std::string& arm : arm_column_prefixes(damper)) {
-    columns.push_back(arm + "_power_w");
-    columns.push_back(arm + "_mass_amplitude_m");
-  }
-  return columns;
-}
-
-std::vector<double> figure_values(const damper::ImpedancePoint& p) {
-  const bool ok = p.converged();
-  std::vector<double> values{ok ? p.messenger_curvature_max : kNaN};
-  for (const damper::ArmFigures& arm : p.arms) {
-    // An arm that does not slip takes no power but for round-off of its own |Z_k|: 0, as the damper's.
-    values.push_back(ok ? without_round_off(arm.power, apparent_power(p.velocity_amplitude, arm.impedance)) : kNaN);
-    values.push_back(ok ? arm.mass_amplitude : kNaN);
-  }
-  return values;
+Table<Point> point_summary_table(const damper::Damper& damper) {
+  std::vector<PointQuantity> q{
+      frequency_quantity(),
+      velocity_quantity(),
+      displacement_quantity(),
+      converged_quantity(),
+      {"termination", "", "how the solve ended (converged, max_iterations, ...)", ColumnKind::label, {},
+       [](const Point& p, std::size_t) { return std::string(termination_name(p.termination)); }},
+      computed("re_z_n_s_m", "N s/m", "Re Z", [](const Point& p) { return p.impedance.real(); }),
+      computed("im_z_n_s_m", "N s/m", "Im Z", [](const Point& p) { return p.impedance.imag(); }),
+      computed("power_w", "W", "the mean power the damper takes, V^2 Re Z / 2", [](const Point& p) { return p.power; }),
+      dissipated_quantity(),
+      given("energy_error", "", "|P - D / T| relative to the apparent power (null unless converged)", ColumnKind::number,
+            [](const Point& p) { return p.energy_error; }),
+  };
+  for (PointQuantity& f : design_figures()) q.push_back(std::move(f));
+  return Table<Point>(std::move(q), {{"<arm>", arm_column_prefixes(damper)}});
 }
 
 std::vector<std::string> arm_column_prefixes(const damper::Damper& damper) {
   std::vector<std::string> names;
-  bool usable = true;
-  for (const damper::ArmDescription& arm : damper.description().arms) {
-    const bool word = !arm.name.empty() && std::all_of(arm.name.begin(), arm.name.end(), [](char ch) {
-      return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
-    });
-    // A name that would make one of an arm's columns one of the table's own
-    // (dissipated_power_w of the impedance CSV, shaker_force_n of the response CSV).
-    const bool reserved = arm.name == "dissipated" || arm.name == "shaker";
-    usable = usable && word && !reserved && std::find(names.begin(), names.end(), arm.name) == names.end();
-    names.push_back(arm.name);
-  }
-  if (usable) return names;
-  for (std::size_t k = 0; k < names.size(); ++k) names[k] = "arm" + std::to_string(k + 1);
-  return names;
+  for (const damper::ArmDescription& arm : damper.description().arms) names.push_back(arm.name);
+  // A name that would make one of an arm's columns one of the table's own
+  // (dissipated_power_w of the impedance CSV, shaker_force_n of the response CSV).
+  return column_prefixes(names, "arm", {"dissipated", "shaker"});
 }
 
 SweepTally tally(const std::vector<damper::SweepRun>& runs) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stockbridge/damper/sweep.hpp"
+#include "stockbridge/requests/output_table.hpp"
 #include "stockbridge/requests/solver_settings.hpp"
 
 namespace stockbridge::requests {
@@ -36,27 +37,30 @@ damper::SweepSpec sweep_spec(const SweepRequest& request);
 /// and a displacement amplitude (m), validated.
 damper::Excitation excitation(double frequency_hz, std::optional<double> velocity, std::optional<double> displacement);
 
-/// The columns of a point of `damper` as the impedance CSV and Python's arrays name
-/// them: frequency, amplitudes, Z, powers and the solver's figures, then the design
-/// figures (figure_columns).
-std::vector<std::string> impedance_columns(const damper::Damper& damper);
-/// A point's values in impedance_columns() order: NaN for every computed number of
-/// a point that did not converge (the amplitude and frequency are always given).
-/// `point.arms` has one entry per arm (as combine makes it).
-std::vector<double> impedance_row(const damper::ImpedancePoint& point);
+/// The impedance CSV's quantities for `damper` (one row per point; Python's
+/// impedance arrays): frequency, amplitudes, Z, powers and the solver's figures,
+/// then the design figures (design_figures). Every computed number of a point that
+/// did not converge is NaN (the frequency, amplitudes, iterations, periods and
+/// flags are always given); Re Z, the power and an arm's power that are round-off
+/// of zero (nothing slips) are 0.
+Table<damper::ImpedancePoint> impedance_table(const damper::Damper& damper);
 
-/// The design figures' names, the last columns of impedance_columns() and the keys
-/// `response` reports them by: messenger_curvature_max_per_m, then per arm
-/// <prefix>_power_w and <prefix>_mass_amplitude_m (prefixes: arm_column_prefixes).
-std::vector<std::string> figure_columns(const damper::Damper& damper);
-/// Their values for a point in that order: NaN unless it converged; an arm's power
-/// that is round-off of zero (an arm that does not slip) as 0.
-std::vector<double> figure_values(const damper::ImpedancePoint& point);
+/// One point as `response --json` prints it and Python's response gives it:
+/// frequency_hz, velocity_m_s, displacement_m, converged, termination, re_z_n_s_m,
+/// im_z_n_s_m, power_w, dissipated_power_w, energy_error, then the design figures
+/// by the impedance CSV's names; the computed ones NaN unless it converged.
+Table<damper::ImpedancePoint> point_summary_table(const damper::Damper& damper);
+
+/// The design figures of a point: messenger_curvature_max_per_m, then per arm
+/// <arm>_power_w and <arm>_mass_amplitude_m (NaN unless it converged; an arm's
+/// power that is round-off of zero, an arm that does not slip, as 0). The last
+/// quantities of both tables above.
+std::vector<Quantity<damper::ImpedancePoint>> design_figures();
 
 /// How tables name each arm's columns (`<prefix>_x_m`): its name from the damper
 /// file where every arm has one that is unique, made of letters, digits and '_',
 /// and makes no column the table has already (not `dissipated` or `shaker`), else
-/// arm1, arm2, ... for all.
+/// arm1, arm2, ... for all (column_prefixes).
 std::vector<std::string> arm_column_prefixes(const damper::Damper& damper);
 
 /// Summary figures of a sweep.

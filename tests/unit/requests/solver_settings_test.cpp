@@ -109,19 +109,17 @@ TEST(ImpedanceRow, ANonConvergedPointShowsOnlyWhereItWas) {
   p.power = 3.0;
   p.messenger_curvature_max = 0.1;  // as if computed: the mask, not the NaN, must hide them
   p.arms = {damper::ArmFigures{{1.0, 2.0}, 0.04, 0.002, 0.1}, damper::ArmFigures{{1.0, 2.0}, 0.04, 0.002, 0.1}};
-  const std::vector<double> row = impedance_row(p);
-  const std::vector<std::string> columns = impedance_columns(damper_named({"long", "short"}));
-  ASSERT_EQ(row.size(), columns.size());
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    const std::string& name = columns[c];
+  const TableValues row = impedance_table(damper_named({"long", "short"})).values(p);
+  for (const TableValues::Column& c : row.columns) {
+    const std::string& name = c.name;
     if (name == "frequency_hz" || name == "velocity_m_s" || name == "displacement_m" || name == "converged" ||
         name == "iterations" || name == "periods" || name == "non_unique") {
-      EXPECT_TRUE(std::isfinite(row[c])) << name;
+      EXPECT_TRUE(std::isfinite(c.numbers[0])) << name;
     } else {
-      EXPECT_TRUE(std::isnan(row[c])) << name;
+      EXPECT_TRUE(std::isnan(c.numbers[0])) << name;
     }
   }
-  EXPECT_EQ(row[7], 0.0);  // converged
+  EXPECT_EQ(row.column("converged").numbers[0], 0.0);
   std::vector<damper::SweepRun> runs(1);
   runs[0].points = {p};
   const SweepTally t = tally(runs);
@@ -132,11 +130,13 @@ TEST(ImpedanceRow, ANonConvergedPointShowsOnlyWhereItWas) {
 // The design figures close the row, per arm by the arms' column names; an arm's
 // power that is round-off of zero against its own |Z_k| is 0, as the damper's.
 TEST(ImpedanceRow, DesignFiguresFollowPerArm) {
-  const std::vector<std::string> columns = impedance_columns(damper_named({"long", "short"}));
+  const Table<damper::ImpedancePoint> table = impedance_table(damper_named({"long", "short"}));
+  const std::vector<std::string> columns = table.names();
   const std::vector<std::string> last(columns.end() - 5, columns.end());
   EXPECT_EQ(last, (std::vector<std::string>{"messenger_curvature_max_per_m", "long_power_w", "long_mass_amplitude_m",
                                             "short_power_w", "short_mass_amplitude_m"}));
-  EXPECT_EQ(figure_columns(damper_named({"long", "short"})), last);
+  const std::vector<std::string> summary = point_summary_table(damper_named({"long", "short"})).names();
+  EXPECT_EQ(std::vector<std::string>(summary.end() - 5, summary.end()), last);
   damper::ImpedancePoint p;
   p.frequency_hz = 20.0;
   p.velocity_amplitude = 0.2;
@@ -146,11 +146,12 @@ TEST(ImpedanceRow, DesignFiguresFollowPerArm) {
   p.messenger_curvature_max = 0.25;
   p.arms = {damper::ArmFigures{{1e-15, 20.0}, 1e-17, 0.003, 0.25},  // sticks: 1e-17 W is round-off of 0.4 W apparent
             damper::ArmFigures{{0.5, 20.0}, 0.01, 0.002, 0.125}};
-  const std::vector<double> row = impedance_row(p);
-  ASSERT_EQ(row.size(), columns.size());
-  const std::vector<double> figures(row.end() - 5, row.end());
-  EXPECT_EQ(figures, (std::vector<double>{0.25, 0.0, 0.003, 0.01, 0.002}));
-  EXPECT_EQ(figure_values(p), figures);
+  const TableValues row = table.values(p), summary_row = point_summary_table(damper_named({"long", "short"})).values(p);
+  for (std::size_t i = 0; i < 5; ++i) {
+    const double expected[] = {0.25, 0.0, 0.003, 0.01, 0.002};
+    EXPECT_EQ(row.columns[row.columns.size() - 5 + i].numbers[0], expected[i]) << last[i];
+    EXPECT_EQ(summary_row.columns[summary_row.columns.size() - 5 + i].numbers[0], expected[i]) << last[i];
+  }
 }
 
 TEST(ArmColumns, NamedByTheArmsNamesWhereTheyMakeColumnNames) {
@@ -163,7 +164,7 @@ TEST(ArmColumns, NamedByTheArmsNamesWhereTheyMakeColumnNames) {
   EXPECT_EQ(arm_column_prefixes(damper_named({"dissipated", "b"})), (std::vector<std::string>{"arm1", "arm2"}));
   EXPECT_EQ(arm_column_prefixes(damper_named({"a", "shaker"})), (std::vector<std::string>{"arm1", "arm2"}));
   for (const auto& names : {std::vector<std::string>{"dissipated", "power"}, std::vector<std::string>{"messenger", "x"}}) {
-    std::vector<std::string> columns = impedance_columns(damper_named(names));
+    std::vector<std::string> columns = impedance_table(damper_named(names)).names();
     std::sort(columns.begin(), columns.end());
     EXPECT_EQ(std::adjacent_find(columns.begin(), columns.end()), columns.end()) << names[0];
   }
