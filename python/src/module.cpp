@@ -32,6 +32,7 @@
 #include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/io/span_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
+#include "stockbridge/requests/cycle_request.hpp"
 #include "stockbridge/requests/design_request.hpp"
 #include "stockbridge/requests/impedance_fit_request.hpp"
 #include "stockbridge/requests/plausibility.hpp"
@@ -226,38 +227,18 @@ py::dict response(const damper::Damper& d, double frequency, std::optional<doubl
 }
 
 py::dict cycle(const cable::Cable& cable, const std::string& experiment, double amplitude, int cycles, int points) {
-  cable::ExperimentDrive drive{cable::parse_experiment(experiment), amplitude, cycles, points};
-  drive.validate();
-  cable::ExperimentRecord record;
+  const requests::CycleRequest request{experiment, amplitude, cycles, points};
+  (void)requests::experiment_drive(request);
+  std::optional<requests::CycleResult> result;
   {
     py::gil_scoped_release release;
-    cable::Cantilever cantilever{cable};
-    record = cable::run_experiment(cantilever, drive);
+    result.emplace(requests::run_cycle(cable, request));
   }
-  std::vector<double> x, phi, f, t, q, w;
-  py::array_t<bool> converged(record.samples.size());
-  auto c = converged.mutable_unchecked<1>();
-  for (std::size_t k = 0; k < record.samples.size(); ++k) {
-    const cable::ExperimentSample& s = record.samples[k];
-    const bool ok = s.solve.converged();
-    x.push_back(ok ? s.deflection : kNaN);
-    phi.push_back(ok ? s.rotation : kNaN);
-    f.push_back(ok ? s.tip_force : kNaN);
-    t.push_back(ok ? s.clamp_moment : kNaN);
-    q.push_back(ok ? s.tip_moment : kNaN);
-    w.push_back(ok ? s.dissipated : kNaN);
-    c(k) = ok;
-  }
-  py::dict out;
-  out["x_m"] = array(x);
-  out["phi_rad"] = array(phi);
-  out["force_n"] = array(f);
-  out["clamp_moment_n_m"] = array(t);
-  out["tip_moment_n_m"] = array(q);
-  out["dissipated_energy_j"] = array(w);
-  out["converged"] = converged;
-  out["last_cycle_dissipation_j"] = record.summary.slider_dissipation;
-  out["last_cycle_loop_work_j"] = record.summary.loop_work;
+  warn(warning_messages(result->warnings));
+  py::dict out = table_arrays(requests::cycle_table().values(requests::cycle_samples(*result)),
+                              {result->record.samples.size()});
+  out["last_cycle_dissipation_j"] = result->record.summary.slider_dissipation;
+  out["last_cycle_loop_work_j"] = result->record.summary.loop_work;
   return out;
 }
 
@@ -699,8 +680,9 @@ PYBIND11_MODULE(_core, m) {
         "Linear natural frequencies (Hz), every element sticking and every one slipping, as the modes command's "
         "JSON: 'arms' (each arm, clamp held: name, stick_hz, slip_hz) and 'damper' (clamp free, the rigid-body "
         "mode left out: stick_hz, slip_hz, and stick_modes/slip_modes with each arm's share of the energy).");
-  m.def("cycle", &cycle, py::arg("cable"), py::arg("experiment"), py::arg("amplitude"), py::arg("cycles") = 2,
-        py::arg("points") = 400, "Experiment 'a' (tip force) or 'b' (tip rotation) on a cable.");
+  m.def("cycle", &cycle, py::arg("cable"), py::arg("experiment"), py::arg("amplitude"),
+        py::arg("cycles") = requests::CycleRequest{}.cycles, py::arg("points") = requests::CycleRequest{}.points,
+        "Experiment 'a' (tip force) or 'b' (tip rotation) on a cable.");
   m.def("identify_local", &identify_local, py::arg("curvature"), py::arg("moment"), py::arg("elements") = 1,
         py::arg("optimizer") = "subplex", "Masing parameters of a section from a moment-curvature record.");
   m.def("identify_global", &identify_global, py::arg("experiment"), py::arg("length"), py::arg("prescribed"),
