@@ -34,6 +34,7 @@
 #include "stockbridge/io/strand_file.hpp"
 #include "stockbridge/requests/cycle_request.hpp"
 #include "stockbridge/requests/design_request.hpp"
+#include "stockbridge/requests/identify_request.hpp"
 #include "stockbridge/requests/impedance_fit_request.hpp"
 #include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/response_request.hpp"
@@ -271,54 +272,36 @@ py::list jenkin_list(const std::vector<std::pair<double, double>>& c_h) {
   return list;
 }
 
+/// A JSON summary of the library as Python objects (json.loads: null as None).
+py::dict from_json(const io::JsonObject& json) {
+  return py::module_::import("json").attr("loads")(json.str()).cast<py::dict>();
+}
+
 py::dict identify_local(const std::vector<double>& curvature, const std::vector<double>& moment, int elements,
                         const std::string& optimizer) {
-  identification::LocalIdentificationOptions options;
-  options.elements = elements;
-  options.optimizer = identification::parse_optimizer(optimizer);
-  identification::LocalIdentification fit;
+  const requests::LocalRequest request{elements, optimizer};
+  std::optional<requests::LocalResult> result;
   {
     py::gil_scoped_release release;
-    fit = identification::identify_local({curvature, moment}, options);
+    result.emplace(requests::run_local({curvature, moment}, request));
   }
-  std::vector<std::pair<double, double>> c_h;
-  for (const auto& e : fit.parameters.jenkin) c_h.emplace_back(e.c, e.h);
-  py::dict out;
-  out["ei"] = fit.parameters.ei;
-  out["jenkin"] = jenkin_list(c_h);
-  out["error"] = fit.error;
-  out["moment_offset_n_m"] = fit.moment_offset;
-  out["cycle_errors"] = array(fit.cycle_errors);
-  out["termination"] = std::string(termination_name(fit.termination));
+  py::dict out = from_json(requests::local_summary(*result));
+  out["cycle_errors"] = array(result->fit.cycle_errors);
   return out;
 }
 
 py::dict identify_global(const std::string& experiment, double length, const std::vector<double>& prescribed,
                          const std::vector<double>& measured, const std::string& method, int sections, int elements,
                          const std::string& optimizer) {
-  identification::GlobalIdentificationOptions options;
-  options.length = length;
-  options.sections = sections;
-  options.elements = elements;
-  options.optimizer = identification::parse_optimizer(optimizer);
-  options.validate();
-  const identification::ExperimentMeasurement m{cable::parse_experiment(experiment), prescribed, measured};
-  if (method != "fit" && method != "four-step") {
-    throw InvalidParameter("method = '" + method + "': expected four-step or fit");
-  }
-  identification::GlobalIdentification fit;
+  const requests::GlobalRequest request{experiment, length, method, sections, elements, optimizer};
+  std::optional<requests::GlobalResult> result;
   {
     py::gil_scoped_release release;
-    fit = method == "fit" ? identification::identify_fit(m, options) : identification::identify_four_step(m, options);
+    result.emplace(requests::run_global(request, prescribed, measured, "the record"));
   }
-  std::vector<std::pair<double, double>> c_h;
-  for (const auto& e : fit.cable.jenkin) c_h.emplace_back(e.c.at(0.0), e.h.at(0.0));
-  py::dict out;
-  out["ei"] = fit.cable.ei.at(0.0);
-  out["jenkin"] = jenkin_list(c_h);
-  out["error"] = fit.error;
-  out["cable"] = cable::Cable(fit.cable);
-  out["termination"] = std::string(termination_name(fit.termination));
+  warn(warning_messages(result->warnings));
+  py::dict out = from_json(requests::global_summary(request, *result));
+  out["cable"] = cable::Cable(result->fit.cable);
   return out;
 }
 
@@ -683,11 +666,13 @@ PYBIND11_MODULE(_core, m) {
   m.def("cycle", &cycle, py::arg("cable"), py::arg("experiment"), py::arg("amplitude"),
         py::arg("cycles") = requests::CycleRequest{}.cycles, py::arg("points") = requests::CycleRequest{}.points,
         "Experiment 'a' (tip force) or 'b' (tip rotation) on a cable.");
-  m.def("identify_local", &identify_local, py::arg("curvature"), py::arg("moment"), py::arg("elements") = 1,
-        py::arg("optimizer") = "subplex", "Masing parameters of a section from a moment-curvature record.");
+  const requests::LocalRequest local;
+  const requests::GlobalRequest global;
+  m.def("identify_local", &identify_local, py::arg("curvature"), py::arg("moment"), py::arg("elements") = local.elements,
+        py::arg("optimizer") = local.optimizer, "Masing parameters of a section from a moment-curvature record.");
   m.def("identify_global", &identify_global, py::arg("experiment"), py::arg("length"), py::arg("prescribed"),
-        py::arg("measured"), py::arg("method") = "fit", py::arg("sections") = 40, py::arg("elements") = 1,
-        py::arg("optimizer") = "subplex",
+        py::arg("measured"), py::arg("method") = global.method, py::arg("sections") = global.sections,
+        py::arg("elements") = global.elements, py::arg("optimizer") = global.optimizer,
         "Constant cable parameters from a cycle of experiment (a) or (b); 'cable' is a Cable ready for make_damper.");
   m.def("_identify_impedance", &identify_impedance, py::arg("damper"), py::arg("input") = py::none(),
         py::arg("frequency") = py::none(), py::arg("velocity") = py::none(), py::arg("displacement") = py::none(),
