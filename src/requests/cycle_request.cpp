@@ -59,10 +59,10 @@ std::vector<CycleSample> cycle_samples(const CycleResult& result) {
 
 namespace {
 
-using SampleQuantity = Quantity<CycleSample>;
+using CycleQuantity = Quantity<CycleSample>;
 
 /// A number of a converged sample (NaN otherwise).
-SampleQuantity solved(std::string name, std::string unit, std::string meaning,
+CycleQuantity solved(std::string name, std::string unit, std::string meaning,
                       double cable::ExperimentSample::*field) {
   return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
           [field](const CycleSample& s, std::size_t) {

@@ -43,13 +43,13 @@ std::vector<ResponseSample> response_samples(const ResponseResult& result) {
 namespace {
 
 using Sample = ResponseSample;
-using SampleQuantity = Quantity<Sample>;
+using ResponseQuantity = Quantity<Sample>;
 
 constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 /// A per-arm quantity of the arm's period at the sample (NaN where the arm's period is shorter).
 template <class Read>
-SampleQuantity per_arm(std::string name, std::string unit, std::string meaning, Read read) {
+ResponseQuantity per_arm(std::string name, std::string unit, std::string meaning, Read read) {
   return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
           [read](const Sample& s, std::size_t k) {
             const damper::ArmPeriod& p = s.result->state.arms.at(k).period;
@@ -66,7 +66,7 @@ Table<Sample> response_table(const damper::Damper& damper) {
     const damper::Excitation& e = s.result->excitation;
     return std::pair{e.angular_frequency() * s.result->time[s.j], e.displacement_amplitude};
   };
-  std::vector<SampleQuantity> q{
+  std::vector<ResponseQuantity> q{
       {"time_s", "s", "t_j = j T / N of one steady period", ColumnKind::number,
        [](const Sample& s, std::size_t) { return s.result->time[s.j]; }, {}},
       {"clamp_displacement_m", "m", "the clamp's motion x_c = X sin(W t)", ColumnKind::number,
