@@ -28,9 +28,6 @@ struct ImpedanceFitOptions {
   bool json = false;
 };
 
-/// An RMS relative error of Z above this is not a model of the measurement: worth a warning.
-constexpr double kLargeRmsError = 0.1;
-
 /// Where the cable file of each cable type goes: -o for the first; for the others
 /// -o's name with the type's first arm's name appended ("cable.toml" -> "cable_right.toml").
 std::vector<std::string> cable_outputs(const std::string& output, const identification::ImpedanceIdentification& fit,
@@ -52,17 +49,6 @@ std::vector<std::string> cable_outputs(const std::string& output, const identifi
   return paths;
 }
 
-void warn_fit(const ImpedanceFitOptions& options, const identification::ImpedanceIdentification& fit) {
-  std::vector<std::string> lines;
-  for (const std::string& note : fit.notes) lines.push_back(note);
-  if (fit.rms_relative_error > kLargeRmsError) {
-    lines.push_back(fmt::format("the fit's RMS relative error of Z {:.3g} % is large (above {:g} %): the model does not "
-                                "follow {} (check its units, the damper's masses and lengths, --elements)",
-                                100.0 * fit.rms_relative_error, 100.0 * kLargeRmsError, options.input));
-  }
-  print_warnings(lines);
-}
-
 int run_impedance_fit(const ImpedanceFitOptions& options) {
   const identification::ImpedanceIdentificationOptions fit_options = requests::fit_options(options.request);
   require_outputs_apart({{"-o", options.output}, {"--fitted", options.fitted}},
@@ -79,13 +65,15 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
                          ? fmt::format("{}: {}", options.input, what.substr(measurement_prefix.size()))
                          : fmt::format("{}: {}", options.damper_file, what));
   }
-  warn_fit(options, fit);
+  print_warnings(requests::fit_warnings(fit, options.input));
   const std::vector<std::string> cables = cable_outputs(options.output, fit, damper);
   for (std::size_t t = 0; t < cables.size(); ++t) {
     io::write_file_atomically(cables[t], requests::fitted_cable_file(fit, t, options.input));
   }
-  if (!options.fitted.empty()) io::write_file_atomically(options.fitted, requests::fitted_csv(measurement, fit));
-  if (options.json) fmt::print("{}\n", requests::fit_summary(measurement, fit, damper).str());
+  if (!options.fitted.empty()) {
+    io::write_file_atomically(options.fitted, requests::fitted_table().values(requests::fitted_points(measurement, fit)).csv());
+  }
+  if (options.json) fmt::print("{}\n", requests::fit_summary(measurement, fit, damper, options.input).str());
   fmt::print(stderr, "{}\n", requests::fit_summary_line(measurement, fit));
   if (cables.size() > 1) fmt::print(stderr, "cable files: {}\n", fmt::join(cables, ", "));
   if (fit.not_converged > 0) {

@@ -354,26 +354,15 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
     py::gil_scoped_release release;
     fit = identification::identify_impedance(start.description(), m, options);
   }
-  const std::vector<std::string> columns = requests::fitted_columns();
-  const std::vector<std::vector<double>> rows = requests::fitted_rows(m, fit);
-  py::dict fitted;
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    std::vector<double> column;
-    for (const std::vector<double>& row : rows) column.push_back(row[c]);
-    if (columns[c] == "converged") {
-      py::array_t<bool> flags(column.size());
-      for (std::size_t i = 0; i < column.size(); ++i) flags.mutable_at(i) = column[i] == 1.0;
-      fitted["converged"] = flags;
-    } else {
-      fitted[py::str(columns[c])] = array(column);
-    }
-  }
+  const std::string source = input ? *input : std::string("the measurement");
+  warn(warning_messages(requests::fit_warnings(fit, source)));
+  const py::dict fitted = table_arrays(requests::fitted_table().values(requests::fitted_points(m, fit)), {m.points.size()});
   py::list cable_files;
   for (std::size_t t = 0; t < fit.cables.size(); ++t) {
     cable_files.append(requests::fitted_cable_file(fit, t, input ? *input : std::string("arrays")));
   }
   py::dict out;
-  out["summary_json"] = requests::fit_summary(m, fit, start).str();
+  out["summary_json"] = requests::fit_summary(m, fit, start, source).str();
   out["fitted"] = fitted;
   out["cable_files"] = cable_files;
   out["cable"] = cable::Cable(fit.damper.arms.front().cable);

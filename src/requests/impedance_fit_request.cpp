@@ -51,33 +51,62 @@ identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitReq
   return options;
 }
 
-std::vector<std::string> fitted_columns() {
-  return {"frequency_hz", "velocity_m_s",     "displacement_m",   "re_z_n_s_m",
-          "im_z_n_s_m",   "model_re_z_n_s_m", "model_im_z_n_s_m", "converged"};
-}
-
-std::vector<std::vector<double>> fitted_rows(const identification::ImpedanceMeasurement& measurement,
-                                             const identification::ImpedanceIdentification& fit) {
-  std::vector<std::vector<double>> rows;
-  for (std::size_t i = 0; i < measurement.points.size(); ++i) {
-    const identification::MeasuredImpedance& m = measurement.points[i];
-    const damper::ImpedancePoint& p = fit.fitted[i];
-    const std::complex<double> z = p.converged() ? p.impedance : std::complex<double>(kNotModelled, kNotModelled);
-    rows.push_back({m.excitation.frequency_hz, m.excitation.velocity_amplitude(), m.excitation.displacement_amplitude,
-                    m.impedance.real(), m.impedance.imag(), z.real(), z.imag(), p.converged() ? 1.0 : 0.0});
-  }
+std::vector<FittedPoint> fitted_points(const identification::ImpedanceMeasurement& measurement,
+                                       const identification::ImpedanceIdentification& fit) {
+  std::vector<FittedPoint> rows;
+  for (std::size_t i = 0; i < measurement.points.size(); ++i) rows.push_back({&measurement.points[i], &fit.fitted[i]});
   return rows;
 }
 
-std::string fitted_csv(const identification::ImpedanceMeasurement& measurement,
-                       const identification::ImpedanceIdentification& fit) {
-  io::CsvWriter csv(fitted_columns());
-  for (const std::vector<double>& row : fitted_rows(measurement, fit)) csv.add_row(row);
-  return csv.text();
+namespace {
+
+Quantity<FittedPoint> measured(std::string name, std::string unit, std::string meaning,
+                               std::function<double(const identification::MeasuredImpedance&)> value) {
+  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
+          [value = std::move(value)](const FittedPoint& p, std::size_t) { return value(*p.measured); }, {}};
+}
+
+Quantity<FittedPoint> modelled(std::string name, std::string meaning, double (*part)(const std::complex<double>&)) {
+  return {std::move(name), "N s/m", std::move(meaning), ColumnKind::number,
+          [part](const FittedPoint& p, std::size_t) { return p.model->converged() ? part(p.model->impedance) : kNotModelled; },
+          {}};
+}
+
+double real_part(const std::complex<double>& z) { return z.real(); }
+double imaginary_part(const std::complex<double>& z) { return z.imag(); }
+
+}  // namespace
+
+Table<FittedPoint> fitted_table() {
+  using M = identification::MeasuredImpedance;
+  return Table<FittedPoint>({
+      measured("frequency_hz", "Hz", "the measured point's frequency", [](const M& m) { return m.excitation.frequency_hz; }),
+      measured("velocity_m_s", "m/s", "its clamp velocity amplitude", [](const M& m) { return m.excitation.velocity_amplitude(); }),
+      measured("displacement_m", "m", "its clamp displacement amplitude",
+               [](const M& m) { return m.excitation.displacement_amplitude; }),
+      measured("re_z_n_s_m", "N s/m", "the measured Re Z", [](const M& m) { return m.impedance.real(); }),
+      measured("im_z_n_s_m", "N s/m", "the measured Im Z", [](const M& m) { return m.impedance.imag(); }),
+      modelled("model_re_z_n_s_m", "the fitted model's Re Z there (empty where it did not converge)", real_part),
+      modelled("model_im_z_n_s_m", "the fitted model's Im Z there", imaginary_part),
+      {"converged", "", "1 where the fitted model converged at the point, else 0", ColumnKind::flag,
+       [](const FittedPoint& p, std::size_t) { return p.model->converged() ? 1.0 : 0.0; }, {}},
+  });
+}
+
+std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification& fit, std::string_view source) {
+  std::vector<Warning> out = plain_warnings(fit.notes);
+  if (fit.rms_relative_error > large_rms_error) {
+    out.push_back({fmt::format("the fit's RMS relative error of Z {:.3g} % is large (above {:g} %): the model does not "
+                               "follow {} (check its units, the damper's masses and lengths, --elements)",
+                               100.0 * fit.rms_relative_error, 100.0 * large_rms_error, source),
+                   false});
+  }
+  return out;
 }
 
 io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measurement,
-                           const identification::ImpedanceIdentification& fit, const damper::Damper& start) {
+                           const identification::ImpedanceIdentification& fit, const damper::Damper& start,
+                           std::string_view source) {
   std::vector<io::JsonObject> parameters, stick, cables;
   std::vector<std::string> undetermined;
   for (const identification::ParameterEstimate& e : fit.parameters) {
@@ -114,7 +143,8 @@ io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measureme
       .add("model_runs", fit.model_evaluations)
       .add("starts", fit.starts)
       .add("termination", termination_name(fit.fit.termination))
-      .add("iterations", fit.fit.jacobians);
+      .add("iterations", fit.fit.jacobians)
+      .add("warnings", warning_messages(fit_warnings(fit, source)));
 }
 
 std::string fit_summary_line(const identification::ImpedanceMeasurement& measurement,

@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "stockbridge/identification/impedance_identification.hpp"
+#include "stockbridge/core/warning.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/output_table.hpp"
 
 namespace stockbridge::requests {
 
@@ -23,15 +25,24 @@ struct ImpedanceFitRequest {
 /// command's --elements and --threads, Python's keywords).
 identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitRequest& request);
 
-/// The --fitted CSV's columns: the measured point (frequency_hz, velocity_m_s,
+/// One measured point with the fitted model's at it.
+struct FittedPoint {
+  const identification::MeasuredImpedance* measured = nullptr;
+  const damper::ImpedancePoint* model = nullptr;
+};
+std::vector<FittedPoint> fitted_points(const identification::ImpedanceMeasurement& measurement,
+                                       const identification::ImpedanceIdentification& fit);
+/// The --fitted CSV's quantities: the measured point (frequency_hz, velocity_m_s,
 /// displacement_m, re_z_n_s_m, im_z_n_s_m), the fitted model's Z there
 /// (model_re_z_n_s_m, model_im_z_n_s_m; NaN where it did not converge) and converged.
-std::vector<std::string> fitted_columns();
-/// One row per measured point, in the measurement's order, in fitted_columns order.
-std::vector<std::vector<double>> fitted_rows(const identification::ImpedanceMeasurement& measurement,
-                                             const identification::ImpedanceIdentification& fit);
-std::string fitted_csv(const identification::ImpedanceMeasurement& measurement,
-                       const identification::ImpedanceIdentification& fit);
+Table<FittedPoint> fitted_table();
+
+/// An RMS relative error of Z above this is not a model of the measurement: a warning.
+inline constexpr double large_rms_error = 0.1;
+/// The fit's notes (parameters the data do not determine, points the model does
+/// not converge at, a fit stopped short) and a large RMS error, as warnings;
+/// `source` names the measurement.
+std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification& fit, std::string_view source);
 
 /// The summary, as `identify impedance --json` prints it and Python returns it:
 /// ei and jenkin [{c, h}] (the first cable type's, as identify global prints them),
@@ -40,9 +51,10 @@ std::string fitted_csv(const identification::ImpedanceMeasurement& measurement,
 /// sensitivity, determined}], correlation (rows in the parameters' order, null for
 /// a parameter not determined), stick_stiffness [the same for each type's
 /// ei_plus_c], undetermined [names], notes, cables [{arms, ei, jenkin}] (every
-/// type), model_runs, starts.
+/// type), model_runs, starts, termination, iterations, warnings (fit_warnings).
 io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measurement,
-                           const identification::ImpedanceIdentification& fit, const damper::Damper& start);
+                           const identification::ImpedanceIdentification& fit, const damper::Damper& start,
+                           std::string_view source);
 
 /// One line for the terminal: the parameters with their standard errors, the error and the work.
 std::string fit_summary_line(const identification::ImpedanceMeasurement& measurement,
