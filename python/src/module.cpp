@@ -18,7 +18,6 @@
 
 #include "stockbridge/cable/experiment.hpp"
 #include "stockbridge/core/error.hpp"
-#include "stockbridge/damper/modes.hpp"
 #include "stockbridge/damper/steady_state.hpp"
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/design/search.hpp"
@@ -37,6 +36,7 @@
 #include "stockbridge/requests/identify_request.hpp"
 #include "stockbridge/requests/impedance_fit_request.hpp"
 #include "stockbridge/requests/plausibility.hpp"
+#include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/response_request.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/span_request.hpp"
@@ -88,19 +88,19 @@ py::object column_array(const requests::TableValues::Column& c, const std::vecto
       py::array_t<bool> a(shape);
       bool* out = a.mutable_data();
       for (std::size_t i = 0; i < c.numbers.size(); ++i) out[i] = c.numbers[i] != 0.0;
-      return std::move(a);
+      return a;
     }
     case requests::ColumnKind::count: {
       py::array_t<long long> a(shape);
       long long* out = a.mutable_data();
       for (std::size_t i = 0; i < c.numbers.size(); ++i) out[i] = static_cast<long long>(c.numbers[i]);
-      return std::move(a);
+      return a;
     }
     case requests::ColumnKind::number: break;
   }
   py::array_t<double> a(shape);
   std::copy(c.numbers.begin(), c.numbers.end(), a.mutable_data());
-  return std::move(a);
+  return a;
 }
 
 /// A table's columns as a dict of arrays by the CSV's names, each of `shape`; with
@@ -497,57 +497,12 @@ py::dict design_search(const std::string& path, std::optional<int> samples, std:
 
 /// The modes command's JSON as a dict (the same keys), arms named as the CSV's columns.
 py::dict modes(const damper::Damper& d) {
-  damper::DamperModes result;
+  std::optional<requests::ModesResult> result;
   {
     py::gil_scoped_release release;
-    result = damper::damper_modes(d);
+    result.emplace(requests::run_modes(d));
   }
-  const std::vector<std::string> names = requests::arm_column_prefixes(d);
-  auto whole = [&](const std::vector<damper::DamperMode>& modes) {
-    py::list hz, shapes;
-    for (const damper::DamperMode& mode : modes) {
-      py::list arms;
-      for (std::size_t k = 0; k < names.size(); ++k) {
-        py::dict arm;
-        arm["name"] = names[k];
-        arm["x"] = mode.arms[k](0);
-        arm["phi"] = mode.arms[k](1);
-        arm["energy_share"] = mode.arm_energy_share[k];
-        arms.append(arm);
-      }
-      py::dict shape;
-      shape["frequency_hz"] = mode.frequency_hz;
-      shape["dominant_arm"] = names[mode.dominant_arm];
-      shape["clamp_x"] = mode.clamp_deflection;
-      shape["clamp_energy_share"] = mode.clamp_energy_share;
-      shape["arms"] = arms;
-      hz.append(mode.frequency_hz);
-      shapes.append(shape);
-    }
-    return std::make_pair(hz, shapes);
-  };
-  py::list arms;
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    py::dict arm;
-    arm["name"] = names[k];
-    const Eigen::Vector2d& stick = result.stick.arms[k].frequencies_hz;
-    const Eigen::Vector2d& slip = result.slip.arms[k].frequencies_hz;
-    arm["stick_hz"] = std::vector<double>{stick(0), stick(1)};
-    arm["slip_hz"] = std::vector<double>{slip(0), slip(1)};
-    arms.append(arm);
-  }
-  const auto [stick_hz, stick_modes] = whole(result.stick.damper);
-  const auto [slip_hz, slip_modes] = whole(result.slip.damper);
-  py::dict damper_out;
-  damper_out["clamp_mass_kg"] = d.clamp_mass();
-  damper_out["stick_hz"] = stick_hz;
-  damper_out["slip_hz"] = slip_hz;
-  damper_out["stick_modes"] = stick_modes;
-  damper_out["slip_modes"] = slip_modes;
-  py::dict out;
-  out["arms"] = arms;
-  out["damper"] = damper_out;
-  return out;
+  return from_json(requests::modes_summary(*result));
 }
 
 }  // namespace
