@@ -19,7 +19,6 @@
 #include "progress.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
-#include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/json_writer.hpp"
 #include "stockbridge/requests/span_request.hpp"
 
@@ -65,9 +64,7 @@ requests::SpanRequest span_request_of(const SpanOptions& options) {
 }
 
 std::string span_csv(const span::SpanAnalysis& a) {
-  io::CsvWriter csv(requests::span_columns(a.span));
-  for (const span::BalancePoint& p : a.balance.points) csv.add_row(requests::span_row(a.span, p));
-  return csv.text();
+  return requests::span_table(a.span).values(a.balance.points).csv();
 }
 
 std::string span_megapascal(double pascal) { return fmt::format("{:.3g} MPa", pascal / 1e6); }

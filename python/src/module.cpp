@@ -84,10 +84,10 @@ py::array_t<double> array(const std::vector<double>& values) { return py::array_
 py::object column_array(const requests::TableValues::Column& c, const std::vector<std::size_t>& shape) {
   switch (c.kind) {
     case requests::ColumnKind::label: return py::cast(c.labels);
-    case requests::ColumnKind::flag: {
+    case requests::ColumnKind::flag: {  // true where 1 (false where masked: NaN)
       py::array_t<bool> a(shape);
       bool* out = a.mutable_data();
-      for (std::size_t i = 0; i < c.numbers.size(); ++i) out[i] = c.numbers[i] != 0.0;
+      for (std::size_t i = 0; i < c.numbers.size(); ++i) out[i] = c.numbers[i] == 1.0;
       return a;
     }
     case requests::ColumnKind::count: {
@@ -136,7 +136,7 @@ void add_row(py::dict& out, const requests::TableValues& table, std::size_t r) {
   for (const requests::TableValues::Column& c : table.columns) {
     switch (c.kind) {
       case requests::ColumnKind::label: out[py::str(c.name)] = c.labels[r]; break;
-      case requests::ColumnKind::flag: out[py::str(c.name)] = c.numbers[r] != 0.0; break;
+      case requests::ColumnKind::flag: out[py::str(c.name)] = c.numbers[r] == 1.0; break;
       case requests::ColumnKind::count: out[py::str(c.name)] = static_cast<long long>(c.numbers[r]); break;
       case requests::ColumnKind::number: out[py::str(c.name)] = c.numbers[r]; break;
     }
@@ -401,34 +401,14 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
     result.emplace(requests::run_span(file.span, file.balance, request));
   }
   const span::SpanAnalysis& a = result->analysis;
-  const std::vector<std::string> columns = requests::span_columns(a.span);
-  const std::size_t n = a.balance.points.size();
-  std::vector<std::vector<double>> values(columns.size(), std::vector<double>(n));
-  py::array_t<bool> converged(n), several(n);
-  auto ok = converged.mutable_unchecked<1>();
-  auto folds = several.mutable_unchecked<1>();
-  py::list terminations, messages, notes;
-  for (std::size_t i = 0; i < n; ++i) {
-    const span::BalancePoint& p = a.balance.points[i];
-    const std::vector<double> row = requests::span_row(a.span, p);
-    for (std::size_t c = 0; c < columns.size(); ++c) values[c][i] = row[c];
-    ok(i) = p.converged();
-    folds(i) = p.several_states;
-    terminations.append(std::string(termination_name(p.summary.termination)));
-    messages.append(p.converged() ? std::string() : brief_report(p.summary));
-    notes.append(p.note);
+  const std::vector<std::size_t> shape{a.balance.points.size()};
+  const requests::TableValues columns = requests::span_table(a.span).values(a.balance.points);
+  py::dict out = table_arrays(columns, shape);
+  for (const auto& [name, values] : table_arrays(requests::span_point_notes_table().values(a.balance.points), shape)) {
+    out[name] = values;
   }
-  py::dict out;
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    if (columns[c] != "converged" && columns[c] != "several_states") out[py::str(columns[c])] = array(values[c]);
-  }
-  out["converged"] = converged;
-  out["several_states"] = several;
-  out["termination"] = terminations;
-  out["messages"] = messages;
-  out["notes"] = notes;
-  out["dampers"] = requests::span_damper_prefixes(a.span);  // the <name> of the per-damper columns
-  out["columns"] = columns;
+  out["dampers"] = requests::span_damper_prefixes(a.span);  // the <damper> of the per-damper columns
+  out["columns"] = columns.names();
   out["summary_json"] = requests::span_summary(*result).str();
   return out;
 }

@@ -53,7 +53,13 @@ io::JsonObject TableValues::json_row(std::size_t r) const {
           json.add_null(c.name);
         }
         break;
-      case ColumnKind::flag: json.add(c.name, c.numbers[r] != 0.0); break;
+      case ColumnKind::flag:
+        if (std::isfinite(c.numbers[r])) {
+          json.add(c.name, c.numbers[r] == 1.0);
+        } else {
+          json.add_null(c.name);
+        }
+        break;
       case ColumnKind::label: json.add(c.name, c.labels[r]); break;
     }
   }

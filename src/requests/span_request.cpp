@@ -1,9 +1,10 @@
 #include "stockbridge/requests/span_request.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <memory>
 
 #include <fmt/format.h>
 
@@ -18,19 +19,6 @@ namespace {
 constexpr double kSpanNoValue = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPascalPerMegapascal = 1e6;
 constexpr int kSpanMaxPoints = 100000;
-
-/// The columns every balance point has, whatever the dampers.
-const std::vector<std::string>& span_point_columns() {
-  static const std::vector<std::string> columns{
-      "frequency_hz",          "wind_speed_m_s",          "wavelength_m",
-      "amplitude_m",           "amplitude_over_diameter", "wind_power_w",
-      "self_damping_power_w",  "damper_power_w",          "clamp_loop_amplitude_m",
-      "damper_clamp_velocity_m_s", "stress_fymax_mpa",    "stress_ps_mpa",
-      "damper_clamp_stress_mpa", "undamped_amplitude_m",  "undamped_stress_fymax_mpa",
-      "converged",             "endurance_limit_mpa",     "energy_identity_error",
-      "undamped_stress_ps_mpa", "several_states"};
-  return columns;
-}
 
 /// The (damper index, end) of each entry of a point's `dampers`: end 1's, then end
 /// 2's (the dampers at both ends), each end's in the order of their positions from
@@ -59,8 +47,6 @@ std::vector<std::pair<std::size_t, int>> span_column_slots(const span::Span& spa
   }
   return slots;
 }
-
-constexpr const char* kSpanDamperFields[] = {"velocity_m_s", "re_z_n_s_m", "im_z_n_s_m", "power_w", "clamp_stress_mpa"};
 
 void check_span_frequencies(const std::vector<double>& frequencies) {
   for (std::size_t i = 0; i < frequencies.size(); ++i) {
@@ -121,70 +107,150 @@ SpanResult run_span(const span::Span& file_span, const span::BalanceOptions& fil
 
 std::vector<std::string> span_damper_prefixes(const span::Span& span) {
   std::vector<std::string> names;
-  bool usable = true;
-  for (const span::SpanDamper& d : span.dampers()) {
-    const bool word = !d.name.empty() && std::all_of(d.name.begin(), d.name.end(), [](char ch) {
-      return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
-    });
-    usable = usable && word && std::find(names.begin(), names.end(), d.name) == names.end();
-    names.push_back(d.name);
-  }
-  if (usable) return names;
-  for (std::size_t k = 0; k < names.size(); ++k) names[k] = "damper" + std::to_string(k + 1);
-  return names;
+  for (const span::SpanDamper& d : span.dampers()) names.push_back(d.name);
+  return column_prefixes(names, "damper");
 }
 
-std::vector<std::string> span_columns(const span::Span& span) {
-  std::vector<std::string> columns = span_point_columns();
-  const std::vector<std::string> prefixes = span_damper_prefixes(span);
-  for (const auto& [k, end] : span_column_slots(span)) {
-    for (const char* field : kSpanDamperFields) columns.push_back(fmt::format("{}_end{}_{}", prefixes[k], end, field));
-  }
-  return columns;
+namespace {
+
+using SpanQuantity = Quantity<span::BalancePoint>;
+
+/// What the span table's quantities read beside the point: the span's.
+struct SpanTableContext {
+  double diameter = 0.0;
+  double endurance_limit = 0.0;
+  bool dampers = false;
+  /// Per member of the per-damper family (each damper's end 1, then its end 2): its
+  /// entry in a point's `dampers` (their order: end 1's by position, then end 2's).
+  std::vector<std::size_t> entry_of_member;
+};
+
+/// A number always given (the point's frequency and what follows from it).
+SpanQuantity span_given(std::string name, std::string unit, std::string meaning,
+                        std::function<double(const span::BalancePoint&)> value) {
+  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
+          [value = std::move(value)](const span::BalancePoint& p, std::size_t) { return value(p); }, {}};
 }
 
-std::vector<double> span_row(const span::Span& span, const span::BalancePoint& p) {
-  const bool ok = p.converged();
-  const auto masked = [ok](double value) { return ok ? value : kSpanNoValue; };
-  const auto mpa = [&masked](double pascal) { return masked(pascal / kPascalPerMegapascal); };
-  const bool dampers = !span.dampers().empty();
-  // The damper nearest the span clamp at end 1: the first entry (dampers by their positions).
-  const std::vector<std::pair<std::size_t, int>> slots = span_damper_slots(span);
-  const double nearest_velocity = dampers && !p.dampers.empty() ? p.dampers.front().clamp_velocity : kSpanNoValue;
-  const double diameter = span.conductor().diameter;
-  std::vector<double> row{p.frequency_hz,
-                          p.wind_speed,
-                          p.wavelength,
-                          masked(p.amplitude),
-                          masked(p.amplitude / diameter),
-                          masked(p.wind_power),
-                          masked(p.self_damping_power),
-                          masked(p.damper_power),
-                          masked(p.clamp_loop_amplitude),
-                          dampers ? masked(nearest_velocity) : kSpanNoValue,
-                          mpa(p.stress_fymax),
-                          mpa(p.stress_poffenberger_swart),
-                          dampers ? mpa(p.damper_clamp_stress) : kSpanNoValue,
-                          masked(p.undamped_amplitude),
-                          mpa(p.undamped_stress_fymax),
-                          ok ? 1.0 : 0.0,
-                          span.endurance_limit() / kPascalPerMegapascal,
-                          masked(p.identity_error),
-                          mpa(p.undamped_stress_poffenberger_swart),
-                          ok ? (p.several_states ? 1.0 : 0.0) : kSpanNoValue};
-  // Per damper and end, in the columns' order; the point's entries by their slot.
+/// A number computed by the balance: NaN where the point did not converge.
+SpanQuantity span_solved(std::string name, std::string unit, std::string meaning,
+                         std::function<double(const span::BalancePoint&)> value) {
+  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
+          [value = std::move(value)](const span::BalancePoint& p, std::size_t) {
+            return p.converged() ? value(p) : kSpanNoValue;
+          },
+          {}};
+}
+
+/// A number of each damper and end: NaN where the point did not converge.
+SpanQuantity span_per_damper(std::string name, std::string unit, std::string meaning,
+                             std::shared_ptr<const SpanTableContext> context,
+                             double (*value)(const span::DamperAtBalance&)) {
+  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
+          [context, value](const span::BalancePoint& p, std::size_t member) {
+            const std::size_t i = context->entry_of_member[member];
+            return p.converged() && i < p.dampers.size() ? value(p.dampers[i]) : kSpanNoValue;
+          },
+          {}};
+}
+
+double span_megapascal_of(double pascal) { return pascal / kPascalPerMegapascal; }
+
+std::shared_ptr<const SpanTableContext> span_table_context(const span::Span& span) {
+  auto context = std::make_shared<SpanTableContext>();
+  context->diameter = span.conductor().diameter;
+  context->endurance_limit = span.endurance_limit();
+  context->dampers = !span.dampers().empty();
+  const std::vector<std::pair<std::size_t, int>> entries = span_damper_slots(span);
   for (const auto& slot : span_column_slots(span)) {
-    const auto at = std::find(slots.begin(), slots.end(), slot);
-    const std::size_t i = static_cast<std::size_t>(at - slots.begin());
-    if (!ok || i >= p.dampers.size()) {
-      row.insert(row.end(), std::size(kSpanDamperFields), kSpanNoValue);
-      continue;
-    }
-    const span::DamperAtBalance& d = p.dampers[i];
-    row.insert(row.end(), {d.clamp_velocity, d.impedance.real(), d.impedance.imag(), d.power,
-                           d.clamp_stress / kPascalPerMegapascal});
+    context->entry_of_member.push_back(
+        static_cast<std::size_t>(std::find(entries.begin(), entries.end(), slot) - entries.begin()));
   }
-  return row;
+  return context;
+}
+
+}  // namespace
+
+Table<span::BalancePoint> span_table(const span::Span& span) {
+  using P = span::BalancePoint;
+  using D = span::DamperAtBalance;
+  const std::shared_ptr<const SpanTableContext> c = span_table_context(span);
+  const auto mpa = span_megapascal_of;
+  std::vector<SpanQuantity> q{
+      span_given("frequency_hz", "Hz", "f", [](const P& p) { return p.frequency_hz; }),
+      span_given("wind_speed_m_s", "m/s", "the wind speed that sheds vortices at f, U = f D / St",
+                 [](const P& p) { return p.wind_speed; }),
+      span_given("wavelength_m", "m", "lambda = c / f", [](const P& p) { return p.wavelength; }),
+      span_solved("amplitude_m", "m", "Y, the antinode amplitude of the standing wave in the free span",
+                  [](const P& p) { return p.amplitude; }),
+      span_solved("amplitude_over_diameter", "", "Y / D", [c](const P& p) { return p.amplitude / c->diameter; }),
+      span_solved("wind_power_w", "W", "P_w(Y)", [](const P& p) { return p.wind_power; }),
+      span_solved("self_damping_power_w", "W", "P_s(Y)", [](const P& p) { return p.self_damping_power; }),
+      span_solved("damper_power_w", "W", "what the dampers of both ends take (0 without dampers)",
+                  [](const P& p) { return p.damper_power; }),
+      span_solved("clamp_loop_amplitude_m", "m", "S, the loop next to the span clamp of end 1 (Y without dampers)",
+                  [](const P& p) { return p.clamp_loop_amplitude; }),
+      span_solved("damper_clamp_velocity_m_s", "m/s",
+                  "the clamp velocity amplitude of the damper nearest the span clamp at end 1 (empty without dampers)",
+                  [c](const P& p) {
+                    // The first entry: the dampers of end 1 by their positions.
+                    return c->dampers && !p.dampers.empty() ? p.dampers.front().clamp_velocity : kSpanNoValue;
+                  }),
+      span_solved("stress_fymax_mpa", "MPa", "fymax stress at the span clamp",
+                  [mpa](const P& p) { return mpa(p.stress_fymax); }),
+      span_solved("stress_ps_mpa", "MPa", "Poffenberger-Swart stress at the span clamp",
+                  [mpa](const P& p) { return mpa(p.stress_poffenberger_swart); }),
+      span_solved("damper_clamp_stress_mpa", "MPa", "the largest stress at a damper clamp (empty without dampers)",
+                  [c, mpa](const P& p) { return c->dampers ? mpa(p.damper_clamp_stress) : kSpanNoValue; }),
+      span_solved("undamped_amplitude_m", "m", "Y of the same span without dampers",
+                  [](const P& p) { return p.undamped_amplitude; }),
+      span_solved("undamped_stress_fymax_mpa", "MPa", "its fymax stress",
+                  [mpa](const P& p) { return mpa(p.undamped_stress_fymax); }),
+      {"converged", "", "1, or 0 where the balance did not converge", ColumnKind::flag,
+       [](const P& p, std::size_t) { return p.converged() ? 1.0 : 0.0; }, {}},
+      span_given("endurance_limit_mpa", "MPa",
+                 "the endurance limit the verdict uses (the same in every row; the plot reads it)",
+                 [c, mpa](const P&) { return mpa(c->endurance_limit); }),
+      span_solved("energy_identity_error", "",
+                  "|P_d - sum Re Z w^2 |Y_j|^2 / 2| relative to the power the incoming waves bring to the ends, "
+                  "sum Z0 w^2 |B|^2 / 2 (the identity checked at every point, to 1e-8; P_d is a difference of the "
+                  "waves' powers, so this is the scale of its round-off)",
+                  [](const P& p) { return p.identity_error; }),
+      span_solved("undamped_stress_ps_mpa", "MPa", "the undamped span's Poffenberger-Swart stress (its life's)",
+                  [mpa](const P& p) { return mpa(p.undamped_stress_poffenberger_swart); }),
+      {"several_states", "",
+       "1 where the dampers' clamp velocities passed a fold since the frequency before: several self-consistent "
+       "states near here ([several dampers per end](#several-dampers-per-end))",
+       ColumnKind::flag,
+       [](const P& p, std::size_t) { return p.converged() ? (p.several_states ? 1.0 : 0.0) : kSpanNoValue; }, {}},
+      span_per_damper("<damper>_end<k>_velocity_m_s", "m/s",
+                      "per damper and end it is at (k = 1, 2): its clamp velocity amplitude v_j", c,
+                      [](const D& d) { return d.clamp_velocity; }),
+      span_per_damper("<damper>_end<k>_re_z_n_s_m", "N s/m", "the real part of its impedance Z(f, v_j)", c,
+                      [](const D& d) { return d.impedance.real(); }),
+      span_per_damper("<damper>_end<k>_im_z_n_s_m", "N s/m", "its imaginary part", c,
+                      [](const D& d) { return d.impedance.imag(); }),
+      span_per_damper("<damper>_end<k>_power_w", "W", "the power it takes, Re Z w^2 |Y_j|^2 / 2", c,
+                      [](const D& d) { return d.power; }),
+      span_per_damper("<damper>_end<k>_clamp_stress_mpa", "MPa", "the conductor's stress at its clamp", c,
+                      [](const D& d) { return d.clamp_stress / kPascalPerMegapascal; }),
+  };
+  std::vector<std::string> members;
+  const std::vector<std::string> prefixes = span_damper_prefixes(span);
+  for (const auto& [k, end] : span_column_slots(span)) members.push_back(fmt::format("{}_end{}", prefixes[k], end));
+  return Table<span::BalancePoint>(std::move(q), {{"<damper>_end<k>", members}});
+}
+
+Table<span::BalancePoint> span_point_notes_table() {
+  using P = span::BalancePoint;
+  return Table<span::BalancePoint>({
+      {"termination", "", "how the point's balance ended (converged, or why not)", ColumnKind::label, {},
+       [](const P& p, std::size_t) { return std::string(termination_name(p.summary.termination)); }},
+      {"messages", "", "why a point did not converge (empty where it did)", ColumnKind::label, {},
+       [](const P& p, std::size_t) { return p.converged() ? std::string() : brief_report(p.summary); }},
+      {"notes", "", "what the point's balance noted (a fold passed, a damper solved cold)", ColumnKind::label, {},
+       [](const P& p, std::size_t) { return p.note; }},
+  });
 }
 
 io::JsonObject span_summary(const SpanResult& result) {

@@ -21,7 +21,7 @@
 namespace stockbridge::requests {
 
 /// What a column holds: a number (NaN where not trusted: an empty cell, null), a
-/// count, a flag (1 or 0; Python: bool), or a label (text).
+/// count, a flag (1 or 0, NaN where not trusted; Python: bool, false there), or a label (text).
 enum class ColumnKind { number, count, flag, label };
 
 /// One output quantity of rows of type Row.
@@ -66,7 +66,7 @@ struct TableValues {
   /// The CSV text (io::CsvWriter: the label columns first, then the rest).
   std::string csv() const;
   /// Row r as a JSON object: a number (null where NaN), a count as an integer, a
-  /// flag as true or false, a label as a string.
+  /// flag as true or false (null where NaN), a label as a string.
   io::JsonObject json_row(std::size_t r) const;
 };
 

@@ -12,6 +12,7 @@
 
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/output_table.hpp"
 #include "stockbridge/span/analysis.hpp"
 
 namespace stockbridge::requests {
@@ -52,26 +53,25 @@ SpanResult run_span(const span::Span& span, const span::BalanceOptions& file, co
 
 /// How the per-damper columns name each damper: the span's names (the damper files'
 /// stems) where every one is unique and made of letters, digits and '_', else
-/// damper1, damper2, ... for all.
+/// damper1, damper2, ... for all (column_prefixes).
 std::vector<std::string> span_damper_prefixes(const span::Span& span);
 
-/// The columns of a balance point as the span CSV and Python's arrays name them:
-///   frequency_hz, wind_speed_m_s, wavelength_m, amplitude_m, amplitude_over_diameter,
-///   wind_power_w, self_damping_power_w, damper_power_w, clamp_loop_amplitude_m,
-///   damper_clamp_velocity_m_s, stress_fymax_mpa, stress_ps_mpa, damper_clamp_stress_mpa,
-///   undamped_amplitude_m, undamped_stress_fymax_mpa, converged, endurance_limit_mpa,
-///   energy_identity_error, undamped_stress_ps_mpa, several_states,
-/// then for each damper and each end it is at (k = 1, 2):
-///   <prefix>_end<k>_velocity_m_s, <prefix>_end<k>_re_z_n_s_m, <prefix>_end<k>_im_z_n_s_m,
-///   <prefix>_end<k>_power_w, <prefix>_end<k>_clamp_stress_mpa.
-/// Stresses in MPa. damper_clamp_velocity_m_s is the clamp velocity of the damper
-/// nearest the span clamp at end 1.
-std::vector<std::string> span_columns(const span::Span& span);
-/// A point's values in span_columns(span) order (`span`: the span as balanced): NaN
-/// for every computed number of a point that did not converge (frequency, wind
-/// speed, wavelength and the endurance limit are always given), and for the damper
-/// columns of a span without dampers.
-std::vector<double> span_row(const span::Span& span, const span::BalancePoint& point);
+/// The span CSV's quantities, a row per balance point (`span`: the span as
+/// balanced): frequency_hz, wind_speed_m_s, wavelength_m, amplitude_m,
+/// amplitude_over_diameter, wind_power_w, self_damping_power_w, damper_power_w,
+/// clamp_loop_amplitude_m, damper_clamp_velocity_m_s, stress_fymax_mpa,
+/// stress_ps_mpa, damper_clamp_stress_mpa, undamped_amplitude_m,
+/// undamped_stress_fymax_mpa, converged, endurance_limit_mpa,
+/// energy_identity_error, undamped_stress_ps_mpa, several_states, then for each
+/// damper and each end it is at (k = 1, 2) the family <damper>_end<k>_velocity_m_s,
+/// _re_z_n_s_m, _im_z_n_s_m, _power_w, _clamp_stress_mpa. NaN for every computed
+/// number of a point that did not converge (frequency, wind speed, wavelength and
+/// the endurance limit are always given), and for the damper columns of a span
+/// without dampers.
+Table<span::BalancePoint> span_table(const span::Span& span);
+/// What Python's span adds per point beside the CSV's columns: termination,
+/// messages (why a point did not converge), notes.
+Table<span::BalancePoint> span_point_notes_table();
 
 /// The summary, as `stockbridge span --json` prints it and Python returns it:
 /// points, converged, damper_model, dampers, endurance_limit_mpa, verdict (safe,
