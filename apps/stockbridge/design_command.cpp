@@ -119,15 +119,12 @@ int run_design_command(const DesignOptions& options) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (processes.rank() != 0) return result.best ? kSuccess : kNotConverged;
 
-  io::write_file_atomically(options.output, requests::design_csv(file.study, result));
+  io::write_file_atomically(options.output, requests::design_table(file.study).values(result.evaluations).csv());
   const auto best = requests::best_damper_file(file.study, result, std::filesystem::path(options.design_file).filename().string());
   if (best) io::write_file_atomically(options.best, *best);
   if (options.json) {
-    fmt::print("{}\n", requests::design_summary(file.study, result)
-                           .add("samples", search.samples)
-                           .add("polish", search.polish)
-                           .add("ranks", processes.size())
-                           .add("threads", options.threads)
+    fmt::print("{}\n", requests::design_summary(file.study, result,
+                                                {search.samples, search.polish, processes.size(), options.threads})
                            .add("seconds", seconds)
                            .str());
   } else {

@@ -432,44 +432,14 @@ py::dict design_search(const std::string& path, std::optional<int> samples, std:
     design::ThreadRunner runner(threads);
     result.emplace(design::run_search(file.study, options, runner));
   }
-  const std::vector<std::string> columns = requests::design_columns(file.study);
-  const std::size_t n = result->evaluations.size();
-  std::vector<std::vector<double>> values(columns.size(), std::vector<double>(n));
-  py::list stages;
-  for (std::size_t i = 0; i < n; ++i) {
-    const design::StudyEvaluation& e = result->evaluations[i];
-    const std::vector<double> row = requests::design_row(file.study, e);
-    for (std::size_t c = 0; c < columns.size(); ++c) values[c][i] = row[c];
-    stages.append(std::string(design::stage_name(e.stage)));
-  }
-  py::dict out;
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    if (columns[c] == "run") {
-      py::array_t<long long> run(n);
-      for (std::size_t i = 0; i < n; ++i) run.mutable_at(i) = result->evaluations[i].run;
-      out["run"] = run;
-    } else if (columns[c] == "converged" || columns[c] == "feasible") {
-      py::array_t<bool> flags(n);
-      for (std::size_t i = 0; i < n; ++i) flags.mutable_at(i) = values[c][i] == 1.0;
-      out[py::str(columns[c])] = flags;
-    } else {
-      out[py::str(columns[c])] = array(values[c]);
-    }
-  }
-  out[py::str(std::string(requests::kDesignStageColumn))] = stages;
-  std::vector<std::string> csv_columns{std::string(requests::kDesignStageColumn)};
-  csv_columns.insert(csv_columns.end(), columns.begin(), columns.end());
-  out["columns"] = csv_columns;
+  const requests::TableValues columns = requests::design_table(file.study).values(result->evaluations);
+  py::dict out = table_arrays(columns, {result->evaluations.size()});
+  out["columns"] = columns.names();
   std::vector<std::string> variables;
   for (const design::DesignVariable& v : file.study.variables()) variables.push_back(v.name);
   out["variables"] = variables;
-  // The command's --json adds the same four (and its wall time, which Python leaves out).
-  out["summary_json"] = requests::design_summary(file.study, *result)
-                            .add("samples", options.samples)
-                            .add("polish", options.polish)
-                            .add("ranks", 1)
-                            .add("threads", threads)
-                            .str();
+  // The command's --json adds its wall time, which Python leaves out.
+  out["summary_json"] = requests::design_summary(file.study, *result, {options.samples, options.polish, 1, threads}).str();
   out["best_damper"] =
       requests::best_damper_file(file.study, *result, std::filesystem::path(path).filename().string());
   return out;

@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
-#include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/damper_file.hpp"
 
 namespace stockbridge::requests {
@@ -30,16 +29,16 @@ namespace {
 constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 
 /// The objective as reported: the stress ratio, or the shortest life in years.
-double reported_objective(const design::DesignStudy& study, const design::Evaluation& e) {
+double reported_objective(design::Objective objective, const design::Evaluation& e) {
   if (!e.converged()) return kNotComputed;
-  return study.objective() == design::Objective::life ? e.shortest_life_years : e.max_stress_ratio;
+  return objective == design::Objective::life ? e.shortest_life_years : e.max_stress_ratio;
 }
 
 io::JsonObject design_figures(const design::DesignStudy& study, const design::Evaluation& e) {
   io::JsonObject variables;
   for (std::size_t d = 0; d < study.variables().size(); ++d) variables.add(study.variables()[d].name, e.x[d]);
   io::JsonObject o;
-  o.add("objective", reported_objective(study, e))
+  o.add("objective", reported_objective(study.objective(), e))
       .add("max_stress_ratio", e.max_stress_ratio)
       .add("max_stress_mpa", e.max_stress / 1e6)
       .add("frequency_at_max_hz", e.frequency_at_max_hz)
@@ -63,41 +62,63 @@ io::JsonObject design_figures(const design::DesignStudy& study, const design::Ev
 
 }  // namespace
 
-std::vector<std::string> design_columns(const design::DesignStudy& study) {
-  std::vector<std::string> columns{"run"};
-  for (const design::DesignVariable& v : study.variables()) columns.push_back(v.name);
-  for (const char* name : {"objective", "max_stress_ratio", "max_stress_mpa", "frequency_at_max_hz", "total_mass_kg",
-                           "messenger_curvature_max_per_m", "shortest_life_years", "converged", "feasible"}) {
-    columns.emplace_back(name);
-  }
-  return columns;
+namespace {
+
+using DesignQuantity = Quantity<design::StudyEvaluation>;
+
+/// A figure of a converged candidate (NaN otherwise).
+DesignQuantity design_figure(std::string name, std::string unit, std::string meaning,
+                             double (*value)(const design::Evaluation&)) {
+  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
+          [value](const design::StudyEvaluation& s, std::size_t) {
+            return s.evaluation.converged() ? value(s.evaluation) : kNotComputed;
+          },
+          {}};
 }
 
-std::vector<double> design_row(const design::DesignStudy& study, const design::StudyEvaluation& evaluation) {
-  const design::Evaluation& e = evaluation.evaluation;
-  std::vector<double> row{static_cast<double>(evaluation.run)};
-  row.insert(row.end(), e.x.begin(), e.x.end());
-  const bool c = e.converged();
-  for (const double v : {reported_objective(study, e), c ? e.max_stress_ratio : kNotComputed, c ? e.max_stress / 1e6 : kNotComputed,
-                         c ? e.frequency_at_max_hz : kNotComputed, e.total_mass, c ? e.messenger_curvature_max : kNotComputed,
-                         c ? e.shortest_life_years : kNotComputed, c ? 1.0 : 0.0, e.feasible() ? 1.0 : 0.0}) {
-    row.push_back(v);
-  }
-  return row;
+}  // namespace
+
+Table<design::StudyEvaluation> design_table(const design::DesignStudy& study) {
+  using S = design::StudyEvaluation;
+  using E = design::Evaluation;
+  const design::Objective objective = study.objective();
+  std::vector<std::string> variables;
+  for (const design::DesignVariable& v : study.variables()) variables.push_back(v.name);
+  return Table<S>(
+      {
+          {"stage", "", "`base`, `sample` or `polish`", ColumnKind::label, {},
+           [](const S& s, std::size_t) { return std::string(design::stage_name(s.stage)); }},
+          {"run", "", "the sample's index, or the polish's (0 for the base)", ColumnKind::count,
+           [](const S& s, std::size_t) { return static_cast<double>(s.run); }, {}},
+          {"<variable>", "as the damper file", "each variable by its name (`arm.left.mass`, `position`): the candidate",
+           ColumnKind::number, [](const S& s, std::size_t d) { return s.evaluation.x[d]; }, {}},
+          {"objective", "", "`max_stress_ratio` (objective `max_stress`) or `shortest_life_years` (`life`)",
+           ColumnKind::number,
+           [objective](const S& s, std::size_t) { return reported_objective(objective, s.evaluation); },
+           {}},
+          design_figure("max_stress_ratio", "", "largest fymax stress / endurance limit over the spans and bands",
+                        [](const E& e) { return e.max_stress_ratio; }),
+          design_figure("max_stress_mpa", "MPa", "that largest stress",
+                        [](const E& e) { return e.max_stress / 1e6; }),
+          design_figure("frequency_at_max_hz", "Hz", "where the ratio is largest",
+                        [](const E& e) { return e.frequency_at_max_hz; }),
+          {"total_mass_kg", "kg", "clamp and arms", ColumnKind::number,
+           [](const S& s, std::size_t) { return s.evaluation.total_mass; }, {}},
+          design_figure("messenger_curvature_max_per_m", "1/m",
+                        "largest clamp-section curvature amplitude of the arms",
+                        [](const E& e) { return e.messenger_curvature_max; }),
+          design_figure("shortest_life_years", "years", "objective `life` only",
+                        [](const E& e) { return e.shortest_life_years; }),
+          {"converged", "", "1 when every point of every span balanced", ColumnKind::flag,
+           [](const S& s, std::size_t) { return s.evaluation.converged() ? 1.0 : 0.0; }, {}},
+          {"feasible", "", "1 when converged and within the constraints", ColumnKind::flag,
+           [](const S& s, std::size_t) { return s.evaluation.feasible() ? 1.0 : 0.0; }, {}},
+      },
+      {{"<variable>", variables}});
 }
 
-std::string design_csv(const design::DesignStudy& study, const design::DesignResult& result) {
-  std::vector<std::string> header{std::string(kDesignStageColumn)};
-  for (std::string& c : design_columns(study)) header.push_back(std::move(c));
-  io::CsvWriter csv(header);
-  for (const design::StudyEvaluation& e : result.evaluations) {
-    const std::vector<std::string> label{std::string(design::stage_name(e.stage))};
-    csv.add_row(label, design_row(study, e));
-  }
-  return csv.text();
-}
-
-io::JsonObject design_summary(const design::DesignStudy& study, const design::DesignResult& result) {
+io::JsonObject design_summary(const design::DesignStudy& study, const design::DesignResult& result,
+                              const DesignRun& run) {
   int converged = 0, feasible = 0;
   for (const design::StudyEvaluation& e : result.evaluations) {
     converged += e.evaluation.converged() ? 1 : 0;
@@ -124,7 +145,11 @@ io::JsonObject design_summary(const design::DesignStudy& study, const design::De
   } else {
     o.add_null("best").add("improved", false);
   }
-  o.add("polishes", polishes);
+  o.add("polishes", polishes)
+      .add("samples", run.samples)
+      .add("polish", run.polish)
+      .add("ranks", run.ranks)
+      .add("threads", run.threads);
   return o;
 }
 
@@ -134,8 +159,8 @@ std::optional<std::string> best_damper_file(const design::DesignStudy& study, co
   const design::Evaluation& best = result.evaluations[*result.best].evaluation;
   const design::Evaluation& base = result.evaluations[result.base].evaluation;
   std::string comment = fmt::format("The best design of {} (stockbridge design), {} {} (base {}).", design_file,
-                                    design::objective_name(study.objective()), reported_objective(study, best),
-                                    reported_objective(study, base));
+                                    design::objective_name(study.objective()), reported_objective(study.objective(), best),
+                                    reported_objective(study.objective(), base));
   if (const auto position = study.position_of(best.x)) {
     comment += fmt::format("\nposition = {} m from the span clamp: place the spans' dampers there", *position);
   }

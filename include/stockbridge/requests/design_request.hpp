@@ -9,6 +9,7 @@
 
 #include "stockbridge/design/search.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/output_table.hpp"
 
 namespace stockbridge::requests {
 
@@ -26,18 +27,21 @@ void validate(const DesignRequest& request);
 /// The file's search options with the request's changes.
 design::SearchOptions search_options(const design::SearchOptions& file, const DesignRequest& request);
 
-/// The label column (first): stage (base, sample or polish).
-inline constexpr std::string_view kDesignStageColumn = "stage";
-/// The numeric columns after the stage, as the CSV and Python's arrays name them:
-///   run, <each variable by its name>, objective, max_stress_ratio, max_stress_mpa,
-///   frequency_at_max_hz, total_mass_kg, messenger_curvature_max_per_m,
-///   shortest_life_years, converged, feasible
-/// objective: max_stress_ratio (objective max_stress) or shortest_life_years (life).
-std::vector<std::string> design_columns(const design::DesignStudy& study);
-/// An evaluation's values in design_columns order (NaN where not computed).
-std::vector<double> design_row(const design::DesignStudy& study, const design::StudyEvaluation& evaluation);
-/// The whole CSV text.
-std::string design_csv(const design::DesignStudy& study, const design::DesignResult& result);
+/// The design CSV's quantities, a row per candidate evaluated: stage (base, sample
+/// or polish), run, <each variable by its name>, objective, max_stress_ratio,
+/// max_stress_mpa, frequency_at_max_hz, total_mass_kg,
+/// messenger_curvature_max_per_m, shortest_life_years (NaN where not converged),
+/// converged, feasible. objective: max_stress_ratio (objective max_stress) or
+/// shortest_life_years (life).
+Table<design::StudyEvaluation> design_table(const design::DesignStudy& study);
+
+/// How the search was run, as the summary reports it beside the result.
+struct DesignRun {
+  int samples = 0;
+  int polish = 0;
+  int ranks = 1;    ///< processes
+  int threads = 1;  ///< per process
+};
 
 /// The summary, as `stockbridge design --json` prints it and Python returns it:
 /// objective, evaluations, converged, feasible, base and best (each: objective,
@@ -45,8 +49,9 @@ std::string design_csv(const design::DesignStudy& study, const design::DesignRes
 /// messenger_curvature_max_per_m, shortest_life_years, position_m, variables
 /// {name: value}, and for a candidate that is not feasible its termination and a
 /// note; best null when nothing is feasible), improved, polishes (each local
-/// polish's termination, evaluations and reason).
-io::JsonObject design_summary(const design::DesignStudy& study, const design::DesignResult& result);
+/// polish's termination, evaluations and reason), samples, polish, ranks, threads.
+io::JsonObject design_summary(const design::DesignStudy& study, const design::DesignResult& result,
+                              const DesignRun& run);
 
 /// The best design as a complete damper file (the `impedance` and `span` commands
 /// read it), its position and figures in comments; none when nothing is feasible.

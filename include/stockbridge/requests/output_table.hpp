@@ -4,7 +4,8 @@
 // quantities, each with its name (snake_case, the unit as suffix), unit, meaning
 // and how to read it from a row. A family of quantities, one per arm or one per
 // damper and end, has a pattern name ("<arm>_power_w"); a table expands it with
-// the members' prefixes ("left_power_w", "right_power_w"). Adding a column is
+// the members' prefixes ("left_power_w", "right_power_w"); a family named by its
+// placeholder alone ("<variable>") is a column per member, named as the member. Adding a column is
 // adding one quantity: the CSV header and rows, the JSON keys, Python's keys and
 // the docs' table (a test compares them with docs/) all follow from it.
 
@@ -90,8 +91,12 @@ class Table {
       const std::size_t count = prefixes ? prefixes->size() : 1;
       for (std::size_t m = 0; m < count; ++m) {
         for (std::size_t i = q; i < end; ++i) {
-          const std::string base = prefixes ? quantities_[i].name.substr(placeholder.size() + 1) : std::string();
-          columns_.push_back({i, m, prefixes ? (*prefixes)[m] + "_" + base : quantities_[i].name, base});
+          const std::string& name = quantities_[i].name;
+          // A family named by its placeholder alone is its members' names ("<variable>").
+          const std::string base =
+              prefixes && name.size() > placeholder.size() ? name.substr(placeholder.size() + 1) : std::string();
+          const std::string column = !prefixes ? name : base.empty() ? (*prefixes)[m] : (*prefixes)[m] + "_" + base;
+          columns_.push_back({i, m, column, base});
         }
       }
       q = end;
@@ -146,7 +151,7 @@ class Table {
   /// "<arm>" of "<arm>_power_w", "<damper>_end<k>" of "<damper>_end<k>_power_w"; empty for a plain name.
   std::string placeholder_of(const std::string& name) const {
     for (const auto& [placeholder, prefixes] : members_) {
-      if (name.starts_with(placeholder + "_")) return placeholder;
+      if (name == placeholder || name.starts_with(placeholder + "_")) return placeholder;
     }
     if (name.starts_with("<")) throw std::logic_error("output table: no members for the family " + name);
     return {};
