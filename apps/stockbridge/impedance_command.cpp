@@ -27,8 +27,6 @@ namespace stockbridge::cli {
 
 namespace {
 
-constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
-
 struct ImpedanceOptions {
   std::string damper_file;
   std::optional<std::string> velocity;  // lists as typed: given but empty is an error
@@ -58,14 +56,6 @@ requests::SweepRequest sweep_request(const ImpedanceOptions& options) {
   return request;
 }
 
-std::string impedance_csv(const damper::Damper& damper, const std::vector<damper::SweepRun>& runs) {
-  std::vector<const damper::ImpedancePoint*> points;
-  for (const damper::SweepRun& run : runs) {
-    for (const damper::ImpedancePoint& p : run.points) points.push_back(&p);
-  }
-  return requests::impedance_table(damper).values(points).csv();
-}
-
 int run_impedance_command(const ImpedanceOptions& options) {
   const requests::SweepRequest request = sweep_request(options);
   const damper::SweepSpec spec = requests::sweep_spec(request);
@@ -75,34 +65,17 @@ int run_impedance_command(const ImpedanceOptions& options) {
   ProgressReport progress("impedance", options.quiet);
   const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  io::write_file_atomically(options.output, impedance_csv(damper, runs));
+  io::write_file_atomically(options.output, requests::impedance_table(damper).values(requests::sweep_points(runs)).csv());
 
   const requests::SweepTally tally = requests::tally(runs);
   std::vector<std::string> failures;
-  std::vector<io::JsonObject> failed_json;
   for (const damper::SweepRun& run : runs) {
     for (const damper::ImpedancePoint& p : run.points) {
-      if (p.converged()) continue;
-      failures.push_back(fmt::format("  f = {:.4g} Hz, amplitude {}: {}", p.frequency_hz, run.amplitude, p.failure));
-      failed_json.push_back(io::JsonObject()
-                                .add("frequency_hz", p.frequency_hz)
-                                .add("amplitude", run.amplitude)
-                                .add("termination", std::string(termination_name(p.termination)))
-                                .add("reason", p.failure));
+      if (!p.converged()) failures.push_back(fmt::format("  f = {:.4g} Hz, amplitude {}: {}", p.frequency_hz, run.amplitude, p.failure));
     }
   }
   const int failed = tally.points - tally.converged;
-  if (options.json) {
-    fmt::print("{}\n", io::JsonObject()
-                           .add("method", options.solver.method())
-                           .add("points", tally.points)
-                           .add("converged", tally.converged)
-                           .add("non_unique", tally.non_unique)
-                           .add("max_energy_error", tally.max_energy_error.value_or(kNoValue))  // null when none
-                           .add("seconds", seconds)
-                           .add("failed", failed_json)
-                           .str());
-  }
+  if (options.json) fmt::print("{}\n", requests::sweep_summary(runs, options.solver.method(), seconds).str());
   fmt::print(stderr, "impedance: {} points ({} method) in {:.2f} s, {} converged, largest energy error {}{}\n", tally.points,
              options.solver.method(), seconds, tally.converged,
              tally.max_energy_error ? fmt::format("{:.2g}", *tally.max_energy_error) : "none (no point converged)",

@@ -79,11 +79,24 @@ auto warned(Loaded loaded) {
 
 py::array_t<double> array(const std::vector<double>& values) { return py::array_t<double>(values.size(), values.data()); }
 
+/// Labels as nested lists of `shape` (rows in C order): a list of str for one
+/// dimension, a list of such lists for two.
+py::list label_lists(const std::vector<std::string>& labels, const std::vector<std::size_t>& shape) {
+  if (shape.size() < 2) return py::cast(labels);
+  py::list rows;
+  const std::size_t width = labels.size() / std::max<std::size_t>(shape[0], 1);
+  for (std::size_t r = 0; r < shape[0]; ++r) {
+    rows.append(py::cast(std::vector<std::string>(labels.begin() + static_cast<std::ptrdiff_t>(r * width),
+                                                  labels.begin() + static_cast<std::ptrdiff_t>((r + 1) * width))));
+  }
+  return rows;
+}
+
 /// One column's values as a numpy array of `shape` (rows in C order): numbers as
 /// float64, counts as int64, flags as bool; a label column as a list of str.
 py::object column_array(const requests::TableValues::Column& c, const std::vector<std::size_t>& shape) {
   switch (c.kind) {
-    case requests::ColumnKind::label: return py::cast(c.labels);
+    case requests::ColumnKind::label: return label_lists(c.labels, shape);
     case requests::ColumnKind::flag: {  // true where 1 (false where masked: NaN)
       py::array_t<bool> a(shape);
       bool* out = a.mutable_data();
@@ -181,25 +194,15 @@ py::dict impedance(const damper::Damper& d, const std::optional<std::vector<doub
     py::gil_scoped_release release;
     runs = damper::run_sweep(d, spec);
   }
-  const std::size_t na = runs.size(), nf = spec.frequencies.size();
-  std::vector<const damper::ImpedancePoint*> rows;
-  py::list terminations, messages;
-  for (std::size_t a = 0; a < na; ++a) {
-    py::list termination_row, message_row;
-    for (const damper::ImpedancePoint& p : runs[a].points) {
-      rows.push_back(&p);
-      termination_row.append(std::string(termination_name(p.termination)));
-      message_row.append(p.converged() ? p.note : p.failure);
-    }
-    terminations.append(termination_row);
-    messages.append(message_row);
+  const std::vector<std::size_t> shape{runs.size(), spec.frequencies.size()};
+  const std::vector<const damper::ImpedancePoint*> rows = requests::sweep_points(runs);
+  py::dict out = table_arrays(requests::impedance_table(d).values(rows), shape);
+  for (const auto& [name, values] : table_arrays(requests::impedance_point_notes_table().values(rows), shape)) {
+    out[name] = values;
   }
-  py::dict out = table_arrays(requests::impedance_table(d).values(rows), {na, nf});
   out["frequency_hz"] = array(spec.frequencies);  // 1-D: the frequencies
   out["amplitude"] = array(spec.amplitudes);
   out["arms"] = requests::arm_column_prefixes(d);  // the <arm> of the per-arm columns, as the CSV's
-  out["termination"] = terminations;
-  out["messages"] = messages;
   return out;
 }
 

@@ -191,4 +191,47 @@ SweepTally tally(const std::vector<damper::SweepRun>& runs) {
   return t;
 }
 
+std::vector<const damper::ImpedancePoint*> sweep_points(const std::vector<damper::SweepRun>& runs) {
+  std::vector<const damper::ImpedancePoint*> points;
+  for (const damper::SweepRun& run : runs) {
+    for (const damper::ImpedancePoint& p : run.points) points.push_back(&p);
+  }
+  return points;
+}
+
+Table<damper::ImpedancePoint> impedance_point_notes_table() {
+  using P = damper::ImpedancePoint;
+  return Table<P>({
+      {"termination", "", "how the point's solve ended (converged, or why not)", ColumnKind::label, {},
+       [](const P& p, std::size_t) { return std::string(termination_name(p.termination)); }},
+      {"messages", "", "why a point did not converge; a converged point's note", ColumnKind::label, {},
+       [](const P& p, std::size_t) { return p.converged() ? p.note : p.failure; }},
+  });
+}
+
+io::JsonObject sweep_summary(const std::vector<damper::SweepRun>& runs, std::string_view method,
+                             std::optional<double> seconds) {
+  const SweepTally t = tally(runs);
+  std::vector<io::JsonObject> failed;
+  for (const damper::SweepRun& run : runs) {
+    for (const damper::ImpedancePoint& p : run.points) {
+      if (p.converged()) continue;
+      failed.push_back(io::JsonObject()
+                           .add("frequency_hz", p.frequency_hz)
+                           .add("amplitude", run.amplitude)
+                           .add("termination", std::string(termination_name(p.termination)))
+                           .add("reason", p.failure));
+    }
+  }
+  io::JsonObject json;
+  json.add("method", std::string(method))
+      .add("points", t.points)
+      .add("converged", t.converged)
+      .add("non_unique", t.non_unique)
+      .add("max_energy_error", t.max_energy_error.value_or(std::numeric_limits<double>::quiet_NaN()));  // null when none
+  if (seconds) json.add("seconds", *seconds);
+  json.add("failed", failed);
+  return json;
+}
+
 }  // namespace stockbridge::requests

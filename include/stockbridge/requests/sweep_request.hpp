@@ -72,4 +72,18 @@ struct SweepTally {
 };
 SweepTally tally(const std::vector<damper::SweepRun>& runs);
 
+/// The sweep's points in the CSV's order: each amplitude's frequencies in turn.
+std::vector<const damper::ImpedancePoint*> sweep_points(const std::vector<damper::SweepRun>& runs);
+
+/// What Python's impedance adds per point beside the CSV's columns: termination,
+/// messages (why a point did not converge; a converged point's note).
+Table<damper::ImpedancePoint> impedance_point_notes_table();
+
+/// The summary `impedance --json` prints: method, points, converged, non_unique,
+/// max_energy_error (null when no point converged), seconds (the wall time the
+/// front end measured, when given), failed [{frequency_hz, amplitude, termination,
+/// reason}].
+io::JsonObject sweep_summary(const std::vector<damper::SweepRun>& runs, std::string_view method,
+                             std::optional<double> seconds = std::nullopt);
+
 }  // namespace stockbridge::requests
