@@ -530,17 +530,29 @@ PYBIND11_MODULE(_core, m) {
   m.def("_damper_from_toml", [](std::string_view text, std::string_view source) { return warned(io::load_damper_text(text, source)); },
         py::arg("text"), py::arg("source"),
         "A damper from TOML text (make_damper builds it): the damper file reader's keys, checks, messages and warnings.");
+  // The defaults are the library requests' (the CLI's too); the package's wrappers read theirs here.
+  py::dict defaults;
+  defaults["span_points"] = requests::SpanRequest{}.points;
+  defaults["span_threads"] = requests::SpanRequest{}.threads;
+  defaults["design_threads"] = requests::DesignRequest{}.threads;
+  defaults["fit_elements"] = requests::ImpedanceFitRequest{}.elements;
+  defaults["fit_clamp_mass"] = requests::ImpedanceFitRequest{}.fit_clamp_mass;
+  defaults["fit_threads"] = requests::ImpedanceFitRequest{}.threads;
+  m.attr("_defaults") = defaults;
+  const requests::FrequencyGrid grid;
+  const requests::SolverSettings solver;
+  const requests::ImpedanceFitRequest fit;
   m.def("impedance", &impedance, py::arg("damper"), py::arg("frequencies") = py::none(), py::arg("velocity") = py::none(),
-        py::arg("displacement") = py::none(), py::arg("fmin") = 1.0, py::arg("fmax") = 100.0, py::arg("points") = 200,
-        py::arg("method") = "hb", py::arg("harmonics") = py::none(), py::arg("samples") = py::none(),
+        py::arg("displacement") = py::none(), py::arg("fmin") = grid.fmin, py::arg("fmax") = grid.fmax, py::arg("points") = grid.points,
+        py::arg("method") = solver.method, py::arg("harmonics") = py::none(), py::arg("samples") = py::none(),
         py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(), py::arg("max_periods") = py::none(),
-        py::arg("energy_tolerance") = py::none(), py::arg("full_period") = false, py::arg("threads") = 1,
+        py::arg("energy_tolerance") = py::none(), py::arg("full_period") = false, py::arg("threads") = requests::SweepRequest{}.threads,
         "Z(f, amplitude) over `frequencies` (or fmin..fmax, `points` log-spaced): arrays of shape (amplitudes, "
         "frequencies) named as the impedance CSV's columns (the design figures per arm as '<arm>_power_w' and "
         "'<arm>_mass_amplitude_m', the arms named in 'arms'); NaN where a point did not converge (see 'converged', "
         "'termination' and 'messages'). Solver settings left None take the method's default.");
   m.def("response", &response, py::arg("damper"), py::arg("frequency"), py::arg("velocity") = py::none(),
-        py::arg("displacement") = py::none(), py::arg("method") = "hb", py::arg("harmonics") = py::none(),
+        py::arg("displacement") = py::none(), py::arg("method") = solver.method, py::arg("harmonics") = py::none(),
         py::arg("samples") = py::none(), py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(),
         py::arg("max_periods") = py::none(), py::arg("energy_tolerance") = py::none(), py::arg("full_period") = false,
         "One steady period; per-arm arrays have shape (arms, samples). A point that did not converge is returned "
@@ -549,11 +561,11 @@ PYBIND11_MODULE(_core, m) {
   m.def("_span", &span_balance, py::arg("file") = py::none(), py::arg("text") = py::none(),
         py::arg("frequencies") = py::none(), py::arg("points") = requests::SpanRequest{}.points,
         py::arg("no_dampers") = false, py::arg("damper_model") = py::none(),
-        py::arg("optimize_position") = py::none(), py::arg("threads") = 1,
+        py::arg("optimize_position") = py::none(), py::arg("threads") = requests::SpanRequest{}.threads,
         "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
         "'converged', 'termination', 'messages', 'dampers', 'columns' and the --json summary as 'summary_json'.");
   m.def("_design", &design_search, py::arg("file"), py::arg("samples") = py::none(), py::arg("polish") = py::none(),
-        py::arg("threads") = 1,
+        py::arg("threads") = requests::DesignRequest{}.threads,
         "A design study's search (stockbridge.design wraps it): the design CSV's columns as arrays, 'stage', "
         "'columns', 'variables', the --json summary as 'summary_json' and best.toml's text as 'best_damper'.");
   m.def("modes", &modes, py::arg("damper"),
@@ -573,7 +585,8 @@ PYBIND11_MODULE(_core, m) {
         "Constant cable parameters from a cycle of experiment (a) or (b); 'cable' is a Cable ready for make_damper.");
   m.def("_identify_impedance", &identify_impedance, py::arg("damper"), py::arg("input") = py::none(),
         py::arg("frequency") = py::none(), py::arg("velocity") = py::none(), py::arg("displacement") = py::none(),
-        py::arg("z") = py::none(), py::arg("elements") = 1, py::arg("fit_clamp_mass") = false, py::arg("threads") = 1,
+        py::arg("z") = py::none(), py::arg("elements") = fit.elements, py::arg("fit_clamp_mass") = fit.fit_clamp_mass,
+        py::arg("threads") = fit.threads,
         "The identification from a measured impedance (stockbridge.identify_impedance wraps it).");
   m.def("loop", &loop, py::arg("ei"), py::arg("jenkin") = std::vector<std::pair<double, double>>{},
         py::arg("amplitude"), py::arg("cycles") = section::SinusoidalDrive{}.cycles,

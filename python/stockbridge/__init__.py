@@ -30,9 +30,9 @@ try:
     from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, cycle,  # noqa: F401
                         identify_global, identify_local, impedance, load_cable, load_damper, load_strand, loop,
                         modes, response, strand_bounds)
-    from ._core import _cable_from_toml, _damper_from_toml, _design, _identify_impedance, _span
+    from ._core import _cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _span
 except ImportError:  # the plots work from the source tree without the compiled module
-    pass
+    _defaults = {}  # the library's defaults come with it
 
 
 def _from_values(build, text, source):
@@ -84,8 +84,8 @@ def make_damper(clamp_mass, arms):
     return _from_values(_damper_from_toml, text, "make_damper")
 
 
-def span(file=None, frequencies=None, points=100, no_dampers=False, damper_model=None,
-         optimize_position=None, threads=1, text=None):
+def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_dampers=False, damper_model=None,
+         optimize_position=None, threads=_defaults.get("span_threads"), text=None):
     """The energy balance of a span over the wind band, as ``stockbridge span``: a span
     file's path (`file`) or its contents (`text`, damper files relative to the working
     directory); `frequencies` (Hz, increasing) or `points` log-spaced over the band;
@@ -107,7 +107,7 @@ def span(file=None, frequencies=None, points=100, no_dampers=False, damper_model
     return out
 
 
-def design(file, samples=None, polish=None, threads=1):
+def design(file, samples=None, polish=None, threads=_defaults.get("design_threads")):
     """The search for the best damper of a design study, as ``stockbridge design``: a
     design file's path (`file`; its damper and span files relative to it);
     `samples` space-filling candidates and `polish` local polishes instead of the
@@ -126,8 +126,9 @@ def design(file, samples=None, polish=None, threads=1):
     return out
 
 
-def identify_impedance(damper, input=None, *, frequency=None, velocity=None, displacement=None, z=None, elements=1,
-                       fit_clamp_mass=False, threads=1):
+def identify_impedance(damper, input=None, *, frequency=None, velocity=None, displacement=None, z=None,
+                       elements=_defaults.get("fit_elements"), fit_clamp_mass=_defaults.get("fit_clamp_mass"),
+                       threads=_defaults.get("fit_threads")):
     """The cable parameters (and with `fit_clamp_mass` the clamp mass) of a damper
     from its measured impedance, as ``stockbridge identify impedance``: `damper` a
     Damper (load_damper, make_damper) whose masses, inertias, offsets and cable
