@@ -11,7 +11,6 @@
 #include "option_parsing.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
-#include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 
 namespace stockbridge::cli {
@@ -22,8 +21,8 @@ struct LoopOptions {
   double ei = 0.0;
   std::vector<std::string> jenkin;
   section::SinusoidalDrive drive;
-  std::string law = "exact";
-  double exponent = 10.0;
+  std::string law{requests::default_section_law};
+  double exponent = requests::default_regularised_exponent;
   std::string output;
 };
 
@@ -34,11 +33,7 @@ int run_loop_command(const LoopOptions& options) {
   }
   const section::LoopRecord record = requests::section_loop(parameters, options.drive, options.law, options.exponent);
 
-  io::CsvWriter csv({"step", "curvature_per_m", "moment_n_m", "dissipated_energy_j_per_m"});
-  for (std::size_t k = 0; k < record.curvature.size(); ++k) {
-    csv.add_row({static_cast<double>(k), record.curvature[k], record.moment[k], record.dissipated[k]});
-  }
-  io::write_file_atomically(options.output, csv.text());
+  io::write_file_atomically(options.output, requests::loop_table().values(requests::loop_samples(record)).csv());
   fmt::print(stderr, "loop: {} law, {} cycles x {} points: dissipated energy in the last cycle {} J/m\n",
              options.law, options.drive.cycles, options.drive.points, record.last_cycle_dissipation());
   return kSuccess;

@@ -256,10 +256,7 @@ py::dict loop(double ei, const std::vector<std::pair<double, double>>& jenkin, d
     py::gil_scoped_release release;
     record = requests::section_loop(parameters, drive, law, exponent);
   }
-  py::dict out;
-  out["curvature_per_m"] = array(record.curvature);
-  out["moment_n_m"] = array(record.moment);
-  out["dissipated_energy_j_per_m"] = array(record.dissipated);
+  py::dict out = table_arrays(requests::loop_table().values(requests::loop_samples(record)), {record.curvature.size()});
   out["last_cycle_dissipation_j_per_m"] = record.last_cycle_dissipation();
   return out;
 }
@@ -590,7 +587,8 @@ PYBIND11_MODULE(_core, m) {
         "The identification from a measured impedance (stockbridge.identify_impedance wraps it).");
   m.def("loop", &loop, py::arg("ei"), py::arg("jenkin") = std::vector<std::pair<double, double>>{},
         py::arg("amplitude"), py::arg("cycles") = section::SinusoidalDrive{}.cycles,
-        py::arg("points") = section::SinusoidalDrive{}.points, py::arg("law") = "exact", py::arg("exponent") = 10.0,
+        py::arg("points") = section::SinusoidalDrive{}.points, py::arg("law") = std::string(requests::default_section_law),
+        py::arg("exponent") = requests::default_regularised_exponent,
         "One section driven by kappa = amplitude sin(2 pi k / points), as the loop command: jenkin = [(c, h), ...] in "
         "N m^2 and N m; law 'exact' or 'regularised' (with exponent).");
   m.def(
