@@ -9,8 +9,8 @@
 
 #include "commands.hpp"
 #include "stockbridge/core/error.hpp"
-#include "stockbridge/io/json_writer.hpp"
 #include "stockbridge/io/strand_file.hpp"
+#include "stockbridge/requests/strand_request.hpp"
 #include "stockbridge/strand/strand_bounds.hpp"
 
 namespace stockbridge::cli {
@@ -26,7 +26,7 @@ int run_strand_command(const StrandOptions& options) {
   const strand::Strand description = io::read_strand_file(options.file);
   const strand::StrandBounds bounds = strand::strand_bounds(description);
   if (options.json) {
-    fmt::print("{}\n", io::JsonObject().add("ei_min_n_m2", bounds.ei_min).add("ei_max_n_m2", bounds.ei_max).str());
+    fmt::print("{}\n", requests::strand_summary(bounds).str());
     return kSuccess;
   }
   std::size_t wires = 1;

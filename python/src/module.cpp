@@ -40,6 +40,7 @@
 #include "stockbridge/requests/response_request.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/span_request.hpp"
+#include "stockbridge/requests/strand_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 #include "stockbridge/strand/strand_bounds.hpp"
 #include "stockbridge/version.hpp"
@@ -595,11 +596,7 @@ PYBIND11_MODULE(_core, m) {
       "load_strand",
       [](const std::string& path) {
         const strand::Strand s = io::read_strand_file(path);
-        const strand::StrandBounds b = strand::strand_bounds(s);
-        py::dict out;
-        out["ei_min_n_m2"] = b.ei_min;
-        out["ei_max_n_m2"] = b.ei_max;
-        return out;
+        return from_json(requests::strand_summary(strand::strand_bounds(s)));
       },
       py::arg("path"), "A strand file's bending-stiffness bounds, as the strand command: {ei_min_n_m2, ei_max_n_m2}.");
   m.def(
@@ -613,6 +610,6 @@ PYBIND11_MODULE(_core, m) {
         const strand::StrandBounds b = strand::strand_bounds(s);
         return std::make_pair(b.ei_min, b.ei_max);
       },
-      py::arg("core_radius"), py::arg("layers"), py::arg("youngs_modulus") = 210e9,
+      py::arg("core_radius"), py::arg("layers"), py::arg("youngs_modulus") = strand::Strand{}.youngs_modulus,
       "(EI_min, EI_max) in N m^2; layers = [(count, wire_radius, pitch_radius, lay_length), ...] in m.");
 }
