@@ -9,7 +9,8 @@ namespace stockbridge {
 const std::vector<TypicalRange>& typical::all() {
   static const std::vector<TypicalRange> ranges{cable_length, ei,       jenkin_c,     jenkin_h,  clamp_mass,
                                                 arm_mass,     arm_inertia, arm_offset, frequency, velocity,
-                                                displacement, tip_deflection_ratio, tip_rotation};
+                                                displacement, tip_deflection_ratio, tip_rotation,
+                                                conductor_diameter, conductor_mass_per_length, span_length};
   return ranges;
 }
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/io/csv_reader.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "toml_reader.hpp"
@@ -244,8 +245,21 @@ SpanReading read_span_document(const TomlTable& top, const std::filesystem::path
   return reading;
 }
 
+/// The span file's own values outside their typical ranges (a diameter in mm, a mass
+/// per length in g/m, a length in km), each at its line, after the dampers' warnings.
+void add_span_warnings(const SpanReading& reading, const toml::table& document, const TomlSource& source,
+                       std::vector<std::string>& warnings) {
+  std::vector<UnusualValue> unusual;
+  check_typical(unusual, "conductor.diameter", reading.conductor.diameter, typical::conductor_diameter);
+  check_typical(unusual, "conductor.mass_per_length", reading.conductor.mass_per_length,
+                typical::conductor_mass_per_length);
+  check_typical(unusual, "span.length", reading.length, typical::span_length);
+  for (const UnusualValue& u : unusual) warnings.push_back(field_location(document, source, u.field) + u.message());
+}
+
 SpanFile build_span(const toml::table& document, const TomlSource& source, const std::filesystem::path& base_directory) {
   SpanReading reading = read_span_document(TomlTable(document, source, ""), base_directory);
+  add_span_warnings(reading, document, source, reading.warnings);
   span::Span built = build_from_file(document, source, [&] {
     const double tension = reading.tension ? *reading.tension : within_field("span", [&] {
       return span::tension_from_fraction(reading.conductor, *reading.tension_fraction);

@@ -37,6 +37,9 @@ inline constexpr TypicalRange displacement{"clamp displacement amplitude", 1e-6,
 /// Of the cable's length: the quasi-static cantilever is a small-deflection model.
 inline constexpr TypicalRange tip_deflection_ratio{"tip deflection / cable length", 0.0, 0.3, ""};
 inline constexpr TypicalRange tip_rotation{"tip rotation", 0.0, 0.5, "rad"};
+inline constexpr TypicalRange conductor_diameter{"conductor diameter", 0.004, 0.08, "m"};
+inline constexpr TypicalRange conductor_mass_per_length{"conductor mass per length", 0.03, 8.0, "kg/m"};
+inline constexpr TypicalRange span_length{"span length", 20.0, 3000.0, "m"};
 
 /// Every range above, in the order of the docs' table.
 const std::vector<TypicalRange>& all();
