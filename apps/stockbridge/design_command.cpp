@@ -31,7 +31,7 @@ struct DesignOptions {
   std::string design_file;
   std::optional<int> samples;
   std::optional<int> polish;
-  int threads = 1;
+  int threads = requests::DesignRequest{}.threads;
   bool json = false;
   bool quiet = false;
   std::string output;

@@ -31,12 +31,12 @@ struct ImpedanceOptions {
   std::string damper_file;
   std::optional<std::string> velocity;  // lists as typed: given but empty is an error
   std::optional<std::string> displacement;
-  double fmin = 1.0;
-  double fmax = 100.0;
-  int points = 200;
+  double fmin = requests::FrequencyGrid{}.fmin;
+  double fmax = requests::FrequencyGrid{}.fmax;
+  int points = requests::FrequencyGrid{}.points;
   std::optional<std::string> frequencies;
   SolverFlags solver;
-  int threads = 1;
+  int threads = requests::SweepRequest{}.threads;
   bool json = false;
   bool quiet = false;
   std::string output;

@@ -35,7 +35,7 @@ struct SpanOptions {
   bool no_dampers = false;
   std::optional<std::string> damper_model;
   std::optional<std::string> optimize_position;
-  int threads = 1;
+  int threads = requests::SpanRequest{}.threads;
   bool json = false;
   bool quiet = false;
   std::string output;
