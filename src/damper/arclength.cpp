@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include <Eigen/LU>
 
@@ -13,6 +15,13 @@
 namespace stockbridge::damper {
 
 namespace {
+
+SolverSummary branch_outcome(Termination termination, std::string where = {}) {
+  SolverSummary outcome;
+  outcome.termination = termination;
+  outcome.where = std::move(where);
+  return outcome;
+}
 
 /// The branch in scaled unknowns y = (q / scale_q, W / scale_w), so that a unit
 /// step changes the response and the frequency by comparable amounts.
@@ -33,17 +42,18 @@ class Branch {
   double angular_frequency_of(const Eigen::VectorXd& y) const { return y(p_count_) * scale_(p_count_); }
 
   /// Evaluates R, J and dR/dW at y from the branch's cable state, which then moves
-  /// on to the evaluation's end state. False if the cable failed.
-  bool evaluate(const Eigen::VectorXd& y, HarmonicBalanceEvaluation& out) {
+  /// on to the evaluation's end state. Converged; no_progress where the branch has
+  /// turned back to W <= 0; inner_failure where the cable failed.
+  SolverSummary evaluate(const Eigen::VectorXd& y, HarmonicBalanceEvaluation& out) {
     const double w = angular_frequency_of(y);
-    if (!(w > 0.0)) return false;
+    if (!(w > 0.0)) return branch_outcome(Termination::no_progress, "the branch turned back to W <= 0");
     out = model_.evaluate(excitation_at(w), unknowns_of(y), cable_state_ ? &*cable_state_ : nullptr,
                           model_.options().periods, HarmonicBalance::kJacobian | HarmonicBalance::kFrequency,
                           workspace_);
-    if (!out.ok()) return false;
+    if (!out.ok()) return branch_outcome(Termination::inner_failure, "the cable along the branch: " + brief_report(out.cable));
     cable_state_ = out.end_state;
     force_jacobian_ = out.force_jacobian;
-    return true;
+    return branch_outcome(Termination::converged);
   }
 
   /// The unit tangent [J, R_W] t = 0 with t_W = +1 before normalisation, in scaled unknowns.
@@ -56,23 +66,27 @@ class Branch {
   }
 
   /// One corrector: Newton on [R(q, W); t . (y - y_pred)] = 0 (scaled), letting the
-  /// cable's memory settle at the point. On success `last` is the evaluation there.
-  bool correct(Eigen::VectorXd& y, const Eigen::VectorXd& tangent, const Eigen::VectorXd& y_pred,
-               HarmonicBalanceEvaluation& last) {
+  /// cable's memory settle at the point. Converged (then `last` is the evaluation
+  /// there), or why not: the evaluation's failure, singular_jacobian,
+  /// not_periodic (the memory did not settle), max_iterations.
+  SolverSummary correct(Eigen::VectorXd& y, const Eigen::VectorXd& tangent, const Eigen::VectorXd& y_pred,
+                        HarmonicBalanceEvaluation& last) {
     const HarmonicBalanceOptions& options = model_.options();
     Eigen::MatrixXd bordered(p_count_ + 1, p_count_ + 1);
     Eigen::VectorXd g(p_count_ + 1);
     int settling_periods = 0;
     const int max_iterations = std::min(options.max_iterations, 25);  // a failed corrector halves the step instead
     for (int iteration = 0; iteration <= max_iterations; ++iteration) {
-      if (!evaluate(y, last)) return false;
+      if (SolverSummary evaluated = evaluate(y, last); !evaluated.converged()) return evaluated;
       const double w = angular_frequency_of(y);
       const double force = model_.force_scale(excitation_at(w));
       const double constraint = tangent.dot(y - y_pred);
       const double norm = last.residual.lpNorm<Eigen::Infinity>() / force;
       if (norm <= options.tolerance && std::abs(constraint) <= 1e-10) {
-        if (last.cable.periodicity_defect <= options.periodicity_tolerance) return true;
-        if (settling_periods >= options.max_settling_periods) return false;
+        if (last.cable.periodicity_defect <= options.periodicity_tolerance) return branch_outcome(Termination::converged);
+        if (settling_periods >= options.max_settling_periods) {
+          return branch_outcome(Termination::not_periodic, "the cable's memory did not settle at the corrected point");
+        }
         settling_periods += options.periods;  // let the cable's memory settle at this point
         continue;
       }
@@ -83,10 +97,12 @@ class Branch {
       g.head(p_count_) = last.residual / force;
       g(p_count_) = constraint;
       Eigen::VectorXd step;
-      if (numerics::is_singular(numerics::solve_checked(bordered, Eigen::VectorXd(-g), step), step)) return false;
+      if (numerics::is_singular(numerics::solve_checked(bordered, Eigen::VectorXd(-g), step), step)) {
+        return branch_outcome(Termination::singular_jacobian, "the bordered corrector matrix");
+      }
       y += step;
     }
-    return false;
+    return branch_outcome(Termination::max_iterations, "the corrector");
   }
 
   /// The solver's memory at the current point of the branch.
@@ -124,7 +140,7 @@ BranchCrossings continue_along_branch(const HarmonicBalance& model, double veloc
 
   BranchCrossings crossings;
   HarmonicBalanceEvaluation at;
-  if (!branch.evaluate(y, at)) return crossings;
+  if (!branch.evaluate(y, at).converged()) return crossings;
   Eigen::VectorXd tangent = branch.tangent(at, w0);
   if (!tangent.allFinite()) return crossings;
   if (tangent(p_count) * direction < 0.0) tangent = -tangent;
@@ -133,7 +149,7 @@ BranchCrossings continue_along_branch(const HarmonicBalance& model, double veloc
     const Eigen::VectorXd y_pred = y + ds * tangent;
     Eigen::VectorXd y_new = y_pred;
     const std::optional<cable::CableState> before = branch.cable_state();
-    if (!branch.correct(y_new, tangent, y_pred, at)) {
+    if (!branch.correct(y_new, tangent, y_pred, at).converged()) {
       branch.set_cable_state(before);
       ds *= 0.5;
       continue;

@@ -181,15 +181,16 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
 template <class Solver, class Options>
 class TimeDomainArmSolver final : public ArmSolver {
  public:
-  TimeDomainArmSolver(const Arm& arm, const Options& options) : solver_(arm, options) {}
+  TimeDomainArmSolver(const Arm& arm, const Options& options) : solver_(arm, options), stepper_(solver_.stepper()) {}
   ArmSolution solve(const Excitation& excitation, Continuation& path) override {
-    ArmSolution solution = solver_.solve(excitation, nullptr);
+    ArmSolution solution = solver_.solve(excitation, nullptr, stepper_);
     if (solution.summary.converged()) advance(path, solution, excitation);
     return solution;
   }
 
  private:
-  Solver solver_;
+  const Solver solver_;      // the model
+  NewmarkStepper stepper_;   // this task's run state and workspace, reused from point to point
 };
 
 }  // namespace

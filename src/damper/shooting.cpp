@@ -26,29 +26,30 @@ void ShootingOptions::validate() const {
 }
 
 Shooting::Shooting(Arm arm, ShootingOptions options)
-    : arm_(std::move(arm)), options_(validated(std::move(options))), stepper_(arm_, options_) {}
+    : arm_(std::move(arm)), options_(validated(std::move(options))) {}
 
-bool Shooting::shoot(const Eigen::Vector4d& z0, int pre_periods, Shot& shot, SolverSummary& failure) {
-  shot.ok = false;
-  auto failed = [&](std::string_view stage) {
-    failure = stepper_.failure();
+void Shooting::shoot(NewmarkStepper& stepper, const Eigen::Vector4d& z0, int pre_periods, Shot& shot) const {
+  auto failed = [&shot](SolverSummary failure, std::string_view stage) {
     failure.where = fmt::format("{} ({})", failure.where, stage);
-    return false;
+    shot.summary = std::move(failure);
   };
-  stepper_.reset_cable();
-  if (!stepper_.place(z0)) return failed("placing the arm at z0");
+  stepper.reset_cable();
+  if (SolverSummary placed = stepper.place(z0); !placed.converged()) return failed(std::move(placed), "placing the arm at z0");
   ArmPeriod pre;
   for (int k = 1; k <= pre_periods; ++k) {
-    if (!stepper_.advance_period(k == pre_periods ? &pre : nullptr)) {
-      return failed(fmt::format("pre-period {} of {}", k, pre_periods));
+    if (SolverSummary period = stepper.advance_period(k == pre_periods ? &pre : nullptr); !period.converged()) {
+      return failed(std::move(period), fmt::format("pre-period {} of {}", k, pre_periods));
     }
   }
   shot.pre_loads = std::move(pre.loads);
-  if (!stepper_.place(z0)) return failed("after the pre-periods");  // the mechanical state back to z0, the memory kept
-  if (!stepper_.advance_period(&shot.period)) return failed("final period");
-  shot.end = stepper_.state();
-  shot.ok = true;
-  return true;
+  // The mechanical state back to z0, the memory kept.
+  if (SolverSummary placed = stepper.place(z0); !placed.converged()) return failed(std::move(placed), "after the pre-periods");
+  if (SolverSummary period = stepper.advance_period(&shot.period); !period.converged()) {
+    return failed(std::move(period), "final period");
+  }
+  shot.end = stepper.state();
+  shot.summary = SolverSummary{};
+  shot.summary.termination = Termination::converged;
 }
 
 namespace {
@@ -60,9 +61,10 @@ namespace {
 /// by differences when a Broyden step fails.
 class ShootingNewton {
  public:
-  ShootingNewton(Shooting& shooting, const ShootingOptions& options, const Excitation& excitation, double length,
-                 SolverSummary& summary)
+  ShootingNewton(const Shooting& shooting, NewmarkStepper& stepper, const ShootingOptions& options,
+                 const Excitation& excitation, double length, SolverSummary& summary)
       : shooting_(shooting),
+        stepper_(stepper),
         options_(options),
         w_(excitation.angular_frequency()),
         l_(length),
@@ -84,7 +86,8 @@ class ShootingNewton {
   /// One Newton step with a line search (a Broyden Jacobian gets the full step only).
   Outcome step(Eigen::Vector4d& z);
 
-  Shooting& shooting_;
+  const Shooting& shooting_;
+  NewmarkStepper& stepper_;
   const ShootingOptions& options_;
   const double w_, l_;
   SolverSummary& summary_;
@@ -102,10 +105,10 @@ bool ShootingNewton::fail(Termination termination, std::string where) {
 
 bool ShootingNewton::fire(const Eigen::Vector4d& z, Shooting::Shot& into) {
   summary_.periods += pre_periods_ + 1;
-  SolverSummary failure;
-  if (shooting_.shoot(z, pre_periods_, into, failure)) return true;
-  summary_.termination = failure.termination;
-  summary_.where = brief_report(failure);
+  shooting_.shoot(stepper_, z, pre_periods_, into);
+  if (into.summary.converged()) return true;
+  summary_.termination = into.summary.termination;
+  summary_.where = brief_report(into.summary);
   return false;
 }
 
@@ -216,16 +219,22 @@ bool ShootingNewton::run(Eigen::Vector4d& z) {
 
 }  // namespace
 
-ArmSolution Shooting::solve(const Excitation& excitation, const Eigen::VectorXd* initial_state) {
+ArmSolution Shooting::solve(const Excitation& excitation, const Eigen::VectorXd* initial_state) const {
+  NewmarkStepper run = stepper();
+  return solve(excitation, initial_state, run);
+}
+
+ArmSolution Shooting::solve(const Excitation& excitation, const Eigen::VectorXd* initial_state,
+                            NewmarkStepper& stepper) const {
   require_time_domain_start(excitation, initial_state);
   const auto start_time = std::chrono::steady_clock::now();
-  stepper_.set_excitation(excitation);
+  stepper.set_excitation(excitation);
   ArmSolution solution;
   Eigen::Vector4d z =
       initial_state ? Eigen::Vector4d(*initial_state) : linear_discrete_start(arm_, excitation, options_.steps_per_period);
-  ShootingNewton newton(*this, options_, excitation, arm_.cable().length(), solution.summary);
+  ShootingNewton newton(*this, stepper, options_, excitation, arm_.cable().length(), solution.summary);
   newton.run(z);
-  if (newton.shot().ok) {
+  if (newton.shot().summary.converged()) {
     solution.period = newton.shot().period;
     solution.summary.energy_error = energy_error(solution.period, excitation);
   }

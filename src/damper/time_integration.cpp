@@ -51,9 +51,9 @@ NewmarkStepper::NewmarkStepper(const Arm& arm, const TimeDomainOptions& options)
       steps_(options.steps_per_period),
       max_newton_(options.max_newton),
       newton_tolerance_(options.newton_tolerance),
-      cantilever_(arm.cable(), options.cantilever),
       length_(arm.cable().length()),
-      mass_inverse_(arm.mass_matrix().inverse()) {
+      mass_inverse_(arm.mass_matrix().inverse()),
+      cantilever_(arm.cable(), options.cantilever) {
   assert(steps_ >= 8 && max_newton_ >= 1 && newton_tolerance_ > 0.0);
 }
 
@@ -76,32 +76,42 @@ Eigen::Vector4d NewmarkStepper::state() const {
   return z;
 }
 
-bool NewmarkStepper::fail(Termination termination, std::string where) {
-  failure_.termination = termination;
-  failure_.where = std::move(where);
-  return false;
+namespace {
+
+SolverSummary stepper_failure(Termination termination, std::string where) {
+  SolverSummary failure;
+  failure.termination = termination;
+  failure.where = std::move(where);
+  return failure;
 }
 
-bool NewmarkStepper::place(const Eigen::Vector4d& z) {
+SolverSummary stepper_success() {
+  SolverSummary success;
+  success.termination = Termination::converged;
+  return success;
+}
+
+}  // namespace
+
+SolverSummary NewmarkStepper::place(const Eigen::Vector4d& z) {
   periods_since_place_ = 0;
-  failure_ = SolverSummary{};
   const cable::StateDetermination solve = cantilever_.set_trial_tip(z(0), z(1));
   if (!solve.converged()) {
     cantilever_.revert_to_last_commit();
-    return fail(Termination::inner_failure,
-                fmt::format("cable state determination moving the tip to the initial state (x, phi) = ({:.6g} m, "
-                            "{:.6g} rad): {}",
-                            z(0), z(1), brief_report(solve)));
+    return stepper_failure(Termination::inner_failure,
+                           fmt::format("cable state determination moving the tip to the initial state (x, phi) = "
+                                       "({:.6g} m, {:.6g} rad): {}",
+                                       z(0), z(1), brief_report(solve)));
   }
   cantilever_.commit();
   const cable::CableState& state = cantilever_.committed();
   u_ = z.head<2>();
   v_ = z.tail<2>();
   a_ = mass_inverse_ * (forcing_.front() - Eigen::Vector2d(state.tip_force, state.tip_moment(length_)));
-  return true;
+  return stepper_success();
 }
 
-bool NewmarkStepper::step(int j) {
+bool NewmarkStepper::step(int j, SolverSummary& failure) {
   const Eigen::Vector2d& p = forcing_[static_cast<std::size_t>((j + 1) % steps_)];
   const double q = 0.25 * h_ * h_;  // u_{n+1} = base + q a_{n+1}
   const Eigen::Vector2d base = u_ + h_ * v_ + q * a_;
@@ -116,8 +126,9 @@ bool NewmarkStepper::step(int j) {
     const cable::StateDetermination solve = cantilever_.set_trial_tip(u(0), u(1));
     if (!solve.converged()) {
       cantilever_.revert_to_last_commit();
-      return fail(Termination::inner_failure,
-                  fmt::format("cable state determination {}: {}", where(), brief_report(solve)));
+      failure = stepper_failure(Termination::inner_failure,
+                                fmt::format("cable state determination {}: {}", where(), brief_report(solve)));
+      return false;
     }
     const cable::CableState& trial = cantilever_.trial();
     const Eigen::Vector2d f(trial.tip_force, trial.tip_moment(length_));
@@ -125,16 +136,14 @@ bool NewmarkStepper::step(int j) {
     const Eigen::Vector2d residual = inertia + f - p;
     const double scale = std::max({scaled_max(inertia, length_), scaled_max(f, length_), scaled_max(p, length_)});
     const double norm = scaled_max(residual, length_);
-    if (norm <= newton_tolerance_ * scale) {
-      max_iterations_used_ = std::max(max_iterations_used_, iteration);
-      break;
-    }
+    if (norm <= newton_tolerance_ * scale) break;
     if (iteration == max_newton_ || !std::isfinite(norm)) {
       cantilever_.revert_to_last_commit();
-      failure_.newton_iterations = iteration;
-      failure_.residual = scale > 0.0 ? norm / scale : norm;
-      return fail(std::isfinite(norm) ? Termination::max_iterations : Termination::non_finite,
-                  fmt::format("{} (relative to the largest term)", where()));
+      failure = stepper_failure(std::isfinite(norm) ? Termination::max_iterations : Termination::non_finite,
+                                fmt::format("{} (relative to the largest term)", where()));
+      failure.newton_iterations = iteration;
+      failure.residual = scale > 0.0 ? norm / scale : norm;
+      return false;
     }
     // d residual / d a = M + (h^2/4) K_t, i.e. (h^2/4) (K_t + (4/h^2) M).
     const Eigen::Matrix2d tangent = mass_ + q * trial.tip_stiffness(length_);
@@ -147,7 +156,7 @@ bool NewmarkStepper::step(int j) {
   return true;
 }
 
-bool NewmarkStepper::advance_period(ArmPeriod* record) {
+SolverSummary NewmarkStepper::advance_period(ArmPeriod* record) {
   assert(!forcing_.empty() && "set_excitation() must be called before stepping");
   const double dissipated_before = cantilever_.committed().dissipated;
   if (record) record->resize(steps_);
@@ -156,11 +165,12 @@ bool NewmarkStepper::advance_period(ArmPeriod* record) {
       record->kinematics.col(j) = u_;
       record->record_loads(j, cantilever_.committed(), cantilever_.cable());
     }
-    if (!step(j)) return false;
+    SolverSummary failure;
+    if (!step(j, failure)) return failure;
   }
   if (record) record->dissipated = cantilever_.committed().dissipated - dissipated_before;
   ++periods_since_place_;
-  return true;
+  return stepper_success();
 }
 
 // ---------------------------------------------------------------------------
@@ -209,9 +219,15 @@ void TimeIntegrationOptions::validate() const {
 }
 
 TimeIntegration::TimeIntegration(Arm arm, TimeIntegrationOptions options)
-    : arm_(std::move(arm)), options_(validated(std::move(options))), stepper_(arm_, options_) {}
+    : arm_(std::move(arm)), options_(validated(std::move(options))) {}
 
-ArmSolution TimeIntegration::solve(const Excitation& excitation, const Eigen::VectorXd* initial_state) {
+ArmSolution TimeIntegration::solve(const Excitation& excitation, const Eigen::VectorXd* initial_state) const {
+  NewmarkStepper run = stepper();
+  return solve(excitation, initial_state, run);
+}
+
+ArmSolution TimeIntegration::solve(const Excitation& excitation, const Eigen::VectorXd* initial_state,
+                                   NewmarkStepper& stepper) const {
   require_time_domain_start(excitation, initial_state);
   const auto start_time = std::chrono::steady_clock::now();
   const double w = excitation.angular_frequency();
@@ -222,25 +238,25 @@ ArmSolution TimeIntegration::solve(const Excitation& excitation, const Eigen::Ve
   const Eigen::Vector4d z0 =
       initial_state ? Eigen::Vector4d(*initial_state) : linear_discrete_start(arm_, excitation, options_.steps_per_period);
   solution.unknowns = z0;
-  stepper_.set_excitation(excitation);
-  stepper_.reset_cable();
+  stepper.set_excitation(excitation);
+  stepper.reset_cable();
   ArmPeriod current, previous;
   Eigen::Vector4d period_start = z0;
   bool have_period = false, step_failed = false;
-  if (!stepper_.place(z0)) {
-    summary.termination = stepper_.failure().termination;
-    summary.where = "at the start: " + brief_report(stepper_.failure());
+  if (const SolverSummary placed = stepper.place(z0); !placed.converged()) {
+    summary.termination = placed.termination;
+    summary.where = "at the start: " + brief_report(placed);
   } else {
     for (int k = 1; k <= options_.max_periods; ++k) {
-      if (!stepper_.advance_period(&current)) {
-        summary.termination = stepper_.failure().termination;
-        summary.where = fmt::format("{} (after {} complete periods)", brief_report(stepper_.failure()), k - 1);
+      if (const SolverSummary period = stepper.advance_period(&current); !period.converged()) {
+        summary.termination = period.termination;
+        summary.where = fmt::format("{} (after {} complete periods)", brief_report(period), k - 1);
         step_failed = true;
         break;
       }
       have_period = true;
       summary.periods = k;
-      const Eigen::Vector4d period_end = stepper_.state();
+      const Eigen::Vector4d period_end = stepper.state();
       const double state_change = state_change_measure(period_end - period_start, current, w, l);
       double loads_change = std::numeric_limits<double>::infinity();
       if (k >= 2) loads_change = loads_change_measure(current.loads, previous.loads, l);

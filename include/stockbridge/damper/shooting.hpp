@@ -90,22 +90,27 @@ class Shooting {
   /// `initial_state`: z0 to start Newton from; default the discrete all-stick
   /// linear steady state (linear_discrete_start). Throws InvalidParameter for a bad
   /// excitation or an initial state of the wrong size.
-  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd* initial_state = nullptr);
+  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd* initial_state = nullptr) const;
+  /// The same on `stepper` (made by stepper(), reused from solve to solve).
+  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd* initial_state, NewmarkStepper& stepper) const;
+  /// A run's state and workspace for this model.
+  NewmarkStepper stepper() const { return NewmarkStepper(arm_, options_); }
 
   /// A shot: steps 1-4 above from z0 with P pre-periods.
   struct Shot {
-    bool ok = false;
+    /// Converged when every step succeeded; else the failed step's report, with
+    /// the stage of the shot in `where`.
+    SolverSummary summary;
     Eigen::Vector4d end = Eigen::Vector4d::Zero();  // z(T)
     ArmPeriod period;                               // the final period
     Eigen::Matrix2Xd pre_loads;                     // loads of the last pre-period
   };
-  /// Fires a shot; false (with the stepper's failure in `failure`) if a step failed.
-  bool shoot(const Eigen::Vector4d& z0, int pre_periods, Shot& shot, SolverSummary& failure);
+  /// Fires a shot on `stepper` (its excitation set) into `shot`.
+  void shoot(NewmarkStepper& stepper, const Eigen::Vector4d& z0, int pre_periods, Shot& shot) const;
 
  private:
   Arm arm_;
   ShootingOptions options_;
-  NewmarkStepper stepper_;
 };
 
 }  // namespace stockbridge::damper

@@ -67,8 +67,11 @@ struct TimeDomainOptions {
 Eigen::Vector4d linear_discrete_start(const Arm& arm, const Excitation& excitation, int steps_per_period);
 
 /// Newmark average-acceleration stepping of one arm under harmonic clamp motion,
-/// a whole period at a time (phase 0 to 2 pi), with the exact cable law.
-/// Owns the cable (cable::Cantilever) and its hysteretic state.
+/// a whole period at a time (phase 0 to 2 pi), with the exact cable law: one run's
+/// state (the cable's hysteretic state in its cable::Cantilever, the mechanical state
+/// u, u', u'') and workspace (the forcing samples). The solvers (TimeIntegration,
+/// Shooting) are const models; each solve runs on a stepper passed in (one per
+/// thread, reused from point to point) or made for it.
 class NewmarkStepper {
  public:
   NewmarkStepper(const Arm& arm, const TimeDomainOptions& options);
@@ -79,15 +82,17 @@ class NewmarkStepper {
   void reset_cable();
   /// Puts the arm at phase W t = 0 in the mechanical state z = (x, phi, x', phi'):
   /// the cable moves from its committed state to (x, phi) in one monotone step and
-  /// is committed; a = M^-1 (L x_c''(0) - f). Returns false if the cable's state
-  /// determination failed (see failure()).
-  bool place(const Eigen::Vector4d& z);
+  /// is committed; a = M^-1 (L x_c''(0) - f). Converged, or inner_failure where the
+  /// cable's state determination failed (`where` says how).
+  SolverSummary place(const Eigen::Vector4d& z);
   /// Integrates one period (N steps) from phase 0, committing every step. With
   /// `record`, fills it (the shared recorder, ArmPeriod::record_loads) with the state
   /// at t_j = j T / N, j = 0..N-1 (before step j) and the dissipation over the
-  /// period. Returns false if a step failed; then the state is that of the last
-  /// committed step and failure() says where and why.
-  bool advance_period(ArmPeriod* record = nullptr);
+  /// period. Converged, or how a step failed: max_iterations or non_finite for the
+  /// step's Newton iteration (with its iterations and residual), inner_failure for
+  /// the cable's state determination; `where` names the time and step. After a
+  /// failure the state is that of the last committed step.
+  SolverSummary advance_period(ArmPeriod* record = nullptr);
 
   /// (x, phi, x', phi') now.
   Eigen::Vector4d state() const;
@@ -96,31 +101,25 @@ class NewmarkStepper {
   int steps_per_period() const { return steps_; }
   /// Time since the last place(), s.
   double time() const { return static_cast<double>(periods_since_place_) * period_; }
-  /// The largest number of Newton iterations of any step so far.
-  int max_newton_iterations() const { return max_iterations_used_; }
-  /// How the last failed place() or step ended: max_iterations or non_finite for
-  /// the step's Newton iteration, inner_failure for the cable's state
-  /// determination; `where` names the time and step.
-  const SolverSummary& failure() const { return failure_; }
 
  private:
-  bool step(int j);  // from t_j to t_{j+1} of the current period
-  bool fail(Termination termination, std::string where);
+  /// From t_j to t_{j+1} of the current period; false with `failure` filled if it failed.
+  bool step(int j, SolverSummary& failure);
 
+  // The model: fixed for the stepper's life.
   Eigen::Matrix2d mass_;
   Eigen::Vector2d load_;
   int steps_;
   int max_newton_;
   double newton_tolerance_;
-  cable::Cantilever cantilever_;
   double length_;
   Eigen::Matrix2d mass_inverse_;
+  // The run: the excitation's samples and the state.
+  cable::Cantilever cantilever_;
   double period_ = 0.0, h_ = 0.0;
   std::vector<Eigen::Vector2d> forcing_;  // L x_c''(t_j), j = 0..N-1
   Eigen::Vector2d u_ = Eigen::Vector2d::Zero(), v_ = Eigen::Vector2d::Zero(), a_ = Eigen::Vector2d::Zero();
   long long periods_since_place_ = 0;
-  int max_iterations_used_ = 0;
-  SolverSummary failure_;
 };
 
 struct TimeIntegrationOptions : TimeDomainOptions {
@@ -151,12 +150,15 @@ class TimeIntegration {
   /// `initial_state`: (x, phi, x', phi') at t = 0 (the cable starts virgin and moves
   /// to (x, phi) in one step); default the discrete all-stick steady state.
   /// Throws InvalidParameter for a bad excitation or an initial state of the wrong size.
-  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd* initial_state = nullptr);
+  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd* initial_state = nullptr) const;
+  /// The same on `stepper` (made by stepper(), reused from solve to solve).
+  ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd* initial_state, NewmarkStepper& stepper) const;
+  /// A run's state and workspace for this model.
+  NewmarkStepper stepper() const { return NewmarkStepper(arm_, options_); }
 
  private:
   Arm arm_;
   TimeIntegrationOptions options_;
-  NewmarkStepper stepper_;
 };
 
 /// Checks a time-domain solve's arguments: a valid excitation, and an initial state

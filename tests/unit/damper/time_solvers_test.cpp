@@ -208,6 +208,52 @@ TEST(Shooting, AgreesWithTimeIntegrationWhenSlipping) {
   }
 }
 
+// Model apart from state: a solve depends on its arguments only. The same point
+// solved on a stepper that ran other points before, and on a fresh one, agrees to
+// the last bit, for both methods; a stepper failure is reported by its summary.
+TEST(TimeSolvers, ASolveOnAReusedStepperEqualsOneOnAFreshStepper) {
+  const Arm arm(damper_arm());
+  const TimeIntegration time_integration(arm, {});
+  ShootingOptions shooting_options;
+  shooting_options.steps_per_period = 64;
+  const Shooting shooting(arm, shooting_options);
+  const Excitation target = Excitation::from_velocity(15.0, 0.2);
+  NewmarkStepper reused_ti = time_integration.stepper();
+  NewmarkStepper reused_sh = shooting.stepper();
+  for (const double frequency : {25.0, 8.0}) {  // other points first: their cable and mechanical state left behind
+    (void)time_integration.solve(Excitation::from_velocity(frequency, 0.2), nullptr, reused_ti);
+    (void)shooting.solve(Excitation::from_velocity(frequency, 0.2), nullptr, reused_sh);
+  }
+  const ArmSolution ti_reused = time_integration.solve(target, nullptr, reused_ti);
+  const ArmSolution ti_fresh = time_integration.solve(target);
+  const ArmSolution sh_reused = shooting.solve(target, nullptr, reused_sh);
+  const ArmSolution sh_fresh = shooting.solve(target);
+  ASSERT_TRUE(ti_fresh.summary.converged()) << brief_report(ti_fresh.summary);
+  ASSERT_TRUE(sh_fresh.summary.converged()) << brief_report(sh_fresh.summary);
+  EXPECT_EQ(ti_reused.period.loads, ti_fresh.period.loads);
+  EXPECT_EQ(ti_reused.summary.periods, ti_fresh.summary.periods);
+  EXPECT_EQ(sh_reused.period.loads, sh_fresh.period.loads);
+  EXPECT_EQ(sh_reused.unknowns, sh_fresh.unknowns);
+  EXPECT_EQ(sh_reused.summary.newton_iterations, sh_fresh.summary.newton_iterations);
+}
+
+TEST(TimeSolvers, AStepperReportsAFailedStepByItsSummary) {
+  const Arm arm(damper_arm());
+  TimeIntegrationOptions options;
+  options.max_newton = 1;  // too few for a slipping step
+  const TimeIntegration time_integration(arm, options);
+  NewmarkStepper stepper = time_integration.stepper();
+  const Excitation excitation = Excitation::from_velocity(15.0, 0.2);
+  stepper.set_excitation(excitation);
+  const SolverSummary placed = stepper.place(linear_discrete_start(arm, excitation, options.steps_per_period));
+  ASSERT_TRUE(placed.converged()) << brief_report(placed);
+  SolverSummary period;
+  for (int k = 0; k < 20 && period.termination != Termination::max_iterations; ++k) period = stepper.advance_period();
+  EXPECT_EQ(period.termination, Termination::max_iterations) << brief_report(period);
+  EXPECT_EQ(period.newton_iterations, 1);
+  EXPECT_NE(period.where.find("in the time step to t ="), std::string::npos) << period.where;
+}
+
 // (d) Energy: the input power from the first harmonic equals the sliders'
 // dissipation per period up to the time-discretisation error, which falls with N.
 TEST(TimeIntegration, EnergyBalanceImprovesWithSteps) {
