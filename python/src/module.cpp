@@ -233,7 +233,6 @@ py::dict response(const damper::Damper& d, double frequency, std::optional<doubl
 
 py::dict cycle(const cable::Cable& cable, const std::string& experiment, double amplitude, int cycles, int points) {
   const requests::CycleRequest request{experiment, amplitude, cycles, points};
-  (void)requests::experiment_drive(request);
   std::optional<requests::CycleResult> result;
   {
     py::gil_scoped_release release;
@@ -306,29 +305,6 @@ py::dict identify_global(const std::string& experiment, double length, const std
   return out;
 }
 
-/// A measured impedance from arrays (as the CSV reader builds it from a file):
-/// frequencies, one amplitude per point (velocity or displacement) and complex Z.
-identification::ImpedanceMeasurement measurement_from_arrays(const std::vector<double>& frequency,
-                                                             const std::vector<double>& amplitude, bool velocity,
-                                                             const std::vector<std::complex<double>>& z) {
-  if (frequency.size() != amplitude.size() || frequency.size() != z.size()) {
-    throw InvalidParameter(fmt::format("frequency, {} and z: {}, {} and {} values: expected as many of each",
-                                       velocity ? "velocity" : "displacement", frequency.size(), amplitude.size(),
-                                       z.size()));
-  }
-  identification::ImpedanceMeasurement m;
-  m.held = velocity ? damper::HeldAmplitude::velocity : damper::HeldAmplitude::displacement;
-  for (std::size_t i = 0; i < frequency.size(); ++i) {
-    require_positive(fmt::format("frequency[{}]", i), frequency[i], "Hz");
-    require_positive(fmt::format("{}[{}]", velocity ? "velocity" : "displacement", i), amplitude[i], velocity ? "m/s" : "m");
-    const damper::Excitation e =
-        velocity ? damper::Excitation::from_velocity(frequency[i], amplitude[i]) : damper::Excitation{frequency[i], amplitude[i]};
-    m.points.push_back({e, z[i]});
-  }
-  m.validate();
-  return m;
-}
-
 /// The identification from a measured impedance (stockbridge.identify_impedance wraps
 /// it): the --fitted CSV's columns as arrays, the --json summary as JSON text, the
 /// cable files' texts and the fitted damper.
@@ -347,7 +323,7 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
   }
   const identification::ImpedanceMeasurement m =
       input ? io::read_measured_impedance(*input)
-            : measurement_from_arrays(*frequency, velocity ? *velocity : *displacement, velocity.has_value(), *z);
+            : requests::measurement_from_arrays(*frequency, velocity ? *velocity : *displacement, velocity.has_value(), *z);
   const identification::ImpedanceIdentificationOptions options =
       requests::fit_options({elements, fit_clamp_mass, threads});
   identification::ImpedanceIdentification fit;

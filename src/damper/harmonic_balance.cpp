@@ -441,7 +441,7 @@ ArmSolution HarmonicBalance::solve(const Excitation& excitation, const Eigen::Ve
                                    HarmonicBalanceMemory& memory, HarmonicBalanceWorkspace& workspace) const {
   excitation.validate();
   if (initial.size() != unknown_count()) {
-    throw InvalidParameter(fmt::format("initial guess has {} values: expected {}", initial.size(), unknown_count()));
+    throw InvalidParameter("initial_guess", fmt::format(" has {} values: expected {}", initial.size(), unknown_count()));
   }
   const auto started = std::chrono::steady_clock::now();
   ArmSolution solution;

@@ -14,7 +14,7 @@
 namespace stockbridge::damper {
 
 void SweepSpec::validate() const {
-  if (frequencies.empty()) throw InvalidParameter("frequencies: expected at least one frequency");
+  if (frequencies.empty()) throw InvalidParameter("frequencies", ": expected at least one frequency");
   for (std::size_t i = 0; i < frequencies.size(); ++i) {
     require_positive(fmt::format("frequency[{}]", i), frequencies[i], "Hz");
     if (i > 0 && !(frequencies[i] > frequencies[i - 1])) {
@@ -22,7 +22,7 @@ void SweepSpec::validate() const {
                     fmt::format("frequencies increasing strictly (previous {} Hz)", frequencies[i - 1]));
     }
   }
-  if (amplitudes.empty()) throw InvalidParameter("amplitudes: expected at least one amplitude");
+  if (amplitudes.empty()) throw InvalidParameter("amplitudes", ": expected at least one amplitude");
   for (std::size_t i = 0; i < amplitudes.size(); ++i) {
     require_positive(constant_displacement ? "displacement" : "velocity", amplitudes[i],
                      constant_displacement ? "m" : "m/s");

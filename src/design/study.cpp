@@ -65,8 +65,8 @@ DesignStudy::DesignStudy(damper::DamperDescription base, std::vector<DesignSpan>
       constraints_(constraints),
       points_(points) {
   within_field("damper", [&] { damper::Damper{base_}; });
-  if (spans_.empty()) throw InvalidParameter("spans: expected at least one span file");
-  if (variables_.empty()) throw InvalidParameter("variable: expected at least one [[variable]]");
+  if (spans_.empty()) throw InvalidParameter("spans", ": expected at least one span file");
+  if (variables_.empty()) throw InvalidParameter("variable", ": expected at least one [[variable]]");
   require_in_range("points", points_, 2, 100000);
   for (std::size_t i = 0; i < variables_.size(); ++i) {
     validate_variable(variables_[i], i, base_, spans_);

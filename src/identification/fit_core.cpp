@@ -35,12 +35,12 @@ double relative_l1_misfit(const std::vector<double>& path, const std::vector<dou
 std::vector<std::size_t> checked_reversals(const std::vector<double>& path, const std::vector<double>& measured,
                                            const RecordNames& names) {
   if (path.size() != measured.size()) {
-    throw InvalidParameter(fmt::format("record: {} {} but {} {}", path.size(), names.path_values, measured.size(),
+    throw InvalidParameter("record", fmt::format(": {} {} but {} {}", path.size(), names.path_values, measured.size(),
                                        names.measured_values));
   }
   std::vector<std::size_t> turns = reversals(path);
   if (turns.size() < 3) {
-    throw InvalidParameter(fmt::format("record: {} reversals of {}: expected at least one full cycle after the "
+    throw InvalidParameter("record", fmt::format(": {} reversals of {}: expected at least one full cycle after the "
                                        "first extreme (3 reversals)",
                                        turns.size(), names.path));
   }

@@ -79,7 +79,7 @@ GlobalIdentification identify_four_step(const ExperimentMeasurement& m, const Gl
   const double stick = factor * slopes.after;    // step 1: ei + c
   double ei = factor * slopes.before;            // step 2: ei
   if (!(ei > 0.0) || !(stick > ei)) {
-    throw InvalidParameter(fmt::format("record: slopes after and before the reversals give ei + c = {} and ei = {}: "
+    throw InvalidParameter("record", fmt::format(": slopes after and before the reversals give ei + c = {} and ei = {}: "
                                        "expected 0 < ei < ei + c (a loop that slips)",
                                        format_value(stick), format_value(ei)));
   }
@@ -91,7 +91,7 @@ GlobalIdentification identify_four_step(const ExperimentMeasurement& m, const Gl
   });
   const double h = 0.5 * (offsets.upper - offsets.lower);
   if (!(h > 0.0)) {
-    throw InvalidParameter(fmt::format("record: the loop's offset at the extremes gives h = {}: expected > 0",
+    throw InvalidParameter("record", fmt::format(": the loop's offset at the extremes gives h = {}: expected > 0",
                                        format_value(h)));
   }
   GlobalIdentification result;

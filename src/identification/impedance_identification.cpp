@@ -57,9 +57,8 @@ double held_amplitude(const damper::Excitation& e, damper::HeldAmplitude held) {
 /// The constant value of a profile, or InvalidParameter naming it.
 double constant_value(const cable::Profile& profile, const std::string& name) {
   if (!profile.is_constant()) {
-    throw InvalidParameter(fmt::format("{}: a profile along the cable: identify impedance fits constant parameters "
-                                       "(give the starting value as a number)",
-                                       name));
+    throw InvalidParameter(name, ": a profile along the cable: identify impedance fits constant parameters (give the "
+                                 "starting value as a number)");
   }
   return profile.values()[0];
 }
@@ -197,7 +196,7 @@ class FitVariables {
       h_total += e.h;
     }
     if (p.jenkin.empty()) {
-      throw InvalidParameter(fmt::format("{}jenkin: no elements: expected starting values of c and h (N m^2, N m)", key));
+      throw InvalidParameter(key + "jenkin", ": no elements: expected starting values of c and h (N m^2, N m)");
     }
     if (static_cast<int>(p.jenkin.size()) == elements) return p;
     return fit_core::spread_over_elements(ei, c_total, h_total, elements);
@@ -211,9 +210,10 @@ class FitVariables {
     }
     for (std::size_t j = 0; j < c.jenkin.size(); ++j) {
       if (c.jenkin[j].k0 != 0.0) {
-        throw InvalidParameter(fmt::format("{}jenkin[{}].k0 = {}: the modified Masing model with {} elements in the "
-                                           "file but {} to fit: expected as many elements as fitted",
-                                           key, j, format_value(c.jenkin[j].k0), c.jenkin.size(), elements));
+        throw InvalidParameter(fmt::format("{}jenkin[{}].k0", key, j),
+                               fmt::format(" = {}: the modified Masing model with {} elements in the file but {} to "
+                                           "fit: expected as many elements as fitted",
+                                           format_value(c.jenkin[j].k0), c.jenkin.size(), elements));
       }
     }
     return std::vector<double>(static_cast<std::size_t>(elements), 0.0);
@@ -538,7 +538,7 @@ std::vector<std::string> determination_notes(const std::vector<ParameterEstimate
 }  // namespace
 
 void ImpedanceMeasurement::validate() const {
-  if (points.empty()) throw InvalidParameter("measurement: no points");
+  if (points.empty()) throw InvalidParameter("measurement", ": no points");
   for (std::size_t i = 0; i < points.size(); ++i) {
     const MeasuredImpedance& p = points[i];
     const std::string at = fmt::format("point {}: ", i + 1);
@@ -605,7 +605,7 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
   (void)damper::Damper(start);  // validates the start, naming its fields
   const FitVariables variables(start, options.elements, options.fit_clamp_mass);
   if (2 * measurement.points.size() < static_cast<std::size_t>(variables.size())) {
-    throw InvalidParameter(fmt::format("measurement: {} points for {} parameters: expected at least {}",
+    throw InvalidParameter("measurement", fmt::format(": {} points for {} parameters: expected at least {}",
                                        measurement.points.size(), variables.size(), (variables.size() + 1) / 2));
   }
   ImpedanceIdentificationOptions converged = options;

@@ -15,7 +15,7 @@ namespace stockbridge::identification {
 Optimizer parse_optimizer(std::string_view name) {
   if (name == "subplex") return Optimizer::subplex;
   if (name == "nelder-mead") return Optimizer::nelder_mead;
-  throw InvalidParameter(fmt::format("optimizer = '{}': expected subplex or nelder-mead", name));
+  throw InvalidParameter("optimizer", fmt::format(" = '{}': expected subplex or nelder-mead", name));
 }
 
 void LocalIdentificationOptions::validate() const {

@@ -51,6 +51,27 @@ identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitReq
   return options;
 }
 
+identification::ImpedanceMeasurement measurement_from_arrays(const std::vector<double>& frequency,
+                                                             const std::vector<double>& amplitude, bool velocity,
+                                                             const std::vector<std::complex<double>>& z) {
+  if (frequency.size() != amplitude.size() || frequency.size() != z.size()) {
+    throw InvalidParameter(fmt::format("frequency, {} and z: {}, {} and {} values: expected as many of each",
+                                       velocity ? "velocity" : "displacement", frequency.size(), amplitude.size(),
+                                       z.size()));
+  }
+  identification::ImpedanceMeasurement m;
+  m.held = velocity ? damper::HeldAmplitude::velocity : damper::HeldAmplitude::displacement;
+  for (std::size_t i = 0; i < frequency.size(); ++i) {
+    require_positive(fmt::format("frequency[{}]", i), frequency[i], "Hz");
+    require_positive(fmt::format("{}[{}]", velocity ? "velocity" : "displacement", i), amplitude[i], velocity ? "m/s" : "m");
+    const damper::Excitation e =
+        velocity ? damper::Excitation::from_velocity(frequency[i], amplitude[i]) : damper::Excitation{frequency[i], amplitude[i]};
+    m.points.push_back({e, z[i]});
+  }
+  m.validate();
+  return m;
+}
+
 std::vector<FittedPoint> fitted_points(const identification::ImpedanceMeasurement& measurement,
                                        const identification::ImpedanceIdentification& fit) {
   std::vector<FittedPoint> rows;

@@ -13,7 +13,7 @@ PositionSearch optimise_position(const Span& span, const SpanTables& tables, con
   require_positive("position_min", position_min, "m");
   if (!(position_max > position_min)) throw_invalid("position_max", position_max, "a value > position_min (m)");
   require_in_range("scan_points", scan_points, 3, 10000);
-  if (span.dampers().empty()) throw InvalidParameter("damper: a position search needs at least one [[damper]]");
+  if (span.dampers().empty()) throw InvalidParameter("damper", ": a position search needs at least one [[damper]]");
   PositionSearch best;
   BalanceOptions scan = options;
   scan.polish = false;

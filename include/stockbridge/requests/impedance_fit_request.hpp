@@ -4,6 +4,7 @@
 // front ends name them, the summary (the --json keys), the fitted model at the
 // measured points (the --fitted CSV's columns) and the identified cables as cable
 // files.
+#include <complex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,6 +25,14 @@ struct ImpedanceFitRequest {
 /// The fit's options; InvalidParameter naming "elements" or "threads" (the
 /// command's --elements and --threads, Python's keywords).
 identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitRequest& request);
+
+/// A measured impedance from arrays (Python's identify_impedance; the CSV reader
+/// builds it from a file): frequencies (Hz), one amplitude per point (a velocity in
+/// m/s where `velocity`, else a displacement in m) and complex Z (N s/m);
+/// InvalidParameter naming the array and index ("frequency[2]") otherwise.
+identification::ImpedanceMeasurement measurement_from_arrays(const std::vector<double>& frequency,
+                                                             const std::vector<double>& amplitude, bool velocity,
+                                                             const std::vector<std::complex<double>>& z);
 
 /// One measured point with the fitted model's at it.
 struct FittedPoint {

@@ -116,7 +116,7 @@ TEST(DesignStudy, IsCheckedWhereTheFileSpellsIt) {
             "constraints.total_mass_max");
   EXPECT_EQ(field_of([] { study_of({{"position", 0.5, 250.0}}); }), "variable[0].max");
   EXPECT_EQ(field_of([] { study_of({{"arm.left.mass", 0.5, 3.0}, {"arm.left.mass", 1.0, 2.0}}); }), "variable[1].name");
-  EXPECT_EQ(field_of([] { study_of({}); }), "");
+  EXPECT_EQ(field_of([] { study_of({}); }), "variable");  // no [[variable]]: the file's key
 }
 
 TEST(SpaceFillingSample, FillsTheBoxStratifiedAndFollowsTheSeed) {
