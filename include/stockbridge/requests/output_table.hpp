@@ -123,6 +123,11 @@ class Table {
     for (const Expanded& c : columns_) {
       const Quantity<Row>& q = quantities_[c.quantity];
       TableValues::Column column{c.name, q.kind, {}, {}, c.family, c.member};
+      if (q.kind == ColumnKind::label) {
+        column.labels.reserve(rows.size());
+      } else {
+        column.numbers.reserve(rows.size());
+      }
       for (const Row* row : rows) {
         if (q.kind == ColumnKind::label) {
           column.labels.push_back(q.label(*row, c.member));

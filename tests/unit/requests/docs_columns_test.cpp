@@ -31,48 +31,48 @@
 namespace stockbridge::requests {
 namespace {
 
-const std::filesystem::path kSourceDir{STOCKBRIDGE_SOURCE_DIR};
+const std::filesystem::path kDocsSourceDir{STOCKBRIDGE_SOURCE_DIR};
 
 template <class Row>
-std::string documented(const Table<Row>& table) {
+std::string documented_table(const Table<Row>& table) {
   return docs_table(table.docs());
 }
 
 /// Every output table by the name its marker gives, as docs_table writes it.
-std::map<std::string, std::string> output_tables() {
-  const damper::Damper damper = io::load_damper_file(kSourceDir / "examples/sauter2003.toml").damper;
-  const io::SpanFile span = io::load_span_file(kSourceDir / "examples/aster570_400m.toml");
-  const io::DesignFile design = io::load_design_file(kSourceDir / "examples/design_aster570.toml");
+std::map<std::string, std::string> documented_output_tables() {
+  const damper::Damper damper = io::load_damper_file(kDocsSourceDir / "examples/sauter2003.toml").damper;
+  const io::SpanFile span = io::load_span_file(kDocsSourceDir / "examples/aster570_400m.toml");
+  const io::DesignFile design = io::load_design_file(kDocsSourceDir / "examples/design_aster570.toml");
   GlobalRequest experiment_b;
   experiment_b.experiment = "b";
   std::vector<QuantityDoc> figures;
   for (const auto& q : design_figures()) figures.push_back({q.name, q.unit, q.meaning});
   return {
-      {"impedance", documented(impedance_table(damper))},
+      {"impedance", documented_table(impedance_table(damper))},
       {"design_figures", docs_table(figures)},
-      {"response", documented(response_table(damper))},
-      {"response_summary", documented(point_summary_table(damper))},
-      {"modes", documented(modes_table())},
-      {"cycle", documented(cycle_table())},
-      {"loop", documented(loop_table())},
-      {"span", documented(span_table(span.span))},
-      {"design", documented(design_table(design.study))},
-      {"identify_local_fitted", documented(local_fitted_table())},
-      {"identify_global_fitted_a", documented(global_fitted_table(GlobalRequest{}))},
-      {"identify_global_fitted_b", documented(global_fitted_table(experiment_b))},
-      {"identify_impedance_fitted", documented(fitted_table())},
+      {"response", documented_table(response_table(damper))},
+      {"response_summary", documented_table(point_summary_table(damper))},
+      {"modes", documented_table(modes_table())},
+      {"cycle", documented_table(cycle_table())},
+      {"loop", documented_table(loop_table())},
+      {"span", documented_table(span_table(span.span))},
+      {"design", documented_table(design_table(design.study))},
+      {"identify_local_fitted", documented_table(local_fitted_table())},
+      {"identify_global_fitted_a", documented_table(global_fitted_table(GlobalRequest{}))},
+      {"identify_global_fitted_b", documented_table(global_fitted_table(experiment_b))},
+      {"identify_impedance_fitted", documented_table(fitted_table())},
   };
 }
 
 std::vector<std::filesystem::path> markdown_pages() {
   std::vector<std::filesystem::path> pages;
-  for (const auto& entry : std::filesystem::directory_iterator(kSourceDir / "docs")) {
+  for (const auto& entry : std::filesystem::directory_iterator(kDocsSourceDir / "docs")) {
     if (entry.path().extension() == ".md") pages.push_back(entry.path());
   }
   return pages;
 }
 
-std::vector<std::string> lines_of(const std::filesystem::path& path) {
+std::vector<std::string> docs_page_lines(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
@@ -88,11 +88,11 @@ std::string marked_table(const std::string& line) {
 }
 
 TEST(DocsColumns, EveryTableInTheDocsIsTheLibrarysDescriptors) {
-  const std::map<std::string, std::string> tables = output_tables();
+  const std::map<std::string, std::string> tables = documented_output_tables();
   const bool update = std::getenv("STOCKBRIDGE_UPDATE_DOCS") != nullptr;
   std::set<std::string> seen;
   for (const std::filesystem::path& page : markdown_pages()) {
-    const std::vector<std::string> lines = lines_of(page);
+    const std::vector<std::string> lines = docs_page_lines(page);
     std::ostringstream rewritten;
     for (std::size_t i = 0; i < lines.size(); ++i) {
       rewritten << lines[i] << '\n';
