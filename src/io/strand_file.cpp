@@ -10,8 +10,6 @@ namespace stockbridge::io {
 
 namespace {
 
-void positive_length(std::string_view name, double value) { require_positive(name, value, "m"); }
-
 /// Rejects unknown keys before any value is read, so that a misspelt key is
 /// reported as such rather than as the missing key it was meant to be.
 void accept_only(const TomlTable& table, std::initializer_list<std::string_view> keys) {
@@ -22,10 +20,10 @@ void accept_only(const TomlTable& table, std::initializer_list<std::string_view>
 strand::StrandLayer read_layer(const TomlTable& table) {
   accept_only(table, {"count", "wire_radius", "pitch_radius", "lay_length"});
   strand::StrandLayer layer;
-  layer.count = static_cast<int>(table.integer("count", 1, 1000));
-  layer.wire_radius = table.number("wire_radius", positive_length);
-  layer.pitch_radius = table.number("pitch_radius", positive_length);
-  layer.lay_length = table.number("lay_length", positive_length);
+  layer.count = static_cast<int>(table.integer("count", 1, 1000));  // strand::validate's range
+  layer.wire_radius = table.number("wire_radius");
+  layer.pitch_radius = table.number("pitch_radius");
+  layer.lay_length = table.number("lay_length");
   return layer;
 }
 
@@ -39,37 +37,15 @@ strand::Strand read_strand_file(const std::filesystem::path& path) {
   accept_only(table, {"youngs_modulus", "core_radius", "layer"});
 
   strand::Strand strand;
-  if (const auto e = table.optional_number(
-          "youngs_modulus", [](std::string_view name, double value) { require_positive(name, value, "Pa"); })) {
-    strand.youngs_modulus = *e;
-  }
-  strand.core_radius = table.number("core_radius", positive_length);
-  double inner_radius = strand.core_radius;
-  for (const TomlTable& layer_table : table.table_array("layer", false)) {
-    const strand::StrandLayer layer = read_layer(layer_table);
-    // The geometry, with the line of the key it names.
-    try {
-      strand::check_layer_position(layer, inner_radius, layer_table.key_path());
-    } catch (const InvalidParameter& e) {
-      throw InputError(layer_table.location("pitch_radius") + e.what());
-    }
-    try {
-      strand::check_lay_angle(layer, layer_table.key_path());
-    } catch (const InvalidParameter& e) {
-      throw InputError(layer_table.location("lay_length") + e.what());
-    }
-    inner_radius = layer.pitch_radius + layer.wire_radius;
-    strand.layers.push_back(layer);
-  }
-
-  // Every field was checked against the same ranges as strand::validate; this
-  // keeps the two in step (a failure here would name the field without a line).
-  try {
-    strand::validate(strand);
-  } catch (const InvalidParameter& e) {
-    throw InputError(path.string() + ": " + e.what());
-  }
-  return strand;
+  strand.youngs_modulus = table.optional_number("youngs_modulus").value_or(strand.youngs_modulus);
+  strand.core_radius = table.number("core_radius");
+  for (const TomlTable& layer_table : table.table_array("layer", false)) strand.layers.push_back(read_layer(layer_table));
+  // The reader checks types and keys; the ranges and the geometry are strand::validate's,
+  // each error at the line of the key it names.
+  return build_from_file(document, TomlSource{path.string(), true}, [&] {
+    within_field("strand", [&] { strand::validate(strand); });
+    return strand;
+  });
 }
 
 }  // namespace stockbridge::io
