@@ -15,7 +15,7 @@ namespace stockbridge::cable {
 Experiment parse_experiment(std::string_view name) {
   if (name == "a") return Experiment::a;
   if (name == "b") return Experiment::b;
-  throw InvalidParameter(fmt::format("experiment = '{}': expected a (tip force) or b (tip rotation)", name));
+  throw InvalidParameter("experiment", fmt::format(" = '{}': expected a (tip force) or b (tip rotation)", name));
 }
 
 void ExperimentDrive::validate() const {
@@ -23,7 +23,7 @@ void ExperimentDrive::validate() const {
   require_in_range("cycles", cycles, 1, 100000);
   require_in_range("points", points, 4, 10000000);
   if (static_cast<long long>(cycles) * points > 10000000LL) {
-    throw InvalidParameter(fmt::format("cycles * points = {}: expected at most 10000000 samples",
+    throw InvalidParameter("points", fmt::format(": cycles * points = {}: expected at most 10000000 samples",
                                        static_cast<long long>(cycles) * points));
   }
 }

@@ -545,8 +545,8 @@ void ImpedanceMeasurement::validate() const {
     require_positive(at + "frequency_hz", p.excitation.frequency_hz, "Hz");
     require_positive(at + "displacement_m", p.excitation.displacement_amplitude, "m");
     if (!std::isfinite(p.impedance.real()) || !std::isfinite(p.impedance.imag()) || p.impedance == 0.0) {
-      throw InvalidParameter(fmt::format("{}Z = {} + {} i N s/m: expected finite and nonzero", at,
-                                         format_value(p.impedance.real()), format_value(p.impedance.imag())));
+      throw InvalidParameter(at + "Z", fmt::format(" = {} + {} i N s/m: expected finite and nonzero",
+                                                   format_value(p.impedance.real()), format_value(p.impedance.imag())));
     }
   }
 }
