@@ -1,7 +1,6 @@
 // stockbridge cycle: experiment (a) or (b) on a cable described by a TOML file.
 
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <string>
 
@@ -10,11 +9,10 @@
 #include "commands.hpp"
 #include "input_files.hpp"
 #include "option_parsing.hpp"
-#include "stockbridge/requests/cycle_request.hpp"
-#include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/core/error.hpp"
-#include "stockbridge/io/csv_writer.hpp"
+#include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/cycle_request.hpp"
 
 namespace stockbridge::cli {
 

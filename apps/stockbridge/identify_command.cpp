@@ -18,7 +18,6 @@
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
-#include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/json_writer.hpp"
 #include "stockbridge/requests/identify_request.hpp"
 

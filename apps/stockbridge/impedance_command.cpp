@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <functional>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,7 +17,6 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/io/atomic_file.hpp"
-#include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/json_writer.hpp"
 #include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/sweep_request.hpp"

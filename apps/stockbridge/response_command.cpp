@@ -1,7 +1,6 @@
 // stockbridge response: one steady period of a damper at one frequency and amplitude.
 
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,7 +15,6 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/damper/steady_state.hpp"
 #include "stockbridge/io/atomic_file.hpp"
-#include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/json_writer.hpp"
 #include "stockbridge/requests/response_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
