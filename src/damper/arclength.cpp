@@ -16,13 +16,6 @@ namespace stockbridge::damper {
 
 namespace {
 
-SolverSummary branch_outcome(Termination termination, std::string where = {}) {
-  SolverSummary outcome;
-  outcome.termination = termination;
-  outcome.where = std::move(where);
-  return outcome;
-}
-
 /// The branch in scaled unknowns y = (q / scale_q, W / scale_w), so that a unit
 /// step changes the response and the frequency by comparable amounts.
 class Branch {
@@ -46,14 +39,14 @@ class Branch {
   /// turned back to W <= 0; inner_failure where the cable failed.
   SolverSummary evaluate(const Eigen::VectorXd& y, HarmonicBalanceEvaluation& out) {
     const double w = angular_frequency_of(y);
-    if (!(w > 0.0)) return branch_outcome(Termination::no_progress, "the branch turned back to W <= 0");
+    if (!(w > 0.0)) return summary_of(Termination::no_progress, "the branch turned back to W <= 0");
     out = model_.evaluate(excitation_at(w), unknowns_of(y), cable_state_ ? &*cable_state_ : nullptr,
                           model_.options().periods, HarmonicBalance::kJacobian | HarmonicBalance::kFrequency,
                           workspace_);
-    if (!out.ok()) return branch_outcome(Termination::inner_failure, "the cable along the branch: " + brief_report(out.cable));
+    if (!out.ok()) return summary_of(Termination::inner_failure, "the cable along the branch: " + brief_report(out.cable));
     cable_state_ = out.end_state;
     force_jacobian_ = out.force_jacobian;
-    return branch_outcome(Termination::converged);
+    return summary_of(Termination::converged);
   }
 
   /// The unit tangent [J, R_W] t = 0 with t_W = +1 before normalisation, in scaled unknowns.
@@ -83,9 +76,9 @@ class Branch {
       const double constraint = tangent.dot(y - y_pred);
       const double norm = last.residual.lpNorm<Eigen::Infinity>() / force;
       if (norm <= options.tolerance && std::abs(constraint) <= 1e-10) {
-        if (last.cable.periodicity_defect <= options.periodicity_tolerance) return branch_outcome(Termination::converged);
+        if (last.cable.periodicity_defect <= options.periodicity_tolerance) return summary_of(Termination::converged);
         if (settling_periods >= options.max_settling_periods) {
-          return branch_outcome(Termination::not_periodic, "the cable's memory did not settle at the corrected point");
+          return summary_of(Termination::not_periodic, "the cable's memory did not settle at the corrected point");
         }
         settling_periods += options.periods;  // let the cable's memory settle at this point
         continue;
@@ -98,11 +91,11 @@ class Branch {
       g(p_count_) = constraint;
       Eigen::VectorXd step;
       if (numerics::is_singular(numerics::solve_checked(bordered, Eigen::VectorXd(-g), step), step)) {
-        return branch_outcome(Termination::singular_jacobian, "the bordered corrector matrix");
+        return summary_of(Termination::singular_jacobian, "the bordered corrector matrix");
       }
       y += step;
     }
-    return branch_outcome(Termination::max_iterations, "the corrector");
+    return summary_of(Termination::max_iterations, "the corrector");
   }
 
   /// The solver's memory at the current point of the branch.

@@ -48,8 +48,7 @@ void Shooting::shoot(NewmarkStepper& stepper, const Eigen::Vector4d& z0, int pre
     return failed(std::move(period), "final period");
   }
   shot.end = stepper.state();
-  shot.summary = SolverSummary{};
-  shot.summary.termination = Termination::converged;
+  shot.summary = summary_of(Termination::converged);
 }
 
 namespace {

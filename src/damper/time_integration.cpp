@@ -76,29 +76,12 @@ Eigen::Vector4d NewmarkStepper::state() const {
   return z;
 }
 
-namespace {
-
-SolverSummary stepper_failure(Termination termination, std::string where) {
-  SolverSummary failure;
-  failure.termination = termination;
-  failure.where = std::move(where);
-  return failure;
-}
-
-SolverSummary stepper_success() {
-  SolverSummary success;
-  success.termination = Termination::converged;
-  return success;
-}
-
-}  // namespace
-
 SolverSummary NewmarkStepper::place(const Eigen::Vector4d& z) {
   periods_since_place_ = 0;
   const cable::StateDetermination solve = cantilever_.set_trial_tip(z(0), z(1));
   if (!solve.converged()) {
     cantilever_.revert_to_last_commit();
-    return stepper_failure(Termination::inner_failure,
+    return summary_of(Termination::inner_failure,
                            fmt::format("cable state determination moving the tip to the initial state (x, phi) = "
                                        "({:.6g} m, {:.6g} rad): {}",
                                        z(0), z(1), brief_report(solve)));
@@ -108,7 +91,7 @@ SolverSummary NewmarkStepper::place(const Eigen::Vector4d& z) {
   u_ = z.head<2>();
   v_ = z.tail<2>();
   a_ = mass_inverse_ * (forcing_.front() - Eigen::Vector2d(state.tip_force, state.tip_moment(length_)));
-  return stepper_success();
+  return summary_of(Termination::converged);
 }
 
 bool NewmarkStepper::step(int j, SolverSummary& failure) {
@@ -126,7 +109,7 @@ bool NewmarkStepper::step(int j, SolverSummary& failure) {
     const cable::StateDetermination solve = cantilever_.set_trial_tip(u(0), u(1));
     if (!solve.converged()) {
       cantilever_.revert_to_last_commit();
-      failure = stepper_failure(Termination::inner_failure,
+      failure = summary_of(Termination::inner_failure,
                                 fmt::format("cable state determination {}: {}", where(), brief_report(solve)));
       return false;
     }
@@ -139,7 +122,7 @@ bool NewmarkStepper::step(int j, SolverSummary& failure) {
     if (norm <= newton_tolerance_ * scale) break;
     if (iteration == max_newton_ || !std::isfinite(norm)) {
       cantilever_.revert_to_last_commit();
-      failure = stepper_failure(std::isfinite(norm) ? Termination::max_iterations : Termination::non_finite,
+      failure = summary_of(std::isfinite(norm) ? Termination::max_iterations : Termination::non_finite,
                                 fmt::format("{} (relative to the largest term)", where()));
       failure.newton_iterations = iteration;
       failure.residual = scale > 0.0 ? norm / scale : norm;
@@ -170,7 +153,7 @@ SolverSummary NewmarkStepper::advance_period(ArmPeriod* record) {
   }
   if (record) record->dissipated = cantilever_.committed().dissipated - dissipated_before;
   ++periods_since_place_;
-  return stepper_success();
+  return summary_of(Termination::converged);
 }
 
 // ---------------------------------------------------------------------------

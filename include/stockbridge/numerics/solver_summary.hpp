@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace stockbridge {
 
@@ -54,6 +55,15 @@ struct SolverSummary {
 
   bool converged() const { return termination == Termination::converged; }
 };
+
+/// A summary of only its termination and where it ended (a step's outcome, a
+/// failure before any figure was computed).
+inline SolverSummary summary_of(Termination termination, std::string where = {}) {
+  SolverSummary summary;
+  summary.termination = termination;
+  summary.where = std::move(where);
+  return summary;
+}
 
 /// One line: what happened, with the figures that say by how much and where
 /// ("no convergence in 100 Newton iterations (residual 3.2e-05) at ...").
