@@ -21,6 +21,7 @@
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
 #include "stockbridge/requests/span_request.hpp"
+#include "stockbridge/span/tension_figures.hpp"
 
 namespace stockbridge::cli {
 
@@ -91,6 +92,15 @@ void print_span_report(const requests::SpanResult& result) {
   fmt::print("span: {}{} m at {:.6g} N, {} frequencies from {:.4g} to {:.4g} Hz\n",
              s.conductor().name.empty() ? "" : s.conductor().name + ", ", format_value(s.length()), s.tension(),
              f.size(), f.front(), f.back());
+  const span::TensionFigures t = span::tension_figures(s);
+  fmt::print("tension: {:.4g} kN, {:.3g} % RTS, H/w = {:.4g} m; span parameter L D / m = {:.4g} m^3/kg\n",
+             t.tension / 1e3, 100.0 * t.fraction_of_rts, t.catenary_parameter, t.span_parameter);
+  if (const std::optional<span::SafeDesignTension> safe = span::safe_design_tension(s)) {
+    fmt::print("CIGRE TB 273, terrain category {}: H/w {:.4g} m is {} the {:.4g} m an undamped single conductor "
+               "allows{}\n",
+               safe->terrain.category, safe->catenary_parameter, safe->within ? "within" : "above",
+               safe->terrain.catenary_parameter_limit, safe->within ? "" : " (dampers needed)");
+  }
   if (s.dampers().empty()) {
     fmt::print("dampers: none\n");
   } else {
@@ -110,8 +120,16 @@ void print_span_report(const requests::SpanResult& result) {
     if (!s.dampers().empty()) {
       fmt::print("largest stress at a damper clamp: {}\n", span_megapascal(summary.max_damper_clamp_stress));
     }
+    fmt::print("largest Yb ({:.3g} mm from the clamp): {:.3g} mm peak-to-peak, {:.4g} microstrain (undamped {:.3g} "
+               "mm, {:.4g} microstrain)\n",
+               1e3 * s.fatigue().yb_distance, 1e3 * summary.max_bending_amplitude,
+               span::bending_strain_pp_microstrain(s.conductor(), summary.max_stress_poffenberger_swart),
+               1e3 * summary.undamped_max_bending_amplitude,
+               span::bending_strain_pp_microstrain(s.conductor(), summary.undamped_max_stress_poffenberger_swart));
   }
-  fmt::print("endurance limit: {}: {} (undamped: {})\n", span_megapascal(summary.endurance_limit),
+  fmt::print("endurance limit: {} ({:.4g} microstrain peak-to-peak): {} (undamped: {})\n",
+             span_megapascal(summary.endurance_limit),
+             span::bending_strain_pp_microstrain(s.conductor(), summary.endurance_limit),
              span::verdict_name(summary.verdict), span::verdict_name(summary.undamped_verdict));
   if (s.fatigue().life) {
     fmt::print("life: {} (undamped {})\n", span_life(summary.life, summary.life_missing_points),

@@ -10,14 +10,34 @@ const std::vector<TypicalRange>& typical::all() {
   static const std::vector<TypicalRange> ranges{cable_length, ei,       jenkin_c,     jenkin_h,  clamp_mass,
                                                 arm_mass,     arm_inertia, arm_offset, frequency, velocity,
                                                 displacement, tip_deflection_ratio, tip_rotation,
-                                                conductor_diameter, conductor_mass_per_length, span_length};
+                                                conductor_diameter, conductor_mass_per_length, span_length,
+                                                rated_tensile_strength, conductor_ei_min, conductor_ei_max,
+                                                outer_wire_diameter, outer_wire_modulus, span_tension,
+                                                tension_fraction, catenary_parameter, damper_position, strouhal,
+                                                wind_speed, turbulence_intensity, self_damping_l, self_damping_m,
+                                                self_damping_n, fatigue_cycles, endurance_limit, weibull_shape,
+                                                weibull_scale, aeolian_fraction, yb_distance};
   return ranges;
+}
+
+std::optional<double> TypicalRange::slipped(double value) const {
+  if (slip.factor == 0.0 || contains(value)) return std::nullopt;
+  const double si = value * slip.factor;
+  if (!contains(si)) return std::nullopt;
+  return si;
 }
 
 std::string UnusualValue::message() const {
   const std::string unit = range.unit.empty() ? "" : fmt::format(" {}", range.unit);
-  return fmt::format("{} = {}: outside the typical {} to {}{} of the {} (a unit mistake?)", field, format_value(value),
-                     format_value(range.min), format_value(range.max), unit, range.quantity);
+  std::string hint = "a unit mistake?";
+  if (const std::optional<double> si = range.slipped(value)) {
+    const std::string si_text = range.unit.empty() ? fmt::format("{:.6g}", *si) : fmt::format("{:.6g} {}", *si, range.unit);
+    hint = range.slip.unit == "%" ? fmt::format("a percentage? {} % = {}", format_value(value), si_text)
+                                  : fmt::format("in {}? {} {} = {}", range.slip.unit, format_value(value),
+                                                range.slip.unit, si_text);
+  }
+  return fmt::format("{} = {}: outside the typical {:.6g} to {:.6g}{} of the {} ({})", field, format_value(value),
+                     range.min, range.max, unit, range.quantity, hint);
 }
 
 std::optional<UnusualValue> unusual(std::string field, double value, const TypicalRange& range) {

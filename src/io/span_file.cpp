@@ -1,6 +1,7 @@
 #include "stockbridge/io/span_file.hpp"
 
 #include <algorithm>
+#include <array>
 #include <initializer_list>
 #include <optional>
 #include <utility>
@@ -26,6 +27,8 @@ struct SpanReading {
   double length = 0.0;
   std::optional<double> tension;
   std::optional<double> tension_fraction;
+  std::optional<double> catenary_parameter;
+  std::optional<int> terrain;
   span::WindModel wind;
   span::SelfDampingModel self_damping;
   std::vector<span::SpanDamper> dampers;
@@ -82,17 +85,30 @@ span::Conductor read_conductor(const TomlTable& table) {
 }
 
 void read_span_table(const TomlTable& table, SpanReading& reading) {
-  span_accept_only(table, {"length", "tension", "tension_fraction"});
+  span_accept_only(table, {"length", "tension", "tension_fraction", "catenary_parameter", "terrain"});
   reading.length = table.number("length");
   reading.tension = table.optional_number("tension");
   reading.tension_fraction = table.optional_number("tension_fraction");
-  if (!reading.tension && !reading.tension_fraction) {
-    throw InputError(fmt::format("{}missing key 'tension' in [span]: expected tension (N) or tension_fraction (of the "
-                                 "rated tensile strength), one of the two",
+  reading.catenary_parameter = table.optional_number("catenary_parameter");
+  if (const auto terrain = table.optional_integer("terrain", 1, 4)) reading.terrain = static_cast<int>(*terrain);
+  const int given = static_cast<int>(reading.tension.has_value()) + static_cast<int>(reading.tension_fraction.has_value()) +
+                    static_cast<int>(reading.catenary_parameter.has_value());
+  if (given == 0) {
+    throw InputError(fmt::format("{}missing key 'tension' in [span]: expected one of tension (N), tension_fraction (of "
+                                 "the rated tensile strength) and catenary_parameter (H/w, m)",
                                  table.location("tension")));
   }
-  if (reading.tension && reading.tension_fraction) {
-    table.fail("tension_fraction", "given beside span.tension: expected one of tension (N) and tension_fraction");
+  if (given > 1) {
+    const std::array<std::pair<std::string_view, bool>, 3> forms{{{"tension", reading.tension.has_value()},
+                                                                  {"tension_fraction", reading.tension_fraction.has_value()},
+                                                                  {"catenary_parameter", reading.catenary_parameter.has_value()}}};
+    std::vector<std::string_view> present;
+    for (const auto& form : forms) {
+      if (form.second) present.push_back(form.first);
+    }
+    table.fail(present[1], fmt::format("given beside span.{}: expected one of tension (N), tension_fraction and "
+                                       "catenary_parameter (H/w, m)",
+                                       present[0]));
   }
 }
 
@@ -178,10 +194,11 @@ span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem:
 }
 
 span::FatigueSpec read_fatigue(const TomlTable& table) {
-  span_accept_only(table, {"cycles", "endurance_limit", "wind_weibull", "aeolian_fraction"});
+  span_accept_only(table, {"cycles", "endurance_limit", "wind_weibull", "aeolian_fraction", "yb_distance"});
   span::FatigueSpec fatigue;
   fatigue.cycles = table.optional_number("cycles");
   fatigue.endurance_limit = table.optional_number("endurance_limit");
+  fatigue.yb_distance = table.optional_number("yb_distance").value_or(fatigue.yb_distance);
   const std::optional<TomlTable> weibull = table.optional_table("wind_weibull");
   const std::optional<double> fraction = table.optional_number("aeolian_fraction");
   if (weibull.has_value() != fraction.has_value()) {
@@ -246,14 +263,47 @@ SpanReading read_span_document(const TomlTable& top, const std::filesystem::path
 }
 
 /// The span file's own values outside their typical ranges (a diameter in mm, a mass
-/// per length in g/m, a length in km), each at its line, after the dampers' warnings.
+/// per length in g/m, a length in km, a tension in kN), each at its line, after the
+/// dampers' warnings.
 void add_span_warnings(const SpanReading& reading, const toml::table& document, const TomlSource& source,
                        std::vector<std::string>& warnings) {
   std::vector<UnusualValue> unusual;
-  check_typical(unusual, "conductor.diameter", reading.conductor.diameter, typical::conductor_diameter);
-  check_typical(unusual, "conductor.mass_per_length", reading.conductor.mass_per_length,
-                typical::conductor_mass_per_length);
-  check_typical(unusual, "span.length", reading.length, typical::span_length);
+  const auto check = [&unusual](std::string field, const std::optional<double>& value, const TypicalRange& range) {
+    if (value) check_typical(unusual, std::move(field), *value, range);
+  };
+  const span::Conductor& c = reading.conductor;
+  check("conductor.diameter", c.diameter, typical::conductor_diameter);
+  check("conductor.mass_per_length", c.mass_per_length, typical::conductor_mass_per_length);
+  check("conductor.rated_tensile_strength", c.rated_tensile_strength, typical::rated_tensile_strength);
+  check("conductor.ei_min", c.ei_min, typical::conductor_ei_min);
+  if (c.ei_max != 0.0) check("conductor.ei_max", c.ei_max, typical::conductor_ei_max);
+  check("conductor.outer_wire_diameter", c.outer_wire_diameter, typical::outer_wire_diameter);
+  check("conductor.outer_wire_modulus", c.outer_wire_modulus, typical::outer_wire_modulus);
+  check("span.length", reading.length, typical::span_length);
+  check("span.tension", reading.tension, typical::span_tension);
+  check("span.tension_fraction", reading.tension_fraction, typical::tension_fraction);
+  check("span.catenary_parameter", reading.catenary_parameter, typical::catenary_parameter);
+  const span::WindModel& w = reading.wind;
+  check("wind.strouhal", w.strouhal, typical::strouhal);
+  check("wind.speed_min", w.speed_min, typical::wind_speed);
+  check("wind.speed_max", w.speed_max, typical::wind_speed);
+  check("wind.turbulence_intensity", w.turbulence_intensity, typical::turbulence_intensity);
+  const span::SelfDampingModel& sd = reading.self_damping;
+  check("self_damping.l", sd.l, typical::self_damping_l);
+  check("self_damping.m", sd.m, typical::self_damping_m);
+  check("self_damping.n", sd.n, typical::self_damping_n);
+  for (std::size_t j = 0; j < reading.dampers.size(); ++j) {
+    check(fmt::format("damper[{}].position", j), reading.dampers[j].position, typical::damper_position);
+  }
+  const span::FatigueSpec& f = reading.fatigue;
+  check("fatigue.cycles", f.cycles, typical::fatigue_cycles);
+  check("fatigue.endurance_limit", f.endurance_limit, typical::endurance_limit);
+  check("fatigue.yb_distance", f.yb_distance, typical::yb_distance);
+  if (f.life) {
+    check("fatigue.wind_weibull.shape", f.life->wind_weibull.shape, typical::weibull_shape);
+    check("fatigue.wind_weibull.scale", f.life->wind_weibull.scale, typical::weibull_scale);
+    check("fatigue.aeolian_fraction", f.life->aeolian_fraction, typical::aeolian_fraction);
+  }
   for (const UnusualValue& u : unusual) warnings.push_back(field_location(document, source, u.field) + u.message());
 }
 
@@ -261,12 +311,17 @@ SpanFile build_span(const toml::table& document, const TomlSource& source, const
   SpanReading reading = read_span_document(TomlTable(document, source, ""), base_directory);
   add_span_warnings(reading, document, source, reading.warnings);
   span::Span built = build_from_file(document, source, [&] {
-    const double tension = reading.tension ? *reading.tension : within_field("span", [&] {
+    const double tension = within_field("span", [&] {
+      if (reading.tension) return *reading.tension;
+      if (reading.catenary_parameter) {
+        return span::tension_from_catenary_parameter(reading.conductor, *reading.catenary_parameter);
+      }
       return span::tension_from_fraction(reading.conductor, *reading.tension_fraction);
     });
     within_field("balance", [&] { reading.balance.validate(); });
     return span::Span(std::move(reading.conductor), reading.length, tension, std::move(reading.wind),
-                      std::move(reading.self_damping), std::move(reading.dampers), std::move(reading.fatigue));
+                      std::move(reading.self_damping), std::move(reading.dampers), std::move(reading.fatigue),
+                      reading.terrain);
   });
   return SpanFile{std::move(built), reading.balance, std::move(reading.inputs), std::move(reading.warnings)};
 }

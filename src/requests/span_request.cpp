@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/span/tension_figures.hpp"
 
 namespace stockbridge::requests {
 
@@ -119,6 +120,7 @@ using SpanQuantity = Quantity<span::BalancePoint>;
 struct SpanTableContext {
   double diameter = 0.0;
   double endurance_limit = 0.0;
+  span::Conductor conductor;
   bool dampers = false;
   /// Per member of the per-damper family (each damper's end 1, then its end 2): its
   /// entry in a point's `dampers` (their order: end 1's by position, then end 2's).
@@ -156,10 +158,12 @@ SpanQuantity span_per_damper(std::string name, std::string unit, std::string mea
 
 double span_megapascal_of(double pascal) { return pascal / kPascalPerMegapascal; }
 
+
 std::shared_ptr<const SpanTableContext> span_table_context(const span::Span& span) {
   auto context = std::make_shared<SpanTableContext>();
   context->diameter = span.conductor().diameter;
   context->endurance_limit = span.endurance_limit();
+  context->conductor = span.conductor();
   context->dampers = !span.dampers().empty();
   const std::vector<std::pair<std::size_t, int>> entries = span_damper_slots(span);
   for (const auto& slot : span_column_slots(span)) {
@@ -223,6 +227,21 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
        "states near here ([several dampers per end](#several-dampers-per-end))",
        ColumnKind::flag,
        [](const P& p, std::size_t) { return p.converged() ? (p.several_states ? 1.0 : 0.0) : kSpanNoValue; }, {}},
+      span_solved("bending_amplitude_pp_m", "m",
+                  "Yb, the peak-to-peak displacement relative to the span clamp at x_b (fatigue.yb_distance, 89 mm): "
+                  "what a vibration recorder measures",
+                  [](const P& p) { return p.bending_amplitude; }),
+      span_solved("bending_strain_pp_microstrain", "microstrain",
+                  "the outer wires' peak-to-peak bending strain at the span clamp, 2 sigma_ps / E_a",
+                  [c](const P& p) { return span::bending_strain_pp_microstrain(c->conductor, p.stress_poffenberger_swart); }),
+      span_solved("undamped_bending_amplitude_pp_m", "m", "Yb of the span without dampers",
+                  [](const P& p) { return p.undamped_bending_amplitude; }),
+      span_solved("undamped_bending_strain_pp_microstrain", "microstrain", "its bending strain",
+                  [c](const P& p) {
+                    return span::bending_strain_pp_microstrain(c->conductor, p.undamped_stress_poffenberger_swart);
+                  }),
+      span_given("endurance_limit_pp_microstrain", "microstrain", "the endurance limit as a peak-to-peak strain",
+                 [c](const P&) { return span::bending_strain_pp_microstrain(c->conductor, c->endurance_limit); }),
       span_per_damper("<damper>_end<k>_velocity_m_s", "m/s",
                       "per damper and end it is at (k = 1, 2): its clamp velocity amplitude v_j", c,
                       [](const D& d) { return d.clamp_velocity; }),
@@ -234,6 +253,16 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
                       [](const D& d) { return d.power; }),
       span_per_damper("<damper>_end<k>_clamp_stress_mpa", "MPa", "the conductor's stress at its clamp", c,
                       [](const D& d) { return d.clamp_stress / kPascalPerMegapascal; }),
+      // Per damper and end, the strain at its clamp (the conductor's modulus: not a plain function).
+      {"<damper>_end<k>_bending_strain_pp_microstrain", "microstrain",
+       "the outer wires' peak-to-peak bending strain at its clamp", ColumnKind::number,
+       [c](const P& p, std::size_t member) {
+         const std::size_t i = c->entry_of_member[member];
+         return p.converged() && i < p.dampers.size()
+                    ? span::bending_strain_pp_microstrain(c->conductor, p.dampers[i].clamp_stress)
+                    : kSpanNoValue;
+       },
+       {}},
   };
   std::vector<std::string> members;
   const std::vector<std::string> prefixes = span_damper_prefixes(span);
@@ -252,6 +281,42 @@ Table<span::BalancePoint> span_point_notes_table() {
        [](const P& p, std::size_t) { return p.note; }},
   });
 }
+
+namespace {
+
+/// The tension in its three forms, the span parameter, and TB 273's judgement where the terrain is given.
+void add_tension_figures(io::JsonObject& json, const span::Span& span) {
+  const span::TensionFigures t = span::tension_figures(span);
+  json.add("tension_n", t.tension)
+      .add("tension_percent_rts", 100.0 * t.fraction_of_rts)
+      .add("catenary_parameter_m", t.catenary_parameter)
+      .add("span_parameter_m3_kg", t.span_parameter);
+  if (const std::optional<span::SafeDesignTension> safe = span::safe_design_tension(span)) {
+    json.add("terrain", safe->terrain.category)
+        .add("safe_design_catenary_parameter_m", safe->terrain.catenary_parameter_limit)
+        .add("safe_design_tension", safe->within ? "within" : "above");
+  } else {
+    json.add_null("terrain").add_null("safe_design_catenary_parameter_m").add_null("safe_design_tension");
+  }
+}
+
+/// What a vibration recorder measures (Yb) and the strain engineers quote, at their largest.
+void add_field_figures(io::JsonObject& json, const span::SpanAnalysis& a) {
+  const span::Conductor& c = a.span.conductor();
+  const span::BalanceSummary& s = a.balance.summary;
+  const bool damped = s.converged > 0;
+  const bool undamped = s.undamped_points > 0;
+  json.add("yb_distance_m", a.span.fatigue().yb_distance)
+      .add("max_bending_amplitude_pp_m", damped ? s.max_bending_amplitude : kSpanNoValue)
+      .add("max_bending_strain_pp_microstrain",
+           damped ? span::bending_strain_pp_microstrain(c, s.max_stress_poffenberger_swart) : kSpanNoValue)
+      .add("undamped_max_bending_amplitude_pp_m", undamped ? s.undamped_max_bending_amplitude : kSpanNoValue)
+      .add("undamped_max_bending_strain_pp_microstrain",
+           undamped ? span::bending_strain_pp_microstrain(c, s.undamped_max_stress_poffenberger_swart) : kSpanNoValue)
+      .add("endurance_limit_pp_microstrain", span::bending_strain_pp_microstrain(c, s.endurance_limit));
+}
+
+}  // namespace
 
 io::JsonObject span_summary(const SpanResult& result) {
   const span::SpanAnalysis& a = result.analysis;
@@ -273,6 +338,8 @@ io::JsonObject span_summary(const SpanResult& result) {
       .add("undamped_verdict", span::verdict_name(s.undamped_verdict))
       .add("position_m", dampers ? a.span.dampers().front().position : kSpanNoValue)
       .add("position_optimized", a.position.has_value());
+  add_tension_figures(json, a.span);
+  add_field_figures(json, a);
   if (a.span.fatigue().life) {
     const auto add_life = [&json](std::string_view prefix, const std::optional<span::LifeEstimate>& life, int missing) {
       json.add(fmt::format("{}life_years", prefix), life ? life->life_years : kSpanNoValue)

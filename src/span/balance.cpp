@@ -85,8 +85,10 @@ void fill_undamped(const Span& span, double f, BalancePoint& p) {
   const auto y = undamped_amplitude(span.wind(), span.self_damping(), c, span.tension(), span.length(), f);
   p.undamped_amplitude = y.value_or(kNaN);
   p.undamped_stress_fymax = y ? fymax_stress(c, f, *y) : kNaN;
+  const double x_b = span.fatigue().yb_distance;
+  p.undamped_bending_amplitude = y ? bending_amplitude(c, span.tension(), f, *y, x_b) : kNaN;
   p.undamped_stress_poffenberger_swart =
-      y ? poffenberger_swart_stress(c, span.tension(), bending_amplitude(c, span.tension(), f, *y)) : kNaN;
+      y ? poffenberger_swart_stress(c, span.tension(), p.undamped_bending_amplitude, x_b) : kNaN;
 }
 
 /// One damper's figures at the balance.
@@ -115,8 +117,9 @@ void fill_balanced(const Span& span, FrequencyBalance& balance, double y, Balanc
   p.damper_power = at.absorbed;
   p.clamp_loop_amplitude = at.ends.empty() ? y : at.ends.front().response.loop_amplitude;
   p.stress_fymax = fymax_stress(c, f, p.clamp_loop_amplitude);
-  p.stress_poffenberger_swart =
-      poffenberger_swart_stress(c, span.tension(), bending_amplitude(c, span.tension(), f, p.clamp_loop_amplitude));
+  const double x_b = span.fatigue().yb_distance;
+  p.bending_amplitude = bending_amplitude(c, span.tension(), f, p.clamp_loop_amplitude, x_b);
+  p.stress_poffenberger_swart = poffenberger_swart_stress(c, span.tension(), p.bending_amplitude, x_b);
   double sum_dampers = 0.0, incoming = 0.0;
   p.damper_clamp_stress = 0.0;
   const StringWave& wave = balance.wave();
@@ -136,7 +139,8 @@ void fill_balanced(const Span& span, FrequencyBalance& balance, double y, Balanc
 
 void mask(BalancePoint& p) {
   for (double* x : {&p.amplitude, &p.wind_power, &p.self_damping_power, &p.damper_power, &p.clamp_loop_amplitude,
-                    &p.stress_fymax, &p.stress_poffenberger_swart, &p.damper_clamp_stress, &p.identity_error}) {
+                    &p.stress_fymax, &p.stress_poffenberger_swart, &p.bending_amplitude, &p.damper_clamp_stress,
+                    &p.identity_error}) {
     *x = kNaN;
   }
   p.dampers.clear();

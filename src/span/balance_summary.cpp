@@ -61,9 +61,16 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
     stresses.push_back(stress);
     undamped_stresses.push_back(p.undamped_stress_poffenberger_swart);
     undamped.add(p.frequency_hz, p.undamped_stress_fymax);
+    if (std::isfinite(p.undamped_bending_amplitude)) {
+      s.undamped_max_bending_amplitude = std::max(s.undamped_max_bending_amplitude, p.undamped_bending_amplitude);
+      s.undamped_max_stress_poffenberger_swart =
+          std::max(s.undamped_max_stress_poffenberger_swart, p.undamped_stress_poffenberger_swart);
+    }
     if (!p.converged()) continue;
     ++s.converged;
     damped.add(p.frequency_hz, p.stress_fymax);
+    s.max_bending_amplitude = std::max(s.max_bending_amplitude, p.bending_amplitude);
+    s.max_stress_poffenberger_swart = std::max(s.max_stress_poffenberger_swart, p.stress_poffenberger_swart);
     s.max_damper_clamp_stress = std::max(s.max_damper_clamp_stress, p.damper_clamp_stress);
     if (p.several_states) ++s.several_states;
   }

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/core/typical_ranges.hpp"
 
 namespace stockbridge::span {
 
@@ -16,6 +17,14 @@ void Conductor::validate() const {
   require_plausible("ei_min", ei_min, "N m^2");
   require_plausible_or_zero("ei_max", ei_max, "N m^2");
   if (ei_max != 0.0 && ei_max < ei_min) {
+    // The one outside its typical range is the one at fault (an ei_min in N mm^2 or
+    // copied from ei_max), else the no-slip bound, which must be the larger.
+    if (!typical::conductor_ei_min.contains(ei_min) && typical::conductor_ei_max.contains(ei_max)) {
+      throw_invalid("ei_min", ei_min,
+                    fmt::format("at most ei_max = {} N m^2 (the free wires' stiffness, typically {} to {} N m^2)",
+                                format_value(ei_max), format_value(typical::conductor_ei_min.min),
+                                format_value(typical::conductor_ei_min.max)));
+    }
     throw_invalid("ei_max", ei_max, fmt::format("0 (not given) or at least ei_min = {} N m^2", format_value(ei_min)));
   }
   require_plausible("outer_wire_diameter", outer_wire_diameter, "m");
@@ -36,8 +45,32 @@ void check_tension(const Conductor& conductor, double tension, const std::string
 }
 
 double tension_from_fraction(const Conductor& conductor, double fraction, const std::string& field) {
-  if (!(fraction > 0.0 && fraction < 1.0)) throw_invalid(field, fraction, "a fraction of the rated tensile strength > 0 and < 1");
+  if (!(fraction > 0.0 && fraction < 1.0)) {
+    const std::string percent = fraction >= 2.0 && fraction < 100.0
+                                    ? fmt::format(" (a percentage? {} % is {:.6g})", format_value(fraction),
+                                                  fraction / 100.0)
+                                    : "";
+    throw_invalid(field, fraction, "a fraction of the rated tensile strength > 0 and < 1" + percent);
+  }
   return fraction * conductor.rated_tensile_strength;
+}
+
+double tension_from_catenary_parameter(const Conductor& conductor, double catenary_parameter,
+                                       const std::string& field) {
+  require_plausible(field, catenary_parameter, "m");
+  const double weight = conductor.mass_per_length * standard_gravity;  // N/m
+  const double tension = catenary_parameter * weight;
+  // (A conductor not valid yet is Conductor::validate's to report.)
+  if (weight > 0.0 && conductor.rated_tensile_strength > 0.0 && !(tension < conductor.rated_tensile_strength)) {
+    throw_invalid(field, catenary_parameter,
+                  fmt::format("less than the rated tensile strength per weight, {:.6g} m (T = (H/w) m g = {:.6g} N)",
+                              conductor.rated_tensile_strength / weight, tension));
+  }
+  return tension;
+}
+
+double catenary_parameter(const Conductor& conductor, double tension) {
+  return tension / (conductor.mass_per_length * standard_gravity);
 }
 
 double wave_speed(const Conductor& conductor, double tension) {

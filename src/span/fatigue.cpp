@@ -42,6 +42,10 @@ double point_force_stress(const Conductor& c, double tension, double force_ampli
          (4.0 * bending_decay(c, tension) * c.ei_min);
 }
 
+double bending_strain_pp_microstrain(const Conductor& c, double stress) {
+  return 2.0 * stress / c.outer_wire_modulus * 1e6;
+}
+
 double SafeBorderLine::endurance_limit(double cycles) const {
   const double mpa = cycles <= knee ? a_low * std::pow(cycles, b_low) : a_high * std::pow(cycles, b_high);
   return fatigue_pa_per_mpa * mpa;

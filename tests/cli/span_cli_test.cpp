@@ -102,6 +102,8 @@ TEST(SpanCli, RunsTheExampleAndWritesTheCsv) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string text = read_text(dir / "span.csv");
   EXPECT_EQ(text.rfind(kHeader + ",endurance_limit_mpa,energy_identity_error,undamped_stress_ps_mpa,several_states,"
+                                 "bending_amplitude_pp_m,bending_strain_pp_microstrain,undamped_bending_amplitude_pp_m,"
+                                 "undamped_bending_strain_pp_microstrain,endurance_limit_pp_microstrain,"
                                  "sauter2003_end1_velocity_m_s,",
                        0),
             0u)
@@ -175,7 +177,7 @@ TEST(SpanCli, WithoutDampersTheColumnsAreTheUndampedOnes) {
   const CliResult r = run_cli("span '" + kSpanExample + "' --frequencies 10,20,30,40 --no-dampers -o span.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Csv csv = read_csv(dir / "span.csv");
-  EXPECT_EQ(csv.header.back(), "several_states");  // no damper columns
+  EXPECT_EQ(csv.header.back(), "endurance_limit_pp_microstrain");  // no damper columns
   ASSERT_EQ(csv.rows.size(), 4u);
   const auto amplitude = csv.column("amplitude_m"), undamped = csv.column("undamped_amplitude_m");
   const auto stress = csv.column("stress_fymax_mpa"), undamped_stress = csv.column("undamped_stress_fymax_mpa");
@@ -189,6 +191,50 @@ TEST(SpanCli, WithoutDampersTheColumnsAreTheUndampedOnes) {
     EXPECT_EQ(power[i], 0.0);
   }
   EXPECT_NE(r.out.find("dampers: none"), std::string::npos) << r.out;
+}
+
+// The figures of field practice: the tension in its three forms and TB 273's judgement
+// in the report and the JSON; Yb and the strain in microstrain (2 sigma_ps / E_a) in
+// every row, at the span clamp and at each damper clamp, and the endurance limit in
+// microstrain.
+TEST(SpanCli, TensionFiguresAndFieldFiguresOfTheUndampedSpan) {
+  const auto dir = example_copy("span-field-figures");
+  std::string text = read_text(dir / "span.toml");
+  text.replace(text.find("tension_fraction = 0.15"), 23, "catenary_parameter = 1100\nterrain = 2");
+  std::ofstream(dir / "span.toml") << text;
+  const CliResult r = run_cli("span span.toml --frequencies 10,20 --no-dampers -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // T = 1100 * 1.571 * 9.80665 = 16946.6 N = 9.15 % of 185.3 kN; L D / m = 400 * 0.03105 / 1.571 = 7.906
+  EXPECT_NE(r.out.find("tension: 16.95 kN, 9.15 % RTS, H/w = 1100 m; span parameter L D / m = 7.906 m^3/kg"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("CIGRE TB 273, terrain category 2: H/w 1100 m is within the 1125 m an undamped single "
+                       "conductor allows"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("largest Yb (89 mm from the clamp): "), std::string::npos) << r.out;
+  const Csv csv = read_csv(dir / "span.csv");
+  const auto ps = csv.column("stress_ps_mpa"), strain = csv.column("bending_strain_pp_microstrain");
+  const auto yb = csv.column("bending_amplitude_pp_m"), undamped_yb = csv.column("undamped_bending_amplitude_pp_m");
+  const auto limit = csv.column("endurance_limit_mpa"), limit_strain = csv.column("endurance_limit_pp_microstrain");
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    EXPECT_NEAR(strain[i], 2.0 * ps[i] * 1e6 / 68e9 * 1e6, 1e-9 * strain[i]);
+    EXPECT_NEAR(limit_strain[i], 2.0 * limit[i] * 1e6 / 68e9 * 1e6, 1e-9 * limit_strain[i]);
+    EXPECT_DOUBLE_EQ(yb[i], undamped_yb[i]);
+    EXPECT_GT(yb[i], 0.0);
+  }
+  const CliResult json = run_cli("span span.toml --frequencies 10,20 --no-dampers --json -o span2.csv", dir);
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_NEAR(span_json_number(json.out, "catenary_parameter_m"), 1100.0, 1e-9);
+  EXPECT_NEAR(span_json_number(json.out, "tension_n"), 1100.0 * 1.571 * 9.80665, 1e-6);
+  EXPECT_NEAR(span_json_number(json.out, "tension_percent_rts"), 100.0 * 1100.0 * 1.571 * 9.80665 / 185300.0, 1e-9);
+  EXPECT_NEAR(span_json_number(json.out, "span_parameter_m3_kg"), 400.0 * 0.03105 / 1.571, 1e-9);
+  EXPECT_EQ(span_json_number(json.out, "terrain"), 2.0);
+  EXPECT_EQ(span_json_number(json.out, "safe_design_catenary_parameter_m"), 1125.0);
+  EXPECT_NE(json.out.find("\"safe_design_tension\": \"within\""), std::string::npos) << json.out;
+  EXPECT_NEAR(span_json_number(json.out, "max_bending_amplitude_pp_m"), std::max(yb[0], yb[1]), 1e-9);
+  EXPECT_NEAR(span_json_number(json.out, "max_bending_strain_pp_microstrain"), std::max(strain[0], strain[1]), 1e-6);
+  EXPECT_NEAR(span_json_number(json.out, "endurance_limit_pp_microstrain"), limit_strain[0], 1e-6);
 }
 
 // The weak model's dampers sit in the string's own standing wave: v = w Y |sin(k a)|,

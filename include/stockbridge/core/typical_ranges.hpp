@@ -12,34 +12,68 @@
 
 namespace stockbridge {
 
+/// A unit a value is often given in by mistake instead of the range's (SI) unit:
+/// the value read in `unit` is `factor` times as much in SI (mm: 1e-3, kN: 1e3).
+struct UnitSlip {
+  double factor = 0.0;    ///< 0: none
+  std::string_view unit;  ///< "mm", "kN", "GPa", "%", "rad"
+};
+
 struct TypicalRange {
   std::string_view quantity;  ///< what the range is of, as the docs' table names it
   double min = 0.0;
   double max = 0.0;
   std::string_view unit;
+  UnitSlip slip;  ///< the usual slip, named when the value read in its unit lies in the range
 
   bool contains(double value) const { return value >= min && value <= max; }
+  /// The value, in the range's unit, it would be if given in the slip's unit and
+  /// that lands in the range.
+  std::optional<double> slipped(double value) const;
 };
 
 /// The typical ranges, in SI units.
 namespace typical {
-inline constexpr TypicalRange cable_length{"damper cable length", 0.03, 1.0, "m"};
-inline constexpr TypicalRange ei{"cable bending stiffness ei", 0.1, 1000.0, "N m^2"};
-inline constexpr TypicalRange jenkin_c{"Jenkin element stiffness c", 0.1, 10000.0, "N m^2"};
-inline constexpr TypicalRange jenkin_h{"Jenkin element slip moment h", 0.001, 100.0, "N m"};
-inline constexpr TypicalRange clamp_mass{"clamp mass", 0.05, 20.0, "kg"};
-inline constexpr TypicalRange arm_mass{"arm mass", 0.05, 20.0, "kg"};
-inline constexpr TypicalRange arm_inertia{"arm inertia about its centre of gravity", 1e-6, 0.5, "kg m^2"};
-inline constexpr TypicalRange arm_offset{"|offset| of an arm's centre of gravity", 0.0, 0.3, "m"};
-inline constexpr TypicalRange frequency{"excitation frequency", 0.5, 500.0, "Hz"};
-inline constexpr TypicalRange velocity{"clamp velocity amplitude", 0.001, 2.0, "m/s"};
-inline constexpr TypicalRange displacement{"clamp displacement amplitude", 1e-6, 0.05, "m"};
+inline constexpr TypicalRange cable_length{"damper cable length", 0.03, 1.0, "m", {}};
+inline constexpr TypicalRange ei{"cable bending stiffness ei", 0.1, 1000.0, "N m^2", {}};
+inline constexpr TypicalRange jenkin_c{"Jenkin element stiffness c", 0.1, 10000.0, "N m^2", {}};
+inline constexpr TypicalRange jenkin_h{"Jenkin element slip moment h", 0.001, 100.0, "N m", {}};
+inline constexpr TypicalRange clamp_mass{"clamp mass", 0.05, 20.0, "kg", {}};
+inline constexpr TypicalRange arm_mass{"arm mass", 0.05, 20.0, "kg", {}};
+inline constexpr TypicalRange arm_inertia{"arm inertia about its centre of gravity", 1e-6, 0.5, "kg m^2", {}};
+inline constexpr TypicalRange arm_offset{"|offset| of an arm's centre of gravity", 0.0, 0.3, "m", {}};
+inline constexpr TypicalRange frequency{"excitation frequency", 0.5, 500.0, "Hz", {}};
+inline constexpr TypicalRange velocity{"clamp velocity amplitude", 0.001, 2.0, "m/s", {}};
+inline constexpr TypicalRange displacement{"clamp displacement amplitude", 1e-6, 0.05, "m", {}};
 /// Of the cable's length: the quasi-static cantilever is a small-deflection model.
-inline constexpr TypicalRange tip_deflection_ratio{"tip deflection / cable length", 0.0, 0.3, ""};
-inline constexpr TypicalRange tip_rotation{"tip rotation", 0.0, 0.5, "rad"};
-inline constexpr TypicalRange conductor_diameter{"conductor diameter", 0.004, 0.08, "m"};
-inline constexpr TypicalRange conductor_mass_per_length{"conductor mass per length", 0.03, 8.0, "kg/m"};
-inline constexpr TypicalRange span_length{"span length", 20.0, 3000.0, "m"};
+inline constexpr TypicalRange tip_deflection_ratio{"tip deflection / cable length", 0.0, 0.3, "", {}};
+inline constexpr TypicalRange tip_rotation{"tip rotation", 0.0, 0.5, "rad", {}};
+inline constexpr TypicalRange conductor_diameter{"conductor diameter", 0.004, 0.08, "m", {1e-3, "mm"}};
+inline constexpr TypicalRange conductor_mass_per_length{"conductor mass per length", 0.03, 8.0, "kg/m", {1e-3, "g/m"}};
+inline constexpr TypicalRange span_length{"span length", 20.0, 3000.0, "m", {1e3, "km"}};
+inline constexpr TypicalRange rated_tensile_strength{"conductor rated tensile strength", 5e3, 1.5e6, "N", {1e3, "kN"}};
+inline constexpr TypicalRange conductor_ei_min{"conductor bending stiffness ei_min (free wires)", 0.5, 2000.0, "N m^2", {}};
+inline constexpr TypicalRange conductor_ei_max{"conductor bending stiffness ei_max (no slip)", 10.0, 1e5, "N m^2", {}};
+inline constexpr TypicalRange outer_wire_diameter{"outer wire diameter", 1e-3, 6e-3, "m", {1e-3, "mm"}};
+inline constexpr TypicalRange outer_wire_modulus{"outer wire Young's modulus", 4e10, 2.2e11, "Pa", {1e9, "GPa"}};
+inline constexpr TypicalRange span_tension{"conductor tension", 1e3, 5e5, "N", {1e3, "kN"}};
+inline constexpr TypicalRange tension_fraction{"tension as a fraction of the rated tensile strength", 0.03, 0.4, "",
+                                               {1e-2, "%"}};
+inline constexpr TypicalRange catenary_parameter{"catenary parameter H/w", 300.0, 4000.0, "m", {}};
+inline constexpr TypicalRange damper_position{"damper position from the span clamp", 0.1, 10.0, "m", {1e-3, "mm"}};
+inline constexpr TypicalRange strouhal{"Strouhal number", 0.1, 0.3, "", {}};
+inline constexpr TypicalRange wind_speed{"wind speed of aeolian vibration", 0.2, 15.0, "m/s", {1.0 / 3.6, "km/h"}};
+inline constexpr TypicalRange turbulence_intensity{"turbulence intensity", 0.0, 0.5, "", {1e-2, "%"}};
+inline constexpr TypicalRange self_damping_l{"self-damping exponent l (amplitude)", 1.5, 3.0, "", {}};
+inline constexpr TypicalRange self_damping_m{"self-damping exponent m (frequency)", 3.5, 6.5, "", {}};
+inline constexpr TypicalRange self_damping_n{"self-damping exponent n (tension)", 1.0, 3.5, "", {}};
+inline constexpr TypicalRange fatigue_cycles{"cycles of the endurance limit", 1e6, 1e10, "", {}};
+inline constexpr TypicalRange endurance_limit{"endurance limit (zero-to-peak stress)", 2e6, 5e7, "Pa", {1e6, "MPa"}};
+inline constexpr TypicalRange weibull_shape{"Weibull shape of the wind speed", 1.0, 4.0, "", {}};
+inline constexpr TypicalRange weibull_scale{"Weibull scale of the wind speed", 1.0, 15.0, "m/s", {1.0 / 3.6, "km/h"}};
+inline constexpr TypicalRange aeolian_fraction{"share of the year with aeolian vibration", 0.01, 1.0, "", {1e-2, "%"}};
+inline constexpr TypicalRange yb_distance{"distance x_b of the bending amplitude Yb from the clamp", 0.05, 0.15, "m",
+                                          {1e-3, "mm"}};
 
 /// Every range above, in the order of the docs' table.
 const std::vector<TypicalRange>& all();
@@ -52,7 +86,9 @@ struct UnusualValue {
   double value = 0.0;
   TypicalRange range;
 
-  /// "arm[0].mass = 863: outside the typical 0.05 to 20 kg of an arm mass (a unit mistake?)"
+  /// "arm[0].mass = 863: outside the typical 0.05 to 20 kg of the arm mass (a unit mistake?)",
+  /// or, where the range's slip explains it, "conductor.diameter = 28.14: outside the
+  /// typical 0.004 to 0.08 m of the conductor diameter (in mm? 28.14 mm = 0.02814 m)"
   std::string message() const;
 };
 

@@ -113,6 +113,9 @@ struct BalancePoint {
   double clamp_loop_amplitude = 0.0;    ///< S at end 1, m
   double stress_fymax = 0.0;            ///< at the span clamp, Pa
   double stress_poffenberger_swart = 0.0;  ///< Pa
+  /// Yb, the peak-to-peak displacement relative to the span clamp at x_b
+  /// (FatigueSpec::yb_distance): what a vibration recorder measures, m
+  double bending_amplitude = 0.0;
   double damper_clamp_stress = 0.0;     ///< largest over the dampers, Pa
   /// |P_d - sum Re Z w^2 |Y_j|^2 / 2| relative to the power the incoming waves bring
   /// to the ends, sum Z0 w^2 |B|^2 / 2 (the scale of P_d's round-off: P_d is the
@@ -122,6 +125,7 @@ struct BalancePoint {
   double undamped_amplitude = 0.0;      ///< m (NaN: no undamped balance)
   double undamped_stress_fymax = 0.0;   ///< Pa
   double undamped_stress_poffenberger_swart = 0.0;  ///< Pa
+  double undamped_bending_amplitude = 0.0;  ///< Yb without dampers, m
   /// How the balance ended: converged; no_root (the wind's power exceeds the
   /// dissipation up to the amplitude limit: no stable balance); inner_failure (a
   /// damper's impedance not known or not solved: `where`); max_iterations or
@@ -155,11 +159,16 @@ struct BalanceSummary {
   double max_stress_fymax = 0.0;
   double max_stress_frequency_hz = 0.0;
   double max_damper_clamp_stress = 0.0;  ///< Pa
+  /// Over the converged points too: the Poffenberger-Swart stress (Pa) and Yb (m) at the span clamp.
+  double max_stress_poffenberger_swart = 0.0;
+  double max_bending_amplitude = 0.0;
   Verdict verdict = Verdict::unknown;
   int undamped_points = 0;               ///< with an undamped balance (the rest: none up to 10 D)
   double undamped_max_stress_fymax = 0.0;
   double undamped_max_stress_frequency_hz = 0.0;
   Verdict undamped_verdict = Verdict::unknown;
+  double undamped_max_stress_poffenberger_swart = 0.0;  ///< Pa
+  double undamped_max_bending_amplitude = 0.0;          ///< m
   /// Miner's life from the Poffenberger-Swart stresses (the Safe Border Line is stated
   /// for them), when the span gives the climate and every point converged; none
   /// otherwise (`life_missing_points` then says how many are missing).

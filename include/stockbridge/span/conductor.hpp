@@ -42,9 +42,24 @@ struct Conductor {
 /// stretched to its rated strength breaks).
 void check_tension(const Conductor& conductor, double tension, const std::string& field = "tension");
 
-/// T = fraction RTS; throws InvalidParameter naming `field` unless 0 < fraction < 1.
+/// T = fraction RTS; throws InvalidParameter naming `field` unless 0 < fraction < 1
+/// (a fraction from 1 to 100 is named as the percentage it likely is).
 double tension_from_fraction(const Conductor& conductor, double fraction,
                              const std::string& field = "tension_fraction");
+
+/// g, m/s^2: the standard gravity of the catenary parameter.
+inline constexpr double standard_gravity = 9.80665;
+
+/// T = (H/w) m g from the catenary parameter H/w (m), the horizontal tension per
+/// weight per length; the difference between the horizontal tension and the
+/// tension along the conductor is negligible for aeolian vibration (MODEL.md
+/// section 11). Throws InvalidParameter naming `field` unless H/w is plausible (> 0)
+/// and the tension below the rated tensile strength.
+double tension_from_catenary_parameter(const Conductor& conductor, double catenary_parameter,
+                                       const std::string& field = "catenary_parameter");
+
+/// H/w = T / (m g), m.
+double catenary_parameter(const Conductor& conductor, double tension);
 
 /// c = sqrt(T / m), m/s.
 double wave_speed(const Conductor& conductor, double tension);

@@ -56,6 +56,10 @@ double poffenberger_swart_stress(const Conductor& conductor, double tension, dou
 /// amplitude |F| (N), e.g. a damper's clamp force |Z| v.
 double point_force_stress(const Conductor& conductor, double tension, double force_amplitude);
 
+/// The outer wires' peak-to-peak bending strain, microstrain, of a zero-to-peak
+/// stress (Pa): 2 sigma / E_a x 1e6 (the strain engineers quote, MODEL.md section 11).
+double bending_strain_pp_microstrain(const Conductor& conductor, double stress);
+
 /// sigma_a [MPa] = a N^b on two branches, switching after `knee` cycles.
 struct SafeBorderLine {
   double a_low = 0.0;   ///< MPa, N <= knee

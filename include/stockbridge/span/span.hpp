@@ -11,6 +11,7 @@
 
 #include "stockbridge/damper/damper.hpp"
 #include "stockbridge/span/conductor.hpp"
+#include "stockbridge/span/fatigue.hpp"
 #include "stockbridge/span/life.hpp"
 #include "stockbridge/span/self_damping.hpp"
 #include "stockbridge/span/wind.hpp"
@@ -32,6 +33,9 @@ struct FatigueSpec {
   std::optional<double> cycles;
   std::optional<double> endurance_limit;
   std::optional<LifeModel> life;
+  /// x_b of the bending amplitude Yb and the Poffenberger-Swart stress, m from the
+  /// clamp's last point of contact (IEEE 1966: 89 mm).
+  double yb_distance = poffenberger_swart_distance;
 
   void validate() const;
 };
@@ -40,9 +44,11 @@ struct FatigueSpec {
 class Span {
  public:
   /// Throws InvalidParameter naming the field as the span file spells it
-  /// ("span.length", "damper[1].position", "fatigue.cycles").
+  /// ("span.length", "damper[1].position", "fatigue.cycles", "span.terrain"). A
+  /// damper position past half the span names span.length where the position is a
+  /// usual one (typical_ranges.hpp) and the span is what is short.
   Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
-       std::vector<SpanDamper> dampers, FatigueSpec fatigue);
+       std::vector<SpanDamper> dampers, FatigueSpec fatigue, std::optional<int> terrain = std::nullopt);
 
   const Conductor& conductor() const { return conductor_; }
   double length() const { return length_; }
@@ -51,6 +57,8 @@ class Span {
   const SelfDampingModel& self_damping() const { return self_damping_; }
   const std::vector<SpanDamper>& dampers() const { return dampers_; }
   const FatigueSpec& fatigue() const { return fatigue_; }
+  /// CIGRE TB 273's terrain category (1..4, tension_figures.hpp), if given.
+  std::optional<int> terrain() const { return terrain_; }
   /// The endurance limit the verdict uses, Pa.
   double endurance_limit() const;
   /// The same span with every damper moved to `position` + (its position - the first's).
@@ -66,6 +74,7 @@ class Span {
   SelfDampingModel self_damping_;
   std::vector<SpanDamper> dampers_;
   FatigueSpec fatigue_;
+  std::optional<int> terrain_;
 };
 
 }  // namespace stockbridge::span

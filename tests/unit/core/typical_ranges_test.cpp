@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "stockbridge/core/error.hpp"
@@ -53,9 +54,10 @@ TEST(TypicalRanges, TheDocsTableIsTheCodes) {
   ASSERT_EQ(rows.size(), ranges.size());
   for (std::size_t i = 0; i < ranges.size(); ++i) {
     SCOPED_TRACE(ranges[i].quantity);
-    ASSERT_GE(rows[i].size(), 4u);
+    ASSERT_GE(rows[i].size(), 6u);
     EXPECT_EQ(rows[i][1], ranges[i].quantity);
-    EXPECT_EQ(rows[i][2], format_value(ranges[i].min) + " to " + format_value(ranges[i].max));
+    EXPECT_EQ(rows[i][5], ranges[i].slip.unit);
+    EXPECT_EQ(rows[i][2], fmt::format("{:.6g} to {:.6g}", ranges[i].min, ranges[i].max));
     EXPECT_EQ(rows[i][3], ranges[i].unit);
     EXPECT_LT(ranges[i].min, ranges[i].max);
   }
@@ -68,6 +70,23 @@ TEST(TypicalRanges, AValueWarnsExactlyOutsideItsRange) {
   EXPECT_TRUE(unusual("m", 20.01, typical::arm_mass));
   EXPECT_EQ(unusual("arm[0].mass", 863, typical::arm_mass)->message(),
             "arm[0].mass = 863: outside the typical 0.05 to 20 kg of the arm mass (a unit mistake?)");
+}
+
+TEST(TypicalRanges, AUsualSlipOfUnitsIsNamedWhereItExplainsTheValue) {
+  EXPECT_EQ(unusual("conductor.diameter", 28.14, typical::conductor_diameter)->message(),
+            "conductor.diameter = 28.14: outside the typical 0.004 to 0.08 m of the conductor diameter (in mm? "
+            "28.14 mm = 0.02814 m)");
+  EXPECT_EQ(unusual("span.tension_fraction", 0.9, typical::tension_fraction)->message(),
+            "span.tension_fraction = 0.9: outside the typical 0.03 to 0.4 of the tension as a fraction of the rated "
+            "tensile strength (a unit mistake?)");
+  EXPECT_EQ(unusual("fatigue.aeolian_fraction", 30, typical::aeolian_fraction)->message(),
+            "fatigue.aeolian_fraction = 30: outside the typical 0.01 to 1 of the share of the year with aeolian "
+            "vibration (a percentage? 30 % = 0.3)");
+  // A value the slip does not bring into the range is not blamed on it.
+  EXPECT_EQ(unusual("span.tension", 5e7, typical::span_tension)->message(),
+            "span.tension = 50000000: outside the typical 1000 to 500000 N of the conductor tension (a unit mistake?)");
+  EXPECT_EQ(*typical::outer_wire_modulus.slipped(68.9), 68.9e9);
+  EXPECT_FALSE(typical::outer_wire_modulus.slipped(68.9e9));
 }
 
 TEST(TypicalRanges, TheDissertationsDamperIsTypicalAndEachUnitMistakeIsNamed) {

@@ -316,6 +316,86 @@ TEST(SpanFile, TensionIsGivenExactlyOnce) {
   expect_at_line("tension_fraction = 0.15", "tension = -1", "span.tension = -1");
 }
 
+// H/w as utilities give it: T = (H/w) m g; one of the three forms only; the terrain
+// category 1..4 and x_b of Yb read where given.
+TEST(SpanFile, TensionAsTheCatenaryParameterAndTheTerrain) {
+  const SpanFile file = load_span_file(write_span(replaced(
+      replaced(kSpan, "tension_fraction = 0.15", "catenary_parameter = 1800\nterrain = 2"), "cycles = 5e8",
+      "cycles = 5e8\nyb_distance = 0.1")));
+  EXPECT_DOUBLE_EQ(file.span.tension(), 1800.0 * 1.571 * 9.80665);
+  EXPECT_EQ(file.span.terrain(), 2);
+  EXPECT_EQ(file.span.fatigue().yb_distance, 0.1);
+  EXPECT_TRUE(file.warnings.empty());
+  EXPECT_FALSE(load_span_file(write_span(kSpan)).span.terrain().has_value());
+  EXPECT_EQ(load_span_file(write_span(kSpan)).span.fatigue().yb_distance, 0.089);
+  expect_at_line("tension_fraction = 0.15", "tension_fraction = 0.15\ncatenary_parameter = 1800",
+                 "span.catenary_parameter: given beside span.tension_fraction: expected one of tension (N), "
+                 "tension_fraction and catenary_parameter (H/w, m)");
+  expect_at_line("tension_fraction = 0.15", "catenary_parameter = -5", "span.catenary_parameter = -5: expected a finite value > 0 (m)");
+  expect_at_line("tension_fraction = 0.15", "catenary_parameter = 20000",
+                 "span.catenary_parameter = 20000: expected less than the rated tensile strength per weight, 12027.6 m "
+                 "(T = (H/w) m g = 308125 N)");
+  expect_at_line("length = 400", "length = 400\nterrain = 5", "span.terrain: 5: expected an integer from 1 to 4");
+  expect_at_line("cycles = 5e8", "cycles = 5e8\nyb_distance = 0", "fatigue.yb_distance = 0: expected a finite value > 0");
+  EXPECT_NE(span_error_of(replaced(kSpan, "tension_fraction = 0.15", "")).find(
+                "missing key 'tension' in [span]: expected one of tension (N), tension_fraction (of the rated tensile "
+                "strength) and catenary_parameter (H/w, m)"),
+            std::string::npos);
+}
+
+// The unit slips of the issue, each warned of at its line with the unit it likely is.
+TEST(SpanFile, UnitSlipsWarnAtTheirLineNamingTheLikelyUnit) {
+  const auto warning_of = [](const std::string& from, const std::string& to) {
+    const std::string text = replaced(kSpan, from, to);
+    const SpanFile file = load_span_file(write_span(text));
+    EXPECT_EQ(file.warnings.size(), 1u) << to;
+    return file.warnings.empty() ? std::string() : file.warnings.front();
+  };
+  const auto expect_warning = [&](const std::string& from, const std::string& to, const std::string& message) {
+    const std::string warning = warning_of(from, to);
+    EXPECT_NE(warning.find(at_line(line_of(replaced(kSpan, from, to), to)) + message), std::string::npos) << warning;
+  };
+  expect_warning("tension_fraction = 0.15", "tension = 28.02",
+                 "span.tension = 28.02: outside the typical 1000 to 500000 N of the conductor tension (in kN? 28.02 kN = "
+                 "28020 N)");
+  expect_warning("rated_tensile_strength = 185300", "rated_tensile_strength = 185.3",
+                 "conductor.rated_tensile_strength = 185.3: outside the typical 5000 to 1.5e+06 N of the conductor "
+                 "rated tensile strength (in kN? 185.3 kN = 185300 N)");
+  expect_warning("outer_wire_modulus = 68e9", "outer_wire_modulus = 68.9",
+                 "conductor.outer_wire_modulus = 68.9: outside the typical 4e+10 to 2.2e+11 Pa of the outer wire "
+                 "Young's modulus (in GPa? 68.9 GPa = 6.89e+10 Pa)");
+  expect_warning("mass_per_length = 1.571", "mass_per_length = 1571",
+                 "conductor.mass_per_length = 1571: outside the typical 0.03 to 8 kg/m of the conductor mass per length "
+                 "(in g/m? 1571 g/m = 1.571 kg/m)");
+  expect_warning("cycles = 5e8", "cycles = 500", "fatigue.cycles = 500: outside the typical 1e+06 to 1e+10 of the "
+                                                  "cycles of the endurance limit (a unit mistake?)");
+  expect_warning("aeolian_fraction = 0.3", "aeolian_fraction = 0.003", "fatigue.aeolian_fraction = 0.003");
+  // A diameter in mm moves the band out of the typical frequencies too: warned of, run as given.
+  expect_warning("diameter = 0.03105", "diameter = 31.05", "conductor.diameter = 31.05: outside the typical 0.004 to "
+                                                           "0.08 m of the conductor diameter (in mm? 31.05 mm = "
+                                                           "0.03105 m)");
+}
+
+// A range error names the key at fault: ei_min in N mm^2 (not ei_max, which is
+// right); a span length in km (not the damper's position, which is usual).
+TEST(SpanFile, RangeErrorsNameTheKeyAtFault) {
+  expect_at_line("ei_min = 28.28", "ei_min = 37500",
+                 "conductor.ei_min = 37500: expected at most ei_max = 2155 N m^2 (the free wires' stiffness, typically "
+                 "0.5 to 2000 N m^2)");
+  expect_at_line("ei_max = 2155", "ei_max = 20", "conductor.ei_max = 20: expected 0 (not given) or at least ei_min");
+  expect_at_line("length = 400", "length = 0.4",
+                 "span.length = 0.4: expected more than twice damper[0].position = 1 m: the span is too short for its "
+                 "dampers (a length in km?)");
+  expect_at_line("length = 400", "length = 1.5",
+                 "span.length = 1.5: expected more than twice damper[0].position = 1 m: the span is too short for its "
+                 "dampers");
+  expect_at_line("position = 1.0", "position = 300", "damper[0].position = 300: expected a distance from the span end");
+  EXPECT_NE(span_error_of(replaced(kSpan, "tension_fraction = 0.15", "tension_fraction = 15"))
+                .find("span.tension_fraction = 15: expected a fraction of the rated tensile strength > 0 and < 1 (a "
+                      "percentage? 15 % is 0.15)"),
+            std::string::npos);
+}
+
 TEST(SpanFile, AWindTableIsReadFromItsCsvBesideTheSpanFile) {
   const auto dir = span_directory();
   testing::write_temp_file(dir / "wind", "fnc.csv", "y_over_d,fnc\n0,0\n0.1,1.2\n0.5,8\n1.0,-1\n");

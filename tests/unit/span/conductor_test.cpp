@@ -36,6 +36,23 @@ TEST(Conductor, TautStringQuantitiesOfAster570) {
   expect_relative(bending_decay(c, t), 31.35044, 1e-6);
 }
 
+// Tension as utilities give it: 27795 N of ASTER570 is H/w = 27795 / (1.571 * 9.80665)
+// = 27795 / 15.40625 = 1804.14 m; back again exactly.
+TEST(Conductor, TheCatenaryParameterOfAster570) {
+  const Conductor c = aster570();
+  expect_relative(catenary_parameter(c, aster570_tension), 1804.138, 1e-6);
+  expect_relative(tension_from_catenary_parameter(c, 1804.138), aster570_tension, 1e-6);
+  EXPECT_EQ(invalid_parameter_message([&] { tension_from_catenary_parameter(c, -1.0); }),
+            "catenary_parameter = -1: expected a finite value > 0 (m)");
+  // RTS / (m g) = 185300 / 15.40625 = 12027.59 m
+  EXPECT_EQ(invalid_parameter_message([&] { tension_from_catenary_parameter(c, 13000.0); }),
+            "catenary_parameter = 13000: expected less than the rated tensile strength per weight, 12027.6 m (T = "
+            "(H/w) m g = 200281 N)");
+  EXPECT_EQ(invalid_parameter_message([&] { tension_from_fraction(c, 15.0); }),
+            "tension_fraction = 15: expected a fraction of the rated tensile strength > 0 and < 1 (a percentage? 15 % "
+            "is 0.15)");
+}
+
 TEST(Conductor, LiliensKOfAster570) {
   // 31.05 mm / sqrt(1.571 kg/m * 185.3 kN) = 31.05 / sqrt(291.1063) = 31.05 / 17.06184 = 1.81985
   expect_relative(lilien_k(aster570()), 1.819851, 1e-6);
