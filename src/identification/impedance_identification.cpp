@@ -359,7 +359,13 @@ class FitVariables {
   double mass_scale_ = 0.0;
 };
 
-using Checkpoints = std::vector<damper::DamperTracker::Checkpoint>;
+/// Each point's solution (a tracker's checkpoint, one path per distinct arm), and
+/// which arms were distinct: a fitted mass or length can make arms alike or apart,
+/// and a checkpoint warm-starts only a damper with the same distinct arms.
+struct Checkpoints {
+  std::vector<damper::DamperTracker::Checkpoint> points;
+  std::vector<std::size_t> distinct;
+};
 
 /// The model at every measured point. Each curve is solved from `warm` where given
 /// (per point, the solution there for nearby parameters: a Newton step or two,
@@ -371,16 +377,16 @@ std::vector<damper::ImpedancePoint> solve_points(const damper::Damper& damper, c
                                                  const damper::SolverOptions& solver, const Checkpoints* warm,
                                                  Checkpoints* solutions) {
   std::vector<damper::ImpedancePoint> points(m.points.size());
-  if (solutions) solutions->assign(m.points.size(), {});
+  if (solutions) *solutions = {std::vector<damper::DamperTracker::Checkpoint>(m.points.size()), damper.distinct()};
   auto keep = [&](damper::DamperTracker& tracker, std::size_t i) {
-    if (solutions && points[i].converged()) (*solutions)[i] = tracker.checkpoint();
+    if (solutions && points[i].converged()) solutions->points[i] = tracker.checkpoint();
   };
   for (const std::vector<std::size_t>& curve : measured_curves(m)) {
     damper::DamperTracker tracker(damper, solver, m.held);
-    bool warm_started = warm && warm->size() == m.points.size() &&
-                        std::all_of(curve.begin(), curve.end(), [&](std::size_t i) { return !(*warm)[i].empty(); });
+    bool warm_started = warm && warm->points.size() == m.points.size() && warm->distinct == damper.distinct() &&
+                        std::all_of(curve.begin(), curve.end(), [&](std::size_t i) { return !warm->points[i].empty(); });
     for (std::size_t k = 0; k < curve.size() && warm_started; ++k) {
-      tracker.restore((*warm)[curve[k]]);
+      tracker.restore(warm->points[curve[k]]);
       points[curve[k]] = tracker.solve(m.points[curve[k]].excitation);
       warm_started = points[curve[k]].converged();
       keep(tracker, curve[k]);

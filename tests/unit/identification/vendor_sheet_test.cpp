@@ -135,6 +135,22 @@ TEST(VendorSheet, ASheetDoesNotDetermineTheDampersSizeWhereLengthsInertiasAndOff
   EXPECT_TRUE(says_scaled);
 }
 
+TEST(VendorSheet, TwoIdenticalArmsMassesAreNotDeterminedApartAndArmsThatBecomeDistinctStartCold) {
+  // Regression: a start with two identical arms is solved as one; its Jacobian column
+  // for one arm's mass makes them two (a warm start from the one threw).
+  DamperDescription twin = kTruth;
+  twin.arms[1] = twin.arms[0];
+  twin.arms[1].name = "twin";
+  ImpedanceIdentificationOptions options;
+  options.free = {"arm.long.mass", "arm.twin.mass"};
+  options.max_jacobians = 2;
+  const ImpedanceIdentification fit = identify_impedance(twin, vendor_sheet(twin, 4, 0.0), options);
+  EXPECT_LT(fit.rms_relative_error, 1e-6);
+  EXPECT_FALSE(estimate(fit, "arm.long.mass").determined);
+  EXPECT_FALSE(estimate(fit, "arm.twin.mass").determined);
+  EXPECT_TRUE(estimate(fit, "jenkin[0].h").determined);
+}
+
 /// The message of the InvalidParameter identify_impedance throws with `free` (empty if none).
 std::string free_error(const std::vector<std::string>& free) {
   ImpedanceIdentificationOptions options;
