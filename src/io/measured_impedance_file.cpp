@@ -72,8 +72,8 @@ void warn_radians(std::vector<std::string>& warnings, const std::string& file, c
   if (std::max(std::abs(*low), std::abs(*high)) > std::numbers::pi || *high - *low <= kRadiansSpread) return;
   const std::size_t r = static_cast<std::size_t>(std::abs(*low) > std::abs(*high) ? low - phase.begin() : high - phase.begin());
   warnings.push_back(fmt::format("{}:{}: phase_deg = {}: phase_deg looks like radians: every value lies within +-pi "
-                                 "({} to {}) while they vary along the curves; expected degrees (times 180/pi)",
-                                 file, lines[r], format_value(phase[r]), format_value(*low), format_value(*high)));
+                                 "({:.3g} to {:.3g}) while they vary along the curves; expected degrees (times 180/pi)",
+                                 file, lines[r], format_value(phase[r]), *low, *high));
 }
 
 }  // namespace
