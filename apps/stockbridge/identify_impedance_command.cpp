@@ -1,5 +1,5 @@
-// stockbridge identify impedance: the cable parameters (and optionally the clamp
-// mass) of a damper from its measured impedance curves.
+// stockbridge identify impedance: the cable parameters (and optionally numbers of
+// the damper itself, --free) of a damper from its measured impedance curves.
 
 #include <filesystem>
 #include <memory>
@@ -25,6 +25,7 @@ struct ImpedanceFitOptions {
   requests::ImpedanceFitRequest request;
   std::string output;
   std::string fitted;
+  std::string fitted_damper;
   bool json = false;
 };
 
@@ -51,16 +52,20 @@ std::vector<std::string> cable_outputs(const std::string& output, const identifi
 
 int run_impedance_fit(const ImpedanceFitOptions& options) {
   const identification::ImpedanceIdentificationOptions fit_options = requests::fit_options(options.request);
-  require_outputs_apart({{"-o", options.output}, {"--fitted", options.fitted}},
-                        {{"the --input measurement", options.input}, {"the --damper file", options.damper_file}});
-  const identification::ImpedanceMeasurement measurement = io::read_measured_impedance(options.input);
-  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}, {"--fitted", options.fitted}});
+  const std::vector<CommandFile> outputs{
+      {"-o", options.output}, {"--fitted", options.fitted}, {"--fitted-damper", options.fitted_damper}};
+  require_outputs_apart(outputs, {{"the --input measurement", options.input}, {"the --damper file", options.damper_file}});
+  const io::MeasuredImpedanceFile measured = io::load_measured_impedance(options.input);
+  const identification::ImpedanceMeasurement& measurement = measured.measurement;
+  const damper::Damper damper = read_damper_input(options.damper_file, outputs);
+  print_warnings(measured.warnings);
   identification::ImpedanceIdentification fit;
   try {
     fit = identification::identify_impedance(damper.description(), measurement, fit_options);
   } catch (const InvalidParameter& e) {
-    // The library names the measurement "measurement", anything else is the damper's.
+    // The library names the measurement "measurement" and --free "free", anything else is the damper's.
     const std::string_view what = e.what(), measurement_prefix = "measurement: ";
+    if (e.field() == "free") throw InputError("--free" + e.detail());
     throw InputError(what.starts_with(measurement_prefix)
                          ? fmt::format("{}: {}", options.input, what.substr(measurement_prefix.size()))
                          : fmt::format("{}: {}", options.damper_file, what));
@@ -73,7 +78,10 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
   if (!options.fitted.empty()) {
     io::write_file_atomically(options.fitted, requests::fitted_table().values(requests::fitted_points(measurement, fit)).csv());
   }
-  if (options.json) fmt::print("{}\n", requests::fit_summary(measurement, fit, damper, options.input).str());
+  if (!options.fitted_damper.empty()) {
+    io::write_file_atomically(options.fitted_damper, requests::fitted_damper_file(fit, options.input));
+  }
+  if (options.json) fmt::print("{}\n", requests::fit_summary(measurement, fit, damper, options.input, measured.warnings).str());
   fmt::print(stderr, "{}\n", requests::fit_summary_line(measurement, fit));
   if (cables.size() > 1) fmt::print(stderr, "cable files: {}\n", fmt::join(cables, ", "));
   if (fit.not_converged > 0) {
@@ -82,7 +90,8 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
                fit.not_converged, measurement.points.size());
     return kNotConverged;
   }
-  return kSuccess;
+  // A poor fit's warning line (fit_warnings) says the RMS error and the limit.
+  return fit.poor_fit ? kNotConverged : kSuccess;
 }
 
 }  // namespace
@@ -90,8 +99,8 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
 void add_identify_impedance_command(CLI::App& identify, int& exit_code) {
   auto options = std::make_shared<ImpedanceFitOptions>();
   CLI::App* sub = identify.add_subcommand(
-      "impedance", "Cable parameters of a damper from its measured impedance (frequency_hz, velocity_m_s, "
-                   "re_z_n_s_m, im_z_n_s_m)");
+      "impedance", "Cable parameters (and chosen numbers of the damper) from its measured impedance (frequency_hz, "
+                   "velocity_m_s, re_z_n_s_m, im_z_n_s_m)");
   sub->add_option("--damper", options->damper_file,
                   "Damper file: masses, inertias, offsets, cable lengths; its cables' values start the fit")
       ->required();
@@ -100,12 +109,21 @@ void add_identify_impedance_command(CLI::App& identify, int& exit_code) {
                   "or abs_z_n_s_m and phase_deg; several amplitudes)")
       ->required();
   sub->add_option("--elements", options->request.elements, "Jenkin elements per cable")->capture_default_str();
-  sub->add_flag("--fit-clamp-mass", options->request.fit_clamp_mass, "Also fit the clamp mass (Im Z only)");
+  sub->add_flag("--fit-clamp-mass", options->request.fit_clamp_mass, "Also fit the clamp mass (Im Z only; as --free clamp.mass)");
+  sub->add_option("--free", options->request.free,
+                  "Numbers of the damper fitted too, by path: clamp.mass, arm.<name>.mass, .inertia, .offset, "
+                  ".cable.length (comma-separated; the damper file's values start them)")
+      ->delimiter(',');
+  sub->add_option("--rms-limit", options->request.rms_limit,
+                  "RMS relative error of Z above which the fit is poor (warned of, exit status 3)")
+      ->capture_default_str();
   sub->add_option("--threads", options->request.threads, "Model runs at once")->capture_default_str();
   sub->add_option("-o,--output", options->output,
                   "Write the identified cable as a cable file (TOML; the length of the first arm) that damper files "
                   "reference");
   sub->add_option("--fitted", options->fitted, "Write measured and model Z at the measured points (CSV, for plotting)");
+  sub->add_option("--fitted-damper", options->fitted_damper,
+                  "Write the fitted damper as a damper file (TOML: the fitted cables and --free numbers written out)");
   sub->add_flag("--json", options->json,
                 "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"misfit\": ..., \"parameters\": ...} on "
                 "stdout");

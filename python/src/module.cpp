@@ -313,7 +313,7 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
                             const std::optional<std::vector<double>>& velocity,
                             const std::optional<std::vector<double>>& displacement,
                             const std::optional<std::vector<std::complex<double>>>& z, int elements, bool fit_clamp_mass,
-                            int threads) {
+                            const std::vector<std::string>& free, double rms_limit, int threads) {
   const bool arrays = frequency || velocity || displacement || z;
   if (input.has_value() == arrays) {
     throw InvalidParameter("give either input (a measured CSV's path) or frequency, velocity (or displacement) and z");
@@ -321,11 +321,17 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
   if (arrays && (!frequency || !z || velocity.has_value() == displacement.has_value())) {
     throw InvalidParameter("give frequency, z and one of velocity or displacement (arrays of one value per point)");
   }
-  const identification::ImpedanceMeasurement m =
-      input ? io::read_measured_impedance(*input)
-            : requests::measurement_from_arrays(*frequency, velocity ? *velocity : *displacement, velocity.has_value(), *z);
   const identification::ImpedanceIdentificationOptions options =
-      requests::fit_options({elements, fit_clamp_mass, threads});
+      requests::fit_options({elements, fit_clamp_mass, threads, free, rms_limit});
+  io::MeasuredImpedanceFile measured;
+  if (input) {
+    measured = io::load_measured_impedance(*input);
+  } else {
+    measured.measurement =
+        requests::measurement_from_arrays(*frequency, velocity ? *velocity : *displacement, velocity.has_value(), *z);
+  }
+  warn(measured.warnings);
+  const identification::ImpedanceMeasurement& m = measured.measurement;
   identification::ImpedanceIdentification fit;
   {
     py::gil_scoped_release release;
@@ -339,12 +345,19 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
     cable_files.append(requests::fitted_cable_file(fit, t, input ? *input : std::string("arrays")));
   }
   py::dict out;
-  out["summary_json"] = requests::fit_summary(m, fit, start, source).str();
+  out["summary_json"] = requests::fit_summary(m, fit, start, source, measured.warnings).str();
   out["fitted"] = fitted;
   out["cable_files"] = cable_files;
   out["cable"] = cable::Cable(fit.damper.arms.front().cable);
   out["damper"] = damper::Damper(fit.damper);
+  out["damper_file"] = requests::fitted_damper_file(fit, input ? *input : std::string("arrays"));
   return out;
+}
+
+/// A measured impedance file's warnings (values outside the typical ranges, phases
+/// in radians), for the plots: stockbridge.plot impedance draws the file itself.
+std::vector<std::string> measured_impedance_warnings(const std::string& path) {
+  return io::load_measured_impedance(path).warnings;
 }
 
 /// The span command's CSV columns as arrays (one value per frequency) and its --json
@@ -512,6 +525,7 @@ PYBIND11_MODULE(_core, m) {
   defaults["fit_elements"] = requests::ImpedanceFitRequest{}.elements;
   defaults["fit_clamp_mass"] = requests::ImpedanceFitRequest{}.fit_clamp_mass;
   defaults["fit_threads"] = requests::ImpedanceFitRequest{}.threads;
+  defaults["fit_rms_limit"] = requests::ImpedanceFitRequest{}.rms_limit;
   m.attr("_defaults") = defaults;
   const requests::FrequencyGrid grid;
   const requests::SolverSettings solver;
@@ -560,8 +574,11 @@ PYBIND11_MODULE(_core, m) {
   m.def("_identify_impedance", &identify_impedance, py::arg("damper"), py::arg("input") = py::none(),
         py::arg("frequency") = py::none(), py::arg("velocity") = py::none(), py::arg("displacement") = py::none(),
         py::arg("z") = py::none(), py::arg("elements") = fit.elements, py::arg("fit_clamp_mass") = fit.fit_clamp_mass,
-        py::arg("threads") = fit.threads,
+        py::arg("free") = fit.free, py::arg("rms_limit") = fit.rms_limit, py::arg("threads") = fit.threads,
         "The identification from a measured impedance (stockbridge.identify_impedance wraps it).");
+  m.def("_measured_impedance_warnings", &measured_impedance_warnings, py::arg("path"),
+        "A measured impedance CSV's warnings (values outside the typical ranges, phases in radians), as lines; "
+        "InputError for a file identify impedance refuses.");
   m.def("loop", &loop, py::arg("ei"), py::arg("jenkin") = std::vector<std::pair<double, double>>{},
         py::arg("amplitude"), py::arg("cycles") = section::SinusoidalDrive{}.cycles,
         py::arg("points") = section::SinusoidalDrive{}.points, py::arg("law") = std::string(requests::default_section_law),

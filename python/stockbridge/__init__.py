@@ -128,27 +128,33 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
 
 def identify_impedance(damper, input=None, *, frequency=None, velocity=None, displacement=None, z=None,
                        elements=_defaults.get("fit_elements"), fit_clamp_mass=_defaults.get("fit_clamp_mass"),
-                       threads=_defaults.get("fit_threads")):
+                       free=(), rms_limit=_defaults.get("fit_rms_limit"), threads=_defaults.get("fit_threads")):
     """The cable parameters (and with `fit_clamp_mass` the clamp mass) of a damper
     from its measured impedance, as ``stockbridge identify impedance``: `damper` a
     Damper (load_damper, make_damper) whose masses, inertias, offsets and cable
     lengths are known, its cables' values the starting values; the measurement a
     CSV's path (`input`, the command's columns) or arrays of one value per point:
     `frequency` (Hz), `velocity` (m/s) or `displacement` (m), and complex `z` (N s/m).
-    `elements` Jenkin elements per cable; `threads` model runs at once.
+    `elements` Jenkin elements per cable; `free` numbers of the damper fitted too, by
+    path ("arm.long.mass", "arm.short.cable.length", "clamp.mass", as --free);
+    `rms_limit` the RMS relative error of Z above which the fit is poor (warned of,
+    'poor_fit' True); `threads` model runs at once.
 
     Returns a dict: the --json summary's keys (ei, jenkin, misfit, rms_relative_error,
-    parameters with standard errors, correlation, undetermined, notes, ...), 'fitted'
-    (the --fitted CSV's columns as arrays: the measured and the model's Z at each
-    point), 'cable' (a Cable: the identified cable at the first arm's length, for
-    make_damper), 'cable_files' (each cable type's cable file text) and 'damper'
-    (the damper with the identified parameters)."""
+    poor_fit, parameters with standard errors, geometry, correlation, undetermined,
+    notes, ...), 'fitted' (the --fitted CSV's columns as arrays: the measured and the
+    model's Z at each point), 'cable' (a Cable: the identified cable at the first arm's
+    length, for make_damper), 'cable_files' (each cable type's cable file text),
+    'damper' (the damper with the identified parameters and numbers) and
+    'damper_file' (its damper file text, as --fitted-damper writes it)."""
     def values(array):
         return None if array is None else list(numpy.ravel(numpy.asarray(array)))
     out = _identify_impedance(damper, input=None if input is None else str(input), frequency=values(frequency),
                               velocity=values(velocity), displacement=values(displacement),
                               z=None if z is None else [complex(v) for v in numpy.ravel(numpy.asarray(z))],
-                              elements=elements, fit_clamp_mass=fit_clamp_mass, threads=threads)
+                              elements=elements, fit_clamp_mass=fit_clamp_mass,
+                              free=[free] if isinstance(free, str) else list(free), rms_limit=rms_limit,
+                              threads=threads)
     summary = json.loads(out.pop("summary_json"))
     summary.update(out)
     return summary

@@ -18,6 +18,7 @@ import io
 import math
 import os
 import sys
+import warnings
 
 import matplotlib
 
@@ -173,24 +174,49 @@ def log_if_positive(axes):
 
 # ---------------------------------------------------------------- impedance
 
+def measured_file_warnings(path):
+    """The library's warnings of a measured impedance file (values outside the typical
+    ranges, phases in radians) as UnusualValueWarnings; nothing without the compiled
+    module, or for a file its reader refuses (the plot has read it already)."""
+    try:
+        from . import UnusualValueWarning
+        from ._core import Error, _measured_impedance_warnings
+    except ImportError:
+        return
+    try:
+        lines = _measured_impedance_warnings(str(path))
+    except Error:
+        return
+    for line in lines:
+        warnings.warn(line, UnusualValueWarning, stacklevel=2)
+
+
 class Sweep:
-    """One impedance CSV: per row the frequency, the velocity amplitude, Z and whether it converged."""
+    """One impedance CSV: per row the frequency, the velocity amplitude, Z and whether it converged.
+
+    Every form identify impedance reads is accepted: the amplitude as velocity_m_s or
+    displacement_m, Z as re_z_n_s_m, im_z_n_s_m or abs_z_n_s_m, phase_deg. A file without
+    a converged column is a measurement: its curves are its amplitudes within 10 % (as
+    identify impedance groups them), and the library's checks of a measured file (units,
+    phases in radians) are warned of (UnusualValueWarning) when the compiled module is there."""
 
     def __init__(self, path, label=None):
         table = Table(path)
         self.path, self.label = path, label or os.path.basename(path)
         self.frequency = table.required("frequency_hz")
-        self.velocity = table.required("velocity_m_s")
+        for i, f in enumerate(self.frequency):
+            if f <= 0:
+                raise PlotError(f"{path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
+        self.measured = "converged" not in table
         self.converged = self._converged(table)
         good = [i for i, ok in enumerate(self.converged) if ok]
         if not good:
             raise PlotError(f"{path}: no converged point to plot (converged = 0 in every row)")
-        self.re = table.required("re_z_n_s_m", good)
-        self.im = table.required("im_z_n_s_m", good)
-        for i, f in enumerate(self.frequency):
-            if f <= 0:
-                raise PlotError(f"{path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
-        self.runs = self._runs(table)
+        self.velocity, displacement = self._amplitudes(table)
+        self.re, self.im = self._impedance(table, good)
+        self.runs = self._measured_runs(displacement) if self.measured else self._runs(displacement)
+        if self.measured:
+            measured_file_warnings(path)
 
     @staticmethod
     def _converged(table):
@@ -199,9 +225,30 @@ class Sweep:
             return [True] * len(table.rows)
         return [value == 1.0 for value in table.required("converged")]
 
-    def _runs(self, table):
+    def _amplitudes(self, table):
+        """The velocity amplitude of every row and the displacement column (None where absent);
+        a file with displacements only gets its velocities as 2 pi f X."""
+        if "velocity_m_s" in table:
+            return table.required("velocity_m_s"), table.column("displacement_m") if "displacement_m" in table else None
+        if "displacement_m" not in table:
+            raise PlotError(f"{self.path}: missing column 'velocity_m_s' (or 'displacement_m'): expected the clamp's "
+                            "amplitude in the header")
+        displacement = table.required("displacement_m")
+        return [2.0 * math.pi * f * x for f, x in zip(self.frequency, displacement)], displacement
+
+    def _impedance(self, table, good):
+        """Re Z and Im Z of every row (NaN where not converged), from re/im or |Z|/phase (degrees)."""
+        if "re_z_n_s_m" in table:
+            return table.required("re_z_n_s_m", good), table.required("im_z_n_s_m", good)
+        if "abs_z_n_s_m" not in table:
+            raise PlotError(f"{self.path}: missing column 're_z_n_s_m' (or 'abs_z_n_s_m'): expected re_z_n_s_m,"
+                            "im_z_n_s_m or abs_z_n_s_m,phase_deg in the header")
+        magnitude, phase = table.required("abs_z_n_s_m", good), table.required("phase_deg", good)
+        return ([m * math.cos(math.radians(p)) for m, p in zip(magnitude, phase)],
+                [m * math.sin(math.radians(p)) for m, p in zip(magnitude, phase)])
+
+    def _runs(self, displacement):
         """Rows grouped by amplitude (velocity, or displacement for constant-displacement sweeps)."""
-        displacement = table.column("displacement_m") if "displacement_m" in table else None
         by_displacement = (displacement is not None and all(map(math.isfinite, displacement))
                            and len(set(self.velocity)) > len(set(displacement)))
         key, unit = (displacement, "X = {:g} m") if by_displacement else (self.velocity, "V = {:g} m/s")
@@ -209,6 +256,16 @@ class Sweep:
         for i, k in enumerate(key):
             runs.setdefault(round(k, 12), []).append(i)
         return [(unit.format(amplitude), rows) for amplitude, rows in runs.items()]
+
+    def _measured_runs(self, displacement):
+        """A measurement's curves: the held amplitude's groups within 10 % in the order the file lists
+        them, each in frequency order."""
+        by_velocity = amplitude_groups(self.velocity)
+        by_displacement = amplitude_groups(displacement) if displacement is not None else None
+        groups, unit = ((by_displacement, "X = {:g} m") if by_displacement and len(by_displacement) < len(by_velocity)
+                        else (by_velocity, "V = {:g} m/s"))
+        groups.sort(key=lambda group: min(group[1]))  # in the file's order
+        return [(unit.format(amplitude), sorted(rows, key=lambda i: self.frequency[i])) for amplitude, rows in groups]
 
     def abs_z(self, i):
         return math.hypot(self.re[i], self.im[i])
@@ -697,10 +754,15 @@ def run(args):
 def main(argv=None):
     args = parser().parse_args(argv)
     try:
-        run(args)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            run(args)
     except PlotError as error:
         print(f"{PROGRAM}: {error}", file=sys.stderr)
         return 2
+    finally:
+        for warning in caught:  # as the program prints them: one "warning:" line each
+            print(f"warning: {warning.message}", file=sys.stderr)
     return 0
 
 

@@ -9,7 +9,7 @@ namespace stockbridge {
 const std::vector<TypicalRange>& typical::all() {
   static const std::vector<TypicalRange> ranges{cable_length, ei,       jenkin_c,     jenkin_h,  clamp_mass,
                                                 arm_mass,     arm_inertia, arm_offset, frequency, velocity,
-                                                displacement, tip_deflection_ratio, tip_rotation,
+                                                displacement, impedance, tip_deflection_ratio, tip_rotation,
                                                 conductor_diameter, conductor_mass_per_length, span_length,
                                                 rated_tensile_strength, conductor_ei_min, conductor_ei_max,
                                                 outer_wire_diameter, outer_wire_modulus, span_tension,
@@ -29,20 +29,20 @@ std::optional<double> TypicalRange::slipped(double value) const {
 
 std::string UnusualValue::message() const {
   const std::string unit = range.unit.empty() ? "" : fmt::format(" {}", range.unit);
-  std::string hint = "a unit mistake?";
-  if (const std::optional<double> si = range.slipped(value)) {
+  std::string slip_hint = hint;
+  if (const std::optional<double> si = range.slipped(value); slip_hint.empty() && si) {
     const std::string si_text = range.unit.empty() ? fmt::format("{:.6g}", *si) : fmt::format("{:.6g} {}", *si, range.unit);
-    hint = range.slip.unit == "%" ? fmt::format("a percentage? {} % = {}", format_value(value), si_text)
-                                  : fmt::format("in {}? {} {} = {}", range.slip.unit, format_value(value),
-                                                range.slip.unit, si_text);
+    slip_hint = range.slip.unit == "%" ? fmt::format("a percentage? {} % = {}", format_value(value), si_text)
+                                       : fmt::format("in {}? {} {} = {}", range.slip.unit, format_value(value),
+                                                     range.slip.unit, si_text);
   }
   return fmt::format("{} = {}: outside the typical {:.6g} to {:.6g}{} of the {} ({})", field, format_value(value),
-                     range.min, range.max, unit, range.quantity, hint);
+                     range.min, range.max, unit, range.quantity, slip_hint.empty() ? "a unit mistake?" : slip_hint);
 }
 
 std::optional<UnusualValue> unusual(std::string field, double value, const TypicalRange& range) {
   if (range.contains(value)) return std::nullopt;
-  return UnusualValue{std::move(field), value, range};
+  return UnusualValue{std::move(field), value, range, {}};
 }
 
 void check_typical(std::vector<UnusualValue>& out, std::string field, double value, const TypicalRange& range) {

@@ -14,6 +14,7 @@
 #include "fit_core.hpp"
 #include "least_squares.hpp"
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/design/damper_numbers.hpp"
 
 namespace stockbridge::identification {
 
@@ -65,13 +66,86 @@ double constant_value(const cable::Profile& profile, const std::string& name) {
 
 std::string arm_key(std::size_t arm) { return fmt::format("arm[{}].cable.", arm); }
 
+/// A number of the damper fitted with the cables (options.free): its path and how
+/// the optimiser's variable x stands for it.
+struct DamperNumber {
+  std::string path;   ///< canonical: "arm.<name>.<field>" ("arm[k].<field>" for an unnamed arm)
+  std::size_t arm = 0;
+  std::string field;  ///< "mass", "inertia", "offset", "cable.length"
+  std::string unit;
+  bool logarithmic = true;  ///< value = start exp(x); else start + scale x
+  double start = 0.0;
+  double scale = 1.0;
+
+  double value(double x) const { return logarithmic ? start * std::exp(x) : start + scale * x; }
+};
+
+/// An option's path refused: InvalidParameter naming the option and the path.
+[[noreturn]] void refuse_free(const std::string& path, std::string_view why) {
+  throw InvalidParameter("free", fmt::format(" = {}: {}", printable(path), why));
+}
+
+/// The fitted numbers of options.free (the clamp mass apart: it has its own variable).
+std::vector<DamperNumber> damper_numbers(const damper::DamperDescription& start, const std::vector<std::string>& free) {
+  std::vector<DamperNumber> out;
+  std::vector<std::pair<std::size_t, std::string>> seen;  // (arm, field) of each
+  bool clamp_mass = false;
+  for (const std::string& path : free) {
+    if (path == "clamp.mass") {
+      if (clamp_mass) refuse_free(path, "given twice: expected each number once");
+      clamp_mass = true;
+      continue;
+    }
+    design::ArmPath arm;
+    try {
+      arm = design::split_arm_path(start, path);
+    } catch (const InvalidParameter& e) {
+      refuse_free(path, e.detail().substr(e.detail().starts_with(": ") ? 2 : 0));
+    }
+    static const std::pair<const char*, const char*> kFields[] = {
+        {"mass", "kg"}, {"inertia", "kg m^2"}, {"offset", "m"}, {"cable.length", "m"}};
+    const auto field = std::find_if(std::begin(kFields), std::end(kFields),
+                                    [&](const auto& f) { return arm.field == f.first; });
+    if (field == std::end(kFields)) {
+      refuse_free(path, fmt::format("{}: expected {} (every cable type's ei, c and h are fitted anyway)",
+                                    arm.field.starts_with("cable.") ? "a cable parameter or setting, not fitted as a "
+                                                                      "number of the damper"
+                                                                    : "not a number the fit can free",
+                                    free_damper_numbers));
+    }
+    if (std::find(seen.begin(), seen.end(), std::make_pair(arm.arm, arm.field)) != seen.end()) {
+      refuse_free(path, "given twice (perhaps once by name and once by index): expected each number once");
+    }
+    seen.emplace_back(arm.arm, arm.field);
+    const damper::ArmDescription& a = start.arms[arm.arm];
+    DamperNumber n;
+    n.path = a.name.empty() ? fmt::format("arm[{}].{}", arm.arm, arm.field) : fmt::format("arm.{}.{}", a.name, arm.field);
+    n.arm = arm.arm;
+    n.field = arm.field;
+    n.unit = field->second;
+    n.start = design::damper_number(start, path);
+    n.logarithmic = arm.field != "offset";
+    if (n.logarithmic && !(n.start > 0.0)) {
+      refuse_free(path, fmt::format("is {} in the damper: fitted in logarithms, it must start > 0", format_value(n.start)));
+    }
+    // An offset moves in units of its start's magnitude, at least 1 cm.
+    n.scale = n.logarithmic ? 1.0 : std::max(std::abs(n.start), 0.01);
+    out.push_back(n);
+  }
+  return out;
+}
+
 /// The optimiser's variables and the damper they stand for. Per cable type: the
-/// logarithms of ei, c_0, h_0, c_1, h_1, ... relative to the starting values; then,
-/// when fitted, the clamp mass's change in units of the damper's mass.
+/// logarithms of ei, c_0, h_0, c_1, h_1, ... relative to the starting values; then
+/// the numbers of options.free (DamperNumber); then, when fitted, the clamp mass's
+/// change in units of the damper's mass.
 class FitVariables {
  public:
-  FitVariables(const damper::DamperDescription& start, int elements, bool fit_clamp_mass)
-      : start_(start), type_of_arm_(cable_types(start)), fit_clamp_mass_(fit_clamp_mass) {
+  FitVariables(const damper::DamperDescription& start, const ImpedanceIdentificationOptions& options)
+      : start_(start), type_of_arm_(cable_types(start)), numbers_(damper_numbers(start, options.free)) {
+    fit_clamp_mass_ = options.fit_clamp_mass ||
+                      std::find(options.free.begin(), options.free.end(), "clamp.mass") != options.free.end();
+    const int elements = options.elements;
     const std::size_t types = *std::max_element(type_of_arm_.begin(), type_of_arm_.end()) + 1;
     for (std::size_t t = 0; t < types; ++t) {
       const std::size_t arm = first_arm(t);
@@ -85,12 +159,18 @@ class FitVariables {
 
   int elements() const { return static_cast<int>(reference_.front().jenkin.size()); }
   int per_type() const { return 1 + 2 * elements(); }
-  int size() const { return per_type() * static_cast<int>(reference_.size()) + (fit_clamp_mass_ ? 1 : 0); }
+  int cable_variables() const { return per_type() * static_cast<int>(reference_.size()); }
+  int size() const { return cable_variables() + static_cast<int>(numbers_.size()) + (fit_clamp_mass_ ? 1 : 0); }
   std::size_t types() const { return reference_.size(); }
   const std::vector<std::size_t>& type_of_arm() const { return type_of_arm_; }
   bool fits_clamp_mass() const { return fit_clamp_mass_; }
   int clamp_mass_index() const { return size() - 1; }
   double mass_scale() const { return mass_scale_; }
+  /// The number of options.free variable i stands for, or nullptr for a cable's or the clamp mass's.
+  const DamperNumber* number(int i) const {
+    const int k = i - cable_variables();
+    return k >= 0 && k < static_cast<int>(numbers_.size()) ? &numbers_[static_cast<std::size_t>(k)] : nullptr;
+  }
 
   /// Each type's parameters at x, in the packed order.
   std::vector<section::MasingParameters> cables(const Eigen::VectorXd& x) const {
@@ -111,20 +191,23 @@ class FitVariables {
     return start_.clamp_mass + (fit_clamp_mass_ ? mass_scale_ * x(clamp_mass_index()) : 0.0);
   }
 
-  /// The damper with the cables' parameters (each arm keeps its length, sections
-  /// (at most `max_sections`), mirror length and lever-arm cap) and the clamp mass given.
-  damper::DamperDescription damper(const std::vector<section::MasingParameters>& cables, double clamp_mass,
-                                   int max_sections = cable::max_sections) const {
+  /// The damper at x, with the clamp mass given (each arm keeps what is not fitted:
+  /// its sections (at most `max_sections`), mirror length and lever-arm cap).
+  damper::DamperDescription damper(const Eigen::VectorXd& x, double clamp_mass, int max_sections = cable::max_sections) const {
+    const std::vector<section::MasingParameters> fitted = cables(x);
     damper::DamperDescription d = start_;
     d.clamp_mass = clamp_mass;
+    for (std::size_t k = 0; k < numbers_.size(); ++k) {
+      design::set_damper_number(d, numbers_[k].path, numbers_[k].value(x(cable_variables() + static_cast<int>(k))));
+    }
     for (std::size_t k = 0; k < d.arms.size(); ++k) {
       const std::size_t t = type_of_arm_[k];
       cable::CableDescription& c = d.arms[k].cable;
       c.sections = std::min(c.sections, max_sections);
-      c.ei = cable::Profile::constant(cables[t].ei);
+      c.ei = cable::Profile::constant(fitted[t].ei);
       c.jenkin.clear();
-      for (std::size_t j = 0; j < cables[t].jenkin.size(); ++j) {
-        c.jenkin.push_back({cable::Profile::constant(cables[t].jenkin[j].c), cable::Profile::constant(cables[t].jenkin[j].h),
+      for (std::size_t j = 0; j < fitted[t].jenkin.size(); ++j) {
+        c.jenkin.push_back({cable::Profile::constant(fitted[t].jenkin[j].c), cable::Profile::constant(fitted[t].jenkin[j].h),
                             k0_[t][j]});
       }
     }
@@ -133,7 +216,8 @@ class FitVariables {
 
   /// The names of the variables' parameters as a cable file (and damper file) names them.
   std::string name(int i) const {
-    if (fit_clamp_mass_ && i == clamp_mass_index()) return "clamp_mass";
+    if (fit_clamp_mass_ && i == clamp_mass_index()) return "clamp.mass";
+    if (const DamperNumber* n = number(i)) return n->path;
     const std::string& prefix = prefixes_[static_cast<std::size_t>(i / per_type())];
     const int k = i % per_type();
     if (k == 0) return prefix + "ei";
@@ -141,6 +225,7 @@ class FitVariables {
   }
   std::string unit(int i) const {
     if (fit_clamp_mass_ && i == clamp_mass_index()) return "kg";
+    if (const DamperNumber* n = number(i)) return n->unit;
     return i % per_type() == 0 || (i % per_type() - 1) % 2 == 0 ? "N m^2" : "N m";
   }
   std::string type_prefix(std::size_t t) const { return prefixes_[t]; }
@@ -161,7 +246,52 @@ class FitVariables {
     return out;
   }
 
-  /// The starting points: the starting values with ei and every h scaled.
+  /// The directions in the variables along which Z does not change at all: the
+  /// damper's scalings. With the quasi-static cable, lengths and offsets times s,
+  /// inertias times s^2, ei and c times s^3 and h times s (the arm masses kept) give
+  /// the same clamp force for the same clamp motion: each arm's tip rotates 1/s times
+  /// as much, its moments are s times as large, its forces the same. One direction per
+  /// cable type whose every arm has its cable length and inertia free and its offset
+  /// free or 0, and no element with the modified Masing model's k0 (whose lever-arm
+  /// cap does not scale). Each direction has unit length.
+  std::vector<Eigen::VectorXd> scalings(const Eigen::VectorXd& x) const {
+    std::vector<Eigen::VectorXd> out;
+    for (std::size_t t = 0; t < types(); ++t) {
+      Eigen::VectorXd g = Eigen::VectorXd::Zero(size());
+      const int o = per_type() * static_cast<int>(t);
+      g(o) = 3.0;
+      for (int j = 0; j < elements(); ++j) {
+        g(o + 1 + 2 * j) = 3.0;
+        g(o + 2 + 2 * j) = 1.0;
+        if (k0_[t][static_cast<std::size_t>(j)] != 0.0) g.setZero();
+      }
+      for (std::size_t k = 0; k < start_.arms.size() && g.norm() > 0.0; ++k) {
+        if (type_of_arm_[k] != t) continue;
+        auto free_index = [&](const std::string& field) {
+          for (std::size_t i = 0; i < numbers_.size(); ++i) {
+            if (numbers_[i].arm == k && numbers_[i].field == field) return cable_variables() + static_cast<int>(i);
+          }
+          return -1;
+        };
+        const int length = free_index("cable.length"), inertia = free_index("inertia"), offset = free_index("offset");
+        if (length < 0 || inertia < 0 || (offset < 0 && start_.arms[k].offset != 0.0)) {
+          g.setZero();
+          break;
+        }
+        g(length) = 1.0;
+        g(inertia) = 2.0;
+        if (offset >= 0) {
+          const DamperNumber& n = numbers_[static_cast<std::size_t>(offset - cable_variables())];
+          g(offset) = n.value(x(offset)) / n.scale;  // d(offset)/ds = offset, in the variable's units
+        }
+      }
+      if (g.norm() > 0.0) out.push_back(g.normalized());
+    }
+    return out;
+  }
+
+  /// The starting points: the starting values with ei and every h scaled (the
+  /// numbers of the damper at the start's).
   std::vector<Eigen::VectorXd> starts() const {
     std::vector<Eigen::VectorXd> out;
     for (const auto& [ei_factor, h_factor] : kStartFactors) {
@@ -221,14 +351,21 @@ class FitVariables {
 
   damper::DamperDescription start_;
   std::vector<std::size_t> type_of_arm_;
-  bool fit_clamp_mass_;
+  std::vector<DamperNumber> numbers_;
+  bool fit_clamp_mass_ = false;
   std::vector<std::string> prefixes_;
   std::vector<section::MasingParameters> reference_;
   std::vector<std::vector<double>> k0_;
   double mass_scale_ = 0.0;
 };
 
-using Checkpoints = std::vector<damper::DamperTracker::Checkpoint>;
+/// Each point's solution (a tracker's checkpoint, one path per distinct arm), and
+/// which arms were distinct: a fitted mass or length can make arms alike or apart,
+/// and a checkpoint warm-starts only a damper with the same distinct arms.
+struct Checkpoints {
+  std::vector<damper::DamperTracker::Checkpoint> points;
+  std::vector<std::size_t> distinct;
+};
 
 /// The model at every measured point. Each curve is solved from `warm` where given
 /// (per point, the solution there for nearby parameters: a Newton step or two,
@@ -240,16 +377,16 @@ std::vector<damper::ImpedancePoint> solve_points(const damper::Damper& damper, c
                                                  const damper::SolverOptions& solver, const Checkpoints* warm,
                                                  Checkpoints* solutions) {
   std::vector<damper::ImpedancePoint> points(m.points.size());
-  if (solutions) solutions->assign(m.points.size(), {});
+  if (solutions) *solutions = {std::vector<damper::DamperTracker::Checkpoint>(m.points.size()), damper.distinct()};
   auto keep = [&](damper::DamperTracker& tracker, std::size_t i) {
-    if (solutions && points[i].converged()) (*solutions)[i] = tracker.checkpoint();
+    if (solutions && points[i].converged()) solutions->points[i] = tracker.checkpoint();
   };
   for (const std::vector<std::size_t>& curve : measured_curves(m)) {
     damper::DamperTracker tracker(damper, solver, m.held);
-    bool warm_started = warm && warm->size() == m.points.size() &&
-                        std::all_of(curve.begin(), curve.end(), [&](std::size_t i) { return !(*warm)[i].empty(); });
+    bool warm_started = warm && warm->points.size() == m.points.size() && warm->distinct == damper.distinct() &&
+                        std::all_of(curve.begin(), curve.end(), [&](std::size_t i) { return !warm->points[i].empty(); });
     for (std::size_t k = 0; k < curve.size() && warm_started; ++k) {
-      tracker.restore((*warm)[curve[k]]);
+      tracker.restore(warm->points[curve[k]]);
       points[curve[k]] = tracker.solve(m.points[curve[k]].excitation);
       warm_started = points[curve[k]].converged();
       keep(tracker, curve[k]);
@@ -309,7 +446,7 @@ class ImpedanceProblem : public least_squares::Problem {
   /// The model's points (with the clamp mass) at x; converged() false where it did not converge.
   std::vector<damper::ImpedancePoint> points(const Eigen::VectorXd& x) const {
     const damper::DamperDescription description =
-        variables_.damper(variables_.cables(x), std::max(0.0, variables_.clamp_mass(x)), max_sections_);
+        variables_.damper(x, std::max(0.0, variables_.clamp_mass(x)), max_sections_);
     const Evaluation* warm = best_recent();
     return solve_points(damper::Damper(description), measurement_, options_.solver, warm ? &warm->solutions : nullptr,
                         nullptr);
@@ -326,7 +463,7 @@ class ImpedanceProblem : public least_squares::Problem {
     std::vector<damper::ImpedancePoint> arms;
     if (x.cwiseAbs().maxCoeff() <= fit_core::Search::variable_limit) {
       try {
-        arms = solve_points(damper::Damper(variables_.damper(variables_.cables(x), 0.0, max_sections_)), measurement_,
+        arms = solve_points(damper::Damper(variables_.damper(x, 0.0, max_sections_)), measurement_,
                             options_.solver, warm ? &warm->solutions : nullptr, &e.solutions);
       } catch (const InvalidParameter&) {
         arms.clear();  // parameters the model does not accept (overflowed)
@@ -447,9 +584,17 @@ std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Ei
     if (variables.fits_clamp_mass() && i == variables.clamp_mass_index()) {
       // A linear variable in units of the damper's mass: its resolution in those units.
       e.value = variables.clamp_mass(x);
+      e.geometry = true;
       e.standard_error = variables.mass_scale() * s.standard_error(i);
       e.resolution_at_1_percent = s.resolution(i);
       e.sensitivity = s.sensitivity(i) / variables.mass_scale();
+    } else if (const DamperNumber* n = variables.number(i)) {
+      e.value = n->value(x(i));
+      e.geometry = true;
+      // A log variable's errors are relative; an offset's in units of its scale.
+      e.standard_error = (n->logarithmic ? e.value : n->scale) * s.standard_error(i);
+      e.resolution_at_1_percent = s.resolution(i);
+      e.sensitivity = n->logarithmic ? s.sensitivity(i) : s.sensitivity(i) / n->scale;
     } else {
       const section::MasingParameters& p = cables[static_cast<std::size_t>(i / variables.per_type())];
       const int k = i % variables.per_type();
@@ -590,6 +735,9 @@ void ImpedanceIdentificationOptions::validate() const {
   require_in_range("elements", elements, 1, 6);
   require_in_range("max_jacobians", max_jacobians, 1, 10000);
   require_in_range("threads", threads, 1, 1024);
+  if (!(std::isfinite(rms_limit) && rms_limit > 0.0)) {
+    throw_invalid("rms_limit", rms_limit, "a finite fraction > 0 (0.1 for 10 %)");
+  }
   solver.validate();
 }
 
@@ -603,7 +751,7 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
   options.validate();
   measurement.validate();
   (void)damper::Damper(start);  // validates the start, naming its fields
-  const FitVariables variables(start, options.elements, options.fit_clamp_mass);
+  const FitVariables variables(start, options);
   if (2 * measurement.points.size() < static_cast<std::size_t>(variables.size())) {
     throw InvalidParameter("measurement", fmt::format(": {} points for {} parameters: expected at least {}",
                                        measurement.points.size(), variables.size(), (variables.size() + 1) / 2));
@@ -630,15 +778,23 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
 
   const Eigen::VectorXd x = variables.sorted(best.x);
   const double sum_of_squares = problem.residuals(x).squaredNorm();
-  const least_squares::Statistics statistics = least_squares::statistics(problem.jacobian(x), sum_of_squares, kStatedScatter);
+  // The damper's exact scalings (FitVariables::scalings) are null directions of the
+  // Jacobian, which its forward differences would blur into a small but finite
+  // singular value: they are projected out, so that the statistics see them exactly.
+  Eigen::MatrixXd jacobian = problem.jacobian(x);
+  const std::vector<Eigen::VectorXd> scalings = variables.scalings(x);
+  for (const Eigen::VectorXd& g : scalings) jacobian -= (jacobian * g) * g.transpose();  // disjoint supports: orthogonal
+  const least_squares::Statistics statistics = least_squares::statistics(jacobian, sum_of_squares, kStatedScatter);
 
   ImpedanceIdentification result;
   result.cable_type = variables.type_of_arm();
   result.cables = variables.cables(x);
   result.clamp_mass = variables.clamp_mass(x);
-  result.damper = variables.damper(result.cables, std::max(0.0, result.clamp_mass));
+  result.damper = variables.damper(x, std::max(0.0, result.clamp_mass));
   result.misfit = sum_of_squares;
   result.rms_relative_error = std::sqrt(sum_of_squares / static_cast<double>(measurement.points.size()));
+  result.rms_limit = options.rms_limit;
+  result.poor_fit = result.rms_relative_error > options.rms_limit;
   result.parameters = estimates(variables, x, statistics);
   result.correlation = statistics.correlation;
   result.stick_stiffness = stick_stiffnesses(variables, x, statistics);
@@ -646,6 +802,11 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
   result.not_converged = static_cast<int>(
       std::count_if(result.fitted.begin(), result.fitted.end(), [](const damper::ImpedancePoint& p) { return !p.converged(); }));
   result.notes = determination_notes(result.parameters, statistics, result.stick_stiffness, result.fitted);
+  if (!scalings.empty()) {
+    result.notes.push_back("a damper scaled by any s (cable lengths and offsets times s, inertias times s^2, ei and c "
+                           "times s^3, h times s) has the same impedance: the data do not determine its size; fix one arm's "
+                           "inertia, cable length or (nonzero) offset at the drawing's value (leave it out of free)");
+  }
   result.fit = best.summary;
   if (!best.summary.converged()) {
     result.notes.push_back(fmt::format("the fit stopped short of its tolerance after {} iterations ({}): the estimates are "

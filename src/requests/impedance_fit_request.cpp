@@ -9,6 +9,7 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/csv_writer.hpp"
+#include "stockbridge/io/damper_file.hpp"
 
 namespace stockbridge::requests {
 
@@ -24,7 +25,8 @@ io::JsonObject estimate_json(const identification::ParameterEstimate& e) {
       .add("standard_error", e.standard_error)
       .add("resolution_at_1_percent", e.resolution_at_1_percent)
       .add("sensitivity", e.sensitivity)
-      .add("determined", e.determined);
+      .add("determined", e.determined)
+      .add("geometry", e.geometry);
 }
 
 std::vector<io::JsonObject> jenkin_json(const section::MasingParameters& p) {
@@ -48,6 +50,9 @@ identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitReq
   options.elements = request.elements;
   options.fit_clamp_mass = request.fit_clamp_mass;
   options.threads = request.threads;
+  options.free = request.free;
+  options.rms_limit = request.rms_limit;
+  options.validate();
   return options;
 }
 
@@ -116,10 +121,11 @@ Table<FittedPoint> fitted_table() {
 
 std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification& fit, std::string_view source) {
   std::vector<Warning> out = plain_warnings(fit.notes);
-  if (fit.rms_relative_error > large_rms_error) {
+  if (fit.poor_fit) {
     out.push_back({fmt::format("the fit's RMS relative error of Z {:.3g} % is large (above {:g} %): the model does not "
-                               "follow {} (check its units, the damper's masses and lengths, --elements)",
-                               100.0 * fit.rms_relative_error, 100.0 * large_rms_error, source),
+                               "follow {} (check its units, the damper's masses and lengths or fit them with --free, "
+                               "--elements)",
+                               100.0 * fit.rms_relative_error, 100.0 * fit.rms_limit, source),
                    false});
   }
   return out;
@@ -127,12 +133,14 @@ std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification&
 
 io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measurement,
                            const identification::ImpedanceIdentification& fit, const damper::Damper& start,
-                           std::string_view source) {
+                           std::string_view source, const std::vector<std::string>& input_warnings) {
   std::vector<io::JsonObject> parameters, stick, cables;
   std::vector<std::string> undetermined;
+  io::JsonObject geometry;
   for (const identification::ParameterEstimate& e : fit.parameters) {
     parameters.push_back(estimate_json(e));
     if (!e.determined) undetermined.push_back(e.name);
+    if (e.geometry) geometry.add(e.name, e.value);
   }
   for (const identification::ParameterEstimate& e : fit.stick_stiffness) stick.push_back(estimate_json(e));
   for (std::size_t t = 0; t < fit.cables.size(); ++t) {
@@ -152,10 +160,13 @@ io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measureme
       .add("clamp_mass_kg", fit.clamp_mass)
       .add("misfit", fit.misfit)
       .add("rms_relative_error", fit.rms_relative_error)
+      .add("rms_limit", fit.rms_limit)
+      .add("poor_fit", fit.poor_fit)
       .add("points", static_cast<int>(measurement.points.size()))
       .add("curves", static_cast<int>(identification::measured_curves(measurement).size()))
       .add("not_converged", fit.not_converged)
       .add("parameters", parameters)
+      .add("geometry", geometry)
       .add("correlation", correlation)
       .add("stick_stiffness", stick)
       .add("undetermined", undetermined)
@@ -165,7 +176,11 @@ io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measureme
       .add("starts", fit.starts)
       .add("termination", termination_name(fit.fit.termination))
       .add("iterations", fit.fit.jacobians)
-      .add("warnings", warning_messages(fit_warnings(fit, source)));
+      .add("warnings", [&] {
+        std::vector<std::string> lines = input_warnings;
+        for (std::string& line : warning_messages(fit_warnings(fit, source))) lines.push_back(std::move(line));
+        return lines;
+      }());
 }
 
 std::string fit_summary_line(const identification::ImpedanceMeasurement& measurement,
@@ -190,9 +205,24 @@ std::string fitted_cable_file(const identification::ImpedanceIdentification& fit
       source, 100.0 * fit.rms_relative_error, fit.fitted.size(), arm);
   const std::string prefix = fit.cables.size() > 1 ? fmt::format("arm[{}].cable.", arm) : "";
   for (const identification::ParameterEstimate& e : fit.parameters) {
-    if (!e.determined && e.name.starts_with(prefix) && e.unit != "kg") comment += fmt::format("\n{} = {:.6g} {} is NOT determined by the data.", e.name, e.value, e.unit);
+    if (!e.determined && e.name.starts_with(prefix) && !e.geometry) comment += fmt::format("\n{} = {:.6g} {} is NOT determined by the data.", e.name, e.value, e.unit);
   }
   return io::cable_file_toml(fit.damper.arms[arm].cable, comment);
+}
+
+std::string fitted_damper_file(const identification::ImpedanceIdentification& fit, std::string_view source) {
+  std::string comment = fmt::format("Identified by stockbridge identify impedance from {}:\nRMS relative error of Z {:.4g} % at {} points{}.",
+                                    source, 100.0 * fit.rms_relative_error, fit.fitted.size(),
+                                    fit.poor_fit ? fmt::format(", above the limit {:g} %: a poor fit", 100.0 * fit.rms_limit) : "");
+  std::vector<std::string> fitted;
+  for (const identification::ParameterEstimate& e : fit.parameters) {
+    if (e.geometry) fitted.push_back(e.name);
+  }
+  if (!fitted.empty()) comment += fmt::format("\nFitted with the cables: {}.", fmt::join(fitted, ", "));
+  for (const identification::ParameterEstimate& e : fit.parameters) {
+    if (!e.determined) comment += fmt::format("\n{} = {:.6g} {} is NOT determined by the data.", e.name, e.value, e.unit);
+  }
+  return io::damper_file_toml(fit.damper, comment);
 }
 
 }  // namespace stockbridge::requests

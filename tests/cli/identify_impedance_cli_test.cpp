@@ -3,7 +3,9 @@
 // cable file reused by a damper file to reproduce the curve; the other column
 // forms; the shipped example; bad measurements and dampers.
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <complex>
 #include <filesystem>
 #include <sstream>
@@ -181,6 +183,88 @@ TEST(IdentifyImpedanceCli, ACurveBelowSlipSaysHIsNotDeterminedAndStillWritesTheC
   EXPECT_NE(read_text(dir / "cable.toml").find("NOT determined"), std::string::npos);
 }
 
+TEST(IdentifyImpedanceCli, FreeFitsADampersNumbersAndTheFittedDamperFileHoldsThem) {
+  const auto dir = scratch_directory("identify-impedance-free");
+  measured_curve(dir);
+  // The left arm's mass 12 % low in the start: fitted with the cable.
+  std::string start = damper_toml(kGuess);
+  start.replace(start.find("mass = 0.856"), 12, "mass = 0.75");
+  write_temp_file(dir, "start.toml", start);
+  const CliResult r = run_cli(
+      "identify impedance --damper start.toml --input measured.csv --free arm.left.mass --json --fitted-damper fitted.toml",
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NEAR(json_number(r.out, "arm.left.mass"), 0.856, 1e-5) << r.out;  // the "geometry" object
+  EXPECT_NE(r.out.find("\"name\": \"arm.left.mass\", \"unit\": \"kg\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"geometry\": true"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"poor_fit\": false"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("arm.left.mass = 0.856"), std::string::npos) << r.err;
+  // The fitted damper file: the fitted mass and cable, read back by the damper reader.
+  const std::string fitted = read_text(dir / "fitted.toml");
+  EXPECT_NE(fitted.find("Fitted with the cables: arm.left.mass."), std::string::npos) << fitted;
+  EXPECT_NE(fitted.find("mass = 0.85"), std::string::npos) << fitted;
+  EXPECT_EQ(fitted.find("mass = 0.75"), std::string::npos) << fitted;
+  const CliResult again = run_cli("impedance fitted.toml --velocity 0.2 --frequencies 10 -o z.csv --quiet", dir);
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+}
+
+TEST(IdentifyImpedanceCli, APoorFitWritesItsFilesWarnsWithTheRmsAndTheLimitAndExitsThree) {
+  // The measured curve with the sign of Im Z turned: no damper has it.
+  const auto dir = scratch_directory("identify-impedance-poor");
+  const CsvTable measured = read_csv_table(measured_curve(dir));
+  std::string turned = "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n";
+  for (const std::vector<double>& row : measured.rows) {
+    auto at = [&](const char* name) {
+      return row[static_cast<std::size_t>(std::find(measured.header.begin(), measured.header.end(), name) - measured.header.begin())];
+    };
+    char line[256];
+    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g\n", at("frequency_hz"), at("velocity_m_s"), at("re_z_n_s_m"),
+                  -at("im_z_n_s_m"));
+    turned += line;
+  }
+  write_temp_file(dir, "turned.csv", turned);
+  write_temp_file(dir, "start.toml", damper_toml(kGuess));
+  const CliResult r = run_cli(
+      "identify impedance --damper start.toml --input turned.csv --json -o cable.toml --fitted fit.csv --fitted-damper d.toml", dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("warning: the fit's RMS relative error of Z "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("% is large (above 10 %)"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("\"poor_fit\": true"), std::string::npos) << r.out;
+  EXPECT_EQ(json_number(r.out, "rms_limit"), 0.1) << r.out;
+  EXPECT_GT(json_number(r.out, "rms_relative_error"), 0.1) << r.out;
+  for (const char* file : {"cable.toml", "fit.csv", "d.toml"}) EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  EXPECT_NE(read_text(dir / "d.toml").find("a poor fit"), std::string::npos);
+  // A limit above the error: the same fit passes.
+  const CliResult lenient = run_cli("identify impedance --damper start.toml --input turned.csv --rms-limit 5", dir);
+  EXPECT_EQ(lenient.exit_code, 0) << lenient.err;
+  EXPECT_EQ(lenient.err.find("is large"), std::string::npos) << lenient.err;
+}
+
+TEST(IdentifyImpedanceCli, AMeasurementInMmPerSecondAndRadiansWarnsNamingLineColumnAndSlip) {
+  const auto dir = scratch_directory("identify-impedance-units");
+  const CsvTable measured = read_csv_table(measured_curve(dir));
+  std::string slipped = "frequency_hz,velocity_m_s,abs_z_n_s_m,phase_deg\n";
+  for (const std::vector<double>& row : measured.rows) {
+    auto at = [&](const char* name) {
+      return row[static_cast<std::size_t>(std::find(measured.header.begin(), measured.header.end(), name) - measured.header.begin())];
+    };
+    char line[256];
+    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g\n", at("frequency_hz"), 1000.0 * at("velocity_m_s"),
+                  at("abs_z_n_s_m"), at("phase_deg") * 3.141592653589793 / 180.0);
+    slipped += line;
+  }
+  write_temp_file(dir, "slipped.csv", slipped);
+  write_temp_file(dir, "start.toml", damper_toml(kGuess));
+  const CliResult r = run_cli("identify impedance --damper start.toml --input slipped.csv --json", dir);
+  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3) << r.err;
+  EXPECT_NE(r.err.find("warning: slipped.csv:2: velocity_m_s = 50: outside the typical 0.001 to 2 m/s of the clamp "
+                       "velocity amplitude (mm/s?)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("phase_deg looks like radians"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("velocity_m_s = 50: outside"), std::string::npos) << r.out;  // the JSON's warnings too
+}
+
 struct BadFit {
   const char* name;
   const char* damper;    ///< the damper file's text ("" for the valid start)
@@ -222,7 +306,12 @@ INSTANTIATE_TEST_SUITE_P(
                "ei = { s = [0.0, 0.1], value = [2.8, 3.0] }\njenkin = [ { c = 20.0, h = 0.7 } ]\n",
                "", "start.toml: arm[0].cable.ei: a profile along the cable"},
         BadFit{"too_few_points", "", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.05,5,80\n20,0.05,12,150\n",
-               "z.csv: 2 points for 5 parameters", "--elements 2"}),
+               "z.csv: 2 points for 5 parameters", "--elements 2"},
+        BadFit{"free_unknown_arm", "", "", "--free = arm.middle.mass: no arm is named 'middle' (the arms: left, right",
+               "--free arm.left.mass,arm.middle.mass"},
+        BadFit{"free_cable_parameter", "", "", "--free = arm[1].cable.jenkin[0].h: a cable parameter",
+               "--free arm[1].cable.jenkin[0].h"},
+        BadFit{"rms_limit_zero", "", "", "rms_limit = 0: expected a finite fraction > 0", "--rms-limit 0"}),
     [](const ::testing::TestParamInfo<BadFit>& info) { return info.param.name; });
 
 }  // namespace

@@ -466,6 +466,30 @@ def test_identify_impedance_equals_the_program_and_returns_the_documented_keys(i
     assert abs(fit["cable"].ei / 2.8 - 1) < 0.01 and fit["cable"].length == 0.1875
 
 
+def test_identify_impedance_fits_the_dampers_numbers_as_the_program(tmp_path):
+    """free: the program's --free; the fitted damper and its file hold the numbers."""
+    start = os.path.join(SOURCE, "examples", "damper_to_identify.toml")
+    with open(start) as handle:
+        text = handle.read().replace("mass = 0.856", "mass = 0.75", 1)  # the first arm's mass 12 % low
+    (tmp_path / "start.toml").write_text(text)
+    measured = os.path.join(SOURCE, "examples", "measured_impedance.csv")
+    out = subprocess.run([CLI, "identify", "impedance", "--damper", "start.toml", "--input", measured, "--json",
+                          "--free", "arm.left.mass", "--fitted-damper", "fitted.toml"],
+                         cwd=tmp_path, check=True, capture_output=True, text=True).stdout
+    summary = json.loads(out)
+    fit = sb.identify_impedance(sb.load_damper(str(tmp_path / "start.toml")), measured, free="arm.left.mass")
+    assert fit["geometry"] == summary["geometry"] and fit["parameters"] == summary["parameters"]
+    assert abs(fit["geometry"]["arm.left.mass"] / 0.856 - 1) < 0.01 and fit["poor_fit"] is False
+    assert [p["geometry"] for p in fit["parameters"]] == [False, False, False, True]
+    assert fit["damper_file"] == (tmp_path / "fitted.toml").read_text()
+    assert f"mass = {fit['geometry']['arm.left.mass']!r}" in fit["damper_file"]
+    assert fit["damper"].arms == ["left", "right"]
+    with pytest.raises(sb.InvalidParameter, match=r"free = arm.middle.mass: no arm is named 'middle'"):
+        sb.identify_impedance(fit["damper"], measured, free=["arm.middle.mass"])
+    with pytest.raises(sb.InvalidParameter, match="rms_limit = -1"):
+        sb.identify_impedance(fit["damper"], measured, rms_limit=-1)
+
+
 def test_identify_impedance_from_arrays_equals_the_file(impedance_fit):
     _, _, fit = impedance_fit
     f = fit["fitted"]

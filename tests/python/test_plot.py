@@ -3,6 +3,7 @@ command writes a non-empty PNG of the expected size; bad files get one line and
 exit status 2."""
 
 import csv
+import math
 import os
 import re
 import shutil
@@ -221,6 +222,47 @@ def test_measured_file_with_z_only(more):
     assert png_size(more / "measured.png") == (800, 600)
     sweep = plot_module().Sweep(str(more / "measured.csv"))
     assert all(sweep.converged) and len(sweep.re) > 3
+
+
+def test_every_measured_form_identify_impedance_reads(more):
+    """|Z| and phase, displacement instead of velocity: the same curves as Re, Im and velocity."""
+    with open(more / "z.csv", newline="") as handle:
+        rows = [row for row in csv.DictReader(handle) if row["converged"] == "1"]
+    with open(more / "sheet.csv", "w", newline="") as handle:
+        handle.write("frequency_hz,displacement_m,abs_z_n_s_m,phase_deg\n")
+        for row in rows:
+            handle.write(f"{row['frequency_hz']},{row['displacement_m']},{row['abs_z_n_s_m']},{row['phase_deg']}\n")
+    result = plot("impedance", "sheet.csv", "--power", "-o", "sheet.png", cwd=more)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""  # typical values: no warning
+    assert png_size(more / "sheet.png") == (800, 600)
+    sheet = plot_module().Sweep(str(more / "sheet.csv"))
+    assert [label for label, _ in sheet.runs] == ["V = 0.2 m/s", "V = 0.05 m/s"]
+    for i, row in enumerate(rows):
+        assert sheet.re[i] == pytest.approx(float(row["re_z_n_s_m"]), rel=1e-9, abs=1e-9)
+        assert sheet.im[i] == pytest.approx(float(row["im_z_n_s_m"]), rel=1e-9)
+        assert sheet.velocity[i] == pytest.approx(float(row["velocity_m_s"]), rel=1e-12)
+
+
+def test_a_measured_sheet_in_wrong_units_is_drawn_with_the_librarys_warnings(more):
+    """Velocities in mm/s and phases in radians: one warning line each, as identify impedance prints them."""
+    with open(more / "z.csv", newline="") as handle:
+        rows = [row for row in csv.DictReader(handle) if row["converged"] == "1"]
+    with open(more / "slipped.csv", "w", newline="") as handle:
+        handle.write("frequency_hz,velocity_m_s,abs_z_n_s_m,phase_deg\n")
+        for row in rows:
+            handle.write(f"{row['frequency_hz']},{1000 * float(row['velocity_m_s']):g},{row['abs_z_n_s_m']},"
+                         f"{math.radians(float(row['phase_deg']))}\n")
+    result = plot("impedance", "slipped.csv", "-o", "slipped.png", cwd=more)
+    assert result.returncode == 0, result.stderr
+    lines = result.stderr.splitlines()
+    assert len(lines) == 2, result.stderr
+    assert lines[0].startswith("warning: slipped.csv:2: velocity_m_s = 200: outside the typical 0.001 to 2 m/s of the "
+                               "clamp velocity amplitude (mm/s?)"), lines[0]
+    assert "phase_deg looks like radians" in lines[1], lines[1]
+    program = subprocess.run([CLI, "identify", "impedance", "--damper", os.path.join(SOURCE, "examples", "sauter2003.toml"),
+                              "--input", "slipped.csv", "--rms-limit", "100"], cwd=more, capture_output=True, text=True)
+    assert [line for line in program.stderr.splitlines() if line.startswith("warning: slipped.csv")] == lines
 
 
 def test_abs_phase_and_power_agree_with_the_program(files):

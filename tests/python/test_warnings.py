@@ -3,6 +3,7 @@ program prints on stderr is an UnusualValueWarning in Python with the same words
 (the program names a setting by its flag, --amplitude, where Python names the
 keyword, amplitude), and the JSON summary lists them."""
 
+import cmath
 import csv
 import json
 import os
@@ -80,6 +81,29 @@ def test_identify_impedance_with_a_poor_fit(tmp_path):
     assert any("RMS relative error of Z" in line and "is large (above 10 %)" in line for line in expected), expected
     assert json.loads(stdout)["warnings"] == expected
     given, result = python_warnings(lambda: sb.identify_impedance(sb.load_damper(damper), measured))
+    assert given == expected
+    assert result["warnings"] == expected
+    assert result["poor_fit"] is True and json.loads(stdout)["poor_fit"] is True
+
+
+def test_a_measured_impedance_in_mm_per_second_and_radians(tmp_path):
+    # Four points of the example at each velocity, the velocity in mm/s, Z as |Z| and the phase in radians.
+    with open(os.path.join(EXAMPLES, "measured_impedance.csv"), newline="") as handle:
+        rows = list(csv.DictReader(handle))[::4]
+    measured = tmp_path / "slipped.csv"
+    with open(measured, "w", newline="") as handle:
+        handle.write("frequency_hz,velocity_m_s,abs_z_n_s_m,phase_deg\n")
+        for row in rows:
+            z = complex(float(row["re_z_n_s_m"]), float(row["im_z_n_s_m"]))
+            handle.write(f"{row['frequency_hz']},{1000 * float(row['velocity_m_s']):g},{abs(z)},{cmath.phase(z)}\n")
+    damper = os.path.join(EXAMPLES, "damper_to_identify.toml")
+    expected, stdout = program_warnings(
+        ["identify", "impedance", "--damper", damper, "--input", str(measured), "--json", "--rms-limit", "100"], tmp_path)
+    assert expected[0].startswith(f"{measured}:2: velocity_m_s = 50: outside the typical 0.001 to 2 m/s of the clamp "
+                                  "velocity amplitude (mm/s?); 7 more rows"), expected
+    assert "phase_deg looks like radians" in expected[1], expected
+    assert json.loads(stdout)["warnings"] == expected
+    given, result = python_warnings(lambda: sb.identify_impedance(sb.load_damper(damper), measured, rms_limit=100))
     assert given == expected
     assert result["warnings"] == expected
 

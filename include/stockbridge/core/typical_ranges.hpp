@@ -45,6 +45,9 @@ inline constexpr TypicalRange arm_offset{"|offset| of an arm's centre of gravity
 inline constexpr TypicalRange frequency{"excitation frequency", 0.5, 500.0, "Hz", {}};
 inline constexpr TypicalRange velocity{"clamp velocity amplitude", 0.001, 2.0, "m/s", {}};
 inline constexpr TypicalRange displacement{"clamp displacement amplitude", 1e-6, 0.05, "m", {}};
+/// A damper's |Z| at its clamp: the whole damper's mass line i W M over the test
+/// band (a 0.5 kg damper at 0.5 Hz gives 1.6 N s/m, a 10 kg one at 500 Hz 31000).
+inline constexpr TypicalRange impedance{"damper impedance |Z|", 1.0, 50000.0, "N s/m", {}};
 /// Of the cable's length: the quasi-static cantilever is a small-deflection model.
 inline constexpr TypicalRange tip_deflection_ratio{"tip deflection / cable length", 0.0, 0.3, "", {}};
 inline constexpr TypicalRange tip_rotation{"tip rotation", 0.0, 0.5, "rad", {}};
@@ -85,6 +88,8 @@ struct UnusualValue {
   std::string field;
   double value = 0.0;
   TypicalRange range;
+  /// The likely slip where one is ("mm/s?"); empty: "a unit mistake?".
+  std::string hint;
 
   /// "arm[0].mass = 863: outside the typical 0.05 to 20 kg of the arm mass (a unit mistake?)",
   /// or, where the range's slip explains it, "conductor.diameter = 28.14: outside the

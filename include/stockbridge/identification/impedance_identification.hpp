@@ -1,9 +1,10 @@
 #pragma once
 // Identification from a measured damper impedance (dissertation 4.3.1; the damper
 // characteristic test of IEC 61897): the cable parameters (ei and the Jenkin
-// elements' c_j, h_j, constant along the cable) and optionally the clamp mass that
-// make the model's impedance match a measured Z(f, V), the damper's masses,
-// inertias, offsets and cable lengths being known.
+// elements' c_j, h_j, constant along the cable) and optionally numbers of the damper
+// itself (the clamp mass, arm masses, inertias, offsets, cable lengths: a vendor's
+// sheet of a damper whose geometry is not known exactly, MODEL.md 11) that make the
+// model's impedance match a measured Z(f, V), the damper's other numbers being known.
 //
 // Misfit: the relative complex one, every point weighted by its own magnitude,
 //     S = sum_i |Z_model,i - Z_i|^2 / |Z_i|^2,
@@ -13,7 +14,8 @@
 //
 // Method: the model is followed along each measured curve in frequency order
 // (damper::DamperTracker, the sweep's warm starts); the parameters are fitted in
-// logarithms (they stay positive; the clamp mass linearly, it enters Z as i W m_c)
+// logarithms (they stay positive, as do the masses, inertias and cable lengths fitted
+// with them; offsets linearly; the clamp mass linearly, it enters Z as i W m_c)
 // by Levenberg-Marquardt (Eigen's MINPACK port) on the 2N real residuals, with a
 // forward-difference Jacobian (the clamp mass's column analytic), from several
 // starts; the best start is polished to convergence. The Jacobian at the optimum
@@ -56,28 +58,51 @@ std::vector<std::vector<std::size_t>> measured_curves(const ImpedanceMeasurement
 /// numbered in the order of their first arm.
 std::vector<std::size_t> cable_types(const damper::DamperDescription& damper);
 
+/// The numbers of the damper `free` may name (design::damper_number's paths):
+/// clamp.mass, and per arm mass, inertia, offset, cable.length.
+inline constexpr const char* free_damper_numbers =
+    "clamp.mass, or arm.<name or [index]>. followed by mass, inertia, offset or cable.length";
+
 struct ImpedanceIdentificationOptions {
   int elements = 1;              ///< Jenkin elements per cable type, 1..6
-  bool fit_clamp_mass = false;   ///< also fit m_c (otherwise the description's)
+  bool fit_clamp_mass = false;   ///< also fit m_c (otherwise the description's); the same as "clamp.mass" in `free`
+  /// Numbers of the damper fitted with the cables, by the paths design::damper_number
+  /// reads ("arm.left.mass", "arm[1].cable.length", "clamp.mass"; free_damper_numbers),
+  /// each at most once; the start's values start them. Masses, inertias and lengths
+  /// are fitted in logarithms, offsets linearly.
+  std::vector<std::string> free;
+  /// An RMS relative error of Z above this is a poor fit (ImpedanceIdentification::poor_fit):
+  /// the model does not follow the measurement. 10 %: ten times a shaker test's
+  /// scatter of about 1 %, and what a damper whose masses or lengths are 15-20 % off
+  /// gives (docs/identification.md).
+  double rms_limit = 0.1;
   damper::SolverOptions solver;  ///< the model's periodic solver
   int max_jacobians = 30;        ///< per start: Levenberg-Marquardt iterations at most
   int threads = 1;               ///< Jacobian columns evaluated at once, >= 1
+  /// Throws InvalidParameter naming the option; the paths of `free` are checked
+  /// against the damper by identify_impedance ("free = arm.middle.mass: no arm is named ...").
   void validate() const;
 };
 
 /// One fitted parameter.
 struct ParameterEstimate {
-  std::string name;  ///< as a cable file names it ("ei", "jenkin[0].c"; "arm[1].cable.ei" with several cable types; "clamp_mass")
-  std::string unit;  ///< "N m^2", "N m", "kg"
+  /// As a cable file names it ("ei", "jenkin[0].c"; "arm[1].cable.ei" with several
+  /// cable types); a number of the damper by its path ("clamp.mass", "arm.long.mass",
+  /// "arm.long.cable.length", "arm[0].offset" for an unnamed arm).
+  std::string name;
+  std::string unit;  ///< "N m^2", "N m", "kg", "kg m^2", "m"
   double value = 0.0;
+  /// A number of the damper (options.free or the clamp mass), not a cable parameter.
+  bool geometry = false;
   /// From the Jacobian at the optimum and the residual's spread, in the value's
   /// unit; infinity where not determined.
   double standard_error = 0.0;
   /// RMS relative change of Z per relative change of the parameter (per kg of
-  /// clamp mass): how strongly the data see it.
+  /// clamp mass, per m of offset): how strongly the data see it.
   double sensitivity = 0.0;
-  /// The relative standard error a 1 % scatter of Z would give it; infinity where
-  /// not determined.
+  /// The relative standard error a 1 % scatter of Z would give it (of the clamp mass:
+  /// relative to the damper's whole mass; of an offset: to the start's |offset| or
+  /// 1 cm, the larger); infinity where not determined.
   double resolution_at_1_percent = 0.0;
   /// False where the data leave it free (its Jacobian column in the span of the
   /// others, or a 1 % scatter of Z moving it by more than half its value).
@@ -85,13 +110,17 @@ struct ParameterEstimate {
 };
 
 struct ImpedanceIdentification {
-  damper::DamperDescription damper;                ///< the start's damper with the fitted parameters
+  damper::DamperDescription damper;                ///< the start's damper with the fitted parameters (and numbers)
   std::vector<std::size_t> cable_type;             ///< per arm (cable_types())
   std::vector<section::MasingParameters> cables;   ///< per type, elements sorted by slip curvature h / c
   double clamp_mass = 0.0;                         ///< kg (fitted, or the description's)
   double misfit = 0.0;             ///< S at the optimum
   double rms_relative_error = 0.0; ///< sqrt(S / N)
-  std::vector<ParameterEstimate> parameters;       ///< in the order of cables, then the clamp mass
+  double rms_limit = 0.1;          ///< options.rms_limit
+  bool poor_fit = false;           ///< rms_relative_error > rms_limit
+  /// In the order of the cables, then the numbers of options.free (in its order),
+  /// then the clamp mass.
+  std::vector<ParameterEstimate> parameters;
   /// Correlations of the parameters' estimates (NaN for a parameter not determined).
   Eigen::MatrixXd correlation;
   /// The stick stiffness ei + sum c of each type, which data that never reach slip
@@ -109,10 +138,10 @@ struct ImpedanceIdentification {
   int starts = 0;
 };
 
-/// Fits the cable parameters (and optionally the clamp mass) of `start` (its values
+/// Fits the cable parameters (and the numbers of options.free) of `start` (its values
 /// the starting values) to the measurement. Throws InvalidParameter for a start
 /// whose cables are profiles or use the modified Masing model with another element
-/// count, or for bad options or measurements.
+/// count, for bad options (a path of `free` named: field "free") or measurements.
 ImpedanceIdentification identify_impedance(const damper::DamperDescription& start, const ImpedanceMeasurement& measurement,
                                            const ImpedanceIdentificationOptions& options);
 

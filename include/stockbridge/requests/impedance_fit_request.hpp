@@ -20,10 +20,16 @@ struct ImpedanceFitRequest {
   int elements = 1;             ///< Jenkin elements per cable type
   bool fit_clamp_mass = false;  ///< also fit the clamp mass
   int threads = 1;              ///< model runs at once (the Jacobian's columns)
+  /// Numbers of the damper fitted too, by their paths ("arm.left.mass", "clamp.mass";
+  /// identification::ImpedanceIdentificationOptions::free).
+  std::vector<std::string> free;
+  /// An RMS relative error of Z above this is a poor fit (warned of; the command exits 3).
+  double rms_limit = identification::ImpedanceIdentificationOptions{}.rms_limit;
 };
 
-/// The fit's options; InvalidParameter naming "elements" or "threads" (the
-/// command's --elements and --threads, Python's keywords).
+/// The fit's options; InvalidParameter naming "elements", "threads" or "rms_limit"
+/// (the command's --elements, --threads and --rms-limit, Python's keywords). The
+/// paths of `free` are checked against the damper by the fit (field "free").
 identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitRequest& request);
 
 /// A measured impedance from arrays (Python's identify_impedance; the CSV reader
@@ -46,28 +52,33 @@ std::vector<FittedPoint> fitted_points(const identification::ImpedanceMeasuremen
 /// (model_re_z_n_s_m, model_im_z_n_s_m; NaN where it did not converge) and converged.
 Table<FittedPoint> fitted_table();
 
-/// An RMS relative error of Z above this is not a model of the measurement: a warning.
-inline constexpr double large_rms_error = 0.1;
 /// The fit's notes (parameters the data do not determine, points the model does
-/// not converge at, a fit stopped short) and a large RMS error, as warnings;
-/// `source` names the measurement.
+/// not converge at, a fit stopped short) and a poor fit (an RMS error above the
+/// fit's rms_limit), as warnings; `source` names the measurement.
 std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification& fit, std::string_view source);
 
 /// The summary, as `identify impedance --json` prints it and Python returns it:
 /// ei and jenkin [{c, h}] (the first cable type's, as identify global prints them),
-/// clamp_mass_kg, misfit, rms_relative_error, points, curves, not_converged,
-/// parameters [{name, unit, value, standard_error, resolution_at_1_percent,
-/// sensitivity, determined}], correlation (rows in the parameters' order, null for
+/// clamp_mass_kg, misfit, rms_relative_error, rms_limit, poor_fit, points, curves,
+/// not_converged, parameters [{name, unit, value, standard_error,
+/// resolution_at_1_percent, sensitivity, determined, geometry}], geometry {path:
+/// value} (the fitted numbers of the damper), correlation (rows in the parameters' order, null for
 /// a parameter not determined), stick_stiffness [the same for each type's
 /// ei_plus_c], undetermined [names], notes, cables [{arms, ei, jenkin}] (every
-/// type), model_runs, starts, termination, iterations, warnings (fit_warnings).
+/// type), model_runs, starts, termination, iterations, warnings (`input_warnings`,
+/// the measured file's, then fit_warnings).
 io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measurement,
                            const identification::ImpedanceIdentification& fit, const damper::Damper& start,
-                           std::string_view source);
+                           std::string_view source, const std::vector<std::string>& input_warnings = {});
 
 /// One line for the terminal: the parameters with their standard errors, the error and the work.
 std::string fit_summary_line(const identification::ImpedanceMeasurement& measurement,
                              const identification::ImpedanceIdentification& fit);
+
+/// The fitted damper as a damper file (`identify impedance --fitted-damper`): the
+/// start with the fitted cables and numbers, every cable written out, the fit's
+/// figures and `source` in comments, the numbers it did not determine named.
+std::string fitted_damper_file(const identification::ImpedanceIdentification& fit, std::string_view source);
 
 /// The cable file of cable type `type`: the fitted parameters on the cable of the
 /// type's first arm (its length, sections, mirror length and lever-arm cap), the

@@ -150,7 +150,7 @@ TEST(ImpedanceIdentification, FitsTheClampMass) {
   options.fit_clamp_mass = true;
   const ImpedanceIdentification fit = identify_impedance(impedance_test_damper(3.0, {{18.0, 0.75}}, 0.4), m, options);
   EXPECT_NEAR(fit.clamp_mass, 0.7, 1e-5);
-  EXPECT_EQ(fit.parameters.back().name, "clamp_mass");
+  EXPECT_EQ(fit.parameters.back().name, "clamp.mass");
   EXPECT_EQ(fit.parameters.back().unit, "kg");
   EXPECT_NEAR(fit.damper.clamp_mass, 0.7, 1e-5);
   EXPECT_LT(relative_error(fit.cables[0].jenkin[0].h, 0.7), 1e-5);
