@@ -28,6 +28,10 @@ int count_aluminium_layers(const StrandedConductor& conductor) {
                                          [](const ConductorLayer& layer) { return is_aluminium(layer.material); }));
 }
 
+/// A length the stranding's geometry gives, for messages: 6 digits, without the
+/// round-off of the sums (0.0045, not 0.0045000000000000005).
+std::string stranding_length(double metres) { return fmt::format("{:.6g}", metres); }
+
 /// A number in mm for labels: "3.45", "4.442" (no trailing zeros).
 std::string stranding_mm(double metres) { return fmt::format("{:.4g}", metres * 1e3); }
 
@@ -103,27 +107,27 @@ void StrandedConductor::validate() const {
           layer_field(j, "count"),
           fmt::format(" = {}: expected at most {} wires of {} m side by side around the layer beneath (pitch radius {} m)",
                       layer.count, static_cast<int>(std::floor(std::numbers::pi * kStrandingSlack / per_wire)),
-                      format_value(layer.wire_diameter), format_value(R)));
+                      format_value(layer.wire_diameter), stranding_length(R)));
     }
     const double outer = 2.0 * R + layer.wire_diameter;
     const double shortest = 2.0 * std::numbers::pi * R;  // lay angle 45 degrees
     if (layer.lay_length > 0.0 && !(layer.lay_length > shortest)) {
       throw_invalid(layer_field(j, "lay_length"), layer.lay_length,
                     fmt::format("more than 2 pi R = {} m, R = {} m the layer's pitch radius (a lay angle below 45 degrees)",
-                                format_value(shortest), format_value(R)));
+                                stranding_length(shortest), stranding_length(R)));
     }
     if (layer.lay_ratio > 0.0 && !(layer.lay_ratio * outer > shortest)) {
       throw_invalid(layer_field(j, "lay_ratio"), layer.lay_ratio,
                     fmt::format("more than 2 pi R / D = {}, R = {} m the layer's pitch radius and D = {} m its outer "
                                 "diameter (a lay angle below 45 degrees)",
-                                format_value(shortest / outer), format_value(R), format_value(outer)));
+                                stranding_length(shortest / outer), stranding_length(R), stranding_length(outer)));
     }
   }
   const double stranded = stranding_diameter(*this);
   if (std::abs(diameter - stranded) > (kStrandingSlack - 1.0) * stranded) {
     throw_invalid("diameter", diameter,
                   fmt::format("the stranding's outer diameter, {} m, within 2 % (the wires' count or diameter wrong?)",
-                              format_value(stranded)));
+                              stranding_length(stranded)));
   }
   const int aluminium = count_aluminium_layers(*this);
   if (aluminium < 1 || aluminium > 10) {
