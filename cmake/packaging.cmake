@@ -21,6 +21,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR} FILES_MATCHING PATTERN "*.md")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples DESTINATION ${CMAKE_INSTALL_DATADIR}/stockbridge
         PATTERN __pycache__ EXCLUDE)
+# The conductor catalogue, compiled into the library as well (src/CMakeLists.txt): the
+# files to read, and to start one's own conductor files from.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/conductors DESTINATION ${CMAKE_INSTALL_DATADIR}/stockbridge)
 
 # The Debian package: `cpack -G DEB` in the build tree makes stockbridge_<version>_<arch>.deb
 # of everything above, installed to /usr.

@@ -18,6 +18,7 @@ void add_identify_impedance_command(CLI::App& identify, int& exit_code);
 void add_impedance_command(CLI::App& app, int& exit_code);
 void add_response_command(CLI::App& app, int& exit_code);
 void add_strand_command(CLI::App& app, int& exit_code);
+void add_conductors_command(CLI::App& app, int& exit_code);
 void add_modes_command(CLI::App& app, int& exit_code);
 void add_span_command(CLI::App& app, int& exit_code);
 void add_design_command(CLI::App& app, int& exit_code);

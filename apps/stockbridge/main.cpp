@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   cli::add_impedance_command(app, exit_code);
   cli::add_response_command(app, exit_code);
   cli::add_strand_command(app, exit_code);
+  cli::add_conductors_command(app, exit_code);
   cli::add_modes_command(app, exit_code);
   cli::add_span_command(app, exit_code);
   cli::add_design_command(app, exit_code);

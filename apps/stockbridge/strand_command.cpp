@@ -31,8 +31,17 @@ int run_strand_command(const StrandOptions& options) {
   }
   std::size_t wires = 1;
   for (const strand::StrandLayer& layer : description.layers) wires += static_cast<std::size_t>(layer.count);
-  fmt::print("strand: {} wires (core + {} layers), E = {} Pa\n", wires, description.layers.size(),
-             format_value(description.youngs_modulus));
+  if (strand::single_modulus(description)) {
+    fmt::print("strand: {} wires (core + {} layers), E = {} Pa\n", wires, description.layers.size(),
+               format_value(strand::core_modulus(description)));
+  } else {
+    std::string layers;
+    for (const strand::StrandLayer& layer : description.layers) {
+      layers += fmt::format(", {}", format_value(strand::layer_modulus(description, layer)));
+    }
+    fmt::print("strand: {} wires (core + {} layers), E = {} Pa (core){} Pa (layers, from the inside out)\n", wires,
+               description.layers.size(), format_value(strand::core_modulus(description)), layers);
+  }
   fmt::print("ei_min = {} N m^2 (no friction: every wire bends on its own)\n", format_value(bounds.ei_min));
   fmt::print("ei_max = {} N m^2 (no slip: the strand bends as one beam, Lanteigne)\n", format_value(bounds.ei_max));
   return kSuccess;

@@ -26,11 +26,13 @@
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/cable_file.hpp"
+#include "stockbridge/io/conductor_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/design_file.hpp"
 #include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/io/span_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
+#include "stockbridge/requests/conductor_request.hpp"
 #include "stockbridge/requests/cycle_request.hpp"
 #include "stockbridge/requests/design_request.hpp"
 #include "stockbridge/requests/identify_request.hpp"
@@ -605,4 +607,24 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("core_radius"), py::arg("layers"), py::arg("youngs_modulus") = strand::Strand{}.youngs_modulus,
       "(EI_min, EI_max) in N m^2; layers = [(count, wire_radius, pitch_radius, lay_length), ...] in m.");
+  m.def(
+      "conductor",
+      [](const std::string& type) { return from_json(requests::conductor_summary(io::catalogue_conductor(type))); },
+      py::arg("type"),
+      "A conductor of the catalogue (case, spaces and hyphens aside, e.g. 'acsr-drake'), as `stockbridge conductors "
+      "TYPE --json`: a dict of type, stranding, source and the span file's [conductor] values with units "
+      "(mass_per_length_kg_m, diameter_m, rated_tensile_strength_n, ei_min_n_m2, ei_max_n_m2, outer_wire_diameter_m, "
+      "outer_wire_modulus_pa, aluminium_layers), EI_min and the rest derived from the stranding.");
+  m.def(
+      "conductors",
+      [] {
+        py::list out;
+        for (const span::StrandedConductor& c : io::conductor_catalogue()) out.append(from_json(requests::conductor_summary(c)));
+        return out;
+      },
+      "The catalogue: one dict per conductor, as conductor() gives it.");
+  m.def(
+      "load_conductor",
+      [](const std::string& path) { return from_json(requests::conductor_summary(io::read_conductor_file(path))); },
+      py::arg("path"), "A conductor file (the catalogue's format, docs/file-formats.md), as conductor() gives an entry.");
 }

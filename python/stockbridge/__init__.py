@@ -7,6 +7,7 @@ built by the CMake project) and adds plots (``python3 -m stockbridge.plot``).
     damper = sb.load_damper("examples/sauter2003.toml")
     z = sb.impedance(damper, [10.0, 20.0], velocity=[0.2, 0.05])
     s = sb.span("examples/aster570_400m.toml", points=50)
+    drake = sb.conductor("ACSR Drake")   # the catalogue's [conductor] values, EI_min 44.25 N m^2
     d = sb.design("examples/design_aster570.toml", samples=16, threads=2)
     fit = sb.identify_impedance(sb.load_damper("examples/damper_to_identify.toml"),
                                 "examples/measured_impedance.csv")
@@ -27,9 +28,9 @@ class UnusualValueWarning(UserWarning):
 
 try:
     from ._core import __version__  # noqa: F401  (the library's, as stockbridge --version)
-    from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, cycle,  # noqa: F401
-                        identify_global, identify_local, impedance, load_cable, load_damper, load_strand, loop,
-                        modes, response, strand_bounds)
+    from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, conductor,  # noqa: F401
+                        conductors, cycle, identify_global, identify_local, impedance, load_cable, load_conductor,
+                        load_damper, load_strand, loop, modes, response, strand_bounds)
     from ._core import _cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _span
 except ImportError:  # the plots work from the source tree without the compiled module
     _defaults = {}  # the library's defaults come with it

@@ -10,8 +10,10 @@
 
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/core/typical_ranges.hpp"
+#include "stockbridge/io/conductor_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/span/stranded_conductor.hpp"
 #include "toml_reader.hpp"
 
 namespace stockbridge::io {
@@ -68,19 +70,70 @@ auto span_parsed_name(const TomlTable& table, std::string_view key, const std::s
   }
 }
 
-span::Conductor read_conductor(const TomlTable& table) {
-  span_accept_only(table, {"name", "mass_per_length", "diameter", "rated_tensile_strength", "ei_min", "ei_max",
-                           "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers"});
+/// The conductor a [conductor] table's `type` names: the catalogue's entry, its
+/// InvalidParameter (an unknown type, with the known ones) at the key's line.
+span::StrandedConductor span_catalogue_conductor(const TomlTable& table, const std::string& type) {
+  try {
+    return io::catalogue_conductor(type);
+  } catch (const InvalidParameter& e) {
+    throw InputError(fmt::format("{}{}, or file = a conductor file", table.location("type"),
+                                 e.within(table.key_path()).what()));
+  }
+}
+
+/// The conductor of a [conductor] table's `file`, relative to the span file's folder
+/// (span text: the working directory); the file's own errors name it and its line.
+span::StrandedConductor span_conductor_file(const TomlTable& table, const std::string& file,
+                                            const std::filesystem::path& base_directory, SpanReading& reading) {
+  const std::filesystem::path path = span_resolve(file, base_directory);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    const std::string base = table.has_lines() ? "the span file's folder" : "the working directory (span text has no folder)";
+    table.fail("file", fmt::format("\"{}\": expected an existing conductor file (looked for {}; relative paths start at {})",
+                                   printable(file), printable(std::filesystem::absolute(path, ec).string(), 300), base));
+  }
+  span::StrandedConductor conductor = read_conductor_file(path);
+  reading.inputs.push_back(path);
+  return conductor;
+}
+
+/// The [conductor] table: every key given (mass_per_length ... aluminium_layers), or
+/// `type` (the catalogue's conductor) or `file` (a conductor file), whose derived
+/// values (span::conductor_of) the keys given beside it override.
+span::Conductor read_conductor(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading) {
+  span_accept_only(table, {"type", "file", "name", "mass_per_length", "diameter", "rated_tensile_strength", "ei_min",
+                           "ei_max", "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers"});
+  const std::optional<std::string> type = table.optional_string("type");
+  const std::optional<std::string> file = table.optional_string("file");
+  if (type && file) {
+    table.fail("file", fmt::format("given beside {}: expected one of type (a conductor of the catalogue) and file (a "
+                                   "conductor file)",
+                                   table.qualified("type")));
+  }
   span::Conductor c;
-  c.name = table.optional_string("name").value_or("");
-  c.mass_per_length = table.number("mass_per_length");
-  c.diameter = table.number("diameter");
-  c.rated_tensile_strength = table.number("rated_tensile_strength");
-  c.ei_min = table.number("ei_min");
-  c.ei_max = table.optional_number("ei_max").value_or(0.0);
-  c.outer_wire_diameter = table.number("outer_wire_diameter");
-  c.outer_wire_modulus = table.number("outer_wire_modulus");
-  c.aluminium_layers = static_cast<int>(table.integer("aluminium_layers", 1, 10));  // Conductor::validate's range
+  if (!type && !file) {
+    c.name = table.optional_string("name").value_or("");
+    c.mass_per_length = table.number("mass_per_length");
+    c.diameter = table.number("diameter");
+    c.rated_tensile_strength = table.number("rated_tensile_strength");
+    c.ei_min = table.number("ei_min");
+    c.ei_max = table.optional_number("ei_max").value_or(0.0);
+    c.outer_wire_diameter = table.number("outer_wire_diameter");
+    c.outer_wire_modulus = table.number("outer_wire_modulus");
+    c.aluminium_layers = static_cast<int>(table.integer("aluminium_layers", 1, 10));  // Conductor::validate's range
+    return c;
+  }
+  c = span::conductor_of(type ? span_catalogue_conductor(table, *type)
+                              : span_conductor_file(table, *file, base_directory, reading));
+  c.name = table.optional_string("name").value_or(c.name);
+  c.mass_per_length = table.optional_number("mass_per_length").value_or(c.mass_per_length);
+  c.diameter = table.optional_number("diameter").value_or(c.diameter);
+  c.rated_tensile_strength = table.optional_number("rated_tensile_strength").value_or(c.rated_tensile_strength);
+  c.ei_min = table.optional_number("ei_min").value_or(c.ei_min);
+  c.ei_max = table.optional_number("ei_max").value_or(c.ei_max);
+  c.outer_wire_diameter = table.optional_number("outer_wire_diameter").value_or(c.outer_wire_diameter);
+  c.outer_wire_modulus = table.optional_number("outer_wire_modulus").value_or(c.outer_wire_modulus);
+  if (const auto n = table.optional_integer("aluminium_layers", 1, 10)) c.aluminium_layers = static_cast<int>(*n);
   return c;
 }
 
@@ -250,7 +303,7 @@ span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
 SpanReading read_span_document(const TomlTable& top, const std::filesystem::path& base_directory) {
   span_accept_only(top, {"conductor", "span", "wind", "self_damping", "damper", "fatigue", "balance"});
   SpanReading reading;
-  reading.conductor = read_conductor(top.table("conductor"));
+  reading.conductor = read_conductor(top.table("conductor"), base_directory, reading);
   read_span_table(top.table("span"), reading);
   read_wind(top.table("wind"), base_directory, reading);
   reading.self_damping = read_self_damping(top.table("self_damping"));

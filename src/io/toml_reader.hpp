@@ -68,6 +68,8 @@ class TomlTable {
   /// The key's full dotted path, e.g. "cable.jenkin[0].h".
   std::string qualified(std::string_view key) const;
   const std::string& file() const { return source_.name; }
+  /// Whether the table comes from a file with lines (not from a front end's text).
+  bool has_lines() const { return source_.lines; }
   const std::string& key_path() const { return key_path_; }
 
   /// Throws InputError "<location><qualified key>: <message>".

@@ -22,6 +22,18 @@ double cos_lay_angle(const StrandLayer& layer) {
 
 }  // namespace
 
+double core_modulus(const Strand& strand) { return strand.core_youngs_modulus.value_or(strand.youngs_modulus); }
+
+double layer_modulus(const Strand& strand, const StrandLayer& layer) {
+  return layer.youngs_modulus.value_or(strand.youngs_modulus);
+}
+
+bool single_modulus(const Strand& strand) {
+  const double e = core_modulus(strand);
+  return std::all_of(strand.layers.begin(), strand.layers.end(),
+                     [&](const StrandLayer& layer) { return layer_modulus(strand, layer) == e; });
+}
+
 double lay_angle(const StrandLayer& layer) {
   return std::atan(2.0 * std::numbers::pi * layer.pitch_radius / layer.lay_length);
 }
@@ -53,9 +65,11 @@ void check_lay_angle(const StrandLayer& layer, std::string_view name) {
 void validate(const Strand& strand) {
   require_positive("youngs_modulus", strand.youngs_modulus, "Pa");
   require_positive("core_radius", strand.core_radius, "m");
+  if (strand.core_youngs_modulus) require_positive("core_youngs_modulus", *strand.core_youngs_modulus, "Pa");
   for (std::size_t j = 0; j < strand.layers.size(); ++j) {
     const StrandLayer& layer = strand.layers[j];
     require_in_range(fmt::format("layer[{}].count", j), layer.count, 1, 1000);
+    if (layer.youngs_modulus) require_positive(fmt::format("layer[{}].youngs_modulus", j), *layer.youngs_modulus, "Pa");
     require_positive(fmt::format("layer[{}].wire_radius", j), layer.wire_radius, "m");
     require_positive(fmt::format("layer[{}].pitch_radius", j), layer.pitch_radius, "m");
     require_positive(fmt::format("layer[{}].lay_length", j), layer.lay_length, "m");
@@ -71,12 +85,16 @@ void validate(const Strand& strand) {
 
 StrandBounds strand_bounds(const Strand& strand) {
   validate(strand);
-  // Sums of second moments of area, m^4; E multiplies once at the end.
-  const double core = wire_inertia(strand.core_radius);
+  // Sums of second moments of area, m^4, each weighted by its wires' modulus relative
+  // to the strand's (exactly 1 for a wire without a modulus of its own, so that a strand
+  // of one material gives the same numbers, to the last bit, as before moduli per
+  // layer); the strand's E multiplies once at the end.
+  const double e = strand.youngs_modulus;
+  const double core = core_modulus(strand) / e * wire_inertia(strand.core_radius);
   double free_wires = core;   // (A.4), (A.5)
   double no_slip = core;      // (A.1) without B_ij
   for (const StrandLayer& layer : strand.layers) {
-    const double n = layer.count;
+    const double n = layer_modulus(strand, layer) / e * layer.count;
     const double r = layer.wire_radius;
     const double R = layer.pitch_radius;
     free_wires += n * wire_inertia(r);
@@ -84,7 +102,7 @@ StrandBounds strand_bounds(const Strand& strand) {
     // axis plus Steiner's term averaged over the wire's turn around the strand axis.
     no_slip += n / 2.0 * std::numbers::pi * r * r * (r * r / 2.0 + R * R) * std::pow(cos_lay_angle(layer), 3);
   }
-  const StrandBounds bounds{strand.youngs_modulus * free_wires, strand.youngs_modulus * no_slip};
+  const StrandBounds bounds{e * free_wires, e * no_slip};
   // Absurd sizes leave a double's range: r^4 overflows, or underflows to zero or to
   // subnormals whose few digits no longer keep ei_min <= ei_max.
   if (!std::isnormal(bounds.ei_min) || !std::isnormal(bounds.ei_max)) {

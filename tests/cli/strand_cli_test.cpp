@@ -151,10 +151,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"missing-lay", kMissingLay.c_str(),
                 "bad.toml:5: missing key 'lay_length' in [strand.layer[0]]: expected a number"},
         BadFile{"unknown-key", kUnknownKey.c_str(),
-                "bad.toml:3: unknown key 'strand.core_radus': expected one of core_radius, layer, youngs_modulus"},
+                "bad.toml:3: unknown key 'strand.core_radus': expected one of core_radius, core_youngs_modulus, layer, "
+                "youngs_modulus"},
         BadFile{"unknown-layer-key", kUnknownLayerKey.c_str(),
                 "bad.toml:10: unknown key 'strand.layer[0].lay_direction': expected one of count, lay_length, "
-                "pitch_radius, wire_radius"},
+                "pitch_radius, wire_radius, youngs_modulus"},
         BadFile{"unknown-table", kUnknownTable.c_str(), "bad.toml:10: unknown key 'cable': expected one of strand"},
         BadFile{"negative-radius", kNegativeRadius.c_str(),
                 "bad.toml:7: strand.layer[0].wire_radius = -0.001: expected a finite value > 0 (m)"},

@@ -73,7 +73,7 @@ def main():
     source, build = map(os.path.abspath, sys.argv[1:3])
     root = tempfile.mkdtemp(prefix="stockbridge-docs-")
     try:
-        for name in ("README.md", "docs", "examples", "scripts", "python"):
+        for name in ("README.md", "docs", "examples", "data", "scripts", "python"):
             copy = shutil.copytree if os.path.isdir(os.path.join(source, name)) else shutil.copy
             copy(os.path.join(source, name), os.path.join(root, name))
         os.symlink(build, os.path.join(root, "build"))

@@ -505,3 +505,19 @@ def test_identify_impedance_from_arrays_equals_the_file(impedance_fit):
         sb.identify_impedance(again["damper"], frequency=[-10.0, 20.0], velocity=[0.1, 0.1], z=[1j, 2j])
     with pytest.raises(sb.InvalidParameter, match="elements = 0"):
         sb.identify_impedance(again["damper"], frequency=[10.0, 20.0], velocity=[0.1, 0.1], z=[1j, 2j], elements=0)
+
+
+def test_the_conductor_catalogue_equals_the_programs_json(tmp_path):
+    out = subprocess.run([CLI, "conductors", "ACSR Drake", "--json"], check=True, capture_output=True, text=True).stdout
+    drake = sb.conductor("acsr-drake")  # case, spaces and hyphens aside
+    assert drake == json.loads(out)
+    assert drake["type"] == "ACSR Drake"
+    assert drake["ei_min_n_m2"] == pytest.approx(44.25, abs=0.005)  # MODEL.md section 11
+    assert drake["aluminium_layers"] == 2
+    listed = json.loads(subprocess.run([CLI, "conductors", "--json"], check=True, capture_output=True, text=True).stdout)
+    assert sb.conductors() == listed["conductors"]
+    # A conductor file (the catalogue's own format) and a span's type = ... from text.
+    shutil.copy(os.path.join(SOURCE, "data", "conductors", "acsr_drake.toml"), tmp_path / "drake.toml")
+    assert sb.load_conductor(str(tmp_path / "drake.toml")) == drake
+    with pytest.raises(sb.InvalidParameter, match=r'type = "ACSR Drak": expected a conductor of the catalogue: '):
+        sb.conductor("ACSR Drak")

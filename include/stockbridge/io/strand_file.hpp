@@ -4,12 +4,14 @@
 //     [strand]
 //     youngs_modulus = 210e9   # Pa, optional (default 210e9, steel)
 //     core_radius = 0.001      # m
+//     core_youngs_modulus = 207e9  # Pa, optional (default: youngs_modulus)
 //
 //     [[strand.layer]]         # one per layer, from the inside out; none for a single wire
 //     count = 6                # wires in the layer, integer 1..1000
 //     wire_radius = 0.001      # m
 //     pitch_radius = 0.002     # m, strand axis to wire axis
 //     lay_length = 0.06        # m, axial length of one turn
+//     youngs_modulus = 68.9e9  # Pa, optional (default: the strand's youngs_modulus)
 //
 // The format is described in docs/strand.md.
 

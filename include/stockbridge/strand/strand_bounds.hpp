@@ -17,6 +17,13 @@
 //     finite-length term B_ij, which vanishes over whole lay lengths):
 //         EI_max = E (pi r_c^4 / 4 + sum_j N_j / 2 pi r_j^2 (r_j^2 / 2 + R_j^2) cos^3 alpha_j)
 //
+// Strands of several materials (ACSR: a steel core and steel layers under
+// aluminium layers; MODEL.md section 11): both bounds hold wire by wire with each
+// wire's own modulus, E_c for the core's terms and E_j for layer j's:
+//         EI_min = E_c pi r_c^4 / 4 + sum_j E_j N_j pi r_j^4 / 4
+// and EI_max likewise. A layer or the core without a modulus of its own takes the
+// strand's youngs_modulus.
+//
 // EI_max > EI_min whenever cos^3 alpha_j > r_j^2 / (r_j^2 + 2 R_j^2) in every layer,
 // which holds for any real strand (R_j >= r_j gives alpha_j < 46 deg; lay angles
 // are typically 5-20 deg). validate() makes it hold: the geometry must be possible,
@@ -25,6 +32,7 @@
 //
 // Units: SI throughout (m, Pa, N m^2).
 
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -36,14 +44,23 @@ struct StrandLayer {
   double wire_radius = 0.0;   ///< r_j, radius of each wire, m, > 0
   double pitch_radius = 0.0;  ///< R_j, distance of the wire axes from the strand axis, m, > 0
   double lay_length = 0.0;    ///< lambda_j, axial length of one turn of a wire, m, > 0, finite
+  std::optional<double> youngs_modulus = std::nullopt;  ///< E_j, Pa, > 0; none: the strand's youngs_modulus
 };
 
 /// Constant description of a strand: a core wire and any number of layers (possibly none).
 struct Strand {
   double core_radius = 0.0;         ///< r_c, radius of the core wire, m, > 0
-  double youngs_modulus = 210e9;    ///< E, Pa, > 0 (default: steel)
+  double youngs_modulus = 210e9;    ///< E, Pa, > 0 (default: steel); every wire's unless it has its own
   std::vector<StrandLayer> layers;  ///< layers from the inside out
+  std::optional<double> core_youngs_modulus = std::nullopt;  ///< E_c, Pa, > 0; none: youngs_modulus
 };
+
+/// The modulus of the core wire, E_c (its own, or the strand's), Pa.
+double core_modulus(const Strand& strand);
+/// The modulus of a layer's wires, E_j (its own, or the strand's), Pa.
+double layer_modulus(const Strand& strand, const StrandLayer& layer);
+/// Whether every wire has the same modulus (one material, as far as bending goes).
+bool single_modulus(const Strand& strand);
 
 /// The two limiting bending stiffnesses of a strand.
 struct StrandBounds {
@@ -68,7 +85,8 @@ void check_lay_angle(const StrandLayer& layer, std::string_view name);
 
 /// Throws InvalidParameter naming the field, e.g.
 /// "layer[1].lay_length = -0.05: expected a finite value > 0 (m)".
-/// Every length and E must be finite and > 0; counts run from 1 to 1000; each layer's
+/// Every length and E (the strand's, the core's and each layer's own, where given) must
+/// be finite and > 0; counts run from 1 to 1000; each layer's
 /// geometry passes check_layer_position and check_lay_angle.
 /// (Straight wires, lambda -> inf, are approximated by any very long lay length.)
 void validate(const Strand& strand);

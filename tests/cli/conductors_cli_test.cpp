@@ -1,0 +1,144 @@
+// `stockbridge conductors`: the catalogue as text and JSON, one entry as the
+// [conductor] table a span file takes (run through `stockbridge span` against
+// type = "..."), the strand command on a strand of two materials, and exit 2 with
+// one line naming file, line, key and value for a bad type or conductor file.
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+
+namespace stockbridge::testing {
+namespace {
+
+/// The number after `key` in a one-line JSON object.
+double conductors_json_number(const std::string& json, const std::string& key) {
+  const std::regex pattern("\"" + key + "\": ([-+0-9.eE]+)");
+  std::smatch match;
+  if (!std::regex_search(json, match, pattern)) {
+    ADD_FAILURE() << "no " << key << " in " << json;
+    return std::nan("");
+  }
+  return std::strtod(match[1].str().c_str(), nullptr);
+}
+
+/// A span file of `conductor_table`, no dampers, three frequencies.
+std::string conductors_span(const std::string& conductor_table) {
+  return conductor_table +
+         "\n[span]\nlength = 300\ntension_fraction = 0.2\n[wind]\nlaw = \"cigre\"\n[self_damping]\n"
+         "law = \"noiseux-1991\"\n[fatigue]\ncycles = 5e8\n";
+}
+
+TEST(ConductorsCli, ListsTheCatalogue) {
+  const auto dir = scratch_directory("conductors-list");
+  const CliResult r = run_cli("conductors", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  for (const char* type : {"ACSR Drake", "ACSR Cardinal", "ACSR Linnet", "ACSR Falcon", "AAAC ASTER570", "AAC Arbutus"}) {
+    EXPECT_NE(r.out.find(type), std::string::npos) << type;
+  }
+  // Drake's row: stranding, D 28.14 mm, m 1.628 kg/m, RTS 138.8 kN, EI_min 44.25 N m^2.
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(ACSR Drake +26/7: steel 1\+6 x 3\.45 mm, aluminium 10\+16 x 4\.44 mm +28\.14 +1\.628 +138\.8 +44\.25 +1501)")))
+      << r.out;
+}
+
+TEST(ConductorsCli, ListsTheCatalogueAsJson) {
+  const auto dir = scratch_directory("conductors-json");
+  const CliResult r = run_cli("conductors --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(r.out.starts_with("{\"conductors\": [{\"type\": \"AAAC ASTER570\"")) << r.out;
+  EXPECT_EQ(lines_of(r.out).size(), 1u);
+}
+
+TEST(ConductorsCli, OneEntryAsJson) {
+  const auto dir = scratch_directory("conductors-one-json");
+  const CliResult r = run_cli("conductors acsr-drake --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"type\": \"ACSR Drake\""), std::string::npos) << r.out;
+  EXPECT_NEAR(conductors_json_number(r.out, "ei_min_n_m2"), 44.25, 0.005);  // MODEL.md section 11
+  EXPECT_EQ(conductors_json_number(r.out, "aluminium_layers"), 2.0);
+  EXPECT_EQ(conductors_json_number(r.out, "outer_wire_diameter_m"), 0.00444);
+}
+
+TEST(ConductorsCli, TheTablePrintedRunsAsTheSpanOfTheType) {
+  // The [conductor] table of `stockbridge conductors "ACSR Drake"`, pasted into a span
+  // file, gives the span CSV of type = "ACSR Drake" byte for byte.
+  const auto dir = scratch_directory("conductors-paste");
+  const CliResult table = run_cli("conductors \"ACSR Drake\"", dir);
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  EXPECT_TRUE(table.out.starts_with("# ACSR Drake, 26/7: steel 1+6 x 3.45 mm, aluminium 10+16 x 4.44 mm\n")) << table.out;
+  EXPECT_NE(table.out.find("\n[conductor]\nname = \"ACSR Drake\"\n"), std::string::npos) << table.out;
+  std::ofstream(dir / "pasted.toml") << conductors_span(table.out);
+  std::ofstream(dir / "typed.toml") << conductors_span("[conductor]\ntype = \"ACSR Drake\"\n");
+  const CliResult pasted = run_cli("span pasted.toml --frequencies 10,20,30 --quiet -o pasted.csv", dir);
+  const CliResult typed = run_cli("span typed.toml --frequencies 10,20,30 --quiet -o typed.csv", dir);
+  ASSERT_EQ(pasted.exit_code, 0) << pasted.err;
+  ASSERT_EQ(typed.exit_code, 0) << typed.err;
+  EXPECT_EQ(read_text(dir / "pasted.csv"), read_text(dir / "typed.csv"));
+  EXPECT_FALSE(read_text(dir / "typed.csv").empty());
+}
+
+TEST(ConductorsCli, AnUnknownTypeIsExitTwoAndOneLine) {
+  const auto dir = scratch_directory("conductors-unknown");
+  const CliResult r = run_cli("conductors \"ACSR Drak\"", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_TRUE(r.err.starts_with("stockbridge: type = \"ACSR Drak\": expected a conductor of the catalogue: AAAC ASTER570, "))
+      << r.err;
+}
+
+TEST(ConductorsCli, ASpanFilesBadTypeOrConductorFileIsExitTwoNamingFileLineAndKey) {
+  const auto dir = scratch_directory("conductors-span-bad");
+  std::ofstream(dir / "typo.toml") << conductors_span("[conductor]\ntype = \"ACSR Drak\"\n");
+  CliResult r = run_cli("span typo.toml -o out.csv", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_TRUE(r.err.starts_with("stockbridge: typo.toml:2: conductor.type = \"ACSR Drak\": expected a conductor of the "
+                                "catalogue: "))
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));
+
+  std::ofstream(dir / "missing.toml") << conductors_span("[conductor]\nfile = \"mine.toml\"\n");
+  r = run_cli("span missing.toml -o out.csv", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_TRUE(r.err.starts_with("stockbridge: missing.toml:2: conductor.file: \"mine.toml\": expected an existing "
+                                "conductor file (looked for "))
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));
+
+  // A conductor file with an aluminium layer of more wires than fit.
+  std::ofstream(dir / "mine.toml") << "[conductor]\ntype = \"Mine\"\nmass_per_length = 0.5\ndiameter = 0.015\n"
+                                      "rated_tensile_strength = 50000\n[conductor.core]\nmaterial = \"steel\"\n"
+                                      "youngs_modulus = 207e9\nwire_diameter = 0.003\n[[conductor.layer]]\n"
+                                      "material = \"aluminium\"\nyoungs_modulus = 68.9e9\ncount = 9\n"
+                                      "wire_diameter = 0.006\nlay_ratio = 12\n";
+  r = run_cli("span missing.toml -o out.csv", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_EQ(r.err, "stockbridge: mine.toml:13: conductor.layer[0].count = 9: expected at most 4 wires of 0.006 m side by "
+                   "side around the layer beneath (pitch radius 0.0045 m)\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));
+}
+
+TEST(ConductorsCli, TheStrandCommandShowsEachMaterialsModulus) {
+  const auto dir = scratch_directory("conductors-strand-drake");
+  const CliResult r =
+      run_cli(std::string("strand '") + STOCKBRIDGE_SOURCE_DIR + "/examples/strand_acsr_drake.toml'", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("strand: 33 wires (core + 3 layers), E = 207000000000 Pa (core), 207000000000, 68900000000, "
+                       "68900000000 Pa (layers, from the inside out)\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("ei_min = 44.25"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace stockbridge::testing
