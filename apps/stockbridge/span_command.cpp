@@ -105,8 +105,9 @@ void print_span_report(const requests::SpanResult& result) {
     fmt::print("dampers: none\n");
   } else {
     for (const span::SpanDamper& d : s.dampers()) {
-      fmt::print("damper {}: {:.4g} m from the clamp, {} ({} model)\n", d.name, d.position,
-                 d.both_ends ? "both ends" : "one end", span::damper_model_name(result.damper_model));
+      fmt::print("damper {}: {:.4g} m from the clamp, {} ({} model{})\n", d.name, d.position,
+                 d.both_ends ? "both ends" : "one end", span::damper_model_name(result.damper_model),
+                 d.measured() ? ", Z from its measured sheet" : "");
     }
   }
   if (a.position) {
@@ -126,6 +127,11 @@ void print_span_report(const requests::SpanResult& result) {
                span::bending_strain_pp_microstrain(s.conductor(), summary.max_stress_poffenberger_swart),
                1e3 * summary.undamped_max_bending_amplitude,
                span::bending_strain_pp_microstrain(s.conductor(), summary.undamped_max_stress_poffenberger_swart));
+  }
+  if (std::isfinite(a.sheet_error_estimate)) {
+    fmt::print("measured sheets: leaving out every other curve moves the fymax stress by up to {:.3g} % (the band: "
+               "CSV stress_fymax_low_mpa, stress_fymax_high_mpa)\n",
+               100.0 * a.sheet_error_estimate);
   }
   fmt::print("endurance limit: {} ({:.4g} microstrain peak-to-peak): {} (undamped: {})\n",
              span_megapascal(summary.endurance_limit),
@@ -159,6 +165,7 @@ int run_span_command(const SpanOptions& options) {
     print_span_report(result);
   }
   fmt::print(stderr, "span: {} points in {:.2f} s, {} converged\n", summary.points, seconds, summary.converged);
+  for (const std::string& warning : a.warnings) fmt::print(stderr, "warning: {}\n", warning);
   for (const span::BalancePoint& p : a.balance.points) {
     if (p.several_states) fmt::print(stderr, "  note: f = {:.4g} Hz: {}\n", p.frequency_hz, p.note);
   }

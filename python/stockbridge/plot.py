@@ -487,10 +487,12 @@ def plot_fit(path, output):
 # ---------------------------------------------------------------- span
 
 def span_figure(path):
-    """The span's balance: the antinode amplitude and the fymax stress at the span clamp
-    over frequency, with dampers and without, and the endurance limit (the CSV's
-    endurance_limit_mpa column) as a horizontal line; non-converged frequencies as red
-    crosses."""
+    """The span's balance: the antinode amplitude, the fymax stress at the span clamp
+    and, where the CSV has it, the outer wires' bending strain there (microstrain
+    peak-to-peak, what field practice quotes), over frequency, with dampers and
+    without, and the endurance limit (the CSV's endurance_limit_mpa column) as a
+    horizontal line; with a damper from a measured sheet, the band its interpolation
+    leaves around the stress; non-converged frequencies as red crosses."""
     table = Table(path)
     frequency = table.required("frequency_hz")
     for i, f in enumerate(frequency):
@@ -500,31 +502,46 @@ def span_figure(path):
     good = [i for i, ok in enumerate(converged) if ok]
     if not good:
         raise PlotError(f"{path}: no converged point to plot (converged = 0 in every row)")
-    columns = {name: table.required(name, good) for name in
-               ("amplitude_m", "undamped_amplitude_m", "stress_fymax_mpa", "undamped_stress_fymax_mpa")}
+    names = ["amplitude_m", "undamped_amplitude_m", "stress_fymax_mpa", "undamped_stress_fymax_mpa"]
+    strain = "bending_strain_pp_microstrain" in table.header
+    if strain:
+        names += ["bending_strain_pp_microstrain", "undamped_bending_strain_pp_microstrain"]
+    columns = {name: table.required(name, good) for name in names}
     limit = table.required("endurance_limit_mpa")
     if len({round(v, 9) for v in limit}) != 1:
         raise PlotError(f"{path}: endurance_limit_mpa differs between rows: expected one value (a span CSV)")
     damped = any(name.endswith("_end1_velocity_m_s") for name in table.header)
     f = [frequency[i] for i in good]
-    figure, axes = plt.subplots(2, 1, figsize=FIGURE_SIZE, sharex=True, layout="constrained")
+    size = (FIGURE_SIZE[0], FIGURE_SIZE[1] * (1.4 if strain else 1.0))
+    figure, axes = plt.subplots(3 if strain else 2, 1, figsize=size, sharex=True, layout="constrained")
     panels = [(axes[0], "amplitude_m", 1e3, "antinode amplitude Y (mm)"),
               (axes[1], "stress_fymax_mpa", 1.0, "fymax stress at the clamp (MPa)")]
+    if strain:
+        panels.append((axes[2], "bending_strain_pp_microstrain", 1.0, "strain at the clamp\n(microstrain p-p)"))
     for axis, name, scale, ylabel in panels:
         axis.plot(f, [scale * columns["undamped_" + name][i] for i in good], "--", color="0.4", label="undamped")
         axis.plot(f, [scale * columns[name][i] for i in good], "-", color="C0",
                   marker="." if len(good) < 30 else None, label="with dampers" if damped else "balance")
         axis.set_ylabel(ylabel)
         axis.grid(True, which="both", alpha=0.3)
+    if "stress_fymax_low_mpa" in table.header:
+        low, high = table.column("stress_fymax_low_mpa"), table.column("stress_fymax_high_mpa")
+        band = [i for i in good if not math.isnan(low[i]) and not math.isnan(high[i])]
+        if band:
+            axes[1].fill_between([frequency[i] for i in band], [low[i] for i in band], [high[i] for i in band],
+                                 color="C0", alpha=0.2, linewidth=0, label="measured sheet's band")
     axes[1].axhline(limit[0], color="C3", linewidth=1.0, label=f"endurance limit {limit[0]:.3g} MPa")
+    if strain:
+        limit_strain = table.required("endurance_limit_pp_microstrain")[0]
+        axes[2].axhline(limit_strain, color="C3", linewidth=1.0, label=f"endurance limit {limit_strain:.4g} microstrain")
     failed = [frequency[i] for i, ok in enumerate(converged) if not ok]
     if failed:
         axes[1].plot(failed, [0.0] * len(failed), "x", color="red", label="not converged")
     for axis in axes:
         log_if_positive(axis)
         axis.legend(fontsize="small")
-    log_scale(axes[0], "x")  # shared; axes[1] also holds the limit line, drawn across in axes units
-    axes[1].set_xlabel("frequency (Hz)")
+    log_scale(axes[0], "x")  # shared; the limit lines are drawn across in axes units
+    axes[-1].set_xlabel("frequency (Hz)")
     axes[0].set_title(f"Span energy balance ({path})", fontsize="medium")
     return figure
 

@@ -151,7 +151,10 @@ std::optional<double> DesignStudy::position_of(const std::vector<double>& x) con
 span::Span DesignStudy::span_with(std::size_t k, const damper::Damper& damper, std::optional<double> position) const {
   const span::Span& s = spans_.at(k).span;
   std::vector<span::SpanDamper> dampers = s.dampers();
-  for (span::SpanDamper& d : dampers) d.damper = damper;
+  for (span::SpanDamper& d : dampers) {
+    d.damper = damper;
+    d.sheet.reset();  // a span's measured damper is replaced by the candidate too
+  }
   span::Span with(s.conductor(), s.length(), s.tension(), s.wind(), s.self_damping(), std::move(dampers), s.fatigue());
   return position ? with.with_dampers_at(*position) : with;
 }

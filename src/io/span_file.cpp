@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <initializer_list>
+#include <memory>
 #include <optional>
 #include <utility>
 
@@ -13,6 +14,7 @@
 #include "stockbridge/io/conductor_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/span/stranded_conductor.hpp"
 #include "toml_reader.hpp"
 
@@ -38,6 +40,8 @@ struct SpanReading {
   span::BalanceOptions balance;
   std::vector<std::filesystem::path> inputs;
   std::vector<std::string> warnings;
+  /// The measured sheets read, by path.
+  std::vector<std::pair<std::filesystem::path, std::shared_ptr<const span::ImpedanceSheet>>> sheets;
 };
 
 /// Rejects unknown keys before any value is read, so that a misspelt key is
@@ -214,10 +218,61 @@ span::SelfDampingModel read_self_damping(const TomlTable& table) {
 }
 
 /// A span damper's name in tables and messages: its damper file's stem.
+/// The warnings of a file a span file reads, each once.
+void span_add_warnings(SpanReading& reading, std::vector<std::string> warnings) {
+  for (std::string& warning : warnings) {
+    if (std::find(reading.warnings.begin(), reading.warnings.end(), warning) == reading.warnings.end()) {
+      reading.warnings.push_back(std::move(warning));
+    }
+  }
+}
+
+/// A file a [[damper]] names (`key`: file or impedance), resolved and found.
+std::filesystem::path span_damper_input(const TomlTable& table, std::string_view key, const std::string& file,
+                                        const std::filesystem::path& base_directory, std::string_view what) {
+  const std::filesystem::path path = span_resolve(file, base_directory);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    table.fail(key, fmt::format("\"{}\": expected an existing {} (looked for {}, relative paths start at the span "
+                                "file's folder)",
+                                printable(file), what, printable(path.string())));
+  }
+  return path;
+}
+
+/// A measured damper: its sheet (one per file, shared by the [[damper]] entries that name it).
+std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, const std::string& file,
+                                                       const std::filesystem::path& base_directory,
+                                                       SpanReading& reading) {
+  const std::filesystem::path path =
+      span_damper_input(table, "impedance", file, base_directory, "measured impedance CSV file");
+  for (const auto& [read, sheet] : reading.sheets) {
+    if (read == path) return sheet;
+  }
+  MeasuredImpedanceFile loaded = load_measured_impedance(path);
+  span_add_warnings(reading, std::move(loaded.warnings));
+  reading.inputs.push_back(path);
+  try {
+    auto sheet = std::make_shared<const span::ImpedanceSheet>(std::move(loaded.measurement), path.stem().string());
+    reading.sheets.emplace_back(path, sheet);
+    return sheet;
+  } catch (const InvalidParameter& e) {
+    table.fail("impedance", fmt::format("\"{}\"{}", printable(file), std::string(e.what()).substr(e.field().size())));
+  }
+}
+
+/// A span damper's name in tables and messages: its damper file's (or sheet's) stem.
 span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem::path& base_directory,
                                   SpanReading& reading) {
-  span_accept_only(table, {"file", "position", "ends"});
-  const std::string file = span_required_string(table, "file", "the damper file (relative to the span file)");
+  span_accept_only(table, {"file", "impedance", "position", "ends"});
+  const std::optional<std::string> model = table.optional_string("file");
+  const std::optional<std::string> measured = table.optional_string("impedance");
+  if (model.has_value() == measured.has_value()) {
+    if (model) table.fail("impedance", "given beside file: expected a damper file or a measured sheet, one of the two");
+    throw InputError(fmt::format("{}missing key 'file' in [{}]: expected the damper file (relative to the span file), "
+                                 "or impedance = a measured impedance CSV file",
+                                 table.location("file"), table.key_path()));
+  }
   const double position = table.number("position");
   bool both_ends = true;
   if (const auto ends = table.optional_string("ends")) {
@@ -228,22 +283,17 @@ span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem:
     }
     both_ends = *ends == "both";
   }
-  const std::filesystem::path path = span_resolve(file, base_directory);
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    table.fail("file", fmt::format("\"{}\": expected an existing damper file (looked for {}, relative paths start at "
-                                   "the span file's folder)",
-                                   printable(file), printable(path.string())));
+  if (measured) {
+    std::shared_ptr<const span::ImpedanceSheet> sheet = read_sheet(table, *measured, base_directory, reading);
+    std::string name = sheet->name();
+    return span::SpanDamper{std::nullopt, position, both_ends, std::move(name), std::move(sheet)};
   }
+  const std::filesystem::path path = span_damper_input(table, "file", *model, base_directory, "damper file");
   DamperFile loaded = load_damper_file(path);
   reading.inputs.push_back(path);
   reading.inputs.insert(reading.inputs.end(), loaded.cable_files.begin(), loaded.cable_files.end());
-  for (std::string& warning : loaded.warnings) {
-    if (std::find(reading.warnings.begin(), reading.warnings.end(), warning) == reading.warnings.end()) {
-      reading.warnings.push_back(std::move(warning));
-    }
-  }
-  return span::SpanDamper{std::move(loaded.damper), position, both_ends, path.stem().string()};
+  span_add_warnings(reading, std::move(loaded.warnings));
+  return span::SpanDamper{std::move(loaded.damper), position, both_ends, path.stem().string(), nullptr};
 }
 
 span::FatigueSpec read_fatigue(const TomlTable& table) {

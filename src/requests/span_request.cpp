@@ -240,6 +240,13 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
                   [c](const P& p) {
                     return span::bending_strain_pp_microstrain(c->conductor, p.undamped_stress_poffenberger_swart);
                   }),
+      span_solved("stress_fymax_low_mpa", "MPa",
+                  "with a damper known by its measured sheet: the band its interpolation leaves, the fymax stress times "
+                  "(1 - the sheets' error estimate, the largest change leaving out every other curve makes; empty "
+                  "without a sheet)",
+                  [mpa](const P& p) { return mpa(p.stress_fymax_low); }),
+      span_solved("stress_fymax_high_mpa", "MPa", "the stress times (1 + the estimate)",
+                  [mpa](const P& p) { return mpa(p.stress_fymax_high); }),
       span_given("endurance_limit_pp_microstrain", "microstrain", "the endurance limit as a peak-to-peak strain",
                  [c](const P&) { return span::bending_strain_pp_microstrain(c->conductor, c->endurance_limit); }),
       span_per_damper("<damper>_end<k>_velocity_m_s", "m/s",
@@ -368,7 +375,9 @@ io::JsonObject span_summary(const SpanResult& result) {
       .add("direct_solves", s.direct_solves)
       .add("max_energy_identity_error", identity)
       .add("several_states_hz", several)
-      .add("failed", failed);
+      .add("failed", failed)
+      .add("sheet_error_estimate", a.sheet_error_estimate)
+      .add("warnings", a.warnings);
   return json;
 }
 

@@ -1,6 +1,10 @@
 #include "stockbridge/span/analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -19,6 +23,83 @@ void AnalysisOptions::validate() const {
   }
 }
 
+namespace {
+
+/// The span with every measured damper's sheet cut to every other curve; none where a
+/// sheet has too few curves for it.
+std::optional<Span> with_every_other_curve(const Span& span, int parity) {
+  std::vector<SpanDamper> dampers = span.dampers();
+  for (SpanDamper& d : dampers) {
+    if (!d.measured()) continue;
+    std::optional<ImpedanceSheet> cut = d.sheet->every_other(parity);
+    if (!cut) return std::nullopt;
+    d.sheet = std::make_shared<const ImpedanceSheet>(std::move(*cut));
+  }
+  return span.with_dampers(std::move(dampers));
+}
+
+std::string measured_names(const Span& span) {
+  std::string names;
+  for (const SpanDamper& d : span.dampers()) {
+    if (d.measured()) names += fmt::format("{}{}", names.empty() ? "" : ", ", d.name);
+  }
+  return names;
+}
+
+/// The band each point's stress lies in for the sheets' interpolation, and the
+/// warnings a user of measured sheets needs.
+void add_sheet_band(SpanAnalysis& out, const SpanTables& tables, const BalanceOptions& options) {
+  const std::string names = measured_names(out.span);
+  if (names.empty()) return;
+  std::vector<SpanBalance> cut;
+  for (const int parity : {0, 1}) {
+    if (const std::optional<Span> span = with_every_other_curve(out.span, parity)) {
+      cut.push_back(run_balance(*span, SpanTables(tables, *span), options));
+    }
+  }
+  double worst = std::numeric_limits<double>::quiet_NaN(), worst_f = 0.0;
+  int below = 0;
+  for (std::size_t i = 0; i < out.balance.points.size(); ++i) {
+    const BalancePoint& p = out.balance.points[i];
+    if (!p.converged()) continue;
+    if (p.note.find("below its sheet's lowest curve") != std::string::npos) ++below;
+    for (const SpanBalance& b : cut) {
+      const BalancePoint& q = b.points[i];
+      if (!q.converged()) continue;
+      const double relative = std::abs(q.stress_fymax - p.stress_fymax) / p.stress_fymax;
+      if (!(relative <= worst)) worst = relative, worst_f = p.frequency_hz;
+    }
+  }
+  // The band: the worst relative change over the band at every point. Near a kink of
+  // Z(v) (the last sticking curve next to the first slipping one) every interpolant
+  // errs alike, so the change at the point itself can be small where the error is not.
+  for (BalancePoint& p : out.balance.points) {
+    if (!p.converged() || std::isnan(worst)) continue;
+    p.stress_fymax_low = p.stress_fymax * std::max(0.0, 1.0 - worst);
+    p.stress_fymax_high = p.stress_fymax * (1.0 + worst);
+  }
+  out.sheet_error_estimate = cut.empty() ? std::numeric_limits<double>::quiet_NaN() : worst;
+  if (cut.empty()) {
+    out.warnings.push_back(fmt::format("the measured sheet of {} has too few curves to estimate its interpolation "
+                                       "error (every other curve leaves fewer than two): the stresses may be off by "
+                                       "tens of percent where a resonance moves with the amplitude",
+                                       names));
+  } else if (worst > sheet_error_warning) {
+    out.warnings.push_back(fmt::format("the measured sheet of {} is too coarse for this span: leaving out every other "
+                                       "curve moves the fymax stress by up to {:.0f} % (at {:.4g} Hz); the CSV's "
+                                       "stress_fymax_low_mpa and stress_fymax_high_mpa show the band, and more clamp "
+                                       "velocities measured would narrow it",
+                                       names, 100.0 * worst, worst_f));
+  }
+  if (below > 0) {
+    out.warnings.push_back(fmt::format("at {} frequencies a measured damper's clamp velocity lay below its sheet's "
+                                       "lowest curve: Z held at that curve's there (the points' notes say where)",
+                                       below));
+  }
+}
+
+}  // namespace
+
 SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, const AnalysisOptions& options,
                           const damper::SweepProgress& progress, const TableSource& tables) {
   options.validate();
@@ -29,12 +110,13 @@ SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, con
       options.position_range ? options.balance.table.for_position_search() : options.balance.table;
   const std::shared_ptr<const SpanTables> made =
       tables ? tables(span, frequencies, table) : std::make_shared<const SpanTables>(span, frequencies, table, progress);
-  SpanAnalysis out{span, std::nullopt, {}, made->frequencies()};
+  SpanAnalysis out{span, std::nullopt, {}, made->frequencies(), std::numeric_limits<double>::quiet_NaN(), {}};
   if (options.position_range) {
     out.position = optimise_position(span, *made, options.balance, options.position_range->lo, options.position_range->hi);
     out.span = span.with_dampers_at(out.position->position);
   }
   out.balance = run_balance(out.span, *made, options.balance);
+  add_sheet_band(out, *made, options.balance);
   return out;
 }
 

@@ -44,16 +44,21 @@ SpanTables::SpanTables(const Span& span, std::vector<double> frequencies, const 
                        const damper::SweepProgress& progress)
     : frequencies_(std::move(frequencies)) {
   options.validate();
-  // Dampers of the same mechanics (several [[damper]] of one file) share a table.
+  // Dampers of the same mechanics (several [[damper]] of one file) share a table, as
+  // do dampers of one sheet.
   const std::vector<SpanDamper>& dampers = span.dampers();
+  const auto alike = [](const SpanDamper& a, const SpanDamper& b) {
+    if (a.measured() || b.measured()) return a.sheet == b.sheet;
+    return a.damper->description().same_mechanics(b.damper->description());
+  };
   const auto same_as_earlier = [&](std::size_t j) {
     for (std::size_t i = 0; i < j; ++i) {
-      if (dampers[i].damper.description().same_mechanics(dampers[j].damper.description())) return i;
+      if (alike(dampers[i], dampers[j])) return i;
     }
     return j;
   };
   std::size_t distinct = 0;
-  for (std::size_t j = 0; j < dampers.size(); ++j) distinct += same_as_earlier(j) == j ? 1 : 0;
+  for (std::size_t j = 0; j < dampers.size(); ++j) distinct += same_as_earlier(j) == j && !dampers[j].measured() ? 1 : 0;
   const std::size_t columns = ImpedanceTable::solved_frequencies(frequencies_, options.column_ratio).size();
   const int total = static_cast<int>(distinct * columns * static_cast<std::size_t>(options.velocities));
   int done_before = 0;
@@ -62,14 +67,27 @@ SpanTables::SpanTables(const Span& span, std::vector<double> frequencies, const 
       tables_.push_back(tables_[i]);
       continue;
     }
+    if (dampers[j].measured()) {
+      tables_.emplace_back(*dampers[j].sheet, frequencies_);
+      continue;
+    }
     const damper::SweepProgress per_table = [&](int done, int) {
       if (progress) progress(done_before + done, total);
     };
-    tables_.emplace_back(dampers[j].damper, frequencies_, options, per_table);
+    tables_.emplace_back(*dampers[j].damper, frequencies_, options, per_table);
     done_before += tables_.back().nodes();
     failed_nodes_ += tables_.back().failed_nodes();
   }
   nodes_ = done_before;
+}
+
+SpanTables::SpanTables(const SpanTables& solved, const Span& span) : SpanTables(solved) {
+  if (tables_.size() != span.dampers().size()) {
+    throw std::invalid_argument(fmt::format("SpanTables: {} tables for {} dampers", tables_.size(), span.dampers().size()));
+  }
+  for (std::size_t j = 0; j < tables_.size(); ++j) {
+    if (span.dampers()[j].measured()) tables_[j] = ImpedanceTable(*span.dampers()[j].sheet, frequencies_);
+  }
 }
 
 namespace {
@@ -166,6 +184,41 @@ StableRoot balanced_amplitude(FrequencyBalance& balance, Polish* polish) {
   return y;
 }
 
+/// Why a measured damper's sheet cannot give Z at frequency i (empty if every sheet can).
+std::string outside_sheets(const Span& span, const SpanTables& tables, std::size_t i) {
+  for (std::size_t j = 0; j < span.dampers().size(); ++j) {
+    const SpanDamper& d = span.dampers()[j];
+    if (!d.measured() || tables.tables()[j].velocity_range(i)) continue;
+    const Interval f = d.sheet->frequency_range();
+    return fmt::format("damper {}: its measured sheet gives Z from {:.4g} to {:.4g} Hz (where two curves or more were "
+                       "measured), not at {:.4g} Hz: no extrapolation in frequency",
+                       d.name, f.lo, f.hi, tables.frequencies()[i]);
+  }
+  return {};
+}
+
+/// A measured damper's clamp velocity against its sheet's curves at frequency i: above
+/// the highest, the point is not trusted (the reason; the sheet says nothing there);
+/// below the lowest, Z was held at the lowest curve's (a note).
+std::string check_sheet_velocities(const Span& span, const SpanTables& tables, std::size_t i, BalancePoint& p) {
+  for (const DamperAtBalance& d : p.dampers) {
+    const SpanDamper& sd = span.dampers()[d.damper];
+    if (!sd.measured()) continue;
+    const Interval v = *tables.tables()[d.damper].velocity_range(i);
+    if (d.clamp_velocity > v.hi * (1.0 + 1e-9)) {
+      return fmt::format("damper {} at end {}: its clamp velocity {:.4g} m/s is above the highest its measured sheet "
+                         "gives at {:.4g} Hz, {:.4g} m/s: no extrapolation in velocity",
+                         sd.name, d.end, d.clamp_velocity, p.frequency_hz, v.hi);
+    }
+    if (d.clamp_velocity < v.lo * (1.0 - 1e-9) && p.note.find(sd.name + " at end") == std::string::npos) {
+      p.note += fmt::format("{}damper {} at end {}: {:.3g} m/s is below its sheet's lowest curve, {:.3g} m/s: Z held at "
+                            "that curve's (small amplitudes stick)",
+                            p.note.empty() ? "" : "; ", sd.name, d.end, d.clamp_velocity, v.lo);
+    }
+  }
+  return {};
+}
+
 BalancePoint balance_at(const Span& span, const SpanTables& tables, std::size_t i, Polish* polish,
                         const BalanceOptions& options) {
   BalancePoint p;
@@ -173,6 +226,13 @@ BalancePoint balance_at(const Span& span, const SpanTables& tables, std::size_t 
   p.wind_speed = span.wind().wind_speed(p.frequency_hz, span.conductor().diameter);
   p.wavelength = wavelength(span.conductor(), span.tension(), p.frequency_hz);
   fill_undamped(span, p.frequency_hz, p);
+  if (std::string outside = outside_sheets(span, tables, i); !outside.empty()) {
+    if (polish) polish->forget();  // the next frequency starts afresh
+    p.summary.termination = Termination::inner_failure;
+    p.summary.where = std::move(outside);
+    mask(p);
+    return p;
+  }
   FrequencyBalance balance(span, tables, i, options);
   const StableRoot y = balanced_amplitude(balance, polish);
   p.summary = y.summary;
@@ -190,9 +250,15 @@ BalancePoint balance_at(const Span& span, const SpanTables& tables, std::size_t 
     mask(p);
     return p;
   }
+  if (std::string above = check_sheet_velocities(span, tables, i, p); !above.empty()) {
+    p.summary.termination = Termination::inner_failure;
+    p.summary.where = std::move(above);
+    mask(p);
+    return p;
+  }
   if (polish && polish->passed_fold()) {
     p.several_states = true;
-    p.note = "several self-consistent states near here: the dampers' clamp velocities passed a fold since the "
+    p.note += std::string(p.note.empty() ? "" : "; ") + "several self-consistent states near here: the dampers' clamp velocities passed a fold since the "
              "frequency before; the state continued from the band's low end is the one reported";
   }
   return p;

@@ -101,6 +101,35 @@ ImpedanceTable::ImpedanceTable(const damper::Damper& damper, std::vector<double>
   }
 }
 
+ImpedanceTable::ImpedanceTable(const ImpedanceSheet& sheet, std::vector<double> frequencies)
+    : frequencies_(std::move(frequencies)) {
+  for (std::size_t i = 0; i < frequencies_.size(); ++i) {
+    std::vector<double> log_v;
+    std::vector<std::optional<std::complex<double>>> z;
+    for (const SheetNode& node : sheet.nodes_at(frequencies_[i])) {
+      log_v.push_back(std::log(node.velocity));
+      z.emplace_back(node.impedance);
+    }
+    solved_.push_back(i);
+    columns_.push_back(make_column(log_v, z));
+  }
+}
+
+std::optional<Interval> ImpedanceTable::velocity_range(std::size_t i) const {
+  if (i >= frequencies_.size()) throw std::out_of_range("ImpedanceTable::velocity_range: no such frequency");
+  const std::size_t k = static_cast<std::size_t>(std::lower_bound(solved_.begin(), solved_.end(), i) - solved_.begin());
+  const auto range_of = [this](std::size_t column) -> std::optional<Interval> {
+    const Column& c = columns_[column];
+    if (c.log_v.size() < 2) return std::nullopt;
+    return Interval{std::exp(c.log_v.front()), std::exp(c.log_v.back())};
+  };
+  const std::optional<Interval> hi = range_of(k);
+  if (solved_[k] == i || !hi) return hi;
+  const std::optional<Interval> lo = range_of(k - 1);
+  if (!lo) return std::nullopt;
+  return Interval{std::max(lo->lo, hi->lo), std::min(lo->hi, hi->hi)};
+}
+
 std::vector<std::size_t> ImpedanceTable::solved_frequencies(const std::vector<double>& frequencies, double column_ratio) {
   std::vector<std::size_t> solved;
   if (frequencies.empty()) return solved;

@@ -21,7 +21,13 @@ constexpr double kTableSlopeStep = 0.05;
 }  // namespace
 
 Polish::Polish(const Span& span, const BalanceOptions& options) : options_(options) {
-  for (const SpanDamper& d : span.dampers()) trackers_.emplace_back(d.damper, options.table.solver);
+  for (const SpanDamper& d : span.dampers()) {
+    if (d.damper) {
+      trackers_.emplace_back(std::in_place, *d.damper, options.table.solver);
+    } else {
+      trackers_.emplace_back();  // a measured sheet: its table is all there is
+    }
+  }
 }
 
 void Polish::forget() {
@@ -31,7 +37,7 @@ void Polish::forget() {
 
 int Polish::direct_solves() const {
   int n = 0;
-  for (const damper::DamperTracker& t : trackers_) n += t.solves();
+  for (const std::optional<damper::DamperTracker>& t : trackers_) n += t ? t->solves() : 0;
   return n;
 }
 
@@ -85,8 +91,10 @@ void Polish::start_slopes(const FrequencyBalance& balance, const Eigen::VectorXd
   }
 }
 
-damper::ImpedancePoint Polish::solve_directly(const Unknown& unknown, const damper::Excitation& excitation) {
-  damper::DamperTracker& tracker = trackers_[unknown.damper];
+damper::ImpedancePoint Polish::solve_directly(const FrequencyBalance& balance, const Unknown& unknown,
+                                              const damper::Excitation& excitation) {
+  if (!trackers_[unknown.damper]) return from_sheet(balance, unknown, excitation);
+  damper::DamperTracker& tracker = *trackers_[unknown.damper];
   std::optional<damper::DamperTracker::Checkpoint>& anchor = anchors_[unknown.damper];
   if (anchor) tracker.restore(*anchor);
   damper::ImpedancePoint direct = tracker.solve(excitation);
@@ -100,6 +108,24 @@ damper::ImpedancePoint Polish::solve_directly(const Unknown& unknown, const damp
   return direct;
 }
 
+damper::ImpedancePoint Polish::from_sheet(const FrequencyBalance& balance, const Unknown& unknown,
+                                           const damper::Excitation& excitation) {
+  damper::ImpedancePoint p;
+  p.frequency_hz = excitation.frequency_hz;
+  p.velocity_amplitude = excitation.velocity_amplitude();
+  p.displacement_amplitude = excitation.displacement_amplitude;
+  const std::optional<std::complex<double>> z = balance.table_impedance(unknown.damper, p.velocity_amplitude);
+  if (!z) {
+    p.termination = Termination::inner_failure;
+    p.failure = "its measured sheet does not give Z at this frequency";
+    return p;
+  }
+  p.termination = Termination::converged;
+  p.impedance = *z;
+  p.power = 0.5 * p.velocity_amplitude * p.velocity_amplitude * z->real();
+  return p;
+}
+
 std::optional<Polish::Trial> Polish::evaluate(FrequencyBalance& balance, const Eigen::VectorXd& u,
                                               SolverSummary& failure) {
   Trial t;
@@ -107,7 +133,8 @@ std::optional<Polish::Trial> Polish::evaluate(FrequencyBalance& balance, const E
   for (std::size_t k = 0; k < unknowns_.size(); ++k) {
     const Unknown& unknown = unknowns_[k];
     const double v = std::exp(u[static_cast<Eigen::Index>(k)]);
-    damper::ImpedancePoint direct = solve_directly(unknown, damper::Excitation::from_velocity(balance.frequency(), v));
+    damper::ImpedancePoint direct =
+        solve_directly(balance, unknown, damper::Excitation::from_velocity(balance.frequency(), v));
     if (!direct.converged()) {
       failure.termination = Termination::inner_failure;
       failure.where = fmt::format("end {}, damper {} solved directly at {:.4g} m/s: {}", unknown.slots[0].first + 1,

@@ -104,14 +104,18 @@ class Polish {
                                        SolverSummary& failure);
   /// Solves every damper directly at exp(u) and balances the span with those impedances.
   std::optional<Trial> evaluate(FrequencyBalance& balance, const Eigen::VectorXd& u, SolverSummary& failure);
-  damper::ImpedancePoint solve_directly(const Unknown& unknown, const damper::Excitation& excitation);
+  damper::ImpedancePoint solve_directly(const FrequencyBalance& balance, const Unknown& unknown,
+                                        const damper::Excitation& excitation);
+  /// A measured damper's "direct solve": its sheet's Z, interpolated (the table).
+  static damper::ImpedancePoint from_sheet(const FrequencyBalance& balance, const Unknown& unknown,
+                                           const damper::Excitation& excitation);
   /// dh/du at a trial.
   Eigen::MatrixXd jacobian(FrequencyBalance& balance, const Trial& trial) const;
   void update_slopes(const Trial& trial);
   void start_slopes(const FrequencyBalance& balance, const Eigen::VectorXd& u);
 
   const BalanceOptions& options_;
-  std::vector<damper::DamperTracker> trackers_;  ///< one per damper of the span
+  std::vector<std::optional<damper::DamperTracker>> trackers_;  ///< one per damper of the span; none for a measured sheet
   std::vector<std::optional<damper::DamperTracker::Checkpoint>> anchors_;  ///< per damper: this frequency's first solution
   std::vector<Unknown> unknowns_;
   std::vector<std::complex<double>> slopes_;  ///< dZ/du per unknown, the last secant

@@ -46,6 +46,9 @@ Span::Span(Conductor conductor, double length, double tension, WindModel wind, S
   within_field("self_damping", [&] { self_damping_.validate(); });
   self_damping_.validate_with(conductor_);  // names conductor.ei_max itself
   for (std::size_t j = 0; j < dampers_.size(); ++j) {
+    if (dampers_[j].damper.has_value() == dampers_[j].measured()) {
+      throw InvalidParameter(fmt::format("damper[{}]", j), ": expected a damper model or a measured sheet, one of the two");
+    }
     const double a = dampers_[j].position;
     if (a > 0.0 && !(a < 0.5 * length_) && typical::damper_position.contains(a)) {
       throw_invalid("span.length", length_,
@@ -72,6 +75,10 @@ Span Span::with_dampers_at(double position) const {
   const double shift = dampers_.empty() ? 0.0 : position - dampers_.front().position;
   for (SpanDamper& d : moved) d.position += shift;
   return Span(conductor_, length_, tension_, wind_, self_damping_, std::move(moved), fatigue_, terrain_);
+}
+
+Span Span::with_dampers(std::vector<SpanDamper> dampers) const {
+  return Span(conductor_, length_, tension_, wind_, self_damping_, std::move(dampers), fatigue_, terrain_);
 }
 
 Span Span::without_dampers() const {

@@ -103,7 +103,8 @@ TEST(SpanCli, RunsTheExampleAndWritesTheCsv) {
   const std::string text = read_text(dir / "span.csv");
   EXPECT_EQ(text.rfind(kHeader + ",endurance_limit_mpa,energy_identity_error,undamped_stress_ps_mpa,several_states,"
                                  "bending_amplitude_pp_m,bending_strain_pp_microstrain,undamped_bending_amplitude_pp_m,"
-                                 "undamped_bending_strain_pp_microstrain,endurance_limit_pp_microstrain,"
+                                 "undamped_bending_strain_pp_microstrain,stress_fymax_low_mpa,stress_fymax_high_mpa,"
+                                 "endurance_limit_pp_microstrain,"
                                  "sauter2003_end1_velocity_m_s,",
                        0),
             0u)
@@ -270,7 +271,7 @@ TEST(SpanCli, PointsThatDidNotConvergeNeverEnterTheLifeOrTheVerdict) {
   const CliResult r = run_cli(run + "-o span.csv", dir);
   ASSERT_EQ(r.exit_code, 3) << r.err;
   EXPECT_EQ(r.out.rfind("converged 2 of 4 frequencies: ", 0), 0u) << r.out;
-  EXPECT_NE(r.out.find("endurance limit: 8.73 MPa: unsafe (undamped: unsafe)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("endurance limit: 8.73 MPa (256.8 microstrain peak-to-peak): unsafe (undamped: unsafe)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("life: unknown (2 points missing) (undamped "), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("span: 2 points did not converge"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("f = 10 Hz: no root in the range searched (the wind's power exceeds the dissipation up to "

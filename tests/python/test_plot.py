@@ -369,7 +369,7 @@ def test_span_plot_writes_a_png(span_files):
     result = plot("span", "span.csv", "-o", "span.png", cwd=span_files)
     assert result.returncode == 0, result.stderr
     assert os.path.getsize(span_files / "span.png") > 10000
-    assert png_size(span_files / "span.png") == (800, 600)
+    assert png_size(span_files / "span.png") == (800, 839)  # three panels: amplitude, stress, strain
 
 
 def test_span_plot_draws_damped_undamped_and_the_endurance_limit(span_files):
@@ -377,7 +377,7 @@ def test_span_plot_draws_damped_undamped_and_the_endurance_limit(span_files):
     with open(span_files / "span.csv", newline="") as handle:
         rows = list(csv.DictReader(handle))
     figure = module.span_figure(str(span_files / "span.csv"))
-    amplitude, stress = figure.axes
+    amplitude, stress, strain = figure.axes
     labels = [line.get_label() for line in stress.get_lines()]
     assert labels[:2] == ["undamped", "with dampers"]
     limit = float(rows[0]["endurance_limit_mpa"])
@@ -386,6 +386,12 @@ def test_span_plot_draws_damped_undamped_and_the_endurance_limit(span_files):
     assert list(stress.get_lines()[1].get_ydata()) == pytest.approx([float(r["stress_fymax_mpa"]) for r in rows])
     assert list(amplitude.get_lines()[0].get_ydata()) == pytest.approx([1e3 * float(r["undamped_amplitude_m"]) for r in rows])
     assert stress.get_xscale() == "log"
+    # The strain panel: 2 sigma_ps / E_a in microstrain, and the limit in microstrain.
+    assert list(strain.get_lines()[1].get_ydata()) == pytest.approx(
+        [float(r["bending_strain_pp_microstrain"]) for r in rows])
+    limit_strain = float(rows[0]["endurance_limit_pp_microstrain"])
+    assert list(strain.get_lines()[2].get_ydata()) == [limit_strain, limit_strain]
+    assert limit_strain == pytest.approx(2 * limit * 1e6 / 68e9 * 1e6)
     module.plt.close(figure)
 
 

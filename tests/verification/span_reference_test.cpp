@@ -37,7 +37,7 @@ namespace ref = stockbridge::testing::reference_span;
 Span example_with_dampers_at(const std::vector<double>& positions, const damper::Damper* damper = nullptr) {
   const Span base = io::load_span_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/aster570_400m.toml").span;
   std::vector<SpanDamper> dampers;
-  for (const double a : positions) dampers.push_back({damper ? *damper : base.dampers().front().damper, a, true, "d"});
+  for (const double a : positions) dampers.push_back({damper ? std::optional<damper::Damper>(*damper) : base.dampers().front().damper, a, true, "d", nullptr});
   return Span(base.conductor(), base.length(), base.tension(), base.wind(), base.self_damping(), dampers, base.fatigue());
 }
 
@@ -99,7 +99,7 @@ TEST(SpanReference, NonlinearDampersTwoAndThreePerEnd) {
       SCOPED_TRACE(p.frequency_hz);
       ASSERT_TRUE(p.converged()) << brief_report(p.summary);
       const ref::ReferenceSpan reference(span, p.frequency_hz);
-      const auto slots = slots_of(span, ref::cold_impedance(span.dampers().front().damper, p.frequency_hz));
+      const auto slots = slots_of(span, ref::cold_impedance(*span.dampers().front().damper, p.frequency_hz));
       std::vector<double> start = velocities_of(p);
       for (std::size_t j = 0; j < start.size(); ++j) start[j] *= j % 2 == 0 ? 1.05 : 0.95;
       const ref::ReferenceSpan::State expected = reference.solve(slots, start);
@@ -124,7 +124,7 @@ TEST(SpanReference, EveryPointOfTheExampleWithTwoAndThreeDampersPerEndIsSelfCons
       SCOPED_TRACE(p.frequency_hz);
       EXPECT_LE(p.identity_error, 1e-8);
       const ref::ReferenceSpan reference(span, p.frequency_hz);
-      const auto slots = slots_of(span, ref::cold_impedance(span.dampers().front().damper, p.frequency_hz));
+      const auto slots = slots_of(span, ref::cold_impedance(*span.dampers().front().damper, p.frequency_hz));
       const ref::ReferenceSpan::State again = reference.at(slots, velocities_of(p));
       expect_relative(again.amplitude, p.amplitude, 1e-4, "amplitude");
       for (std::size_t j = 0; j < p.dampers.size(); ++j) {

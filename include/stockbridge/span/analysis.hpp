@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -33,7 +34,16 @@ struct SpanAnalysis {
   std::optional<PositionSearch> position;
   SpanBalance balance;
   std::vector<double> frequencies;  ///< Hz, as balanced
+  /// With measured dampers (sheets): the largest relative change of the fymax stress
+  /// when every other curve of the sheets is left out (NaN without sheets, or where
+  /// no sheet has the four curves or more that takes), and what the user should
+  /// know (a sheet too coarse for the span, velocities outside a sheet).
+  double sheet_error_estimate = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::string> warnings;
 };
+
+/// The relative sheet error above which a warning says the sheet is too coarse.
+inline constexpr double sheet_error_warning = 0.1;
 
 /// Where the dampers' tables come from: made for the span (the default), or from a
 /// cache (a design study's: tables depend only on the dampers, the frequencies and
@@ -45,7 +55,12 @@ using TableSource = std::function<std::shared_ptr<const SpanTables>(const Span& 
 /// gives the wind band's). `progress` counts the tables' nodes as they are solved.
 /// Non-convergence is in the points and the summary, never an exception;
 /// InvalidParameter for bad options (a position search without dampers names
-/// "position_range").
+/// "position_range"). With measured dampers, the balance is repeated on the sheets of
+/// every other curve (ImpedanceSheet::every_other; the model dampers as they are):
+/// sheet_error_estimate is the largest relative change of a point's fymax stress from
+/// the full sheets' (the coarser sheets' error bounds the full sheets' own, which is
+/// smaller), and each point's stress_fymax_low and _high are its stress times
+/// (1 -+ that estimate).
 SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, const AnalysisOptions& options,
                           const damper::SweepProgress& progress = {}, const TableSource& tables = {});
 

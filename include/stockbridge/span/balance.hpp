@@ -75,6 +75,10 @@ class SpanTables {
   SpanTables(const Span& span, std::vector<double> frequencies, const ImpedanceTableOptions& options,
              const damper::SweepProgress& progress = {});
 
+  /// `solved`'s tables with those of `span`'s measured dampers made from its sheets
+  /// (the same span but for the sheets: the band of a sheet's interpolation error).
+  SpanTables(const SpanTables& solved, const Span& span);
+
   const std::vector<double>& frequencies() const { return frequencies_; }
   const std::vector<ImpedanceTable>& tables() const { return tables_; }
   /// The (frequency, velocity) nodes solved, a shared table's once; of which did not converge.
@@ -112,6 +116,11 @@ struct BalancePoint {
   double damper_power = 0.0;            ///< both ends, W
   double clamp_loop_amplitude = 0.0;    ///< S at end 1, m
   double stress_fymax = 0.0;            ///< at the span clamp, Pa
+  /// With a measured damper (a sheet): the band of the fymax stress its sheet's
+  /// interpolation leaves, the stress times (1 -+ the sheets' error estimate:
+  /// analysis.hpp), Pa; NaN without one, or unknown.
+  double stress_fymax_low = std::numeric_limits<double>::quiet_NaN();
+  double stress_fymax_high = std::numeric_limits<double>::quiet_NaN();
   double stress_poffenberger_swart = 0.0;  ///< Pa
   /// Yb, the peak-to-peak displacement relative to the span clamp at x_b
   /// (FatigueSpec::yb_distance): what a vibration recorder measures, m

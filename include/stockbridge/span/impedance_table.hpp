@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "stockbridge/damper/sweep.hpp"
+#include "stockbridge/span/impedance_sheet.hpp"
 
 namespace stockbridge::span {
 
@@ -44,6 +45,11 @@ class ImpedanceTable {
   ImpedanceTable(const damper::Damper& damper, std::vector<double> frequencies, const ImpedanceTableOptions& options,
                  const damper::SweepProgress& progress = {});
 
+  /// A measured sheet's Z at every frequency: each column the sheet's curves there
+  /// (ImpedanceSheet::nodes_at), interpolated in log v as the solved tables are; a
+  /// frequency with fewer than two curves has no Z. Nothing is solved (nodes() is 0).
+  ImpedanceTable(const ImpedanceSheet& sheet, std::vector<double> frequencies);
+
   const std::vector<double>& frequencies() const { return frequencies_; }
   const std::vector<double>& velocities() const { return velocities_; }
   /// Z (N s/m) at frequency `frequencies()[i]` and clamp velocity amplitude v (m/s);
@@ -53,6 +59,9 @@ class ImpedanceTable {
   /// Nodes that did not converge, of all.
   int failed_nodes() const { return failed_; }
   int nodes() const { return static_cast<int>(solved_.size() * velocities_.size()); }
+  /// The lowest and highest clamp velocity with a Z at frequency `frequencies()[i]`
+  /// (m/s; Z is held beyond them); none where Z is not known there.
+  std::optional<Interval> velocity_range(std::size_t i) const;
   /// The indices of the frequencies solved of `frequencies` (increasing): the fewest
   /// that lie at most `column_ratio` apart.
   static std::vector<std::size_t> solved_frequencies(const std::vector<double>& frequencies, double column_ratio);

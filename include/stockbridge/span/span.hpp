@@ -5,6 +5,7 @@
 // constant description, valid by construction; the balance (balance.hpp) and the
 // analysis (analysis.hpp) take it as it is.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "stockbridge/damper/damper.hpp"
 #include "stockbridge/span/conductor.hpp"
 #include "stockbridge/span/fatigue.hpp"
+#include "stockbridge/span/impedance_sheet.hpp"
 #include "stockbridge/span/life.hpp"
 #include "stockbridge/span/self_damping.hpp"
 #include "stockbridge/span/wind.hpp"
@@ -19,12 +21,16 @@
 namespace stockbridge::span {
 
 /// A damper on the span: at `position` (m from the span end's clamp) at one end, or
-/// at both ends (mirrored).
+/// at both ends (mirrored); known by its model, or by a measured impedance sheet
+/// (impedance_sheet.hpp) where there is no model.
 struct SpanDamper {
-  damper::Damper damper;
+  std::optional<damper::Damper> damper;  ///< the model (none: the sheet)
   double position = 0.0;
   bool both_ends = true;
   std::string name;  ///< how tables and messages call it ("damper 1" or the file's stem)
+  std::shared_ptr<const ImpedanceSheet> sheet;  ///< the measured sheet, where there is no model
+
+  bool measured() const { return sheet != nullptr; }
 };
 
 /// Where the fatigue verdict's endurance limit comes from: the Safe Border Line at
@@ -46,7 +52,8 @@ class Span {
   /// Throws InvalidParameter naming the field as the span file spells it
   /// ("span.length", "damper[1].position", "fatigue.cycles", "span.terrain"). A
   /// damper position past half the span names span.length where the position is a
-  /// usual one (typical_ranges.hpp) and the span is what is short.
+  /// usual one (typical_ranges.hpp) and the span is what is short. Each damper has
+  /// its model or its sheet, not both ("damper[0]").
   Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
        std::vector<SpanDamper> dampers, FatigueSpec fatigue, std::optional<int> terrain = std::nullopt);
 
@@ -65,6 +72,8 @@ class Span {
   Span with_dampers_at(double position) const;
   /// The same span without dampers.
   Span without_dampers() const;
+  /// The same span with other dampers (validated as the constructor does).
+  Span with_dampers(std::vector<SpanDamper> dampers) const;
 
  private:
   Conductor conductor_;

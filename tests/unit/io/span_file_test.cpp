@@ -134,7 +134,7 @@ TEST(SpanFile, ReadsTheIssuesFormAsWritten) {
   EXPECT_EQ(s.dampers()[0].name, "stockbridge");
   EXPECT_DOUBLE_EQ(s.dampers()[0].position, 1.0);
   EXPECT_TRUE(s.dampers()[0].both_ends);
-  EXPECT_DOUBLE_EQ(s.dampers()[0].damper.clamp_mass(), 0.7);
+  EXPECT_DOUBLE_EQ(s.dampers()[0].damper->clamp_mass(), 0.7);
   ASSERT_TRUE(s.fatigue().cycles.has_value());
   EXPECT_DOUBLE_EQ(*s.fatigue().cycles, 5e8);
   EXPECT_FALSE(s.fatigue().endurance_limit.has_value());
@@ -394,6 +394,33 @@ TEST(SpanFile, RangeErrorsNameTheKeyAtFault) {
                 .find("span.tension_fraction = 15: expected a fraction of the rated tensile strength > 0 and < 1 (a "
                       "percentage? 15 % is 0.15)"),
             std::string::npos);
+}
+
+// A damper known by its measured sheet: `impedance = "sheet.csv"` beside the span
+// file instead of `file`; one of the two; a sheet of one curve refused at its key.
+TEST(SpanFile, ADamperFromAMeasuredSheet) {
+  const auto dir = span_directory();
+  testing::write_temp_file(dir, "sheet.csv",
+                           "frequency_hz,velocity_m_s,abs_z_n_s_m,phase_deg\n10,0.05,100,80\n20,0.05,150,70\n"
+                           "10,0.1,110,75\n20,0.1,160,60\n");
+  const std::string damper = "[[damper]]\nfile = \"dampers/stockbridge.toml\"\n";
+  const SpanFile file = load_span_file(write_span(replaced(kSpan, damper, "[[damper]]\nimpedance = \"sheet.csv\"\n")));
+  ASSERT_EQ(file.span.dampers().size(), 1u);
+  const span::SpanDamper& d = file.span.dampers()[0];
+  EXPECT_TRUE(d.measured());
+  EXPECT_FALSE(d.damper.has_value());
+  EXPECT_EQ(d.name, "sheet");
+  EXPECT_EQ(d.sheet->curves(), 2);
+  EXPECT_DOUBLE_EQ(d.sheet->frequency_range().lo, 10.0);
+  EXPECT_EQ(file.inputs.back(), dir / "sheet.csv");
+  expect_at_line("file = \"dampers/stockbridge.toml\"", "file = \"dampers/stockbridge.toml\"\nimpedance = \"sheet.csv\"",
+                 "damper[0].impedance: given beside file: expected a damper file or a measured sheet, one of the two");
+  testing::write_temp_file(dir, "one.csv", "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.05,1,100\n20,0.05,2,150\n");
+  expect_at_line("file = \"dampers/stockbridge.toml\"", "impedance = \"one.csv\"",
+                 "damper[0].impedance: \"one.csv\": 1 curve(s) of two or more frequencies: expected at least two "
+                 "amplitudes measured");
+  expect_at_line("file = \"dampers/stockbridge.toml\"", "impedance = \"none.csv\"",
+                 "damper[0].impedance: \"none.csv\": expected an existing measured impedance CSV file");
 }
 
 TEST(SpanFile, AWindTableIsReadFromItsCsvBesideTheSpanFile) {

@@ -56,7 +56,7 @@ TEST(SpanBalance, WithoutDampersItIsTheUndampedBalanceOfTheCheckNumbers) {
 class NonlinearSpan : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    span_ = new Span(aster_span({{sauter_damper(), 1.0, true, "sauter"}}));
+    span_ = new Span(aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}}));
     // Half the frequencies of the same band under the sanitizers (STOCKBRIDGE_TEST_SCALE=short).
     frequencies_ = damper::log_spaced(6.0, 40.0, stockbridge::testing::scaled(8, 4));
     tables_ = new SpanTables(*span_, frequencies_, fast_options().table);
@@ -105,7 +105,7 @@ void expect_the_direct_solution(const Span& span, const BalancePoint& p) {
   damper::SweepSpec lone;
   lone.frequencies = {p.frequency_hz};
   lone.amplitudes = {v};
-  const damper::ImpedancePoint direct = damper::run_sweep(span.dampers()[0].damper, lone).front().points.front();
+  const damper::ImpedancePoint direct = damper::run_sweep(*span.dampers()[0].damper, lone).front().points.front();
   ASSERT_TRUE(direct.converged()) << direct.failure;
   EXPECT_LE(std::abs(direct.impedance - p.dampers[0].impedance), 1e-3 * std::abs(direct.impedance));
   const double w = 2.0 * std::numbers::pi * p.frequency_hz;
@@ -125,7 +125,7 @@ TEST_F(NonlinearSpan, TheFixedPointAgreesWithHarmonicBalanceSolvedDirectly) {
 // A band finer than the table's columns (every other frequency solved, the others
 // interpolated in log f): the polish still ends on the direct solution.
 TEST(SpanBalance, InterpolatedColumnsArePolishedToTheDirectSolution) {
-  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter"}});
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}});
   const std::vector<double> f = damper::log_spaced(6.0, 30.0, 15);
   BalanceOptions options = fast_options();
   options.table.column_ratio = 1.3;  // 15 frequencies 1.12 apart: every other one solved
@@ -144,7 +144,7 @@ Span design_candidate_span(double mass, double cable_length, double position) {
   arm.inertia *= mass / arm.mass;
   arm.mass = mass;
   arm.cable = cable::CableDescription::uniform(cable_length, 40, 2.8, {{20.0, 0.7}});
-  return aster_span({{stockbridge::testing::damper_of({arm, arm}), position, true, "candidate"}});
+  return aster_span({{stockbridge::testing::damper_of({arm, arm}), position, true, "candidate", nullptr}});
 }
 
 // A candidate of examples/design_aster570.toml (heavier masses on longer cables, far
@@ -197,7 +197,7 @@ TEST(SpanBalance, TheWeakFormIsTheLimitOfTheTravellingWavesForSmallDampers) {
   double last_gap = std::numeric_limits<double>::infinity();
   for (const double scale : {0.2, 0.05, 0.0125}) {
     SCOPED_TRACE(scale);
-    const Span span = aster_span({{scaled_damper(scale), 1.0, true, "small"}});
+    const Span span = aster_span({{scaled_damper(scale), 1.0, true, "small", nullptr}});
     BalanceOptions travelling = fast_options(), weak = fast_options();
     weak.damper_model = DamperModel::weak;
     const SpanTables tables(span, f, travelling.table);
@@ -227,7 +227,7 @@ TEST(SpanBalance, TheWeakFormIsTheLimitOfTheTravellingWavesForSmallDampers) {
 // dampers' clamp velocities became one system (commit 1de6bc3, the example span,
 // 8 frequencies): the same self-consistent state, to 1e-6.
 TEST(SpanBalance, OneDamperPerEndIsAsBeforeTheSystemSolve) {
-  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter"}});
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}});
   const std::vector<double> f = damper::log_spaced(6.0, 40.0, 8);
   const double amplitude[] = {0.021436744074653284, 0.007034530159752719, 0.002025640277516735, 0.0006025901457516682,
                               0.0006447120287117451, 0.0008462400705875818, 0.0013321856570961707, 0.0010393696066111238};
@@ -304,9 +304,9 @@ TEST(SpanBalance, TheLifeUsesThePoffenbergerSwartStress) {
 // Several [[damper]] of one file have one impedance: its table is solved once.
 TEST(SpanTables, DampersAlikeShareOneTable) {
   const std::vector<double> f{8.0, 12.0};
-  const SpanTables one(aster_span({{sauter_damper(), 1.0, true, "a"}}), f, {});
-  const SpanTables alike(aster_span({{sauter_damper(), 1.0, true, "a"}, {sauter_damper(), 2.0, true, "b"}}), f, {});
-  const SpanTables apart(aster_span({{sauter_damper(), 1.0, true, "a"}, {scaled_damper(0.5), 2.0, true, "b"}}), f, {});
+  const SpanTables one(aster_span({{sauter_damper(), 1.0, true, "a", nullptr}}), f, {});
+  const SpanTables alike(aster_span({{sauter_damper(), 1.0, true, "a", nullptr}, {sauter_damper(), 2.0, true, "b", nullptr}}), f, {});
+  const SpanTables apart(aster_span({{sauter_damper(), 1.0, true, "a", nullptr}, {scaled_damper(0.5), 2.0, true, "b", nullptr}}), f, {});
   ASSERT_EQ(alike.tables().size(), 2u);
   EXPECT_EQ(alike.nodes(), one.nodes());
   EXPECT_EQ(apart.nodes(), 2 * one.nodes());
@@ -318,7 +318,7 @@ TEST(SpanTables, DampersAlikeShareOneTable) {
 }
 
 TEST(SpanBalance, ThePositionSearchFindsTheBestOfAFineScan) {
-  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter"}});
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}});
   const std::vector<double> f{12.0, 25.0};
   BalanceOptions options = fast_options();
   options.polish = false;  // as the search balances
@@ -343,7 +343,7 @@ TEST(SpanBalance, ASpanIsCheckedWhereItsFileSpellsIt) {
     }
     return std::string("accepted");
   };
-  EXPECT_NE(error_of([] { aster_span({{sauter_damper(), 250.0, true, ""}}); }).find("damper[0].position = 250"),
+  EXPECT_NE(error_of([] { aster_span({{sauter_damper(), 250.0, true, "", nullptr}}); }).find("damper[0].position = 250"),
             std::string::npos);
   FatigueSpec both;
   both.cycles = 5e8;
