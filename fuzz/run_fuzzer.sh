@@ -18,7 +18,7 @@ mkdir -p "$work/corpus" "$work/artifacts"
 options=(-seed=1 -timeout=20 -rss_limit_mb=2048 -max_len=4096 "-artifact_prefix=$work/artifacts/")
 case "$name" in
   *_file) options+=("-dict=$here/toml.dict") ;;
-  csv_reader) options+=("-dict=$here/csv.dict") ;;
+  csv_reader|measured_impedance) options+=("-dict=$here/csv.dict") ;;
 esac
 
 if compgen -G "$here/regressions/$name/*" > /dev/null; then
