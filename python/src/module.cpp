@@ -365,6 +365,7 @@ std::vector<std::string> measured_impedance_warnings(const std::string& path) {
 /// The span command's CSV columns as arrays (one value per frequency) and its --json
 /// summary as JSON text (the package's span() parses it into a dict).
 py::dict span_balance(const std::optional<std::string>& path, const std::optional<std::string>& text,
+                      const std::optional<std::string>& base,
                       const std::optional<std::vector<double>>& frequencies, int points, bool no_dampers,
                       const std::optional<std::string>& damper_model,
                       const std::optional<std::pair<double, double>>& optimize_position, int threads) {
@@ -385,7 +386,9 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   }
   request.threads = threads;
   requests::validate(request);
-  io::SpanFile file = path ? io::load_span_file(*path) : io::load_span_text(*text, "span(text=...)");
+  io::SpanFile file = path ? io::load_span_file(*path)
+                           : io::load_span_text(*text, "span(text=...)", base ? std::filesystem::path(*base)
+                                                                              : std::filesystem::path());
   warn(file.warnings);
   std::optional<requests::SpanResult> result;
   {
@@ -549,6 +552,7 @@ PYBIND11_MODULE(_core, m) {
         "as its last iterate with converged = False, its termination and message (NaN where nothing was computed). "
         "The point's design figures are numbers named as the impedance CSV's columns.");
   m.def("_span", &span_balance, py::arg("file") = py::none(), py::arg("text") = py::none(),
+        py::arg("base") = py::none(),
         py::arg("frequencies") = py::none(), py::arg("points") = requests::SpanRequest{}.points,
         py::arg("no_dampers") = false, py::arg("damper_model") = py::none(),
         py::arg("optimize_position") = py::none(), py::arg("threads") = requests::SpanRequest{}.threads,

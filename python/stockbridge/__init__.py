@@ -85,11 +85,84 @@ def make_damper(clamp_mass, arms):
     return _from_values(_damper_from_toml, text, "make_damper")
 
 
+_TENSION_FORMS = ("tension", "tension_fraction", "catenary_parameter")
+
+
+def _span_spec(file, text, spec, base):
+    """The span description as tomllib's dict and the folder its relative paths start at."""
+    import copy
+    import os
+    import tomllib
+    given = [name for name, v in (("file", file), ("text", text), ("spec", spec)) if v is not None]
+    if len(given) != 1:
+        raise InvalidParameter("give one of file (a span file's path), text (its contents) and spec (a dict of its "
+                               f"tables), not {' and '.join(given) or 'none'}")
+    if file is not None:
+        with open(file, "rb") as handle:
+            try:
+                return tomllib.load(handle), os.path.dirname(os.path.abspath(file))
+            except tomllib.TOMLDecodeError as e:
+                raise InputError(f"{file}: TOML syntax error: {e}") from None
+    if text is not None:
+        try:
+            return tomllib.loads(text), base
+        except tomllib.TOMLDecodeError as e:
+            raise InputError(f"span(text=...): TOML syntax error: {e}") from None
+    return copy.deepcopy(dict(spec)), base
+
+
+def _override(spec, damper, positions, ends, tension, tension_fraction, catenary_parameter, length, conductor_type):
+    """The span description with the overrides applied, each as the span file would say it."""
+    forms = {name: v for name, v in zip(_TENSION_FORMS, (tension, tension_fraction, catenary_parameter)) if v is not None}
+    if len(forms) > 1:
+        raise InvalidParameter(f"give one of tension, tension_fraction and catenary_parameter, not {' and '.join(forms)}")
+    section = spec.setdefault("span", {})
+    if forms:
+        for name in _TENSION_FORMS:
+            section.pop(name, None)
+        section.update(forms)
+    if length is not None:
+        section["length"] = length
+    if conductor_type is not None:
+        spec["conductor"] = {"type": conductor_type}
+    dampers = spec.get("damper", [])
+    if damper is not None:
+        path = str(damper)
+        which = "impedance" if path.lower().endswith(".csv") else "file"
+        template = {"file": path} if which == "file" else {"impedance": path}
+        dampers = [dict({k: v for k, v in d.items() if k not in ("file", "impedance")}, **template) for d in dampers]
+        if not dampers and positions is None:
+            raise InvalidParameter("damper: the span has no [[damper]] to replace: give positions too")
+        if not dampers:
+            dampers = [template]
+    if positions is not None:
+        if not dampers:
+            raise InvalidParameter("positions: the span has no [[damper]] to place: give damper too")
+        model = {k: v for k, v in dampers[0].items() if k != "position"}
+        dampers = [dict(model, position=float(a)) for a in positions]
+    if ends is not None:
+        dampers = [dict(d, ends=ends) for d in dampers]
+    if dampers:
+        spec["damper"] = dampers
+    return spec
+
+
 def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_dampers=False, damper_model=None,
-         optimize_position=None, threads=_defaults.get("span_threads"), text=None):
-    """The energy balance of a span over the wind band, as ``stockbridge span``: a span
-    file's path (`file`) or its contents (`text`, damper files relative to the working
-    directory); `frequencies` (Hz, increasing) or `points` log-spaced over the band;
+         optimize_position=None, threads=_defaults.get("span_threads"), text=None, spec=None, base=None,
+         damper=None, positions=None, ends=None, tension=None, tension_fraction=None, catenary_parameter=None,
+         length=None, conductor_type=None):
+    """The energy balance of a span over the wind band, as ``stockbridge span``.
+
+    The span: a span file's path (`file`; its relative paths start at its folder), its
+    contents (`text`) or its tables as a dict (`spec`, as tomllib reads a span file);
+    the relative paths of `text` and `spec` start at `base` (default: the working
+    directory; a missing file's message names the folder). Overrides, each as the
+    span file would say it, without editing text: `damper` (a damper file, or a
+    measured sheet's CSV, for every [[damper]]), `positions` (m from the clamp: one
+    damper per position, the first [[damper]]'s kind), `ends` ("both" or "one"),
+    one of `tension` (N), `tension_fraction` and `catenary_parameter` (H/w, m),
+    `length` (m), `conductor_type` (the catalogue's, replacing [conductor]).
+    `frequencies` (Hz, increasing) or `points` log-spaced over the band;
     `no_dampers`; `damper_model` "travelling" or "weak" (None: the span file's
     [balance] damper_model, travelling by default); `optimize_position` = (amin,
     amax) in m to search the dampers' position first; `threads` for the dampers'
@@ -101,9 +174,19 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
     <name> of the per-damper columns), 'columns' (the CSV's order) and 'summary': the
     --json summary's keys (None where the JSON has null; a life is None where a point
     is missing, life_missing_points says how many)."""
-    out = _span(file=None if file is None else str(file), text=text, frequencies=frequencies, points=points,
-                no_dampers=no_dampers, damper_model=damper_model,
-                optimize_position=None if optimize_position is None else tuple(optimize_position), threads=threads)
+    overrides = (damper, positions, ends, tension, tension_fraction, catenary_parameter, length, conductor_type)
+    if spec is None and all(v is None for v in overrides):
+        out = _span(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
+                    frequencies=frequencies, points=points, no_dampers=no_dampers, damper_model=damper_model,
+                    optimize_position=None if optimize_position is None else tuple(optimize_position),
+                    threads=threads)
+    else:
+        described, folder = _span_spec(file, text, spec, None if base is None else str(base))
+        described = _override(described, *overrides)
+        out = _span(text=_toml.document(described), base=folder, frequencies=frequencies, points=points,
+                    no_dampers=no_dampers, damper_model=damper_model,
+                    optimize_position=None if optimize_position is None else tuple(optimize_position),
+                    threads=threads)
     out["summary"] = json.loads(out.pop("summary_json"))
     return out
 

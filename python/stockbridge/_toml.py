@@ -43,3 +43,24 @@ def table(name, entries):
     if hasattr(entries, "toml"):
         return f"[{name}]\n" + entries.toml()
     return f"[{name}]\n" + "".join(f"{key(k)} = {value(v)}\n" for k, v in entries.items())
+
+
+def document(tables, prefix=""):
+    """A whole document from nested dicts (tomllib's form): each dict a [table], each
+    list of dicts an [[array of tables]], the rest `key = value`."""
+    def is_table(v):
+        return isinstance(v, dict)
+
+    def is_table_array(v):
+        return isinstance(v, list) and v and all(isinstance(x, dict) for x in v)
+
+    lines = [f"{key(k)} = {value(v)}" for k, v in tables.items() if not is_table(v) and not is_table_array(v)]
+    text = "".join(line + "\n" for line in lines)
+    for k, v in tables.items():
+        path = f"{prefix}.{key(k)}" if prefix else key(k)
+        if is_table(v):
+            text += f"\n[{path}]\n" + document(v, path)
+        elif is_table_array(v):
+            for entry in v:
+                text += f"\n[[{path}]]\n" + document(entry, path)
+    return text

@@ -55,6 +55,13 @@ std::filesystem::path span_resolve(const std::filesystem::path& file, const std:
   return file.is_absolute() ? file : base_directory / file;
 }
 
+/// Where a span's relative paths start, as messages say it.
+std::string span_base(const TomlTable& table, const std::filesystem::path& base_directory) {
+  if (table.has_lines()) return "the span file's folder";
+  if (base_directory.empty()) return "the working directory (span text has no folder)";
+  return fmt::format("{} (the span text's base folder)", printable(base_directory.string(), 300));
+}
+
 /// A required string, with the readers' message when it is missing.
 std::string span_required_string(const TomlTable& table, std::string_view key, std::string_view expected) {
   if (!table.contains(key)) {
@@ -92,7 +99,7 @@ span::StrandedConductor span_conductor_file(const TomlTable& table, const std::s
   const std::filesystem::path path = span_resolve(file, base_directory);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    const std::string base = table.has_lines() ? "the span file's folder" : "the working directory (span text has no folder)";
+    const std::string base = span_base(table, base_directory);
     table.fail("file", fmt::format("\"{}\": expected an existing conductor file (looked for {}; relative paths start at {})",
                                    printable(file), printable(std::filesystem::absolute(path, ec).string(), 300), base));
   }
@@ -233,9 +240,10 @@ std::filesystem::path span_damper_input(const TomlTable& table, std::string_view
   const std::filesystem::path path = span_resolve(file, base_directory);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    table.fail(key, fmt::format("\"{}\": expected an existing {} (looked for {}, relative paths start at the span "
-                                "file's folder)",
-                                printable(file), what, printable(path.string())));
+    std::error_code absolute;
+    table.fail(key, fmt::format("\"{}\": expected an existing {} (looked for {}; relative paths start at {})",
+                                printable(file), what, printable(std::filesystem::absolute(path, absolute).string(), 300),
+                                span_base(table, base_directory)));
   }
   return path;
 }
@@ -435,8 +443,8 @@ SpanFile load_span_file(const std::filesystem::path& path) {
   return build_span(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path());
 }
 
-SpanFile load_span_text(std::string_view text, std::string_view source) {
-  return build_span(parse_toml_text(text, source), TomlSource{std::string(source), false}, std::filesystem::path());
+SpanFile load_span_text(std::string_view text, std::string_view source, const std::filesystem::path& base_directory) {
+  return build_span(parse_toml_text(text, source), TomlSource{std::string(source), false}, base_directory);
 }
 
 }  // namespace stockbridge::io

@@ -9,6 +9,7 @@ import re
 import shutil
 import subprocess
 import sys
+import warnings
 
 import numpy as np
 import pytest
@@ -348,6 +349,42 @@ def test_span_from_text_and_its_errors(tmp_path):
         sb.span()
     with pytest.raises(sb.InvalidParameter, match="optimize_position = 3:0.5"):
         sb.span(SPAN, optimize_position=(3.0, 0.5))
+
+
+def test_span_overrides_without_editing_text(tmp_path):
+    f = [10.0, 20.0]
+    base = sb.span(SPAN, frequencies=f)
+    # H/w for the same tension (T = H/w m g) gives the same balance.
+    same = sb.span(SPAN, frequencies=f, catenary_parameter=27795.0 / (1.571 * 9.80665))
+    assert same["stress_fymax_mpa"] == pytest.approx(base["stress_fymax_mpa"], rel=1e-9)
+    assert same["summary"]["tension_n"] == pytest.approx(27795.0, rel=1e-12)
+    # The file's tables as a dict, the damper file relative to `base`: the same again.
+    import tomllib
+    with open(SPAN, "rb") as handle:
+        spec = tomllib.load(handle)
+    assert sb.span(spec=spec, base=os.path.dirname(SPAN), frequencies=f)["stress_fymax_mpa"].tolist() == \
+        pytest.approx(base["stress_fymax_mpa"].tolist(), rel=1e-12)
+    # Positions: one damper per position, of the file's damper; the length and the
+    # conductor by its type, as the span file would say them.
+    two = sb.span(SPAN, frequencies=f, positions=[1.0, 2.0])
+    assert two["summary"]["dampers"] == 2
+    drake = sb.span(SPAN, frequencies=f, conductor_type="ACSR Drake", tension_fraction=0.2, length=300.0)
+    assert drake["summary"]["tension_n"] == pytest.approx(0.2 * sb.conductor("ACSR Drake")["rated_tensile_strength_n"])
+    # A measured sheet for the damper: the model's own Z at its velocities.
+    subprocess.run([CLI, "impedance", os.path.join(SOURCE, "examples", "sauter2003.toml"), "--velocity",
+                    "0.02,0.05,0.1,0.2,0.5", "--fmin", "5", "--fmax", "60", "--points", "40", "-o", "sheet.csv"],
+                   cwd=tmp_path, check=True, capture_output=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sb.UnusualValueWarning)
+        sheet = sb.span(SPAN, frequencies=f, damper=tmp_path / "sheet.csv")
+    assert sheet["dampers"] == ["sheet"] and sheet["summary"]["sheet_error_estimate"] is not None
+    # Relative paths of text start at `base`, and the message names it.
+    with pytest.raises(sb.InputError, match=r"relative paths start at .*the span text's base folder"):
+        sb.span(text=open(SPAN).read(), base=str(tmp_path), frequencies=f)
+    with pytest.raises(sb.InvalidParameter, match="one of tension, tension_fraction and catenary_parameter"):
+        sb.span(SPAN, tension=3e4, catenary_parameter=1800.0)
+    with pytest.raises(sb.InvalidParameter, match="give one of file"):
+        sb.span(SPAN, spec=spec, length=300.0)
 
 
 DESIGN = os.path.join(SOURCE, "examples", "design_aster570.toml")

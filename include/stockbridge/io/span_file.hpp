@@ -74,7 +74,9 @@ struct SpanFile {
 /// file's folder.
 SpanFile load_span_file(const std::filesystem::path& path);
 /// The same from TOML text a front end holds (Python's span(text=...)): messages
-/// name `source` and no lines; referenced files are relative to the working directory.
-SpanFile load_span_text(std::string_view text, std::string_view source);
+/// name `source` and no lines; referenced files are relative to `base_directory`
+/// (empty: the working directory), and a missing one's message says which.
+SpanFile load_span_text(std::string_view text, std::string_view source,
+                        const std::filesystem::path& base_directory = {});
 
 }  // namespace stockbridge::io
