@@ -2,13 +2,17 @@
 // dissertation's damper 1 m from both ends) over 100 frequencies of the wind band,
 // one core: the impedance tables, the balance with and without the direct-solve
 // polish, and the whole analysis (tables and polished balance) with one, two (1.0
-// and 2.0 m) and three (1.0, 2.2 and 3.6 m) dampers per end.
+// and 2.0 m) and three (1.0, 2.2 and 3.6 m) dampers per end; and the analysis with
+// the damper known by a measured sheet of its own Z (13 velocities x 150
+// frequencies), the sheet's error estimate included.
 
+#include <memory>
 #include <string>
 
 #include <benchmark/benchmark.h>
 
 #include "stockbridge/io/span_file.hpp"
+#include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/span/analysis.hpp"
 
 namespace {
@@ -55,5 +59,34 @@ void BM_SpanDampersPerEnd(benchmark::State& state) {
   state.counters["direct_solves"] = summary.direct_solves;
 }
 BENCHMARK(BM_SpanDampersPerEnd)->DenseRange(1, 3)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+/// The whole analysis with the damper known by a measured sheet: the example damper's
+/// own Z at 13 velocities (0.01-1 m/s) x 150 frequencies (4-60 Hz), made once outside
+/// the timing; the balance on the sheet and its two every-other-curve balances.
+void BM_SpanMeasuredSheet(benchmark::State& state) {
+  const Span model = example();
+  stockbridge::damper::SweepSpec spec;
+  spec.frequencies = stockbridge::damper::log_spaced(4.0, 60.0, 150);
+  spec.amplitudes = stockbridge::damper::log_spaced(0.01, 1.0, 13);
+  stockbridge::identification::ImpedanceMeasurement m;
+  for (const auto& run : stockbridge::damper::run_sweep(*model.dampers()[0].damper, spec)) {
+    for (const auto& p : run.points) {
+      if (p.converged()) m.points.push_back({stockbridge::damper::Excitation::from_velocity(p.frequency_hz, run.amplitude), p.impedance});
+    }
+  }
+  const auto sheet = std::make_shared<const ImpedanceSheet>(std::move(m), "sheet");
+  std::vector<SpanDamper> dampers = model.dampers();
+  for (SpanDamper& d : dampers) {
+    d.damper.reset();
+    d.sheet = sheet;
+  }
+  const Span span = model.with_dampers(std::move(dampers));
+  const std::vector<double> f = band_frequencies(span, 100);
+  SpanAnalysis a = analyse_span(span, f, AnalysisOptions{});
+  for (auto _ : state) a = analyse_span(span, f, AnalysisOptions{});
+  state.counters["converged_points"] = a.balance.summary.converged;
+  state.counters["error_estimate"] = a.sheet_error_estimate;
+}
+BENCHMARK(BM_SpanMeasuredSheet)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
