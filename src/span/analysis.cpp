@@ -62,7 +62,7 @@ void add_sheet_band(SpanAnalysis& out, const SpanTables& tables, const BalanceOp
   for (std::size_t i = 0; i < out.balance.points.size(); ++i) {
     const BalancePoint& p = out.balance.points[i];
     if (!p.converged()) continue;
-    if (p.note.find("below its sheet's lowest curve") != std::string::npos) ++below;
+    if (p.below_sheet) ++below;
     for (const SpanBalance& b : cut) {
       const BalancePoint& q = b.points[i];
       if (!q.converged()) continue;
@@ -92,7 +92,7 @@ void add_sheet_band(SpanAnalysis& out, const SpanTables& tables, const BalanceOp
                                        names, 100.0 * worst, worst_f));
   }
   if (below > 0) {
-    out.warnings.push_back(fmt::format("at {} frequencies a measured damper's clamp velocity lay below its sheet's "
+    out.warnings.push_back(fmt::format("at {} of the frequencies a measured damper's clamp velocity lay below its sheet's "
                                        "lowest curve: Z held at that curve's there (the points' notes say where)",
                                        below));
   }

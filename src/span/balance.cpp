@@ -210,7 +210,8 @@ std::string check_sheet_velocities(const Span& span, const SpanTables& tables, s
                          "gives at {:.4g} Hz, {:.4g} m/s: no extrapolation in velocity",
                          sd.name, d.end, d.clamp_velocity, p.frequency_hz, v.hi);
     }
-    if (d.clamp_velocity < v.lo * (1.0 - 1e-9) && p.note.find(sd.name + " at end") == std::string::npos) {
+    if (d.clamp_velocity < v.lo * (1.0 - 1e-9)) {
+      p.below_sheet = true;
       p.note += fmt::format("{}damper {} at end {}: {:.3g} m/s is below its sheet's lowest curve, {:.3g} m/s: Z held at "
                             "that curve's (small amplitudes stick)",
                             p.note.empty() ? "" : "; ", sd.name, d.end, d.clamp_velocity, v.lo);

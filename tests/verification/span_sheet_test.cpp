@@ -123,5 +123,35 @@ TEST(MeasuredSheet, FrequenciesOutsideTheSheetAreNotBalancedAndSaySo) {
   EXPECT_EQ(a.balance.summary.converged, a.balance.points[1].converged() ? 1 : 0);
 }
 
+// Velocities outside the sheet: above its highest curve a balance is not trusted (the
+// point does not converge, naming the velocity); below its lowest, Z is held at that
+// curve's, the point says so and a warning counts such points.
+TEST(MeasuredSheet, VelocitiesAboveTheSheetAreNotTrustedAndBelowItAreHeldAndNoted) {
+  const Span model = example_span();
+  const auto flat = [](double v0, double v1) {
+    identification::ImpedanceMeasurement m;
+    for (const double v : {v0, v1}) {
+      for (const double f : {5.0, 50.0}) m.points.push_back({damper::Excitation::from_velocity(f, v), {30.0, 150.0}});
+    }
+    return std::make_shared<const ImpedanceSheet>(std::move(m), "flat");
+  };
+  const SpanAnalysis low = analyse_span(measured(model, flat(1e-4, 2e-4)), {12.0}, {});
+  ASSERT_FALSE(low.balance.points[0].converged());
+  EXPECT_NE(brief_report(low.balance.points[0].summary).find("is above the highest its measured sheet gives at 12 Hz, "
+                                                             "0.0002 m/s: no extrapolation in velocity"),
+            std::string::npos)
+      << brief_report(low.balance.points[0].summary);
+  const SpanAnalysis high = analyse_span(measured(model, flat(5.0, 10.0)), {12.0}, {});
+  ASSERT_TRUE(high.balance.points[0].converged()) << brief_report(high.balance.points[0].summary);
+  EXPECT_TRUE(high.balance.points[0].below_sheet);
+  EXPECT_NE(high.balance.points[0].note.find("is below its sheet's lowest curve, 5 m/s"), std::string::npos)
+      << high.balance.points[0].note;
+  // Two curves cannot be halved: the error is unknown, and a warning says so.
+  EXPECT_TRUE(std::isnan(high.sheet_error_estimate));
+  ASSERT_EQ(high.warnings.size(), 2u);
+  EXPECT_NE(high.warnings[0].find("has too few curves to estimate its interpolation error"), std::string::npos);
+  EXPECT_NE(high.warnings[1].find("at 1 of the frequencies a measured damper's clamp velocity lay below"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace stockbridge::span

@@ -146,6 +146,9 @@ struct BalancePoint {
   /// fold of the clamp velocities (the sign of det(dh/du) changed since the last
   /// frequency), or the tables' start reached another state; `note` says which.
   bool several_states = false;
+  /// A damper from a measured sheet moved below its sheet's lowest curve here (its Z
+  /// held at that curve's: ImpedanceSheet); `note` says which.
+  bool below_sheet = false;
   std::string note;
 
   bool converged() const { return summary.converged(); }
