@@ -104,11 +104,11 @@ TEST(SeveralMaterials, OneMaterialGivenPerLayerIsBitForBitTheStrandsModulus) {
 TEST(SeveralMaterials, AModulusOfItsOwnMustBePositive) {
   strand::Strand strand{0.001, 210e9, {{6, 0.001, 0.002, 0.06}}};
   strand.layers[0].youngs_modulus = -1.0;
-  EXPECT_EQ(testing::invalid_parameter_message([&] { strand::validate(strand); }),
+  EXPECT_EQ(stockbridge::testing::invalid_parameter_message([&] { strand::validate(strand); }),
             "layer[0].youngs_modulus = -1: expected a finite value > 0 (Pa)");
   strand.layers[0].youngs_modulus.reset();
   strand.core_youngs_modulus = 0.0;
-  EXPECT_EQ(testing::invalid_parameter_message([&] { strand::validate(strand); }),
+  EXPECT_EQ(stockbridge::testing::invalid_parameter_message([&] { strand::validate(strand); }),
             "core_youngs_modulus = 0: expected a finite value > 0 (Pa)");
 }
 
@@ -208,7 +208,7 @@ TEST(ConductorCatalogue, TypesMatchWhateverTheCaseSpacesAndHyphens) {
 }
 
 TEST(ConductorCatalogue, AnUnknownTypeListsTheKnownOnes) {
-  EXPECT_EQ(testing::invalid_parameter_message([] { io::catalogue_conductor("ACSR Drak"); }),
+  EXPECT_EQ(stockbridge::testing::invalid_parameter_message([] { io::catalogue_conductor("ACSR Drak"); }),
             "type = \"ACSR Drak\": expected a conductor of the catalogue: AAAC ASTER570, AAC Arbutus, ACSR Cardinal, "
             "ACSR Drake, ACSR Falcon, ACSR Linnet (case, spaces and hyphens aside; stockbridge conductors lists them)");
 }
@@ -241,7 +241,7 @@ TEST(StrandedConductorChecks, EachBadStrandingIsNamedByItsKey) {
   auto message = [](auto change) {
     StrandedConductor c = two_layer_test_conductor();
     change(c);
-    return testing::invalid_parameter_message([&] { c.validate(); });
+    return stockbridge::testing::invalid_parameter_message([&] { c.validate(); });
   };
   EXPECT_EQ(message([](StrandedConductor& c) { c.diameter = 0.02; }),
             "diameter = 0.02: expected the stranding's outer diameter, 0.015 m, within 2 % (the wires' count or "
@@ -264,7 +264,7 @@ TEST(StrandedConductorChecks, EachBadStrandingIsNamedByItsKey) {
             "layer[1].youngs_modulus = 0: expected a finite value > 0 (Pa)");
   EXPECT_EQ(message([](StrandedConductor& c) { c.layers.clear(); }),
             "layer: none: expected the layers of wires around the core, from the inside out");
-  EXPECT_EQ(testing::invalid_parameter_message([] { parse_wire_material("copper"); }),
+  EXPECT_EQ(stockbridge::testing::invalid_parameter_message([] { parse_wire_material("copper"); }),
             "material = \"copper\": expected steel, aluminium or aluminium-alloy");
 }
 
