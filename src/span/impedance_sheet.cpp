@@ -31,6 +31,12 @@ ImpedanceSheet::ImpedanceSheet(identification::ImpedanceMeasurement measurement,
                                               "amplitudes measured over the band (Z between them is interpolated)",
                                               curves_.size()));
   }
+  const Interval covered = frequency_range();
+  if (!(covered.lo < covered.hi)) {
+    throw InvalidParameter(name_, ": no two curves were measured over a common band of frequencies: expected at "
+                                  "least two amplitudes measured over the same frequencies (Z between them is "
+                                  "interpolated)");
+  }
 }
 
 ImpedanceSheet::ImpedanceSheet(std::vector<Curve> curves, damper::HeldAmplitude held, std::string name)

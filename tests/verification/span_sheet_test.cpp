@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "stockbridge/core/error.hpp"
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/io/span_file.hpp"
 #include "stockbridge/span/analysis.hpp"
@@ -121,6 +122,28 @@ TEST(MeasuredSheet, FrequenciesOutsideTheSheetAreNotBalancedAndSaySo) {
       << brief_report(a.balance.points[0].summary);
   EXPECT_FALSE(a.balance.points[2].converged());
   EXPECT_EQ(a.balance.summary.converged, a.balance.points[1].converged() ? 1 : 0);
+}
+
+// A sheet is refused where it cannot give Z anywhere: one curve, or curves whose
+// frequencies do not overlap (a fuzzer's finding: the frequency range came out empty).
+TEST(MeasuredSheet, ASheetWithoutTwoCurvesOverACommonBandIsRefused) {
+  const auto message = [](const std::vector<std::pair<double, std::vector<double>>>& curves) {
+    identification::ImpedanceMeasurement m;
+    for (const auto& [v, frequencies] : curves) {
+      for (const double f : frequencies) m.points.push_back({damper::Excitation::from_velocity(f, v), {10.0, 80.0}});
+    }
+    try {
+      ImpedanceSheet(std::move(m), "s");
+    } catch (const InvalidParameter& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message({{0.05, {5.0, 10.0, 20.0}}}).rfind("s: 1 curve(s) of two or more frequencies", 0), 0u);
+  EXPECT_EQ(message({{0.05, {5.0, 10.0, 20.0}}, {0.2, {40.0, 60.0}}})
+                .rfind("s: no two curves were measured over a common band of frequencies", 0),
+            0u);
+  EXPECT_EQ(message({{0.05, {5.0, 30.0}}, {0.2, {20.0, 60.0}}}), "accepted");
 }
 
 // Velocities outside the sheet: above its highest curve a balance is not trusted (the

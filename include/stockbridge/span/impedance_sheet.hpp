@@ -40,7 +40,8 @@ struct SheetNode {
 class ImpedanceSheet {
  public:
   /// Throws InvalidParameter naming the sheet (`name`) unless the measurement is valid
-  /// (ImpedanceMeasurement::validate) with at least two curves of at least two points.
+  /// (ImpedanceMeasurement::validate) with at least two curves of at least two points
+  /// measured over a common band of frequencies.
   ImpedanceSheet(identification::ImpedanceMeasurement measurement, std::string name);
 
   const std::string& name() const { return name_; }
