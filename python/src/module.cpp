@@ -386,9 +386,8 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   }
   request.threads = threads;
   requests::validate(request);
-  io::SpanFile file = path ? io::load_span_file(*path)
-                           : io::load_span_text(*text, "span(text=...)", base ? std::filesystem::path(*base)
-                                                                              : std::filesystem::path());
+  io::SpanFile file =
+      path ? io::load_span_file(*path) : io::load_span_text(*text, "span(text=...)", base.value_or(std::string()));
   warn(file.warnings);
   std::optional<requests::SpanResult> result;
   {

@@ -16,23 +16,8 @@ namespace {
 // Names in this unnamed namespace are unique across the library (the sanitizer
 // presets compile it in unity batches).
 
-/// Rejects unknown keys before any value is read, so that a misspelt key is
-/// reported as such rather than as the missing key it was meant to be.
-void conductor_accept_only(const TomlTable& table, std::initializer_list<std::string_view> keys) {
-  for (const std::string_view key : keys) table.contains(key);
-  table.reject_unknown_keys();
-}
-
-std::string conductor_required_string(const TomlTable& table, std::string_view key, std::string_view expected) {
-  if (!table.contains(key)) {
-    throw InputError(fmt::format("{}missing key '{}' in [{}]: expected {}", table.location(key), key, table.key_path(),
-                                 expected));
-  }
-  return *table.optional_string(key);
-}
-
 span::WireMaterial read_material(const TomlTable& table) {
-  const std::string name = conductor_required_string(table, "material", "a string: steel, aluminium or aluminium-alloy");
+  const std::string name = table.required_string("material", "a string: steel, aluminium or aluminium-alloy");
   try {
     return span::parse_wire_material(name);
   } catch (const InvalidParameter& e) {
@@ -41,7 +26,7 @@ span::WireMaterial read_material(const TomlTable& table) {
 }
 
 span::ConductorLayer read_core(const TomlTable& table) {
-  conductor_accept_only(table, {"material", "youngs_modulus", "wire_diameter"});
+  table.accept_only({"material", "youngs_modulus", "wire_diameter"});
   span::ConductorLayer core;
   core.material = read_material(table);
   core.youngs_modulus = table.number("youngs_modulus");
@@ -50,7 +35,7 @@ span::ConductorLayer read_core(const TomlTable& table) {
 }
 
 span::ConductorLayer read_conductor_layer(const TomlTable& table) {
-  conductor_accept_only(table, {"material", "youngs_modulus", "count", "wire_diameter", "lay_length", "lay_ratio"});
+  table.accept_only({"material", "youngs_modulus", "count", "wire_diameter", "lay_length", "lay_ratio"});
   span::ConductorLayer layer;
   layer.material = read_material(table);
   layer.youngs_modulus = table.number("youngs_modulus");
@@ -74,11 +59,11 @@ span::ConductorLayer read_conductor_layer(const TomlTable& table) {
 
 span::StrandedConductor read_conductor_document(const toml::table& document, const TomlSource& source) {
   const TomlTable root(document, source, "");
-  conductor_accept_only(root, {"conductor"});
+  root.accept_only({"conductor"});
   const TomlTable table = root.table("conductor");
-  conductor_accept_only(table, {"type", "source", "mass_per_length", "diameter", "rated_tensile_strength", "core", "layer"});
+  table.accept_only({"type", "source", "mass_per_length", "diameter", "rated_tensile_strength", "core", "layer"});
   span::StrandedConductor conductor;
-  conductor.type = conductor_required_string(table, "type", "a string: the conductor's name, e.g. \"ACSR Drake\"");
+  conductor.type = table.required_string("type", "a string: the conductor's name, e.g. \"ACSR Drake\"");
   conductor.source = table.optional_string("source").value_or("");
   conductor.mass_per_length = table.number("mass_per_length");
   conductor.diameter = table.number("diameter");

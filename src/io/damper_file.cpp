@@ -9,6 +9,7 @@
 #include "cable_table.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/cable_file.hpp"
+#include "stockbridge/io/toml_text.hpp"
 
 namespace stockbridge::io {
 
@@ -147,32 +148,12 @@ damper::Damper read_damper_text(std::string_view text, std::string_view source) 
   return load_damper_text(text, source).damper;
 }
 
-namespace {
-
-/// A TOML basic string's contents for `text` (quotes, backslashes and control characters escaped).
-std::string toml_escaped(std::string_view text) {
-  std::string out;
-  for (const char ch : text) {
-    if (ch == '"' || ch == '\\') {
-      out += '\\';
-      out += ch;
-    } else if (static_cast<unsigned char>(ch) < 0x20) {
-      out += fmt::format("\\u{:04x}", static_cast<unsigned>(ch));
-    } else {
-      out += ch;
-    }
-  }
-  return out;
-}
-
-}  // namespace
-
 std::string damper_file_toml(const damper::DamperDescription& description, std::string_view comment) {
   std::string text = toml_comment_lines(comment);
   text += fmt::format("\n[clamp]\nmass = {}   # kg\n", format_value(description.clamp_mass));
   for (const damper::ArmDescription& arm : description.arms) {
     text += "\n[[arm]]\n";
-    if (!arm.name.empty()) text += fmt::format("name = \"{}\"\n", toml_escaped(arm.name));
+    if (!arm.name.empty()) text += fmt::format("name = {}\n", toml_basic_string(arm.name));
     text += fmt::format("mass = {}   # kg\ninertia = {}   # kg m^2\noffset = {}   # m\n[arm.cable]\n",
                         format_value(arm.mass), format_value(arm.inertia), format_value(arm.offset));
     text += cable_table_toml(arm.cable);

@@ -44,13 +44,6 @@ struct SpanReading {
   std::vector<std::pair<std::filesystem::path, std::shared_ptr<const span::ImpedanceSheet>>> sheets;
 };
 
-/// Rejects unknown keys before any value is read, so that a misspelt key is
-/// reported as such rather than as the missing key it was meant to be.
-void span_accept_only(const TomlTable& table, std::initializer_list<std::string_view> keys) {
-  for (const std::string_view key : keys) table.contains(key);
-  table.reject_unknown_keys();
-}
-
 std::filesystem::path span_resolve(const std::filesystem::path& file, const std::filesystem::path& base_directory) {
   return file.is_absolute() ? file : base_directory / file;
 }
@@ -62,13 +55,19 @@ std::string span_base(const TomlTable& table, const std::filesystem::path& base_
   return fmt::format("{} (the span text's base folder)", printable(base_directory.string(), 300));
 }
 
-/// A required string, with the readers' message when it is missing.
-std::string span_required_string(const TomlTable& table, std::string_view key, std::string_view expected) {
-  if (!table.contains(key)) {
-    throw InputError(fmt::format("{}missing key '{}' in [{}]: expected {}", table.location(key), key, table.key_path(),
-                                 expected));
+/// A file the span file names at `key` (a conductor file, a damper file, a measured
+/// sheet), resolved against the span's folder and found.
+std::filesystem::path span_input_file(const TomlTable& table, std::string_view key, const std::string& file,
+                                      const std::filesystem::path& base_directory, std::string_view what) {
+  const std::filesystem::path path = span_resolve(file, base_directory);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    std::error_code absolute;
+    table.fail(key, fmt::format("\"{}\": expected an existing {} (looked for {}; relative paths start at {})",
+                                printable(file), what, printable(std::filesystem::absolute(path, absolute).string(), 300),
+                                span_base(table, base_directory)));
   }
-  return *table.optional_string(key);
+  return path;
 }
 
 /// A name the model parses (a law): its InvalidParameter at the key's line, named by the key's full path.
@@ -93,16 +92,10 @@ span::StrandedConductor span_catalogue_conductor(const TomlTable& table, const s
 }
 
 /// The conductor of a [conductor] table's `file`, relative to the span file's folder
-/// (span text: the working directory); the file's own errors name it and its line.
+/// (span text: its base folder); the file's own errors name it and its line.
 span::StrandedConductor span_conductor_file(const TomlTable& table, const std::string& file,
                                             const std::filesystem::path& base_directory, SpanReading& reading) {
-  const std::filesystem::path path = span_resolve(file, base_directory);
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    const std::string base = span_base(table, base_directory);
-    table.fail("file", fmt::format("\"{}\": expected an existing conductor file (looked for {}; relative paths start at {})",
-                                   printable(file), printable(std::filesystem::absolute(path, ec).string(), 300), base));
-  }
+  const std::filesystem::path path = span_input_file(table, "file", file, base_directory, "conductor file");
   span::StrandedConductor conductor = read_conductor_file(path);
   reading.inputs.push_back(path);
   return conductor;
@@ -112,7 +105,7 @@ span::StrandedConductor span_conductor_file(const TomlTable& table, const std::s
 /// `type` (the catalogue's conductor) or `file` (a conductor file), whose derived
 /// values (span::conductor_of) the keys given beside it override.
 span::Conductor read_conductor(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading) {
-  span_accept_only(table, {"type", "file", "name", "mass_per_length", "diameter", "rated_tensile_strength", "ei_min",
+  table.accept_only({"type", "file", "name", "mass_per_length", "diameter", "rated_tensile_strength", "ei_min",
                            "ei_max", "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers"});
   const std::optional<std::string> type = table.optional_string("type");
   const std::optional<std::string> file = table.optional_string("file");
@@ -149,38 +142,34 @@ span::Conductor read_conductor(const TomlTable& table, const std::filesystem::pa
 }
 
 void read_span_table(const TomlTable& table, SpanReading& reading) {
-  span_accept_only(table, {"length", "tension", "tension_fraction", "catenary_parameter", "terrain"});
+  table.accept_only({"length", "tension", "tension_fraction", "catenary_parameter", "terrain"});
   reading.length = table.number("length");
   reading.tension = table.optional_number("tension");
   reading.tension_fraction = table.optional_number("tension_fraction");
   reading.catenary_parameter = table.optional_number("catenary_parameter");
   if (const auto terrain = table.optional_integer("terrain", 1, 4)) reading.terrain = static_cast<int>(*terrain);
-  const int given = static_cast<int>(reading.tension.has_value()) + static_cast<int>(reading.tension_fraction.has_value()) +
-                    static_cast<int>(reading.catenary_parameter.has_value());
-  if (given == 0) {
+  std::vector<std::string_view> given;  // the forms of the tension given, in this order
+  for (const auto& [form, value] : {std::pair{"tension", &reading.tension}, {"tension_fraction", &reading.tension_fraction},
+                                    {"catenary_parameter", &reading.catenary_parameter}}) {
+    if (value->has_value()) given.push_back(form);
+  }
+  if (given.empty()) {
     throw InputError(fmt::format("{}missing key 'tension' in [span]: expected one of tension (N), tension_fraction (of "
                                  "the rated tensile strength) and catenary_parameter (H/w, m)",
                                  table.location("tension")));
   }
-  if (given > 1) {
-    const std::array<std::pair<std::string_view, bool>, 3> forms{{{"tension", reading.tension.has_value()},
-                                                                  {"tension_fraction", reading.tension_fraction.has_value()},
-                                                                  {"catenary_parameter", reading.catenary_parameter.has_value()}}};
-    std::vector<std::string_view> present;
-    for (const auto& form : forms) {
-      if (form.second) present.push_back(form.first);
-    }
-    table.fail(present[1], fmt::format("given beside span.{}: expected one of tension (N), tension_fraction and "
-                                       "catenary_parameter (H/w, m)",
-                                       present[0]));
+  if (given.size() > 1) {
+    table.fail(given[1], fmt::format("given beside span.{}: expected one of tension (N), tension_fraction and "
+                                     "catenary_parameter (H/w, m)",
+                                     given[0]));
   }
 }
 
 void read_wind(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading) {
-  span_accept_only(table, {"law", "strouhal", "speed_min", "speed_max", "turbulence_intensity", "table"});
+  table.accept_only({"law", "strouhal", "speed_min", "speed_max", "turbulence_intensity", "table"});
   span::WindModel& wind = reading.wind;
-  const std::string law = span_required_string(
-      table, "law", "a string: cigre, foti, diana-falco, rawlins-1983, brika-laneville or table");
+  const std::string law =
+      table.required_string("law", "a string: cigre, foti, diana-falco, rawlins-1983, brika-laneville or table");
   wind.law = span_parsed_name(table, "law", law, span::parse_wind_law);
   if (const auto v = table.optional_number("strouhal")) wind.strouhal = *v;
   if (const auto v = table.optional_number("speed_min")) wind.speed_min = *v;
@@ -212,9 +201,9 @@ void read_wind(const TomlTable& table, const std::filesystem::path& base_directo
 }
 
 span::SelfDampingModel read_self_damping(const TomlTable& table) {
-  span_accept_only(table, {"law", "k", "l", "m", "n", "limit_curvature"});
+  table.accept_only({"law", "k", "l", "m", "n", "limit_curvature"});
   span::SelfDampingModel model;
-  const std::string law = span_required_string(table, "law", "a string: a named law (noiseux-1991, ...), power or foti");
+  const std::string law = table.required_string("law", "a string: a named law (noiseux-1991, ...), power or foti");
   model.law = span_parsed_name(table, "law", law, span::parse_self_damping_law);
   model.k = table.optional_number("k");
   model.l = table.optional_number("l");
@@ -224,7 +213,6 @@ span::SelfDampingModel read_self_damping(const TomlTable& table) {
   return model;
 }
 
-/// A span damper's name in tables and messages: its damper file's stem.
 /// The warnings of a file a span file reads, each once.
 void span_add_warnings(SpanReading& reading, std::vector<std::string> warnings) {
   for (std::string& warning : warnings) {
@@ -234,26 +222,12 @@ void span_add_warnings(SpanReading& reading, std::vector<std::string> warnings) 
   }
 }
 
-/// A file a [[damper]] names (`key`: file or impedance), resolved and found.
-std::filesystem::path span_damper_input(const TomlTable& table, std::string_view key, const std::string& file,
-                                        const std::filesystem::path& base_directory, std::string_view what) {
-  const std::filesystem::path path = span_resolve(file, base_directory);
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    std::error_code absolute;
-    table.fail(key, fmt::format("\"{}\": expected an existing {} (looked for {}; relative paths start at {})",
-                                printable(file), what, printable(std::filesystem::absolute(path, absolute).string(), 300),
-                                span_base(table, base_directory)));
-  }
-  return path;
-}
-
 /// A measured damper: its sheet (one per file, shared by the [[damper]] entries that name it).
 std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, const std::string& file,
                                                        const std::filesystem::path& base_directory,
                                                        SpanReading& reading) {
   const std::filesystem::path path =
-      span_damper_input(table, "impedance", file, base_directory, "measured impedance CSV file");
+      span_input_file(table, "impedance", file, base_directory, "measured impedance CSV file");
   for (const auto& [read, sheet] : reading.sheets) {
     if (read == path) return sheet;
   }
@@ -265,14 +239,14 @@ std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, c
     reading.sheets.emplace_back(path, sheet);
     return sheet;
   } catch (const InvalidParameter& e) {
-    table.fail("impedance", fmt::format("\"{}\"{}", printable(file), std::string(e.what()).substr(e.field().size())));
+    table.fail("impedance", fmt::format("\"{}\"{}", printable(file), e.detail()));
   }
 }
 
 /// A span damper's name in tables and messages: its damper file's (or sheet's) stem.
 span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem::path& base_directory,
                                   SpanReading& reading) {
-  span_accept_only(table, {"file", "impedance", "position", "ends"});
+  table.accept_only({"file", "impedance", "position", "ends"});
   const std::optional<std::string> model = table.optional_string("file");
   const std::optional<std::string> measured = table.optional_string("impedance");
   if (model.has_value() == measured.has_value()) {
@@ -296,7 +270,7 @@ span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem:
     std::string name = sheet->name();
     return span::SpanDamper{std::nullopt, position, both_ends, std::move(name), std::move(sheet)};
   }
-  const std::filesystem::path path = span_damper_input(table, "file", *model, base_directory, "damper file");
+  const std::filesystem::path path = span_input_file(table, "file", *model, base_directory, "damper file");
   DamperFile loaded = load_damper_file(path);
   reading.inputs.push_back(path);
   reading.inputs.insert(reading.inputs.end(), loaded.cable_files.begin(), loaded.cable_files.end());
@@ -305,7 +279,7 @@ span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem:
 }
 
 span::FatigueSpec read_fatigue(const TomlTable& table) {
-  span_accept_only(table, {"cycles", "endurance_limit", "wind_weibull", "aeolian_fraction", "yb_distance"});
+  table.accept_only({"cycles", "endurance_limit", "wind_weibull", "aeolian_fraction", "yb_distance"});
   span::FatigueSpec fatigue;
   fatigue.cycles = table.optional_number("cycles");
   fatigue.endurance_limit = table.optional_number("endurance_limit");
@@ -320,7 +294,7 @@ span::FatigueSpec read_fatigue(const TomlTable& table) {
                                  table.location(missing), missing));
   }
   if (weibull) {
-    span_accept_only(*weibull, {"shape", "scale"});
+    weibull->accept_only({"shape", "scale"});
     span::LifeModel life;
     life.wind_weibull.shape = weibull->number("shape");
     life.wind_weibull.scale = weibull->number("scale");
@@ -335,7 +309,7 @@ span::FatigueSpec read_fatigue(const TomlTable& table) {
 span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
   span::BalanceOptions options;
   if (!table) return options;
-  span_accept_only(*table, {"damper_model", "polish", "polish_tolerance", "max_polish_evaluations",
+  table->accept_only({"damper_model", "polish", "polish_tolerance", "max_polish_evaluations",
                             "amplitude_min_over_diameter", "amplitude_max_over_diameter", "table"});
   if (const auto model = table->optional_string("damper_model")) {
     options.damper_model = span_parsed_name(*table, "damper_model", *model, span::parse_damper_model);
@@ -348,7 +322,7 @@ span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
   options.amplitude_max_over_diameter =
       table->optional_number("amplitude_max_over_diameter").value_or(options.amplitude_max_over_diameter);
   if (const std::optional<TomlTable> t = table->optional_table("table")) {
-    span_accept_only(*t, {"velocities", "velocity_min", "velocity_max", "column_ratio"});
+    t->accept_only({"velocities", "velocity_min", "velocity_max", "column_ratio"});
     span::ImpedanceTableOptions& o = options.table;
     if (const auto n = t->optional_integer("velocities", 2, 1000)) o.velocities = static_cast<int>(*n);
     o.velocity_min = t->optional_number("velocity_min").value_or(o.velocity_min);
@@ -359,7 +333,7 @@ span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
 }
 
 SpanReading read_span_document(const TomlTable& top, const std::filesystem::path& base_directory) {
-  span_accept_only(top, {"conductor", "span", "wind", "self_damping", "damper", "fatigue", "balance"});
+  top.accept_only({"conductor", "span", "wind", "self_damping", "damper", "fatigue", "balance"});
   SpanReading reading;
   reading.conductor = read_conductor(top.table("conductor"), base_directory, reading);
   read_span_table(top.table("span"), reading);

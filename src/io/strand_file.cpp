@@ -1,8 +1,5 @@
 #include "stockbridge/io/strand_file.hpp"
 
-#include <initializer_list>
-#include <string_view>
-
 #include "stockbridge/core/error.hpp"
 #include "toml_reader.hpp"
 
@@ -10,15 +7,8 @@ namespace stockbridge::io {
 
 namespace {
 
-/// Rejects unknown keys before any value is read, so that a misspelt key is
-/// reported as such rather than as the missing key it was meant to be.
-void accept_only(const TomlTable& table, std::initializer_list<std::string_view> keys) {
-  for (const std::string_view key : keys) table.contains(key);
-  table.reject_unknown_keys();
-}
-
 strand::StrandLayer read_layer(const TomlTable& table) {
-  accept_only(table, {"count", "wire_radius", "pitch_radius", "lay_length", "youngs_modulus"});
+  table.accept_only({"count", "wire_radius", "pitch_radius", "lay_length", "youngs_modulus"});
   strand::StrandLayer layer;
   layer.count = static_cast<int>(table.integer("count", 1, 1000));  // strand::validate's range
   layer.wire_radius = table.number("wire_radius");
@@ -33,9 +23,9 @@ strand::StrandLayer read_layer(const TomlTable& table) {
 strand::Strand read_strand_file(const std::filesystem::path& path) {
   const toml::table document = parse_toml_file(path);
   const TomlTable root(document, TomlSource{path.string(), true}, "");
-  accept_only(root, {"strand"});
+  root.accept_only({"strand"});
   const TomlTable table = root.table("strand");
-  accept_only(table, {"youngs_modulus", "core_radius", "core_youngs_modulus", "layer"});
+  table.accept_only({"youngs_modulus", "core_radius", "core_youngs_modulus", "layer"});
 
   strand::Strand strand;
   strand.youngs_modulus = table.optional_number("youngs_modulus").value_or(strand.youngs_modulus);

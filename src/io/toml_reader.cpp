@@ -190,6 +190,18 @@ std::vector<TomlTable> TomlTable::table_array(std::string_view key, bool require
   return tables;
 }
 
+void TomlTable::accept_only(std::initializer_list<std::string_view> keys) const {
+  for (const std::string_view key : keys) contains(key);
+  reject_unknown_keys();
+}
+
+std::string TomlTable::required_string(std::string_view key, std::string_view expected) const {
+  if (!contains(key)) {
+    throw InputError(fmt::format("{}missing key '{}' in [{}]: expected {}", location(key), key, key_path_, expected));
+  }
+  return *optional_string(key);
+}
+
 void TomlTable::reject_unknown_keys() const {
   for (const auto& [key, value] : *table_) {
     if (!asked_.contains(std::string_view(key.str()))) {

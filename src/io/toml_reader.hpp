@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <set>
 #include <string>
@@ -61,6 +62,11 @@ class TomlTable {
 
   /// Throws InputError naming the first key that no reader asked for (listing those it did).
   void reject_unknown_keys() const;
+  /// Rejects every key but `keys` before any value is read, so that a misspelt key is
+  /// reported as such rather than as the missing key it was meant to be.
+  void accept_only(std::initializer_list<std::string_view> keys) const;
+  /// A required string: "missing key '<key>' in [<table>]: expected <expected>" when absent.
+  std::string required_string(std::string_view key, std::string_view expected) const;
 
   /// "<file>:<line>: " for the key's node (or for the table when the key is absent).
   std::string location(std::string_view key) const;

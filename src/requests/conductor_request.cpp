@@ -5,20 +5,11 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/io/toml_text.hpp"
 
 namespace stockbridge::requests {
 
 namespace {
-
-/// A TOML basic string literal of one line of text.
-std::string toml_quoted(const std::string& text) {
-  std::string out = "\"";
-  for (const char ch : text) {
-    if (ch == '"' || ch == '\\') out += '\\';
-    out += ch;
-  }
-  return out + "\"";
-}
 
 /// `key = value` padded so that the comments line up.
 std::string toml_line(const std::string& assignment, const std::string& comment) {
@@ -73,9 +64,9 @@ std::string conductor_table_toml(const span::StrandedConductor& conductor) {
   std::string text = fmt::format("# {}, {}\n", conductor.type, span::stranding_label(conductor));
   if (!conductor.source.empty()) text += fmt::format("# Source: {}\n", conductor.source);
   text += "# ei_min, ei_max, outer_wire_diameter, outer_wire_modulus and aluminium_layers are derived\n"
-          "# from the stranding (docs/strand.md); the same as [conductor] type = " + toml_quoted(conductor.type) + ".\n";
+          "# from the stranding (docs/strand.md); the same as [conductor] type = " + io::toml_basic_string(conductor.type) + ".\n";
   text += "[conductor]\n";
-  text += fmt::format("name = {}\n", toml_quoted(c.name));
+  text += fmt::format("name = {}\n", io::toml_basic_string(c.name));
   text += toml_line(fmt::format("mass_per_length = {}", format_value(c.mass_per_length)), "kg/m");
   text += toml_line(fmt::format("diameter = {}", format_value(c.diameter)), "m");
   text += toml_line(fmt::format("rated_tensile_strength = {}", format_value(c.rated_tensile_strength)), "N");

@@ -147,9 +147,9 @@ SpanQuantity span_solved(std::string name, std::string unit, std::string meaning
 /// A number of each damper and end: NaN where the point did not converge.
 SpanQuantity span_per_damper(std::string name, std::string unit, std::string meaning,
                              std::shared_ptr<const SpanTableContext> context,
-                             double (*value)(const span::DamperAtBalance&)) {
+                             std::function<double(const span::DamperAtBalance&)> value) {
   return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
-          [context, value](const span::BalancePoint& p, std::size_t member) {
+          [context, value = std::move(value)](const span::BalancePoint& p, std::size_t member) {
             const std::size_t i = context->entry_of_member[member];
             return p.converged() && i < p.dampers.size() ? value(p.dampers[i]) : kSpanNoValue;
           },
@@ -260,16 +260,9 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
                       [](const D& d) { return d.power; }),
       span_per_damper("<damper>_end<k>_clamp_stress_mpa", "MPa", "the conductor's stress at its clamp", c,
                       [](const D& d) { return d.clamp_stress / kPascalPerMegapascal; }),
-      // Per damper and end, the strain at its clamp (the conductor's modulus: not a plain function).
-      {"<damper>_end<k>_bending_strain_pp_microstrain", "microstrain",
-       "the outer wires' peak-to-peak bending strain at its clamp", ColumnKind::number,
-       [c](const P& p, std::size_t member) {
-         const std::size_t i = c->entry_of_member[member];
-         return p.converged() && i < p.dampers.size()
-                    ? span::bending_strain_pp_microstrain(c->conductor, p.dampers[i].clamp_stress)
-                    : kSpanNoValue;
-       },
-       {}},
+      span_per_damper("<damper>_end<k>_bending_strain_pp_microstrain", "microstrain",
+                      "the outer wires' peak-to-peak bending strain at its clamp", c,
+                      [c](const D& d) { return span::bending_strain_pp_microstrain(c->conductor, d.clamp_stress); }),
   };
   std::vector<std::string> members;
   const std::vector<std::string> prefixes = span_damper_prefixes(span);
