@@ -22,5 +22,6 @@ void add_conductors_command(CLI::App& app, int& exit_code);
 void add_modes_command(CLI::App& app, int& exit_code);
 void add_span_command(CLI::App& app, int& exit_code);
 void add_design_command(CLI::App& app, int& exit_code);
+void add_line_command(CLI::App& app, int& exit_code);
 
 }  // namespace stockbridge::cli

@@ -36,6 +36,8 @@ struct SpanOptions {
   bool no_dampers = false;
   std::optional<std::string> damper_model;
   std::optional<std::string> optimize_position;
+  double spacing_min = requests::SpanRequest{}.spacing_min;
+  std::string objective = requests::SpanRequest{}.objective;
   int threads = requests::SpanRequest{}.threads;
   bool json = false;
   bool quiet = false;
@@ -59,6 +61,8 @@ requests::SpanRequest span_request_of(const SpanOptions& options) {
     request.position_min = parse_number(text.substr(0, colon), "--optimize-position AMIN");
     request.position_max = parse_number(text.substr(colon + 1), "--optimize-position AMAX");
   }
+  request.spacing_min = options.spacing_min;
+  request.objective = options.objective;
   request.threads = options.threads;
   requests::validate(request);
   return request;
@@ -111,8 +115,10 @@ void print_span_report(const requests::SpanResult& result) {
     }
   }
   if (a.position) {
-    fmt::print("position: {:.4g} m minimises the largest fymax stress ({} balances)\n", a.position->position,
-               a.position->balances);
+    std::string positions;
+    for (const double x : a.position->positions) positions += fmt::format("{}{:.4g}", positions.empty() ? "" : ", ", x);
+    fmt::print("positions: {} m minimise the {} ({} balances on the tables)\n", positions,
+               a.position->criterion == span::PositionObjective::life ? "damage per year" : "largest fymax stress", a.position->balances);
   }
   if (summary.converged > 0) {
     fmt::print("largest fymax stress: {} at {:.4g} Hz (undamped {} at {:.4g} Hz)\n",
@@ -200,8 +206,14 @@ void add_span_command(CLI::App& app, int& exit_code) {
                   "travelling (the dampers' standing wave, MODEL.md 9) or weak (|Z| << Z0); default: the span "
                   "file's [balance] damper_model, travelling");
   sub->add_option("--optimize-position", options->optimize_position,
-                  "AMIN:AMAX, m: search the dampers' position (all moved together) minimising the largest fymax "
-                  "stress, then balance there");
+                  "AMIN:AMAX, m: search every damper's position (each its own) minimising --objective, then "
+                  "balance there");
+  sub->add_option("--spacing-min", options->spacing_min, "With --optimize-position: m between two dampers at least")
+      ->capture_default_str();
+  sub->add_option("--objective", options->objective,
+                  "With --optimize-position: max_stress (the largest fymax stress over the endurance limit) or life "
+                  "(needs the span file's climate)")
+      ->capture_default_str();
   sub->add_option("--threads", options->threads, "Parallel runs for the dampers' impedance tables")->capture_default_str();
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");

@@ -1,7 +1,14 @@
 #include "task_runner.hpp"
 
+#include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
+#include <deque>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -192,6 +199,191 @@ Processes::~Processes() {
 #ifdef STOCKBRIDGE_WITH_MPI
   if (mpi_) MPI_Finalize();
 #endif
+}
+
+namespace {
+
+/// The tasks and records of one rank's threads: tasks in, records out.
+class DealState {
+ public:
+  /// A task for a thread, waiting for one; none when there are no more.
+  std::optional<std::size_t> next_task() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return !tasks_.empty() || no_more_; });
+    if (tasks_.empty()) return std::nullopt;
+    const std::size_t t = tasks_.front();
+    tasks_.pop_front();
+    return t;
+  }
+  void add_task(std::size_t t) {
+    { const std::lock_guard<std::mutex> lock(mutex_); tasks_.push_back(t); }
+    changed_.notify_all();
+  }
+  void no_more_tasks() {
+    { const std::lock_guard<std::mutex> lock(mutex_); no_more_ = true; }
+    changed_.notify_all();
+  }
+  void finish(std::size_t t, std::string record) {
+    { const std::lock_guard<std::mutex> lock(mutex_); records_.emplace_back(t, std::move(record)); ++free_; }
+    changed_.notify_all();
+  }
+  void thread_exited() {
+    { const std::lock_guard<std::mutex> lock(mutex_); ++exited_; }
+    changed_.notify_all();
+  }
+  /// The records so far, waiting up to `wait` for one (or for every thread to exit).
+  std::deque<std::pair<std::size_t, std::string>> take_records(std::chrono::milliseconds wait, int threads) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait_for(lock, wait, [&] { return !records_.empty() || exited_ == threads; });
+    return std::exchange(records_, {});
+  }
+  bool all_exited(int threads) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return exited_ == threads && records_.empty();
+  }
+  /// Threads without a task (each asks for one), counted down as they are given.
+  int take_free() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return std::exchange(free_, 0);
+  }
+  void set_free(int n) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    free_ = n;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::size_t> tasks_;
+  std::deque<std::pair<std::size_t, std::string>> records_;
+  bool no_more_ = false;
+  int exited_ = 0;
+  int free_ = 0;
+};
+
+std::vector<std::thread> start_threads(int threads, DealState& state, const std::function<std::string(std::size_t)>& run) {
+  std::vector<std::thread> workers;
+  for (int k = 0; k < threads; ++k) {
+    workers.emplace_back([&state, &run] {
+      while (const std::optional<std::size_t> t = state.next_task()) state.finish(*t, run(*t));
+      state.thread_exited();
+    });
+  }
+  return workers;
+}
+
+#ifdef STOCKBRIDGE_WITH_MPI
+enum DealTag : int { kDealRequest = 11, kDealTask = 12, kDealRecord = 13, kDealDone = 14 };
+
+/// A rank but 0: asks rank 0 for a task for each free thread, sends each record back,
+/// and says when its threads are done.
+void deal_as_worker(int threads, const std::function<std::string(std::size_t)>& run) {
+  DealState state;
+  state.set_free(threads);
+  std::vector<std::thread> workers = start_threads(threads, state, run);
+  bool no_more = false;
+  while (true) {
+    for (auto& [t, record] : state.take_records(std::chrono::milliseconds(2), threads)) {
+      std::vector<char> bytes(sizeof(std::uint64_t) + record.size());
+      const std::uint64_t index = t;
+      std::memcpy(bytes.data(), &index, sizeof index);
+      std::memcpy(bytes.data() + sizeof index, record.data(), record.size());
+      MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_CHAR, 0, kDealRecord, MPI_COMM_WORLD);
+    }
+    for (int k = state.take_free(); k > 0 && !no_more; --k) {
+      const int ask = 0;
+      std::int64_t task = -1;
+      MPI_Send(&ask, 1, MPI_INT, 0, kDealRequest, MPI_COMM_WORLD);
+      MPI_Recv(&task, 1, MPI_INT64_T, 0, kDealTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      if (task < 0) {
+        no_more = true;
+        state.no_more_tasks();
+      } else {
+        state.add_task(static_cast<std::size_t>(task));
+      }
+    }
+    if (no_more && state.all_exited(threads)) break;
+  }
+  for (std::thread& w : workers) w.join();
+  const int done = 0;
+  MPI_Send(&done, 1, MPI_INT, 0, kDealDone, MPI_COMM_WORLD);
+}
+
+/// Rank 0's messages waiting: requests answered with the next task, records passed on.
+/// Returns the ranks that said they are done.
+int serve_ranks(const std::function<std::optional<std::size_t>()>& take,
+                const std::function<void(std::size_t, const std::string&)>& done) {
+  int finished = 0;
+  while (true) {
+    int waiting = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
+    if (!waiting) return finished;
+    if (status.MPI_TAG == kDealRequest) {
+      int ask = 0;
+      MPI_Recv(&ask, 1, MPI_INT, status.MPI_SOURCE, kDealRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      const std::optional<std::size_t> t = take();
+      const std::int64_t task = t ? static_cast<std::int64_t>(*t) : -1;
+      MPI_Send(&task, 1, MPI_INT64_T, status.MPI_SOURCE, kDealTask, MPI_COMM_WORLD);
+    } else if (status.MPI_TAG == kDealRecord) {
+      int size = 0;
+      MPI_Get_count(&status, MPI_CHAR, &size);
+      std::vector<char> bytes(static_cast<std::size_t>(size));
+      MPI_Recv(bytes.data(), size, MPI_CHAR, status.MPI_SOURCE, kDealRecord, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      std::uint64_t index = 0;
+      std::memcpy(&index, bytes.data(), sizeof index);
+      const std::string record(bytes.data() + sizeof index, bytes.size() - sizeof index);
+      if (!record.empty()) done(static_cast<std::size_t>(index), record);
+    } else {
+      int said = 0;
+      MPI_Recv(&said, 1, MPI_INT, status.MPI_SOURCE, kDealDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      ++finished;
+    }
+  }
+}
+#endif
+
+}  // namespace
+
+void Processes::deal(int threads, const std::vector<std::size_t>& todo,
+                     const std::function<std::string(std::size_t)>& run,
+                     const std::function<void(std::size_t, const std::string&)>& done,
+                     const std::atomic<bool>& stop) const {
+#ifdef STOCKBRIDGE_WITH_MPI
+  if (mpi_ && rank_ != 0) {
+    deal_as_worker(threads, run);
+    return;
+  }
+#endif
+  std::mutex dealing;
+  std::size_t next = 0;
+  const auto take = [&]() -> std::optional<std::size_t> {
+    const std::lock_guard<std::mutex> lock(dealing);
+    if (stop.load() || next >= todo.size()) return std::nullopt;
+    return todo[next++];
+  };
+  // Rank 0's own threads take their tasks straight from the deal.
+  DealState state;
+  std::vector<std::thread> workers;
+  for (int k = 0; k < threads; ++k) {
+    workers.emplace_back([&] {
+      while (const std::optional<std::size_t> t = take()) state.finish(*t, run(*t));
+      state.thread_exited();
+    });
+  }
+  int ranks_open = mpi_ ? size_ - 1 : 0;
+  const auto pass_on = [&](std::size_t t, const std::string& record) {
+    if (!record.empty()) done(t, record);
+  };
+  while (true) {
+    const auto wait = std::chrono::milliseconds(mpi_ ? 2 : 200);
+    for (auto& [t, record] : state.take_records(wait, threads)) pass_on(t, record);
+#ifdef STOCKBRIDGE_WITH_MPI
+    if (mpi_) ranks_open -= serve_ranks(take, done);
+#endif
+    if (ranks_open == 0 && state.all_exited(threads)) break;
+  }
+  for (std::thread& w : workers) w.join();
 }
 
 std::unique_ptr<design::TaskRunner> Processes::runner(int threads) const {

@@ -2,7 +2,12 @@
 // How `stockbridge design` spreads its candidates: on threads, and across MPI ranks
 // when the program was started by mpirun (and built with MPI).
 
+#include <atomic>
+#include <cstddef>
+#include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "stockbridge/design/search.hpp"
 
@@ -25,6 +30,15 @@ class Processes {
   bool mpirun_without_mpi() const { return mpirun_without_mpi_; }
   /// Tasks on `threads` threads of each rank, the ranks taking tasks in turn.
   std::unique_ptr<design::TaskRunner> runner(int threads) const;
+
+  /// Tasks `todo` dealt one at a time to whichever thread of whichever rank is free
+  /// (tasks differ in cost: a fixed deal leaves ranks idle). `run` gives a task's
+  /// record (empty: not finished, e.g. interrupted); on rank 0, `done` gets each
+  /// record as it arrives, from the calling thread, one at a time. Rank 0 stops
+  /// dealing once `stop` is set (the tasks under way finish or give up). Returns on
+  /// every rank when no task is under way.
+  void deal(int threads, const std::vector<std::size_t>& todo, const std::function<std::string(std::size_t)>& run,
+            const std::function<void(std::size_t, const std::string&)>& done, const std::atomic<bool>& stop) const;
 
  private:
   int rank_ = 0;

@@ -131,6 +131,29 @@ CsvRows read_csv_rows(const std::filesystem::path& path, const std::vector<std::
   return rows;
 }
 
+CsvCells read_csv_cells(const std::filesystem::path& path) {
+  CsvCells out;
+  out.header = read_csv_header(path);
+  OpenedCsv csv = open_csv(path);
+  std::string line;
+  std::size_t line_number = csv.line_number;
+  while (std::getline(csv.in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    std::vector<std::string> cells = split_cells(line);
+    if (cells.size() > out.header.size()) {
+      throw InputError(fmt::format("{}:{}: {} cells: expected at most {}, as the header has (a ',' inside a cell is "
+                                   "not supported)",
+                                   path.string(), line_number, cells.size(), out.header.size()));
+    }
+    cells.resize(out.header.size());
+    out.rows.push_back(std::move(cells));
+    out.lines.push_back(line_number);
+  }
+  return out;
+}
+
 std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& path,
                                                   const std::vector<std::string>& names, std::size_t min_rows) {
   return read_csv_rows(path, names, min_rows).columns;

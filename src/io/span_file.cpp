@@ -16,33 +16,12 @@
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/span/stranded_conductor.hpp"
+#include "span_reading.hpp"
 #include "toml_reader.hpp"
 
 namespace stockbridge::io {
 
-namespace {
-
-// Names in this unnamed namespace are unique across the library (the sanitizer
-// presets compile it in unity batches).
-
-/// A span file's contents before the model validates them.
-struct SpanReading {
-  span::Conductor conductor;
-  double length = 0.0;
-  std::optional<double> tension;
-  std::optional<double> tension_fraction;
-  std::optional<double> catenary_parameter;
-  std::optional<int> terrain;
-  span::WindModel wind;
-  span::SelfDampingModel self_damping;
-  std::vector<span::SpanDamper> dampers;
-  span::FatigueSpec fatigue;
-  span::BalanceOptions balance;
-  std::vector<std::filesystem::path> inputs;
-  std::vector<std::string> warnings;
-  /// The measured sheets read, by path.
-  std::vector<std::pair<std::filesystem::path, std::shared_ptr<const span::ImpedanceSheet>>> sheets;
-};
+namespace span_reading {
 
 std::filesystem::path span_resolve(const std::filesystem::path& file, const std::filesystem::path& base_directory) {
   return file.is_absolute() ? file : base_directory / file;
@@ -351,7 +330,7 @@ SpanReading read_span_document(const TomlTable& top, const std::filesystem::path
 /// per length in g/m, a length in km, a tension in kN), each at its line, after the
 /// dampers' warnings.
 void add_span_warnings(const SpanReading& reading, const toml::table& document, const TomlSource& source,
-                       std::vector<std::string>& warnings) {
+                       std::vector<std::string>& warnings, bool with_span) {
   std::vector<UnusualValue> unusual;
   const auto check = [&unusual](std::string field, const std::optional<double>& value, const TypicalRange& range) {
     if (value) check_typical(unusual, std::move(field), *value, range);
@@ -364,10 +343,12 @@ void add_span_warnings(const SpanReading& reading, const toml::table& document, 
   if (c.ei_max != 0.0) check("conductor.ei_max", c.ei_max, typical::conductor_ei_max);
   check("conductor.outer_wire_diameter", c.outer_wire_diameter, typical::outer_wire_diameter);
   check("conductor.outer_wire_modulus", c.outer_wire_modulus, typical::outer_wire_modulus);
-  check("span.length", reading.length, typical::span_length);
-  check("span.tension", reading.tension, typical::span_tension);
-  check("span.tension_fraction", reading.tension_fraction, typical::tension_fraction);
-  check("span.catenary_parameter", reading.catenary_parameter, typical::catenary_parameter);
+  if (with_span) {
+    check("span.length", reading.length, typical::span_length);
+    check("span.tension", reading.tension, typical::span_tension);
+    check("span.tension_fraction", reading.tension_fraction, typical::tension_fraction);
+    check("span.catenary_parameter", reading.catenary_parameter, typical::catenary_parameter);
+  }
   const span::WindModel& w = reading.wind;
   check("wind.strouhal", w.strouhal, typical::strouhal);
   check("wind.speed_min", w.speed_min, typical::wind_speed);
@@ -411,7 +392,9 @@ SpanFile build_span(const toml::table& document, const TomlSource& source, const
   return SpanFile{std::move(built), reading.balance, std::move(reading.inputs), std::move(reading.warnings)};
 }
 
-}  // namespace
+}  // namespace span_reading
+
+using span_reading::build_span;
 
 SpanFile load_span_file(const std::filesystem::path& path) {
   return build_span(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path());

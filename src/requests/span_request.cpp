@@ -62,6 +62,17 @@ void check_span_frequencies(const std::vector<double>& frequencies) {
 
 }  // namespace
 
+namespace {
+
+/// Every damper's position, in the span's order (m).
+std::vector<double> span_positions(const span::Span& span) {
+  std::vector<double> positions;
+  for (const span::SpanDamper& d : span.dampers()) positions.push_back(d.position);
+  return positions;
+}
+
+}  // namespace
+
 void validate(const SpanRequest& request) {
   check_span_frequencies(request.frequencies);
   if (request.frequencies.empty()) require_in_range("points", request.points, 2, kSpanMaxPoints);
@@ -81,6 +92,8 @@ void validate(const SpanRequest& request) {
       throw InvalidParameter("optimize_position", ": given with no_dampers: there is no damper to place");
     }
   }
+  require_non_negative("spacing_min", request.spacing_min, "m");
+  span::parse_position_objective(request.objective);
 }
 
 span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const SpanRequest& request) {
@@ -89,7 +102,14 @@ span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const S
   options.balance = file;
   if (request.damper_model) options.balance.damper_model = span::parse_damper_model(*request.damper_model);
   options.balance.table.threads = request.threads;
-  if (request.position_min) options.position_range = span::Interval{*request.position_min, *request.position_max};
+  if (request.position_min) {
+    span::PositionRules rules;
+    rules.position_min = *request.position_min;
+    rules.position_max = *request.position_max;
+    rules.spacing_min = request.spacing_min;
+    rules.objective = span::parse_position_objective(request.objective);
+    options.positions = rules;
+  }
   options.validate();
   return options;
 }
@@ -337,6 +357,7 @@ io::JsonObject span_summary(const SpanResult& result) {
       .add("undamped_max_stress_frequency_hz", s.undamped_max_stress_frequency_hz)
       .add("undamped_verdict", span::verdict_name(s.undamped_verdict))
       .add("position_m", dampers ? a.span.dampers().front().position : kSpanNoValue)
+      .add("positions_m", span_positions(a.span))
       .add("position_optimized", a.position.has_value());
   add_tension_figures(json, a.span);
   add_field_figures(json, a);

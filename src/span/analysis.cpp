@@ -14,13 +14,7 @@ namespace stockbridge::span {
 
 void AnalysisOptions::validate() const {
   balance.validate();
-  if (position_range) {
-    const double lo = position_range->lo, hi = position_range->hi;
-    if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0.0 && hi > lo)) {
-      throw InvalidParameter("position_range", fmt::format(" = {}:{}: expected 0 < min < max (m from the span end's clamp)",
-                                                           format_value(lo), format_value(hi)));
-    }
-  }
+  if (positions) positions->validate();
 }
 
 namespace {
@@ -103,17 +97,19 @@ void add_sheet_band(SpanAnalysis& out, const SpanTables& tables, const BalanceOp
 SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, const AnalysisOptions& options,
                           const damper::SweepProgress& progress, const TableSource& tables) {
   options.validate();
-  if (options.position_range && span.dampers().empty()) {
-    throw InvalidParameter("position_range", ": the span has no damper to place");
+  if (options.positions && span.dampers().empty()) {
+    throw InvalidParameter("damper", ": the span has no damper to place");
   }
   const ImpedanceTableOptions table =
-      options.position_range ? options.balance.table.for_position_search() : options.balance.table;
+      options.positions ? options.balance.table.for_position_search() : options.balance.table;
   const std::shared_ptr<const SpanTables> made =
       tables ? tables(span, frequencies, table) : std::make_shared<const SpanTables>(span, frequencies, table, progress);
   SpanAnalysis out{span, std::nullopt, {}, made->frequencies(), std::numeric_limits<double>::quiet_NaN(), {}};
-  if (options.position_range) {
-    out.position = optimise_position(span, *made, options.balance, options.position_range->lo, options.position_range->hi);
-    out.span = span.with_dampers_at(out.position->position);
+  if (options.positions) {
+    out.position = optimise_positions(span, *made, options.balance, *options.positions);
+    std::vector<SpanDamper> placed = span.dampers();
+    for (std::size_t j = 0; j < placed.size(); ++j) placed[j].position = out.position->positions[j];
+    out.span = span.with_dampers(std::move(placed));
   }
   out.balance = run_balance(out.span, *made, options.balance);
   add_sheet_band(out, *made, options.balance);

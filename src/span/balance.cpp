@@ -81,6 +81,13 @@ SpanTables::SpanTables(const Span& span, std::vector<double> frequencies, const 
   nodes_ = done_before;
 }
 
+SpanTables::SpanTables(std::vector<double> frequencies, std::vector<ImpedanceTable> tables)
+    : frequencies_(std::move(frequencies)), tables_(std::move(tables)) {
+  for (const ImpedanceTable& t : tables_) {
+    if (t.frequencies() != frequencies_) throw std::invalid_argument("SpanTables: a table made for other frequencies");
+  }
+}
+
 SpanTables::SpanTables(const SpanTables& solved, const Span& span) : SpanTables(solved) {
   if (tables_.size() != span.dampers().size()) {
     throw std::invalid_argument(fmt::format("SpanTables: {} tables for {} dampers", tables_.size(), span.dampers().size()));

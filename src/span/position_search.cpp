@@ -2,59 +2,253 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <numeric>
+
+#include <fmt/format.h>
+#include <nlopt.hpp>
 
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::span {
 
-PositionSearch optimise_position(const Span& span, const SpanTables& tables, const BalanceOptions& options,
-                                 double position_min, double position_max, int scan_points) {
+PositionObjective parse_position_objective(std::string_view name) {
+  if (name == "max_stress") return PositionObjective::max_stress;
+  if (name == "life") return PositionObjective::life;
+  throw InvalidParameter("objective", fmt::format(" = \"{}\": expected \"max_stress\" (the largest fymax stress over the "
+                                                  "endurance limit) or \"life\"",
+                                                  printable(name)));
+}
+
+std::string_view position_objective_name(PositionObjective objective) {
+  return objective == PositionObjective::life ? "life" : "max_stress";
+}
+
+void PositionRules::validate() const {
   require_positive("position_min", position_min, "m");
-  if (!(position_max > position_min)) throw_invalid("position_max", position_max, "a value > position_min (m)");
-  require_in_range("scan_points", scan_points, 3, 10000);
-  if (span.dampers().empty()) throw InvalidParameter("damper", ": a position search needs at least one [[damper]]");
-  PositionSearch best;
-  BalanceOptions scan = options;
-  scan.polish = false;
-  const auto largest_stress = [&](double a) {
-    ++best.balances;
-    const SpanBalance b = run_balance(span.with_dampers_at(a), tables, scan);
-    // A point that did not converge counts as the worst: never chosen for it.
-    return b.summary.all_converged() ? b.summary.max_stress_fymax : std::numeric_limits<double>::infinity();
-  };
-  // The scan finds the best basin (the stress over position has a local minimum near
-  // every node of the shortest waves); golden sections then refine within it.
-  const double step = (position_max - position_min) / (scan_points - 1);
-  std::vector<double> stress(static_cast<std::size_t>(scan_points));
-  std::size_t k_best = 0;
-  for (std::size_t k = 0; k < stress.size(); ++k) {
-    stress[k] = largest_stress(position_min + static_cast<double>(k) * step);
-    if (stress[k] < stress[k_best]) k_best = k;
+  if (!(position_max > position_min && std::isfinite(position_max))) {
+    throw_invalid("position_max", position_max, "a value > position_min (m)");
   }
-  double lo = std::max(position_min, position_min + (static_cast<double>(k_best) - 1.0) * step);
-  double hi = std::min(position_max, position_min + (static_cast<double>(k_best) + 1.0) * step);
+  require_non_negative("spacing_min", spacing_min, "m");
+  require_in_range("scan_points", scan_points, 3, 10000);
+  require_in_range("max_evaluations", max_evaluations, 4, 100000);
+}
+
+double position_objective(const SpanBalance& balance, PositionObjective objective) {
+  const BalanceSummary& s = balance.summary;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (!s.all_converged()) return kInf;
+  if (objective == PositionObjective::max_stress) return s.max_stress_fymax / s.endurance_limit;
+  if (!s.life) return kInf;
+  // Damage 0 (no stress at all) is the best there is: a floor keeps the log finite.
+  return std::log10(std::max(s.life->damage_per_year, 1e-300));
+}
+
+std::vector<double> usual_positions(const Span& span, double f_max, int count, double fraction, const PositionRules& rules) {
+  const double speed = std::sqrt(span.tension() / span.conductor().mass_per_length);
+  const double loop = speed / (2.0 * f_max);
+  std::vector<double> x(static_cast<std::size_t>(count));
+  double spacing = std::max(rules.spacing_min, fraction * loop);
+  x[0] = std::clamp(fraction * loop, rules.position_min, rules.position_max);
+  for (std::size_t k = 1; k < x.size(); ++k) {
+    spacing = std::max(rules.spacing_min, 1.3 * spacing);
+    x[k] = x[k - 1] + spacing;
+  }
+  // Pushed back inside the range from its far end, the spacings kept where they fit.
+  for (std::size_t k = x.size(); k-- > 0;) {
+    const double room = rules.position_max - static_cast<double>(x.size() - 1 - k) * rules.spacing_min;
+    x[k] = std::min(x[k], room);
+    if (k + 1 < x.size()) x[k] = std::min(x[k], x[k + 1] - rules.spacing_min);
+  }
+  return x;
+}
+
+namespace {
+
+/// One search: the dampers' order (by their positions in the span), the balances
+/// made and the best arrangement seen.
+class PositionObjectiveRun {
+ public:
+  PositionObjectiveRun(const Span& span, const SpanTables& tables, const BalanceOptions& options,
+                       const PositionRules& rules, const std::function<bool()>& stop)
+      : span_(span), tables_(tables), options_(options), rules_(rules), stop_(stop), order_(span.dampers().size()) {
+    options_.polish = false;
+    std::iota(order_.begin(), order_.end(), std::size_t{0});
+    std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+      return span.dampers()[a].position < span.dampers()[b].position;
+    });
+    best_.objective = std::numeric_limits<double>::infinity();
+    best_.criterion = rules.objective;
+  }
+
+  /// The objective with the dampers at `sorted` (increasing, m); the best kept.
+  double operator()(const std::vector<double>& sorted) {
+    if (stop_ && stop_()) throw Interrupted("the position search was stopped");
+    std::vector<SpanDamper> dampers = span_.dampers();
+    for (std::size_t k = 0; k < order_.size(); ++k) dampers[order_[k]].position = sorted[k];
+    ++best_.balances;
+    const SpanBalance b = run_balance(span_.with_dampers(std::move(dampers)), tables_, options_);
+    const double value = position_objective(b, rules_.objective);
+    if (value < best_.objective) {
+      best_.objective = value;
+      best_.max_stress_fymax = b.summary.max_stress_fymax;
+      best_sorted_ = sorted;
+    }
+    return value;
+  }
+
+  PositionSearch result() const {
+    PositionSearch out = best_;
+    out.positions.assign(order_.size(), 0.0);
+    if (best_sorted_.empty()) {  // no arrangement converged: the span's own
+      for (std::size_t j = 0; j < order_.size(); ++j) out.positions[j] = span_.dampers()[j].position;
+      return out;
+    }
+    for (std::size_t k = 0; k < order_.size(); ++k) out.positions[order_[k]] = best_sorted_[k];
+    return out;
+  }
+  const std::vector<double>& best_sorted() const { return best_sorted_; }
+  double best_objective() const { return best_.objective; }
+
+ private:
+  const Span& span_;
+  const SpanTables& tables_;
+  BalanceOptions options_;
+  const PositionRules& rules_;
+  const std::function<bool()>& stop_;
+  std::vector<std::size_t> order_;
+  PositionSearch best_;
+  std::vector<double> best_sorted_;
+};
+
+/// One damper: a scan for the best basin (the objective over the position has a
+/// local minimum near every node of the shortest waves), then golden sections in it.
+void search_one(PositionObjectiveRun& run, const PositionRules& rules) {
+  const double lo0 = rules.position_min, step = (rules.position_max - lo0) / (rules.scan_points - 1);
+  std::size_t k_best = 0;
+  double f_best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < rules.scan_points; ++k) {
+    const double f = run({lo0 + k * step});
+    if (f < f_best) f_best = f, k_best = static_cast<std::size_t>(k);
+  }
+  double lo = std::max(lo0, lo0 + (static_cast<double>(k_best) - 1.0) * step);
+  double hi = std::min(rules.position_max, lo0 + (static_cast<double>(k_best) + 1.0) * step);
   const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-  double f1 = largest_stress(x1), f2 = largest_stress(x2);
+  double f1 = run({x1}), f2 = run({x2});
   while (hi - lo > 1e-3 * step) {
     if (f1 <= f2) {
       hi = x2, x2 = x1, f2 = f1;
       x1 = hi - ratio * (hi - lo);
-      f1 = largest_stress(x1);
+      f1 = run({x1});
     } else {
       lo = x1, x1 = x2, f1 = f2;
       x2 = lo + ratio * (hi - lo);
-      f2 = largest_stress(x2);
+      f2 = run({x2});
     }
   }
-  best.position = f1 <= f2 ? x1 : x2;
-  best.max_stress_fymax = std::min(f1, f2);
-  if (stress[k_best] < best.max_stress_fymax) {
-    best.position = position_min + static_cast<double>(k_best) * step;
-    best.max_stress_fymax = stress[k_best];
+}
+
+struct LocalSearch {
+  PositionObjectiveRun* run;
+  double spacing_min;
+  std::size_t k;  // the constraint's pair (k, k + 1)
+};
+
+struct LocalObjective {
+  PositionObjectiveRun* run;
+  std::exception_ptr failure;  ///< what the balance threw (NLopt only stops): rethrown after it
+};
+
+double local_objective(unsigned n, const double* x, double*, void* data) {
+  auto* local = static_cast<LocalObjective*>(data);
+  try {
+    const double value = (*local->run)(std::vector<double>(x, x + n));
+    return std::isfinite(value) ? value : 1e10;  // COBYLA wants numbers: a failed arrangement is merely very bad
+  } catch (...) {
+    local->failure = std::current_exception();
+    throw nlopt::forced_stop();
   }
-  return best;
+}
+
+double spacing_constraint(unsigned, const double* x, double*, void* data) {
+  const auto* c = static_cast<const LocalSearch*>(data);
+  return c->spacing_min - (x[c->k + 1] - x[c->k]);
+}
+
+/// COBYLA from `start` (increasing, feasible) within the range and the spacings.
+void search_locally(PositionObjectiveRun& run, const PositionRules& rules, std::vector<double> start) {
+  const std::size_t n = start.size();
+  nlopt::opt opt(nlopt::LN_COBYLA, static_cast<unsigned>(n));
+  opt.set_lower_bounds(std::vector<double>(n, rules.position_min));
+  opt.set_upper_bounds(std::vector<double>(n, rules.position_max));
+  LocalObjective local{&run, nullptr};
+  opt.set_min_objective(&local_objective, &local);
+  std::vector<LocalSearch> constraints;
+  constraints.reserve(n);
+  for (std::size_t k = 0; k + 1 < n; ++k) constraints.push_back({&run, rules.spacing_min, k});
+  for (LocalSearch& c : constraints) opt.add_inequality_constraint(&spacing_constraint, &c, 1e-9);
+  opt.set_maxeval(rules.max_evaluations);
+  opt.set_xtol_abs(1e-3);
+  opt.set_initial_step(std::min(0.5, 0.1 * (rules.position_max - rules.position_min)));
+  double value = 0.0;
+  try {
+    opt.optimize(start, value);
+  } catch (const std::exception&) {
+    // Round-off or NLopt's own limits: the arrangements evaluated stand, the best kept.
+  }
+  if (local.failure) std::rethrow_exception(local.failure);
+}
+
+}  // namespace
+
+PositionSearch optimise_positions(const Span& span, const SpanTables& tables, const BalanceOptions& options,
+                                  const PositionRules& rules, const std::function<bool()>& stop) {
+  rules.validate();
+  const std::size_t n = span.dampers().size();
+  if (n == 0) throw InvalidParameter("damper", ": a position search needs at least one [[damper]]");
+  const double room = rules.position_max - rules.position_min;
+  if (static_cast<double>(n - 1) * rules.spacing_min > room) {
+    throw InvalidParameter("spacing_min", fmt::format(" = {}: {} dampers at least that far apart do not fit between "
+                                                      "position_min = {} and position_max = {} m",
+                                                      format_value(rules.spacing_min), n, format_value(rules.position_min),
+                                                      format_value(rules.position_max)));
+  }
+  if (rules.objective == PositionObjective::life && !span.fatigue().life) {
+    throw InvalidParameter("objective", " = \"life\": the span gives no climate ([fatigue] wind_weibull and "
+                                        "aeolian_fraction) to compute a life with");
+  }
+  PositionObjectiveRun run(span, tables, options, rules, stop);
+  if (n == 1) {
+    search_one(run, rules);
+    return run.result();
+  }
+  // The starts: the span's own arrangement (made feasible) and the usual ones; the
+  // local searches from the best two.
+  const int count = static_cast<int>(n);
+  const double f_max = tables.frequencies().back();
+  std::vector<std::pair<double, std::vector<double>>> starts;
+  std::vector<double> own;
+  for (const SpanDamper& d : span.dampers()) own.push_back(d.position);
+  std::sort(own.begin(), own.end());
+  PositionRules fit = rules;
+  for (std::size_t k = 0; k < n; ++k) {
+    own[k] = std::clamp(own[k], rules.position_min + static_cast<double>(k) * rules.spacing_min,
+                        rules.position_max - static_cast<double>(n - 1 - k) * rules.spacing_min);
+    if (k > 0) own[k] = std::max(own[k], own[k - 1] + rules.spacing_min);
+  }
+  starts.emplace_back(run(own), own);
+  for (const double fraction : {0.3, 0.5, 0.7, 0.9}) {
+    std::vector<double> x = usual_positions(span, f_max, count, fraction, fit);
+    starts.emplace_back(run(x), std::move(x));
+  }
+  std::stable_sort(starts.begin(), starts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t s = 0; s < 2 && s < starts.size(); ++s) {
+    if (!std::isfinite(starts[s].first)) break;
+    search_locally(run, rules, starts[s].second);
+  }
+  return run.result();
 }
 
 }  // namespace stockbridge::span

@@ -61,6 +61,13 @@ class NumericalError : public Error {
   using Error::Error;
 };
 
+/// A long computation was asked to stop (its caller's stop request: Ctrl-C) and
+/// stopped between two of its steps; nothing it had not finished is returned.
+class Interrupted : public Error {
+ public:
+  using Error::Error;
+};
+
 /// Formats a number the way every message shows it (shortest round-trip form).
 std::string format_value(double value);
 

@@ -24,6 +24,17 @@ struct CsvRows {
 };
 CsvRows read_csv_rows(const std::filesystem::path& path, const std::vector<std::string>& names, std::size_t min_rows);
 
+/// Every cell as text (trimmed; cells with ',' are not supported), with the header
+/// and each data row's line number: for files of labels and numbers (a line's spans).
+/// InputError for a missing or empty file, a header separated by ';' or tabs, or a
+/// row with more cells than the header.
+struct CsvCells {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;  ///< each as long as the header (missing cells empty)
+  std::vector<std::size_t> lines;
+};
+CsvCells read_csv_cells(const std::filesystem::path& path);
+
 /// The header's column names (to choose between alternative columns); InputError
 /// for a missing or empty file, or a header of one cell separated by ';' or tabs.
 std::vector<std::string> read_csv_header(const std::filesystem::path& path);

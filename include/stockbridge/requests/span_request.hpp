@@ -23,9 +23,12 @@ struct SpanRequest {
   bool no_dampers = false;          ///< balance the span without its dampers
   /// travelling | weak (span::parse_damper_model), instead of the span file's [balance] damper_model.
   std::optional<std::string> damper_model;
-  /// Search the dampers' position in [min, max] (m from the span end's clamp), every
-  /// damper moved together, then balance the span there (span::optimise_position).
+  /// Search every damper's position in [min, max] (m from the span end's clamp),
+  /// dampers at least spacing_min apart, minimising `objective` (max_stress or life),
+  /// then balance the span there (span::optimise_positions).
   std::optional<double> position_min, position_max;
+  double spacing_min = span::PositionRules{}.spacing_min;
+  std::string objective = "max_stress";
   int threads = 1;                  ///< for the dampers' impedance tables
 };
 
@@ -77,8 +80,8 @@ Table<span::BalancePoint> span_point_notes_table();
 /// points, converged, damper_model, dampers, endurance_limit_mpa, verdict (safe,
 /// unsafe or unknown), max_stress_fymax_mpa, max_stress_frequency_hz (over the
 /// converged points), max_damper_clamp_stress_mpa, undamped_max_stress_fymax_mpa,
-/// undamped_max_stress_frequency_hz, undamped_verdict, position_m,
-/// position_optimized, [life_years, damage_per_year, life_missing_points,
+/// undamped_max_stress_frequency_hz, undamped_verdict, position_m (the first
+/// damper's), positions_m (every damper's, in the file's order), position_optimized, [life_years, damage_per_year, life_missing_points,
 /// undamped_life_years, undamped_damage_per_year, undamped_life_missing_points when
 /// the span file gives the climate: a life null where a point is missing],
 /// impedance_nodes, failed_impedance_nodes, direct_solves, max_energy_identity_error,

@@ -18,13 +18,13 @@ namespace stockbridge::span {
 
 struct AnalysisOptions {
   BalanceOptions balance;  ///< a span file's [balance] table, the front end's changes on top
-  /// Search the dampers' position in [lo, hi] (m from the span end's clamp), every
-  /// damper moved together, then balance the span there. The tables are then at
-  /// least as fine as ImpedanceTableOptions::for_position_search (the search
-  /// compares positions on the tables alone).
-  std::optional<Interval> position_range;
+  /// Search every damper's position within these rules (position_search.hpp), then
+  /// balance the span there. The tables are then at least as fine as
+  /// ImpedanceTableOptions::for_position_search (the search compares arrangements on
+  /// the tables alone).
+  std::optional<PositionRules> positions;
 
-  /// Throws InvalidParameter naming the field ("table.velocities", "position_range").
+  /// Throws InvalidParameter naming the field ("table.velocities", "position_min", "spacing_min").
   void validate() const;
 };
 
@@ -55,7 +55,7 @@ using TableSource = std::function<std::shared_ptr<const SpanTables>(const Span& 
 /// gives the wind band's). `progress` counts the tables' nodes as they are solved.
 /// Non-convergence is in the points and the summary, never an exception;
 /// InvalidParameter for bad options (a position search without dampers names
-/// "position_range"). With measured dampers, the balance is repeated on the sheets of
+/// "damper"). With measured dampers, the balance is repeated on the sheets of
 /// every other curve (ImpedanceSheet::every_other; the model dampers as they are):
 /// sheet_error_estimate is the largest relative change of a point's fymax stress from
 /// the full sheets' (the coarser sheets' error bounds the full sheets' own, which is

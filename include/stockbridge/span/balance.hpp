@@ -75,6 +75,10 @@ class SpanTables {
   SpanTables(const Span& span, std::vector<double> frequencies, const ImpedanceTableOptions& options,
              const damper::SweepProgress& progress = {});
 
+  /// Tables made elsewhere (a line's, one per damper type, shared by its spans and
+  /// threads): one per damper, each at `frequencies`; std::invalid_argument
+  /// otherwise. nodes() counts none: nothing is solved here.
+  SpanTables(std::vector<double> frequencies, std::vector<ImpedanceTable> tables);
   /// `solved`'s tables with those of `span`'s measured dampers made from its sheets
   /// (the same span but for the sheets: the band of a sheet's interpolation error).
   SpanTables(const SpanTables& solved, const Span& span);

@@ -323,7 +323,11 @@ TEST(SpanBalance, ThePositionSearchFindsTheBestOfAFineScan) {
   BalanceOptions options = fast_options();
   options.polish = false;  // as the search balances
   const SpanTables tables(span, f, options.table);
-  const PositionSearch found = optimise_position(span, tables, options, 0.3, 3.0, 21);
+  PositionRules rules;
+  rules.position_min = 0.3;
+  rules.position_max = 3.0;
+  rules.scan_points = 21;
+  const PositionSearch found = optimise_positions(span, tables, options, rules);
   double best = std::numeric_limits<double>::infinity(), best_at = 0.0;
   for (int k = 0; k <= 270; ++k) {
     const double a = 0.3 + 0.01 * k;
@@ -331,7 +335,51 @@ TEST(SpanBalance, ThePositionSearchFindsTheBestOfAFineScan) {
     if (s < best) best = s, best_at = a;
   }
   EXPECT_LE(found.max_stress_fymax, best * (1.0 + 1e-6)) << "scan's best " << best << " Pa at " << best_at << " m";
-  EXPECT_NEAR(found.position, best_at, 0.02);
+  ASSERT_EQ(found.positions.size(), 1u);
+  EXPECT_NEAR(found.positions[0], best_at, 0.02);
+}
+
+// Two dampers per end, each its own position: the search (usual starts, then COBYLA)
+// is at least as good as a 0.1 m grid of both positions, and keeps the spacing.
+TEST(SpanBalance, TwoDampersPositionsSearchedTogetherBeatAGrid) {
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}, {sauter_damper(), 2.0, true, "sauter", nullptr}});
+  const std::vector<double> f{8.0, 14.0, 25.0, 40.0};
+  BalanceOptions options = fast_options();
+  options.polish = false;
+  const SpanTables tables(span, f, options.table);
+  PositionRules rules;
+  rules.position_min = 0.5;
+  rules.position_max = 3.5;
+  rules.spacing_min = 0.4;
+  const PositionSearch found = optimise_positions(span, tables, options, rules);
+  ASSERT_EQ(found.positions.size(), 2u);
+  EXPECT_GE(found.positions[1] - found.positions[0], rules.spacing_min - 1e-6);
+  EXPECT_GE(found.positions[0], rules.position_min - 1e-9);
+  EXPECT_LE(found.positions[1], rules.position_max + 1e-9);
+  double grid = std::numeric_limits<double>::infinity();
+  for (double a = 0.5; a <= 3.5 + 1e-9; a += 0.1) {
+    for (double b = a + 0.4; b <= 3.5 + 1e-9; b += 0.1) {
+      std::vector<SpanDamper> d = span.dampers();
+      d[0].position = a, d[1].position = b;
+      grid = std::min(grid, run_balance(span.with_dampers(d), tables, options).summary.max_stress_fymax);
+    }
+  }
+  EXPECT_LE(found.max_stress_fymax, grid * 1.01) << "found " << found.positions[0] << ", " << found.positions[1];
+  // Its objective is the stress it reports, over the endurance limit.
+  std::vector<SpanDamper> d = span.dampers();
+  d[0].position = found.positions[0], d[1].position = found.positions[1];
+  const SpanBalance at = run_balance(span.with_dampers(d), tables, options);
+  EXPECT_DOUBLE_EQ(found.objective, at.summary.max_stress_fymax / at.summary.endurance_limit);
+}
+
+TEST(SpanBalance, ThePositionSearchStopsWhenAsked) {
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}, {sauter_damper(), 2.0, true, "sauter", nullptr}});
+  const std::vector<double> f{12.0, 25.0};
+  BalanceOptions options = fast_options();
+  const SpanTables tables(span, f, options.table);
+  int asked = 0;
+  EXPECT_THROW(optimise_positions(span, tables, options, PositionRules{}, [&] { return ++asked > 7; }), Interrupted);
+  EXPECT_EQ(asked, 8);
 }
 
 TEST(SpanBalance, ASpanIsCheckedWhereItsFileSpellsIt) {

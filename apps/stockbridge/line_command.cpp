@@ -1,0 +1,345 @@
+// stockbridge line: the damper schedule of a line of spans (line/schedule.hpp,
+// docs/line.md): for every span the fewest dampers per end and their positions
+// that make it safe, on threads and MPI ranks (spans dealt as workers free up),
+// recorded span by span in a journal beside the schedule so that --resume goes on
+// where an interrupted run stopped.
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "input_files.hpp"
+#include "option_parsing.hpp"
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/atomic_file.hpp"
+#include "stockbridge/io/line_file.hpp"
+#include "stockbridge/requests/line_request.hpp"
+#include "stockbridge/requests/span_request.hpp"
+#include "task_runner.hpp"
+
+namespace stockbridge::cli {
+
+namespace {
+
+// Helper names here are unique among the program's files (unity batches).
+
+struct LineOptions {
+  std::string line_file;
+  std::string output;
+  std::string bill;
+  int threads = 1;
+  bool resume = false;
+  std::string details;
+  bool json = false;
+  bool quiet = false;
+};
+
+/// Ctrl-C: the deal stops, the spans under way give up, the journal stays whole.
+std::atomic<bool> line_interrupted{false};
+
+extern "C" void line_on_interrupt(int) { line_interrupted.store(true); }
+
+constexpr std::string_view kJournalHead = "stockbridge line journal";
+
+std::string line_bill_path(const LineOptions& options) {
+  if (!options.bill.empty()) return options.bill;
+  const std::filesystem::path out(options.output);
+  return (out.parent_path() / (out.stem().string() + "_bill.csv")).string();
+}
+
+/// A span's id as a file name: letters, digits, '.', '_' and '-' kept, the rest '_'.
+std::string line_file_stem(const std::string& id) {
+  std::string stem = id;
+  for (char& c : stem) {
+    const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
+    if (!keep) c = '_';
+  }
+  return stem;
+}
+
+std::string line_text_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// The journal's records of this line (the journal of other inputs refused); none
+/// where there is no journal. Lines cut short (an interruption mid-write) are left
+/// out: those spans are computed again.
+std::map<std::size_t, line::ScheduleRow> read_line_journal(const std::filesystem::path& path,
+                                                           const std::string& fingerprint, std::size_t spans,
+                                                           int& cut_short) {
+  std::map<std::size_t, line::ScheduleRow> rows;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return rows;
+  std::string head;
+  std::getline(in, head);
+  const std::string expected = fmt::format("{} {}", kJournalHead, fingerprint);
+  if (head != expected) {
+    throw InvalidParameter(fmt::format("--resume: {} was written for other inputs (its first line is '{}', these "
+                                       "inputs give '{}': the line file or a file it reads changed): run without "
+                                       "--resume to start again",
+                                       path.string(), printable(head), expected));
+  }
+  std::string record;
+  while (std::getline(in, record)) {
+    if (in.eof()) {  // no line break after it: cut short
+      ++cut_short;
+      break;
+    }
+    try {
+      line::ScheduleRow row = requests::parse_schedule_record(record);
+      if (row.index < spans) rows.insert_or_assign(row.index, std::move(row));
+    } catch (const InvalidParameter&) {
+      ++cut_short;
+    }
+  }
+  return rows;
+}
+
+/// The journal opened for appending records, each written whole and flushed to disk.
+class LineJournal {
+ public:
+  LineJournal(const std::filesystem::path& path, const std::string& fingerprint, bool append) : path_(path) {
+    file_ = std::fopen(path.string().c_str(), append ? "ab" : "wb");
+    if (!file_) throw OutputError(fmt::format("{}: cannot write the journal", path.string()));
+    if (!append || std::ftell(file_) == 0) write(fmt::format("{} {}\n", kJournalHead, fingerprint));
+  }
+  ~LineJournal() {
+    if (file_) std::fclose(file_);
+  }
+  LineJournal(const LineJournal&) = delete;
+  LineJournal& operator=(const LineJournal&) = delete;
+
+  void write(const std::string& text) {
+    if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fflush(file_) != 0) {
+      throw OutputError(fmt::format("{}: cannot write the journal", path_.string()));
+    }
+    ::fsync(fileno(file_));
+  }
+
+ private:
+  std::filesystem::path path_;
+  std::FILE* file_ = nullptr;
+};
+
+std::string line_positions(const line::ScheduleRow& row) {
+  std::string out;
+  for (const double x : row.positions) out += fmt::format("{}{:g}", out.empty() ? "" : "; ", x);
+  return out;
+}
+
+std::string line_arrangement(const line::ScheduleRow& row) {
+  if (row.per_end == 0) return "no dampers";
+  return fmt::format("{} per end of {} at {} m", row.per_end, row.damper_type, line_positions(row));
+}
+
+std::string line_duration(double seconds) {
+  if (seconds < 90) return fmt::format("{:.0f} s", seconds);
+  if (seconds < 5400) return fmt::format("{:.0f} min", seconds / 60);
+  return fmt::format("{:.1f} h", seconds / 3600);
+}
+
+void print_line_report(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows) {
+  int safe = 0, unsafe = 0, unknown = 0;
+  std::map<int, int> per_end;
+  const line::ScheduleRow* governing = nullptr;
+  for (const line::ScheduleRow& r : rows) {
+    safe += r.verdict == span::Verdict::safe;
+    unsafe += r.verdict == span::Verdict::unsafe;
+    unknown += r.verdict == span::Verdict::unknown;
+    ++per_end[r.per_end];
+    if (r.converged == r.points && (!governing || r.stress_ratio() > governing->stress_ratio())) governing = &r;
+  }
+  fmt::print("line {}: {} spans, {} safe, {} unsafe, {} unknown\n", file.name, rows.size(), safe, unsafe, unknown);
+  for (const auto& [n, spans] : per_end) fmt::print("  {} damper(s) per end: {} spans\n", n, spans);
+  for (const line::BillLine& b : line::bill_of_materials(file.line, rows)) {
+    fmt::print("bill: {} x {}{}\n", b.dampers, b.damper_type,
+               b.mass ? fmt::format(" ({:.4g} kg)", *b.mass) : std::string());
+  }
+  if (governing) {
+    fmt::print("governing span: {} ({}), {:.3g} MPa = {:.3g} of the endurance limit\n", governing->id,
+               line_arrangement(*governing), governing->max_stress / 1e6, governing->stress_ratio());
+  }
+  int shown = 0;
+  for (const line::ScheduleRow& r : rows) {
+    if (r.verdict == span::Verdict::safe && r.warnings.empty()) continue;
+    if (++shown > 10) {
+      fmt::print("  ... (the schedule's warnings column lists every span)\n");
+      break;
+    }
+    fmt::print("  {}: {}, {}{}\n", r.id, span::verdict_name(r.verdict), line_arrangement(r),
+               r.warnings.empty() ? "" : ": " + r.warnings.front());
+  }
+}
+
+/// --details: the span file and the balance CSV of a span's schedule.
+void write_line_details(const std::filesystem::path& directory, const io::LineFile& file,
+                        const line::ScheduleRow& row, const span::SpanAnalysis& analysis) {
+  const std::string stem = line_file_stem(row.id);
+  io::write_file_atomically(directory / (stem + ".toml"), io::span_file_text(file, row));
+  io::write_file_atomically(directory / (stem + ".csv"), requests::span_table(analysis.span).values(analysis.balance.points).csv());
+}
+
+int run_line_command(const LineOptions& options) {
+  Processes processes;
+  const bool root = processes.rank() == 0;
+  if (processes.mpirun_without_mpi()) {
+    fmt::print(stderr, "warning: started by mpirun, but this stockbridge was built without MPI: every process runs "
+                       "the whole line\n");
+  }
+  require_in_range("threads", options.threads, 1, 256);
+  const std::string journal_path = options.output + ".journal";
+  const std::string bill_path = line_bill_path(options);
+  const io::LineFile file = [&] {
+    require_outputs_apart({{"-o", options.output}, {"--bill", bill_path}, {"the journal", journal_path}},
+                          {{"the line file", options.line_file}});
+    io::LineFile read = io::load_line_file(options.line_file);
+    std::vector<CommandFile> inputs;
+    for (const auto& p : read.inputs) inputs.push_back({"a file the line file reads", p.string()});
+    require_outputs_apart({{"-o", options.output}, {"--bill", bill_path}, {"the journal", journal_path}}, inputs);
+    print_warnings(read.warnings);
+    return read;
+  }();
+  const std::size_t spans = file.line.spans().size();
+  if (!options.details.empty()) {
+    std::set<std::string> stems;
+    for (const line::LineSpan& s : file.line.spans()) {
+      if (!stems.insert(line_file_stem(s.id)).second) {
+        throw InvalidParameter(fmt::format("--details: two spans' ids give the file name {} (ids keep letters, digits, "
+                                           "'.', '_' and '-'; the rest becomes '_')",
+                                           line_file_stem(s.id)));
+      }
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(options.details, ec);
+    if (!std::filesystem::is_directory(options.details)) {
+      throw OutputError(fmt::format("--details {}: cannot make the folder", options.details));
+    }
+  }
+  const std::string fingerprint = requests::line_fingerprint(file, line_text_of(options.line_file));
+  std::map<std::size_t, line::ScheduleRow> rows;
+  int cut_short = 0;
+  if (root && options.resume) rows = read_line_journal(journal_path, fingerprint, spans, cut_short);
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < spans; ++i) {
+    if (!rows.contains(i)) todo.push_back(i);
+  }
+  std::optional<LineJournal> journal;
+  if (root) journal.emplace(journal_path, fingerprint, options.resume);
+  if (root && options.resume && !options.quiet) {
+    fmt::print(stderr, "line: resuming: {} of {} spans in {}{}, {} to compute\n", rows.size(), spans, journal_path,
+               cut_short > 0 ? fmt::format(" ({} record(s) cut short, computed again)", cut_short) : "", todo.size());
+  }
+
+  line_interrupted.store(false);
+  const auto previous = std::signal(SIGINT, line_on_interrupt);
+  line::TableCache cache;
+  const auto stop = [] { return line_interrupted.load(); };
+  const auto start = std::chrono::steady_clock::now();
+  const auto run = [&](std::size_t i) -> std::string {
+    try {
+      const line::SpanSchedule s = line::schedule_span(file.line, i, cache, stop);
+      if (!options.details.empty()) write_line_details(options.details, file, s.row, s.analysis);
+      return requests::schedule_record(s.row);
+    } catch (const Interrupted&) {
+      return {};
+    } catch (const InvalidParameter& e) {
+      return requests::schedule_record(requests::failed_row(file, i, e.what()));
+    } catch (const NumericalError& e) {
+      return requests::schedule_record(requests::failed_row(file, i, e.what()));
+    }
+  };
+  std::size_t done_now = 0;
+  const auto done = [&](std::size_t i, const std::string& record) {
+    journal->write(record + "\n");
+    line::ScheduleRow row = requests::parse_schedule_record(record);
+    ++done_now;
+    if (!options.quiet) {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const std::size_t left = todo.size() - done_now;
+      fmt::print(stderr, "line: {}/{} {}: {}, {}{}\n", rows.size() + 1, spans, row.id, line_arrangement(row),
+                 span::verdict_name(row.verdict),
+                 left == 0 ? std::string() : fmt::format("; {} left, about {}", left,
+                                                         line_duration(seconds / static_cast<double>(done_now) *
+                                                                       static_cast<double>(left))));
+    }
+    rows.insert_or_assign(i, std::move(row));
+  };
+  processes.deal(options.threads, todo, run, done, line_interrupted);
+  std::signal(SIGINT, previous);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!root) return kSuccess;
+  if (line_interrupted.load() || rows.size() < spans) {
+    fmt::print(stderr, "line: interrupted after {} of {} spans; {} keeps them: run again with --resume to compute the "
+                       "rest (nothing else written)\n",
+               rows.size(), spans, journal_path);
+    return 130;
+  }
+  std::vector<line::ScheduleRow> schedule;
+  for (auto& [i, row] : rows) schedule.push_back(std::move(row));
+  if (!options.details.empty()) {  // spans from the journal whose details are missing: balanced again
+    for (const line::ScheduleRow& row : schedule) {
+      const std::filesystem::path csv = std::filesystem::path(options.details) / (line_file_stem(row.id) + ".csv");
+      if (std::filesystem::exists(csv) || row.endurance_limit != row.endurance_limit) continue;
+      write_line_details(options.details, file, row, line::analyse_arrangement(file.line, row, cache));
+    }
+  }
+  io::write_file_atomically(options.output, requests::schedule_table().values(schedule).csv());
+  io::write_file_atomically(bill_path, requests::bill_table().values(line::bill_of_materials(file.line, schedule)).csv());
+  if (options.json) {
+    fmt::print("{}\n", requests::line_summary(file, schedule)
+                           .add("ranks", processes.size())
+                           .add("threads", options.threads)
+                           .add("seconds", seconds)
+                           .str());
+  } else {
+    print_line_report(file, schedule);
+  }
+  int not_converged = 0;
+  for (const line::ScheduleRow& r : schedule) not_converged += r.converged < r.points;
+  if (!options.quiet) {
+    fmt::print(stderr, "line: {} spans ({} computed now) in {:.1f} s on {} rank(s) x {} thread(s)\n", spans,
+               done_now, seconds, processes.size(), options.threads);
+  }
+  if (not_converged == 0) return kSuccess;
+  fmt::print(stderr, "line: {} span(s) not converged throughout (converged = 0 in {}; their stresses left empty, "
+                     "their verdicts unknown unless a converged point exceeds the limit)\n",
+             not_converged, options.output);
+  return kNotConverged;
+}
+
+}  // namespace
+
+void add_line_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<LineOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "line", "The damper schedule of a line: for every span the fewest dampers per end and their positions that "
+              "make it safe (threads, MPI ranks, resumable)");
+  sub->add_option("line", options->line_file, "Line description (TOML)")->required();
+  sub->add_option("-o,--output", options->output, "Output schedule CSV (a journal <output>.journal beside it)")->required();
+  sub->add_option("--bill", options->bill, "Output bill of materials CSV (default: <output stem>_bill.csv)");
+  sub->add_option("--threads", options->threads, "Spans computed at once (per MPI rank)")->capture_default_str();
+  sub->add_flag("--resume", options->resume,
+                "Go on from the journal of an interrupted run: compute only the spans it lacks");
+  sub->add_option("--details", options->details,
+                  "Folder for each span's span file and balance CSV (<id>.toml, <id>.csv)");
+  sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
+  sub->add_flag("--quiet", options->quiet, "No progress on stderr");
+  sub->callback([options, &exit_code] { exit_code = run_line_command(*options); });
+}
+
+}  // namespace stockbridge::cli

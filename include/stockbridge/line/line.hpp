@@ -1,0 +1,75 @@
+#pragma once
+// A line: spans of different lengths, tensions, terrains and conductors sharing a
+// climate and a choice of damper types (MODEL.md section 12; docs/line.md), and its
+// damper schedule: for every span the fewest dampers per end, and where, that make
+// it safe. A constant description, valid by construction; schedule.hpp computes.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stockbridge/span/balance.hpp"
+#include "stockbridge/span/position_search.hpp"
+#include "stockbridge/span/span.hpp"
+
+namespace stockbridge::line {
+
+/// A damper on offer: a model or a measured sheet (span::SpanDamper, its position
+/// and ends set by the schedule), and its mass for the bill of materials.
+struct DamperType {
+  std::string name;
+  span::SpanDamper damper;
+  std::optional<double> mass;  ///< kg per damper: the model's own, or the line file's for a sheet
+  std::string file;            ///< the damper file or sheet it was read from (absolute); empty if made in code
+};
+
+/// How one span was given, beside the span itself: what a schedule row restates.
+struct LineSpan {
+  std::string id;
+  span::Span span;               ///< without dampers
+  span::BalanceOptions balance;  ///< the line's [balance]
+  std::string tension_form;      ///< "tension", "tension_fraction" or "catenary_parameter"
+  double tension_given = 0.0;    ///< in that form (N, a fraction, m)
+  std::string conductor;         ///< the span's own conductor (a catalogue type or a file); empty: the line's
+  std::string source;            ///< where it was given ("line.toml:34" or "spans.csv:12"), for messages
+};
+
+/// The schedule's rules (the line file's [dampers] table, docs/line.md).
+struct ScheduleRules {
+  int min_per_end = 0;  ///< 0: a span safe without dampers gets none
+  int max_per_end = 3;
+  span::PositionRules positions;  ///< position_min, position_max, spacing_min, objective
+  /// Years: a span is safe when its life reaches this (and every point converged);
+  /// none: when its largest fymax stress is within the endurance limit.
+  std::optional<double> life_target;
+  double position_step = 0.01;  ///< m: positions are rounded to this (what is installed)
+  int points = 100;             ///< frequencies of each arrangement's polished balance over the band
+  int search_points = 40;       ///< frequencies of the position search's balances (tables alone)
+
+  /// Throws InvalidParameter naming the field as the line file spells it
+  /// ("dampers.max_per_end", "dampers.life_target", "dampers.position_step").
+  void validate() const;
+};
+
+class Line {
+ public:
+  /// Throws InvalidParameter naming the field: "span" (none), "span[3].id" (empty or
+  /// repeated), "dampers.types" (none), a rule; "dampers.objective" for the life
+  /// without a climate on some span.
+  Line(std::vector<LineSpan> spans, std::vector<DamperType> types, ScheduleRules rules);
+
+  const std::vector<LineSpan>& spans() const { return spans_; }
+  const std::vector<DamperType>& types() const { return types_; }
+  const ScheduleRules& rules() const { return rules_; }
+
+ private:
+  std::vector<LineSpan> spans_;
+  std::vector<DamperType> types_;
+  ScheduleRules rules_;
+};
+
+/// `span` with `per_end` dampers of `type` at `positions` (m from the clamp,
+/// increasing), at both ends.
+span::Span with_arrangement(const span::Span& span, const DamperType& type, const std::vector<double>& positions);
+
+}  // namespace stockbridge::line

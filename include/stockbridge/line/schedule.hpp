@@ -1,0 +1,104 @@
+#pragma once
+// The damper schedule of a line (docs/line.md): for each span the undamped figures,
+// then the recommended arrangement: the fewest dampers per end (min_per_end to
+// max_per_end) of any damper type, at positions searched together
+// (span::optimise_positions on the tables alone, then rounded to position_step),
+// whose polished balance makes the span safe; among the types that need that many,
+// the best by the objective. A span no arrangement makes safe gets the best of
+// max_per_end, unsafe, with a warning. One span is one task: the CLI deals them to
+// threads and MPI ranks; the impedance tables come from a TableCache shared by all.
+
+#include <functional>
+#include <future>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "stockbridge/line/line.hpp"
+#include "stockbridge/span/analysis.hpp"
+
+namespace stockbridge::line {
+
+/// The damper types' impedance tables by type and frequencies: a table depends on
+/// the damper and the frequencies alone (not the span), so spans of one conductor
+/// and wind share it. Each made once, whichever thread asks first (the others wait
+/// for it). Safe to use from several threads.
+class TableCache {
+ public:
+  std::shared_ptr<const span::ImpedanceTable> get(const std::vector<DamperType>& types, std::size_t type,
+                                                   const std::vector<double>& frequencies,
+                                                   const span::ImpedanceTableOptions& options);
+  /// Tables made so far, and the (frequency, velocity) nodes solved for them.
+  int tables() const;
+  long long nodes() const;
+
+ private:
+  using Key = std::tuple<std::size_t, std::vector<double>, int, double, double, double>;
+  mutable std::mutex mutex_;
+  std::map<Key, std::shared_future<std::shared_ptr<const span::ImpedanceTable>>> tables_;
+  long long nodes_ = 0;
+};
+
+/// One span's line of the schedule. Stresses in Pa; NaN where nothing converged.
+struct ScheduleRow {
+  std::size_t index = 0;  ///< the span's place in the line
+  std::string id;
+  double length = 0.0;              ///< m
+  double tension = 0.0;             ///< N
+  double tension_fraction = 0.0;    ///< of the RTS
+  double catenary_parameter = 0.0;  ///< H/w, m
+  double span_parameter = 0.0;      ///< L D / m, m^3/kg
+  std::string conductor;            ///< its name
+  int terrain = 0;                  ///< TB 273's category, 0: not given
+  int terrain_within = -1;          ///< H/w within its limit: 1, 0; -1: no terrain given
+  double endurance_limit = 0.0;     ///< Pa
+
+  double undamped_max_stress = 0.0;  ///< over the undamped balance's points
+  double undamped_life_years = 0.0;  ///< NaN: no climate or a point missing; inf: no damage
+  span::Verdict undamped_verdict = span::Verdict::unknown;
+
+  std::string damper_type;         ///< empty with no dampers
+  int per_end = 0;
+  std::vector<double> positions;   ///< m from the clamp, increasing; both ends alike
+  double max_stress = 0.0;         ///< the largest fymax stress over the converged points
+  double max_stress_frequency = 0.0;  ///< Hz
+  double life_years = 0.0;         ///< as undamped_life_years
+  span::Verdict verdict = span::Verdict::unknown;
+  int converged = 0, points = 0;   ///< of the recommended arrangement's balance
+  int balances = 0;                ///< the search's balances (its cost)
+  std::vector<std::string> warnings;
+
+  /// max_stress / endurance_limit.
+  double stress_ratio() const { return max_stress / endurance_limit; }
+};
+
+/// A span's schedule row, and the analysis of its recommended arrangement (the span
+/// without dampers where it needs none).
+struct SpanSchedule {
+  ScheduleRow row;
+  span::SpanAnalysis analysis;
+};
+
+/// Schedules span `index` of `line`. `stop` (when given) is asked between balances:
+/// true throws Interrupted. Non-convergence is in the row (verdict unknown,
+/// converged < points, a warning), never an exception.
+SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cache, const std::function<bool()>& stop = {});
+
+/// The analysis of span `index` with the row's arrangement (what --details writes
+/// and `stockbridge span` reproduces): the same balance schedule_span made.
+span::SpanAnalysis analyse_arrangement(const Line& line, const ScheduleRow& row, TableCache& cache);
+
+/// The bill of materials: dampers of each type over the line (two ends a span).
+struct BillLine {
+  std::string damper_type;
+  int dampers = 0;
+  int spans = 0;
+  std::optional<double> mass;  ///< kg, all of them, where the type's mass is known
+};
+std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<ScheduleRow>& rows);
+
+}  // namespace stockbridge::line

@@ -1,0 +1,429 @@
+#include "stockbridge/io/line_file.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <functional>
+#include <cmath>
+#include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/core/typical_ranges.hpp"
+#include "stockbridge/io/conductor_file.hpp"
+#include "stockbridge/io/csv_reader.hpp"
+#include "stockbridge/io/damper_file.hpp"
+#include "span_reading.hpp"
+#include "toml_reader.hpp"
+
+namespace stockbridge::io {
+
+namespace line_reading {
+
+using span_reading::SpanReading;
+
+/// One span as given (a [[span]] table or a CSV row), before the model validates it.
+struct GivenSpan {
+  std::string id;
+  std::optional<double> length;
+  std::string tension_form;
+  double tension_value = 0.0;
+  std::optional<int> terrain;
+  std::string conductor;  ///< a catalogue type or a conductor file; empty: the line's
+  std::optional<double> speed_min, speed_max;
+  std::string where;      ///< "file:line: " for messages
+  /// The location of one of its keys or columns ("file:line: "), and its name there.
+  std::function<std::string(std::string_view key)> located;
+};
+
+constexpr std::array<std::string_view, 3> kTensionForms{"tension", "tension_fraction", "catenary_parameter"};
+
+/// The span's conductor: the line's, or its own (a catalogue type, or a conductor
+/// file relative to the line file's folder).
+span::Conductor span_conductor(const GivenSpan& given, const span::Conductor& line_conductor,
+                               const std::filesystem::path& base, std::vector<std::filesystem::path>& inputs) {
+  if (given.conductor.empty()) return line_conductor;
+  const std::string& c = given.conductor;
+  if (c.size() > 5 && c.ends_with(".toml")) {
+    const std::filesystem::path path = std::filesystem::path(c).is_absolute() ? std::filesystem::path(c) : base / c;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+      throw InputError(fmt::format("{}conductor = \"{}\": expected an existing conductor file (looked for {}; relative "
+                                   "paths start at the line file's folder) or a catalogue type",
+                                   given.located("conductor"), printable(c), printable(path.string(), 300)));
+    }
+    inputs.push_back(path);
+    return span::conductor_of(read_conductor_file(path));
+  }
+  try {
+    return span::conductor_of(catalogue_conductor(c));
+  } catch (const InvalidParameter& e) {
+    throw InputError(fmt::format("{}conductor{}, or a conductor file (*.toml)", given.located("conductor"), e.detail()));
+  }
+}
+
+/// The span built from what was given and the line's shared tables; the model's
+/// InvalidParameter at the key (or column) it names, or at the shared table's line.
+line::LineSpan build_given(const GivenSpan& given, const SpanReading& shared, const toml::table& document,
+                           const TomlSource& source, const std::filesystem::path& base,
+                           std::vector<std::filesystem::path>& inputs) {
+  span::Conductor conductor = span_conductor(given, shared.conductor, base, inputs);
+  span::WindModel wind = shared.wind;
+  if (given.speed_min) wind.speed_min = *given.speed_min;
+  if (given.speed_max) wind.speed_max = *given.speed_max;
+  try {
+    double tension = given.tension_value;
+    if (given.tension_form == "tension_fraction") tension = span::tension_from_fraction(conductor, tension, "span.tension_fraction");
+    if (given.tension_form == "catenary_parameter") {
+      tension = span::tension_from_catenary_parameter(conductor, tension, "span.catenary_parameter");
+    }
+    if (given.tension_form == "tension") span::check_tension(conductor, tension, "span.tension");
+    span::Span s(std::move(conductor), *given.length, tension, std::move(wind), shared.self_damping, {}, shared.fatigue,
+                 given.terrain);
+    return line::LineSpan{given.id, std::move(s), shared.balance, given.tension_form, given.tension_value,
+                          given.conductor, given.where};
+  } catch (const InvalidParameter& e) {
+    const std::string& field = e.field();
+    if (field.starts_with("span.")) {
+      throw InputError(fmt::format("{}span \"{}\": {}{}", given.located(field.substr(5)), printable(given.id),
+                                   field.substr(5), e.detail()));
+    }
+    if (field.starts_with("wind.speed_m") && (given.speed_min || given.speed_max)) {
+      throw InputError(fmt::format("{}span \"{}\": {}", given.where, printable(given.id), e.what()));
+    }
+    if (field.starts_with("conductor.") && !given.conductor.empty()) {
+      throw InputError(fmt::format("{}span \"{}\": {}", given.located("conductor"), printable(given.id), e.what()));
+    }
+    throw InputError(field_location(document, source, field) + e.what());
+  }
+}
+
+void check_given(const GivenSpan& given, std::vector<std::string>& warnings) {
+  std::vector<UnusualValue> unusual;
+  check_typical(unusual, "length", *given.length, typical::span_length);
+  const TypicalRange& range = given.tension_form == "tension"            ? typical::span_tension
+                              : given.tension_form == "tension_fraction" ? typical::tension_fraction
+                                                                         : typical::catenary_parameter;
+  check_typical(unusual, given.tension_form, given.tension_value, range);
+  for (const UnusualValue& u : unusual) {
+    warnings.push_back(fmt::format("{}span \"{}\": {}", given.located(u.field), printable(given.id), u.message()));
+  }
+}
+
+/// A [[span]] table.
+GivenSpan given_from_table(const TomlTable& t) {
+  t.accept_only({"id", "length", "tension", "tension_fraction", "catenary_parameter", "terrain", "conductor", "wind"});
+  GivenSpan g;
+  g.id = t.required_string("id", "a string naming the span (e.g. \"T12-T13\")");
+  g.length = t.number("length");
+  std::vector<std::string_view> forms;
+  for (const std::string_view form : kTensionForms) {
+    if (const auto v = t.optional_number(form)) {
+      if (forms.empty()) g.tension_form = std::string(form), g.tension_value = *v;
+      forms.push_back(form);
+    }
+  }
+  if (forms.empty()) {
+    throw InputError(fmt::format("{}missing key 'tension' in [{}]: expected one of tension (N), tension_fraction (of "
+                                 "the rated tensile strength) and catenary_parameter (H/w, m)",
+                                 t.location("tension"), t.key_path()));
+  }
+  if (forms.size() > 1) t.fail(forms[1], fmt::format("given beside {}: expected one form of the tension", forms[0]));
+  if (const auto n = t.optional_integer("terrain", 1, 4)) g.terrain = static_cast<int>(*n);
+  g.conductor = t.optional_string("conductor").value_or("");
+  if (const std::optional<TomlTable> w = t.optional_table("wind")) {
+    w->accept_only({"speed_min", "speed_max"});
+    g.speed_min = w->optional_number("speed_min");
+    g.speed_max = w->optional_number("speed_max");
+  }
+  g.where = t.location("id");
+  g.located = [t](std::string_view key) {
+    return key == "speed_min" || key == "speed_max" ? t.location("wind") : t.location(key);
+  };
+  return g;
+}
+
+std::optional<double> csv_number(const std::string& cell, const std::string& where, std::string_view column) {
+  if (cell.empty()) return std::nullopt;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
+  if (error != std::errc() || end != cell.data() + cell.size() || !std::isfinite(value)) {
+    throw InputError(fmt::format("{}column '{}' = '{}': expected a number ('.' as decimal separator)", where, column,
+                                 printable(cell)));
+  }
+  return value;
+}
+
+constexpr std::array<std::string_view, 9> kCsvColumns{"id", "length_m", "tension_n", "tension_fraction",
+                                                      "catenary_parameter_m", "terrain", "conductor",
+                                                      "wind_speed_min_m_s", "wind_speed_max_m_s"};
+
+/// The spans of a spans CSV.
+std::vector<GivenSpan> given_from_csv(const std::filesystem::path& path) {
+  const CsvCells csv = read_csv_cells(path);
+  const std::string file = path.string();
+  std::vector<std::ptrdiff_t> column(kCsvColumns.size(), -1);
+  for (std::size_t c = 0; c < csv.header.size(); ++c) {
+    const auto known = std::find(kCsvColumns.begin(), kCsvColumns.end(), csv.header[c]);
+    if (known == kCsvColumns.end()) {
+      throw InputError(fmt::format("{}: column '{}' is not a spans column: expected {}", file, printable(csv.header[c]),
+                                   fmt::join(kCsvColumns, ", ")));
+    }
+    auto& slot = column[static_cast<std::size_t>(known - kCsvColumns.begin())];
+    if (slot >= 0) throw InputError(fmt::format("{}: column '{}' appears twice", file, csv.header[c]));
+    slot = static_cast<std::ptrdiff_t>(c);
+  }
+  for (const std::size_t required : {std::size_t{0}, std::size_t{1}}) {
+    if (column[required] < 0) {
+      throw InputError(fmt::format("{}: missing column '{}': expected id, length_m and one of tension_n, "
+                                   "tension_fraction and catenary_parameter_m",
+                                   file, kCsvColumns[required]));
+    }
+  }
+  if (csv.rows.empty()) throw InputError(fmt::format("{}: no spans: expected a row per span below the header", file));
+  std::vector<GivenSpan> spans;
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    const std::vector<std::string>& row = csv.rows[r];
+    const std::string where = fmt::format("{}:{}: ", file, csv.lines[r]);
+    const auto cell = [&](std::size_t k) -> std::string { return column[k] < 0 ? "" : row[static_cast<std::size_t>(column[k])]; };
+    GivenSpan g;
+    g.where = where;
+    g.located = [where](std::string_view) { return where; };
+    g.id = cell(0);
+    if (g.id.empty()) throw InputError(where + "column 'id' is empty: expected the span's name (e.g. T12-T13)");
+    g.length = csv_number(cell(1), where, "length_m");
+    if (!g.length) throw InputError(where + "column 'length_m' is empty: expected the span's length (m)");
+    const std::array<std::pair<std::size_t, std::string_view>, 3> forms{
+        {{2, "tension"}, {3, "tension_fraction"}, {4, "catenary_parameter"}}};
+    int given = 0;
+    for (const auto& [k, form] : forms) {
+      if (const auto v = csv_number(cell(k), where, kCsvColumns[k])) {
+        if (++given > 1) {
+          throw InputError(fmt::format("{}span \"{}\": {} given beside {}: expected one form of the tension in a row",
+                                       where, printable(g.id), kCsvColumns[k], g.tension_form));
+        }
+        g.tension_form = std::string(form);
+        g.tension_value = *v;
+      }
+    }
+    if (given == 0) {
+      throw InputError(fmt::format("{}span \"{}\": no tension: expected a value in one of tension_n, tension_fraction "
+                                   "and catenary_parameter_m",
+                                   where, printable(g.id)));
+    }
+    if (const auto t = csv_number(cell(5), where, "terrain")) {
+      if (*t != std::floor(*t) || *t < 1 || *t > 4) {
+        throw InputError(fmt::format("{}column 'terrain' = {}: expected a TB 273 terrain category, 1 to 4", where, cell(5)));
+      }
+      g.terrain = static_cast<int>(*t);
+    }
+    g.conductor = cell(6);
+    g.speed_min = csv_number(cell(7), where, "wind_speed_min_m_s");
+    g.speed_max = csv_number(cell(8), where, "wind_speed_max_m_s");
+    spans.push_back(std::move(g));
+  }
+  return spans;
+}
+
+/// A damper type of [dampers] types: a damper file or a measured sheet, its mass.
+line::DamperType read_damper_type(const TomlTable& t, const std::filesystem::path& base, SpanReading& reading) {
+  t.accept_only({"name", "file", "impedance", "mass"});
+  const std::optional<std::string> model = t.optional_string("file");
+  const std::optional<std::string> measured = t.optional_string("impedance");
+  if (model.has_value() == measured.has_value()) {
+    if (model) t.fail("impedance", "given beside file: expected a damper file or a measured sheet, one of the two");
+    throw InputError(fmt::format("{}missing key 'file' in {}: expected a damper file, or impedance = a measured "
+                                 "impedance CSV file (relative to the line file)",
+                                 t.location("file"), t.key_path()));
+  }
+  line::DamperType type;
+  type.mass = t.optional_number("mass");
+  if (measured) {
+    const std::filesystem::path path =
+        span_reading::span_input_file(t, "impedance", *measured, base, "measured impedance CSV file");
+    type.file = std::filesystem::absolute(path).lexically_normal().string();
+    type.damper.sheet = span_reading::read_sheet(t, *measured, base, reading);
+    type.name = t.optional_string("name").value_or(type.damper.sheet->name());
+  } else {
+    const std::filesystem::path path = span_reading::span_input_file(t, "file", *model, base, "damper file");
+    type.file = std::filesystem::absolute(path).lexically_normal().string();
+    DamperFile loaded = load_damper_file(path);
+    reading.inputs.push_back(path);
+    reading.inputs.insert(reading.inputs.end(), loaded.cable_files.begin(), loaded.cable_files.end());
+    span_reading::span_add_warnings(reading, std::move(loaded.warnings));
+    if (!type.mass) {
+      double mass = loaded.damper.clamp_mass();
+      for (const damper::Arm& arm : loaded.damper.arms()) mass += arm.description().mass;
+      type.mass = mass;
+    }
+    type.damper.damper = std::move(loaded.damper);
+    type.name = t.optional_string("name").value_or(path.stem().string());
+  }
+  type.damper.name = type.name;
+  return type;
+}
+
+line::ScheduleRules read_rules(const TomlTable& d, const std::optional<TomlTable>& l) {
+  line::ScheduleRules r;
+  if (const auto n = d.optional_integer("min_per_end", 0, 10)) r.min_per_end = static_cast<int>(*n);
+  if (const auto n = d.optional_integer("max_per_end", 1, 10)) r.max_per_end = static_cast<int>(*n);
+  r.positions.position_min = d.optional_number("position_min").value_or(r.positions.position_min);
+  r.positions.position_max = d.optional_number("position_max").value_or(r.positions.position_max);
+  r.positions.spacing_min = d.optional_number("spacing_min").value_or(r.positions.spacing_min);
+  if (const auto objective = d.optional_string("objective")) {
+    try {
+      r.positions.objective = span::parse_position_objective(*objective);
+    } catch (const InvalidParameter& e) {
+      throw InputError(d.location("objective") + e.within("dampers").what());
+    }
+  }
+  r.life_target = d.optional_number("life_target");
+  r.position_step = d.optional_number("position_step").value_or(r.position_step);
+  if (l) {
+    if (const auto n = l->optional_integer("points", 2, 100000)) r.points = static_cast<int>(*n);
+    if (const auto n = l->optional_integer("search_points", 2, 100000)) r.search_points = static_cast<int>(*n);
+  }
+  return r;
+}
+
+LineFile build_line(toml::table document, const TomlSource& source, const std::filesystem::path& base) {
+  const TomlTable top(document, source, "");
+  top.accept_only({"conductor", "wind", "self_damping", "fatigue", "balance", "line", "dampers", "span", "spans"});
+  SpanReading shared;
+  shared.conductor = span_reading::read_conductor(top.table("conductor"), base, shared);
+  span_reading::read_wind(top.table("wind"), base, shared);
+  shared.self_damping = span_reading::read_self_damping(top.table("self_damping"));
+  shared.fatigue = span_reading::read_fatigue(top.table("fatigue"));
+  shared.balance = span_reading::read_balance(top.optional_table("balance"));
+  build_from_file(document, source, [&] {
+    within_field("balance", [&] { shared.balance.validate(); });
+    within_field("conductor", [&] { shared.conductor.validate(); });
+  });
+  const std::optional<TomlTable> line_table = top.optional_table("line");
+  std::string name = source.lines ? std::filesystem::path(source.name).stem().string() : std::string("line");
+  if (line_table) {
+    line_table->accept_only({"name", "points", "search_points"});
+    name = line_table->optional_string("name").value_or(name);
+  }
+  const TomlTable dampers = top.table("dampers");
+  dampers.accept_only({"types", "min_per_end", "max_per_end", "position_min", "position_max", "spacing_min",
+                       "objective", "life_target", "position_step"});
+  std::vector<line::DamperType> types;
+  for (const TomlTable& t : dampers.table_array("types", true)) types.push_back(read_damper_type(t, base, shared));
+  const line::ScheduleRules rules = read_rules(dampers, line_table);
+
+  std::vector<GivenSpan> given;
+  const std::optional<std::string> spans_csv = top.optional_string("spans");
+  const std::vector<TomlTable> span_tables = top.table_array("span", false);
+  if (spans_csv && !span_tables.empty()) {
+    top.fail("spans", "given beside [[span]] tables: expected the spans as [[span]] tables or in a CSV file, one of the two");
+  }
+  if (spans_csv) {
+    const std::filesystem::path path = span_reading::span_input_file(top, "spans", *spans_csv, base, "spans CSV file");
+    shared.inputs.push_back(path);
+    given = given_from_csv(path);
+  } else {
+    for (const TomlTable& t : span_tables) given.push_back(given_from_table(t));
+  }
+  std::vector<std::string> warnings;
+  span_reading::add_span_warnings(shared, document, source, warnings, false);
+  std::vector<line::LineSpan> spans;
+  spans.reserve(given.size());
+  for (const GivenSpan& g : given) {
+    check_given(g, warnings);
+    spans.push_back(build_given(g, shared, document, source, base, shared.inputs));
+  }
+  std::optional<line::Line> built;
+  try {
+    built.emplace(std::move(spans), std::move(types), rules);
+  } catch (const InvalidParameter& e) {
+    const std::string& field = e.field();
+    if (field.starts_with("span[")) {  // an id: at the span's line (its table's, or its CSV row's)
+      const std::size_t i = std::stoul(field.substr(5));
+      throw InputError(fmt::format("{}{}", given.at(i).where, e.what()));
+    }
+    throw InputError(field_location(document, source, field) + e.what());
+  }
+  warnings.insert(warnings.begin(), shared.warnings.begin(), shared.warnings.end());
+  std::sort(shared.inputs.begin(), shared.inputs.end());
+  shared.inputs.erase(std::unique(shared.inputs.begin(), shared.inputs.end()), shared.inputs.end());
+  return LineFile{std::move(*built), std::move(name), std::move(shared.inputs), std::move(warnings), std::move(document),
+                  base};
+}
+
+}  // namespace line_reading
+
+LineFile load_line_file(const std::filesystem::path& path) {
+  return line_reading::build_line(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path());
+}
+
+LineFile load_line_text(std::string_view text, std::string_view source, const std::filesystem::path& base_directory) {
+  return line_reading::build_line(parse_toml_text(text, source), TomlSource{std::string(source), false}, base_directory);
+}
+
+namespace {
+
+/// `node`'s path values made absolute (the span file lies elsewhere).
+void absolute_path_value(toml::table& table, std::string_view key, const std::filesystem::path& base) {
+  if (const auto* value = table.get_as<std::string>(key)) {
+    const std::filesystem::path p(value->get());
+    if (!p.is_absolute()) table.insert_or_assign(key, std::filesystem::absolute(base / p).lexically_normal().string());
+  }
+}
+
+}  // namespace
+
+std::string span_file_text(const LineFile& file, const line::ScheduleRow& row) {
+  const line::LineSpan& s = file.line.spans().at(row.index);
+  toml::table doc;
+  for (const char* key : {"conductor", "wind", "self_damping", "fatigue", "balance"}) {
+    if (const toml::table* t = file.document.get_as<toml::table>(key)) doc.insert(key, *t);
+  }
+  const std::filesystem::path& base = file.base_directory;
+  if (!s.conductor.empty()) {
+    toml::table c;
+    if (s.conductor.ends_with(".toml")) {
+      c.insert("file", s.conductor);
+      absolute_path_value(c, "file", base);
+    } else {
+      c.insert("type", s.conductor);
+    }
+    doc.insert_or_assign("conductor", std::move(c));
+  }
+  absolute_path_value(*doc.get_as<toml::table>("conductor"), "file", base);
+  toml::table& wind = *doc.get_as<toml::table>("wind");
+  absolute_path_value(wind, "table", base);
+  wind.insert_or_assign("speed_min", s.span.wind().speed_min);  // the span's own where it has one
+  wind.insert_or_assign("speed_max", s.span.wind().speed_max);
+  toml::table span_table;
+  span_table.insert("length", s.span.length());
+  span_table.insert(s.tension_form, s.tension_given);
+  if (s.span.terrain()) span_table.insert("terrain", static_cast<int64_t>(*s.span.terrain()));
+  doc.insert("span", std::move(span_table));
+  if (!row.positions.empty()) {
+    const line::DamperType* type = nullptr;
+    for (const line::DamperType& t : file.line.types()) {
+      if (t.name == row.damper_type) type = &t;
+    }
+    if (!type) throw InvalidParameter("damper_type", fmt::format(" = \"{}\": not a type of the line", printable(row.damper_type)));
+    if (type->file.empty()) throw InvalidParameter("damper_type", ": a type made in code has no file to name");
+    toml::array dampers;
+    for (const double x : row.positions) {
+      toml::table d;
+      d.insert(type->damper.measured() ? "impedance" : "file", type->file);
+      d.insert("position", x);
+      d.insert("ends", "both");
+      dampers.push_back(std::move(d));
+    }
+    doc.insert("damper", std::move(dampers));
+  }
+  std::ostringstream out;
+  out << "# span " << s.id << " of line " << file.name << ", as its damper schedule balanced it\n"
+      << toml::toml_formatter(doc, toml::toml_formatter::default_flags & ~toml::format_flags::allow_literal_strings)
+      << "\n";
+  return out.str();
+}
+
+}  // namespace stockbridge::io

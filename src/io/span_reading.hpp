@@ -1,0 +1,65 @@
+#pragma once
+// The span file's table readers (private to the library), shared by the span file
+// (span_file.cpp) and the line file (line_file.cpp), whose shared tables are a
+// span file's: [conductor], [wind], [self_damping], [fatigue], [balance].
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "stockbridge/io/span_file.hpp"
+#include "stockbridge/span/stranded_conductor.hpp"
+#include "toml_reader.hpp"
+
+namespace stockbridge::io::span_reading {
+
+/// A span file's contents before the model validates them.
+struct SpanReading {
+  span::Conductor conductor;
+  double length = 0.0;
+  std::optional<double> tension;
+  std::optional<double> tension_fraction;
+  std::optional<double> catenary_parameter;
+  std::optional<int> terrain;
+  span::WindModel wind;
+  span::SelfDampingModel self_damping;
+  std::vector<span::SpanDamper> dampers;
+  span::FatigueSpec fatigue;
+  span::BalanceOptions balance;
+  std::vector<std::filesystem::path> inputs;
+  std::vector<std::string> warnings;
+  /// The measured sheets read, by path.
+  std::vector<std::pair<std::filesystem::path, std::shared_ptr<const span::ImpedanceSheet>>> sheets;
+};
+
+/// A file the table names at `key`, resolved against `base_directory` and found;
+/// InputError at the key's line otherwise, `what` naming the kind of file.
+std::filesystem::path span_input_file(const TomlTable& table, std::string_view key, const std::string& file,
+                                      const std::filesystem::path& base_directory, std::string_view what);
+/// The catalogue's conductor `type`; its InvalidParameter at the table's `type` line.
+span::StrandedConductor span_catalogue_conductor(const TomlTable& table, const std::string& type);
+/// A conductor file (the table's `file` key), listed among the inputs.
+span::StrandedConductor span_conductor_file(const TomlTable& table, const std::string& file,
+                                            const std::filesystem::path& base_directory, SpanReading& reading);
+span::Conductor read_conductor(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading);
+void read_wind(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading);
+span::SelfDampingModel read_self_damping(const TomlTable& table);
+span::FatigueSpec read_fatigue(const TomlTable& table);
+span::BalanceOptions read_balance(const std::optional<TomlTable>& table);
+/// A measured sheet named at the table's `impedance` key (one per file).
+std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, const std::string& file,
+                                                       const std::filesystem::path& base_directory,
+                                                       SpanReading& reading);
+/// A file's warnings added, each once.
+void span_add_warnings(SpanReading& reading, std::vector<std::string> warnings);
+/// The values outside their typical ranges, each at its line: the shared tables', and
+/// the [span] table's and the dampers' where `with_span` (a line's spans are checked
+/// where they are given).
+void add_span_warnings(const SpanReading& reading, const toml::table& document, const TomlSource& source,
+                       std::vector<std::string>& warnings, bool with_span = true);
+
+}  // namespace stockbridge::io::span_reading

@@ -1,0 +1,267 @@
+#include "stockbridge/line/schedule.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/span/tension_figures.hpp"
+
+namespace stockbridge::line {
+
+std::shared_ptr<const span::ImpedanceTable> TableCache::get(const std::vector<DamperType>& types, std::size_t type,
+                                                             const std::vector<double>& frequencies,
+                                                             const span::ImpedanceTableOptions& options) {
+  Key key{type, frequencies, options.velocities, options.velocity_min, options.velocity_max, options.column_ratio};
+  std::promise<std::shared_ptr<const span::ImpedanceTable>> promise;
+  std::shared_future<std::shared_ptr<const span::ImpedanceTable>> made;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (const auto found = tables_.find(key); found != tables_.end()) {
+      made = found->second;
+    } else {
+      tables_.emplace(key, promise.get_future().share());
+    }
+  }
+  if (made.valid()) return made.get();  // made, or being made by another thread: waited for outside the lock
+  try {
+    const span::SpanDamper& d = types.at(type).damper;
+    auto table = d.measured() ? std::make_shared<const span::ImpedanceTable>(*d.sheet, frequencies)
+                              : std::make_shared<const span::ImpedanceTable>(*d.damper, frequencies, options);
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      nodes_ += table->nodes();
+    }
+    promise.set_value(table);
+    return table;
+  } catch (...) {
+    promise.set_exception(std::current_exception());
+    throw;
+  }
+}
+
+int TableCache::tables() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return static_cast<int>(tables_.size());
+}
+
+long long TableCache::nodes() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return nodes_;
+}
+
+namespace {
+
+/// Positions (increasing) rounded to the rules' step, their spacing and range kept,
+/// as the decimal numbers the schedule prints.
+std::vector<double> rounded_positions(std::vector<double> x, const ScheduleRules& rules) {
+  std::sort(x.begin(), x.end());
+  const double step = rules.position_step;
+  const int digits = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
+  const auto decimal = [digits](double v) { return std::stod(fmt::format("{:.{}f}", v, digits)); };
+  const span::PositionRules& p = rules.positions;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    double v = std::round(x[k] / step) * step;
+    v = std::clamp(v, std::ceil(p.position_min / step - 1e-9) * step, std::floor(p.position_max / step + 1e-9) * step);
+    if (k > 0 && v < x[k - 1] + p.spacing_min - 1e-9) v = std::ceil((x[k - 1] + p.spacing_min) / step - 1e-9) * step;
+    x[k] = decimal(v);
+  }
+  return x;
+}
+
+/// A further damper beyond an arrangement: 1.3 times its last spacing (or its first
+/// position) further on, within the range.
+std::vector<double> extended(std::vector<double> x, const ScheduleRules& rules) {
+  const span::PositionRules& p = rules.positions;
+  const double last_spacing = x.size() > 1 ? x.back() - x[x.size() - 2] : x.front();
+  x.push_back(x.back() + std::max(p.spacing_min, 1.3 * last_spacing));
+  for (std::size_t k = x.size(); k-- > 0;) {
+    x[k] = std::min(x[k], p.position_max - static_cast<double>(x.size() - 1 - k) * p.spacing_min);
+    if (k + 1 < x.size()) x[k] = std::min(x[k], x[k + 1] - p.spacing_min);
+    x[k] = std::max(x[k], p.position_min + static_cast<double>(k) * p.spacing_min);
+  }
+  return x;
+}
+
+span::Verdict verdict_of(const span::BalanceSummary& s, const ScheduleRules& rules, bool undamped) {
+  if (!rules.life_target) return undamped ? s.undamped_verdict : s.verdict;
+  const std::optional<span::LifeEstimate>& life = undamped ? s.undamped_life : s.life;
+  if (life) return life->life_years >= *rules.life_target ? span::Verdict::safe : span::Verdict::unsafe;
+  return span::Verdict::unknown;
+}
+
+double life_years_of(const std::optional<span::LifeEstimate>& life) {
+  return life ? life->life_years : std::numeric_limits<double>::quiet_NaN();
+}
+
+/// The tables of `count` dampers of one type at `frequencies`, from the cache.
+std::shared_ptr<const span::SpanTables> type_tables(const Line& line, std::size_t type, std::size_t count,
+                                                     const std::vector<double>& frequencies,
+                                                     const span::ImpedanceTableOptions& options, TableCache& cache) {
+  const auto table = cache.get(line.types(), type, frequencies, options);
+  return std::make_shared<const span::SpanTables>(frequencies, std::vector<span::ImpedanceTable>(count, *table));
+}
+
+std::size_t type_index(const Line& line, const std::string& name) {
+  for (std::size_t t = 0; t < line.types().size(); ++t) {
+    if (line.types()[t].name == name) return t;
+  }
+  throw InvalidParameter("damper_type", fmt::format(" = \"{}\": not a damper type of the line", printable(name)));
+}
+
+span::SpanAnalysis analyse_with(const Line& line, std::size_t index, std::size_t type, const std::vector<double>& positions,
+                                TableCache& cache) {
+  const LineSpan& s = line.spans()[index];
+  span::AnalysisOptions options;
+  options.balance = s.balance;
+  const std::vector<double> f = span::band_frequencies(s.span, line.rules().points);
+  if (positions.empty()) return span::analyse_span(s.span, f, options);
+  const span::TableSource tables = [&](const span::Span&, const std::vector<double>& frequencies,
+                                       const span::ImpedanceTableOptions& table) {
+    return type_tables(line, type, positions.size(), frequencies, table, cache);
+  };
+  return span::analyse_span(with_arrangement(s.span, line.types()[type], positions), f, options, {}, tables);
+}
+
+/// One damper type, `per_end` dampers: the positions searched on the tables, rounded,
+/// and the polished balance there.
+struct Candidate {
+  std::size_t type = 0;
+  std::vector<double> positions;
+  span::SpanAnalysis analysis;
+  int balances = 0;
+  double objective = std::numeric_limits<double>::infinity();  ///< of the polished balance
+  bool safe = false;
+};
+
+Candidate search_candidate(const Line& line, std::size_t index, std::size_t type, int per_end,
+                           const std::vector<double>& previous, TableCache& cache, const std::function<bool()>& stop) {
+  const LineSpan& s = line.spans()[index];
+  const ScheduleRules& rules = line.rules();
+  const std::vector<double> f = span::band_frequencies(s.span, rules.search_points);
+  const std::vector<double> start = previous.empty()
+                                        ? span::usual_positions(s.span, f.back(), per_end, 0.5, rules.positions)
+                                        : extended(previous, rules);
+  const span::Span trial = with_arrangement(s.span, line.types()[type], start);
+  const auto tables = type_tables(line, type, start.size(), f, s.balance.table.for_position_search(), cache);
+  const span::PositionSearch found = span::optimise_positions(trial, *tables, s.balance, rules.positions, stop);
+  if (stop && stop()) throw Interrupted("the schedule was stopped");
+  std::vector<double> positions = rounded_positions(found.positions, rules);
+  span::SpanAnalysis analysis = analyse_with(line, index, type, positions, cache);
+  Candidate c{type, std::move(positions), std::move(analysis), found.balances};
+  c.objective = span::position_objective(c.analysis.balance, rules.positions.objective);
+  c.safe = verdict_of(c.analysis.balance.summary, rules, false) == span::Verdict::safe;
+  return c;
+}
+
+std::string megapascal(double pascal) { return fmt::format("{:.3g} MPa", pascal / 1e6); }
+
+void fill_undamped(ScheduleRow& row, const LineSpan& s, const span::BalanceSummary& u, const ScheduleRules& rules) {
+  const span::TensionFigures t = span::tension_figures(s.span);
+  row.id = s.id;
+  row.length = s.span.length();
+  row.tension = t.tension;
+  row.tension_fraction = t.fraction_of_rts;
+  row.catenary_parameter = t.catenary_parameter;
+  row.span_parameter = t.span_parameter;
+  row.conductor = s.span.conductor().name;
+  if (const std::optional<span::SafeDesignTension> safe = span::safe_design_tension(s.span)) {
+    row.terrain = safe->terrain.category;
+    row.terrain_within = safe->within ? 1 : 0;
+  }
+  row.endurance_limit = u.endurance_limit;
+  row.undamped_max_stress = u.undamped_max_stress_fymax;
+  row.undamped_life_years = life_years_of(u.undamped_life);
+  row.undamped_verdict = verdict_of(u, rules, true);
+}
+
+void fill_arrangement(ScheduleRow& row, const Line& line, const Candidate* c, const span::SpanAnalysis& a) {
+  const span::BalanceSummary& s = a.balance.summary;
+  if (c) {
+    row.damper_type = line.types()[c->type].name;
+    row.per_end = static_cast<int>(c->positions.size());
+    row.positions = c->positions;
+  }
+  row.max_stress = s.converged > 0 ? s.max_stress_fymax : std::numeric_limits<double>::quiet_NaN();
+  row.max_stress_frequency = s.converged > 0 ? s.max_stress_frequency_hz : std::numeric_limits<double>::quiet_NaN();
+  row.life_years = life_years_of(s.life);
+  row.verdict = verdict_of(s, line.rules(), false);
+  row.converged = s.converged;
+  row.points = s.points;
+  if (!s.all_converged()) {
+    const auto failed = std::find_if(a.balance.points.begin(), a.balance.points.end(),
+                                     [](const span::BalancePoint& p) { return !p.converged(); });
+    row.warnings.push_back(fmt::format("{} of {} frequencies did not converge, first at {:.4g} Hz: {}; the largest "
+                                       "stress is of the others and the verdict unknown unless they exceed the limit",
+                                       s.points - s.converged, s.points, failed->frequency_hz,
+                                       brief_report(failed->summary)));
+  }
+  if (c && s.converged > 0 && s.max_stress_fymax > s.undamped_max_stress_fymax) {
+    row.warnings.push_back(fmt::format("the dampers raise the largest fymax stress above the undamped span's ({} "
+                                       "against {})",
+                                       megapascal(s.max_stress_fymax), megapascal(s.undamped_max_stress_fymax)));
+  }
+  row.warnings.insert(row.warnings.end(), a.warnings.begin(), a.warnings.end());
+}
+
+}  // namespace
+
+SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cache, const std::function<bool()>& stop) {
+  const LineSpan& s = line.spans().at(index);
+  const ScheduleRules& rules = line.rules();
+  SpanSchedule out{ScheduleRow{}, analyse_with(line, index, 0, {}, cache)};
+  out.row.index = index;
+  fill_undamped(out.row, s, out.analysis.balance.summary, rules);
+  if (rules.min_per_end == 0 && out.row.undamped_verdict == span::Verdict::safe) {
+    fill_arrangement(out.row, line, nullptr, out.analysis);
+    return out;
+  }
+  std::vector<std::vector<double>> previous(line.types().size());
+  std::optional<Candidate> chosen;
+  for (int per_end = std::max(1, rules.min_per_end); per_end <= rules.max_per_end && !(chosen && chosen->safe); ++per_end) {
+    std::optional<Candidate> best;
+    for (std::size_t t = 0; t < line.types().size(); ++t) {
+      Candidate c = search_candidate(line, index, t, per_end, previous[t], cache, stop);
+      out.row.balances += c.balances;
+      previous[t] = c.positions;
+      const auto better = [&](const Candidate& a, const Candidate& b) {
+        return a.safe != b.safe ? a.safe : a.objective < b.objective;
+      };
+      if (!best || better(c, *best)) best = std::move(c);
+    }
+    chosen = std::move(best);
+  }
+  out.analysis = std::move(chosen->analysis);
+  fill_arrangement(out.row, line, &*chosen, out.analysis);
+  if (!chosen->safe) {
+    out.row.warnings.insert(out.row.warnings.begin(),
+                            fmt::format("no arrangement of up to {} dampers per end makes the span safe: the best "
+                                        "found is given",
+                                        rules.max_per_end));
+  }
+  return out;
+}
+
+span::SpanAnalysis analyse_arrangement(const Line& line, const ScheduleRow& row, TableCache& cache) {
+  if (row.positions.empty()) return analyse_with(line, row.index, 0, {}, cache);
+  return analyse_with(line, row.index, type_index(line, row.damper_type), row.positions, cache);
+}
+
+std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<ScheduleRow>& rows) {
+  std::vector<BillLine> bill;
+  for (const DamperType& type : line.types()) {
+    BillLine b{type.name, 0, 0, std::nullopt};
+    for (const ScheduleRow& row : rows) {
+      if (row.damper_type != type.name) continue;
+      b.dampers += 2 * row.per_end;
+      ++b.spans;
+    }
+    if (type.mass) b.mass = *type.mass * b.dampers;
+    bill.push_back(std::move(b));
+  }
+  return bill;
+}
+
+}  // namespace stockbridge::line

@@ -1,0 +1,318 @@
+#include "stockbridge/requests/line_request.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/version.hpp"
+
+namespace stockbridge::requests {
+
+namespace {
+
+using Row = line::ScheduleRow;
+constexpr double kLineNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// A stress or life of a balance that converged throughout, NaN otherwise.
+double trusted(const Row& r, double value, bool undamped) {
+  if (undamped) return value;  // the undamped balance has no iteration that can fail
+  return r.converged == r.points ? value : kLineNaN;
+}
+
+std::string positions_text(const std::vector<double>& positions) {
+  std::string out;
+  for (const double x : positions) out += fmt::format("{}{}", out.empty() ? "" : ";", x);
+  return out;
+}
+
+std::string joined_warnings(const std::vector<std::string>& warnings) {
+  std::string out;
+  for (const std::string& w : warnings) out += fmt::format("{}{}", out.empty() ? "" : " | ", w);
+  return out;
+}
+
+}  // namespace
+
+Table<line::ScheduleRow> schedule_table() {
+  using K = ColumnKind;
+  const auto number = [](double (*f)(const Row&)) { return [f](const Row& r, std::size_t) { return f(r); }; };
+  return Table<Row>({
+      {"id", "", "the span's name", K::label, {}, [](const Row& r, std::size_t) { return r.id; }},
+      {"conductor", "", "the conductor's name", K::label, {}, [](const Row& r, std::size_t) { return r.conductor; }},
+      {"undamped_verdict", "", "safe, unsafe or unknown without dampers", K::label, {},
+       [](const Row& r, std::size_t) { return std::string(span::verdict_name(r.undamped_verdict)); }},
+      {"damper_type", "", "the recommended damper type (empty: none needed)", K::label, {},
+       [](const Row& r, std::size_t) { return r.damper_type; }},
+      {"positions_m", "m", "each damper's distance from the clamp at one end, ';'-separated, increasing (both ends alike)",
+       K::label, {}, [](const Row& r, std::size_t) { return positions_text(r.positions); }},
+      {"verdict", "", "safe, unsafe or unknown with the recommended dampers", K::label, {},
+       [](const Row& r, std::size_t) { return std::string(span::verdict_name(r.verdict)); }},
+      {"warnings", "", "what the engineer should know, ' | '-separated", K::label, {},
+       [](const Row& r, std::size_t) { return joined_warnings(r.warnings); }},
+      {"length_m", "m", "the span's length", K::number, number([](const Row& r) { return r.length; }), {}},
+      {"tension_n", "N", "the tension T", K::number, number([](const Row& r) { return r.tension; }), {}},
+      {"tension_percent_rts", "%", "T over the rated tensile strength", K::number,
+       number([](const Row& r) { return 100.0 * r.tension_fraction; }), {}},
+      {"catenary_parameter_m", "m", "H/w = T / (m g)", K::number,
+       number([](const Row& r) { return r.catenary_parameter; }), {}},
+      {"span_parameter_m3_kg", "m^3/kg", "L D / m", K::number, number([](const Row& r) { return r.span_parameter; }), {}},
+      {"terrain", "", "CIGRE TB 273's terrain category (empty: not given)", K::number,
+       number([](const Row& r) { return r.terrain > 0 ? static_cast<double>(r.terrain) : kLineNaN; }), {}},
+      {"terrain_hw_within", "", "1 if H/w is within the terrain's limit for an undamped span, 0 if above", K::flag,
+       number([](const Row& r) { return r.terrain_within < 0 ? kLineNaN : static_cast<double>(r.terrain_within); }), {}},
+      {"endurance_limit_mpa", "MPa", "the fymax stress the verdict allows", K::number,
+       number([](const Row& r) { return r.endurance_limit / 1e6; }), {}},
+      {"undamped_max_stress_mpa", "MPa", "the largest fymax stress at the span clamp without dampers", K::number,
+       number([](const Row& r) { return r.undamped_max_stress / 1e6; }), {}},
+      {"undamped_life_years", "years", "Miner's life without dampers (with the line's climate; inf: no damage)",
+       K::number, number([](const Row& r) { return r.undamped_life_years; }), {}},
+      {"dampers_per_end", "", "the recommended number of dampers at each end", K::count,
+       number([](const Row& r) { return static_cast<double>(r.per_end); }), {}},
+      {"max_stress_mpa", "MPa", "the largest fymax stress at the span clamp with those dampers", K::number,
+       number([](const Row& r) { return trusted(r, r.max_stress / 1e6, false); }), {}},
+      {"max_stress_frequency_hz", "Hz", "where it occurs", K::number,
+       number([](const Row& r) { return trusted(r, r.max_stress_frequency, false); }), {}},
+      {"life_years", "years", "Miner's life with those dampers", K::number,
+       number([](const Row& r) { return trusted(r, r.life_years, false); }), {}},
+      {"stress_ratio", "", "max_stress_mpa over endurance_limit_mpa", K::number,
+       number([](const Row& r) { return trusted(r, r.stress_ratio(), false); }), {}},
+      {"margin_percent", "%", "100 (1 - stress_ratio): the share of the endurance limit left", K::number,
+       number([](const Row& r) { return trusted(r, 100.0 * (1.0 - r.stress_ratio()), false); }), {}},
+      {"converged", "", "1 if every frequency of the recommended arrangement's balance converged", K::flag,
+       number([](const Row& r) { return r.converged == r.points ? 1.0 : 0.0; }), {}},
+      {"converged_points", "", "its frequencies that converged", K::count,
+       number([](const Row& r) { return static_cast<double>(r.converged); }), {}},
+      {"points", "", "its frequencies", K::count, number([](const Row& r) { return static_cast<double>(r.points); }), {}},
+      {"search_balances", "", "balances the position search made (its cost)", K::count,
+       number([](const Row& r) { return static_cast<double>(r.balances); }), {}},
+  });
+}
+
+Table<line::BillLine> bill_table() {
+  using B = line::BillLine;
+  using K = ColumnKind;
+  return Table<B>({
+      {"damper_type", "", "the damper type", K::label, {}, [](const B& b, std::size_t) { return b.damper_type; }},
+      {"dampers", "", "dampers of the type over the line (both ends of every span)", K::count,
+       [](const B& b, std::size_t) { return static_cast<double>(b.dampers); }, {}},
+      {"spans", "", "spans that get the type", K::count, [](const B& b, std::size_t) { return static_cast<double>(b.spans); }, {}},
+      {"mass_kg", "kg", "their mass (empty where the type's mass is not known)", K::number,
+       [](const B& b, std::size_t) { return b.mass.value_or(kLineNaN); }, {}},
+  });
+}
+
+io::JsonObject line_summary(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows) {
+  int safe = 0, unsafe = 0, unknown = 0, not_converged = 0, worse = 0;
+  std::map<int, int> per_end;
+  const Row* governing = nullptr;
+  for (const Row& r : rows) {
+    safe += r.verdict == span::Verdict::safe;
+    unsafe += r.verdict == span::Verdict::unsafe;
+    unknown += r.verdict == span::Verdict::unknown;
+    not_converged += r.converged < r.points;
+    worse += r.converged == r.points && r.per_end > 0 && r.max_stress > r.undamped_max_stress;
+    ++per_end[r.per_end];
+    if (r.converged == r.points && (!governing || r.stress_ratio() > governing->stress_ratio())) governing = &r;
+  }
+  std::vector<io::JsonObject> counts;
+  for (const auto& [n, spans] : per_end) counts.push_back(io::JsonObject().add("dampers_per_end", n).add("spans", spans));
+  std::vector<io::JsonObject> bill;
+  const TableValues values = bill_table().values(line::bill_of_materials(file.line, rows));
+  for (std::size_t r = 0; r < values.rows; ++r) bill.push_back(values.json_row(r));
+  io::JsonObject json;
+  json.add("line", file.name)
+      .add("spans", static_cast<int>(rows.size()))
+      .add("spans_safe", safe)
+      .add("spans_unsafe", unsafe)
+      .add("spans_unknown", unknown)
+      .add("spans_not_converged", not_converged)
+      .add("spans_worse_than_undamped", worse)
+      .add("dampers_per_end", counts)
+      .add("bill", bill);
+  if (governing) {
+    json.add("governing_span", governing->id).add("governing_stress_ratio", governing->stress_ratio());
+  } else {
+    json.add_null("governing_span").add_null("governing_stress_ratio");
+  }
+  return json;
+}
+
+namespace {
+
+std::string escaped(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '\\') out += "\\\\";
+    else if (c == '\t') out += "\\t";
+    else if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else out += c;
+  }
+  return out;
+}
+
+std::string unescaped(std::string_view text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\\' || i + 1 == text.size()) {
+      out += text[i];
+      continue;
+    }
+    const char c = text[++i];
+    out += c == 't' ? '\t' : c == 'n' ? '\n' : c == 'r' ? '\r' : c;
+  }
+  return out;
+}
+
+constexpr std::string_view kRecordTag = "span-v1";
+
+[[noreturn]] void bad_record(std::string_view why) {
+  throw InvalidParameter("record", fmt::format(": {}", why));
+}
+
+class RecordFields {
+ public:
+  explicit RecordFields(std::string_view record) {
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t tab = record.find('\t', start);
+      fields_.push_back(record.substr(start, tab == std::string_view::npos ? std::string_view::npos : tab - start));
+      if (tab == std::string_view::npos) break;
+      start = tab + 1;
+    }
+  }
+  std::size_t size() const { return fields_.size(); }
+  std::string text() { return unescaped(next()); }
+  double number() {
+    const std::string_view f = next();
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(f.data(), f.data() + f.size(), value);
+    if (error != std::errc() || end != f.data() + f.size()) bad_record(fmt::format("'{}' is not a number", printable(f)));
+    return value;
+  }
+  long long integer() {
+    const std::string_view f = next();
+    long long value = 0;
+    const auto [end, error] = std::from_chars(f.data(), f.data() + f.size(), value);
+    if (error != std::errc() || end != f.data() + f.size()) bad_record(fmt::format("'{}' is not an integer", printable(f)));
+    return value;
+  }
+  bool done() const { return next_ == fields_.size(); }
+
+ private:
+  std::string_view next() {
+    if (next_ >= fields_.size()) bad_record("cut short");
+    return fields_[next_++];
+  }
+  std::vector<std::string_view> fields_;
+  std::size_t next_ = 0;
+};
+
+span::Verdict verdict_from(long long v) {
+  if (v < 0 || v > 2) bad_record("a verdict out of range");
+  return static_cast<span::Verdict>(v);
+}
+
+}  // namespace
+
+std::string schedule_record(const line::ScheduleRow& r) {
+  std::string out = fmt::format("{}\t{}\t{}\t{}", kRecordTag, r.index, escaped(r.id), escaped(r.conductor));
+  for (const double v : {r.length, r.tension, r.tension_fraction, r.catenary_parameter, r.span_parameter,
+                         r.endurance_limit, r.undamped_max_stress, r.undamped_life_years, r.max_stress,
+                         r.max_stress_frequency, r.life_years}) {
+    out += fmt::format("\t{}", v);
+  }
+  out += fmt::format("\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}", r.terrain, r.terrain_within,
+                     static_cast<int>(r.undamped_verdict), static_cast<int>(r.verdict), r.per_end, r.converged,
+                     r.points, r.balances, escaped(r.damper_type), r.positions.size());
+  for (const double x : r.positions) out += fmt::format("\t{}", x);
+  out += fmt::format("\t{}", r.warnings.size());
+  for (const std::string& w : r.warnings) out += "\t" + escaped(w);
+  out += "\tend";
+  return out;
+}
+
+line::ScheduleRow parse_schedule_record(std::string_view record) {
+  RecordFields f(record);
+  if (f.text() != kRecordTag) bad_record("not a schedule record");
+  Row r;
+  r.index = static_cast<std::size_t>(f.integer());
+  r.id = f.text();
+  r.conductor = f.text();
+  for (double* v : {&r.length, &r.tension, &r.tension_fraction, &r.catenary_parameter, &r.span_parameter,
+                    &r.endurance_limit, &r.undamped_max_stress, &r.undamped_life_years, &r.max_stress,
+                    &r.max_stress_frequency, &r.life_years}) {
+    *v = f.number();
+  }
+  r.terrain = static_cast<int>(f.integer());
+  r.terrain_within = static_cast<int>(f.integer());
+  r.undamped_verdict = verdict_from(f.integer());
+  r.verdict = verdict_from(f.integer());
+  r.per_end = static_cast<int>(f.integer());
+  r.converged = static_cast<int>(f.integer());
+  r.points = static_cast<int>(f.integer());
+  r.balances = static_cast<int>(f.integer());
+  r.damper_type = f.text();
+  const long long positions = f.integer();
+  if (positions < 0 || positions > 100) bad_record("a count of positions out of range");
+  for (long long k = 0; k < positions; ++k) r.positions.push_back(f.number());
+  const long long warnings = f.integer();
+  if (warnings < 0 || warnings > 1000) bad_record("a count of warnings out of range");
+  for (long long k = 0; k < warnings; ++k) r.warnings.push_back(f.text());
+  if (f.text() != "end" || !f.done()) bad_record("no end mark");
+  return r;
+}
+
+namespace {
+
+/// FNV-1a, 64 bits: enough to tell inputs apart (not a defence against forgery).
+struct Digest {
+  std::uint64_t h = 1469598103934665603ULL;
+  void add(std::string_view bytes) {
+    for (const unsigned char c : bytes) h = (h ^ c) * 1099511628211ULL;
+    const std::string size = fmt::format("|{}|", bytes.size());
+    for (const unsigned char c : size) h = (h ^ c) * 1099511628211ULL;
+  }
+};
+
+std::string file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+std::string line_fingerprint(const io::LineFile& file, std::string_view line_text) {
+  Digest d;
+  d.add(version_string);
+  d.add(line_text);
+  for (const std::filesystem::path& input : file.inputs) {
+    d.add(input.string());
+    d.add(file_bytes(input));
+  }
+  return fmt::format("{:016x}", d.h);
+}
+
+line::ScheduleRow failed_row(const io::LineFile& file, std::size_t index, std::string_view message) {
+  const line::LineSpan& s = file.line.spans().at(index);
+  Row r;
+  r.index = index;
+  r.id = s.id;
+  r.conductor = s.span.conductor().name;
+  r.length = s.span.length();
+  r.tension = s.span.tension();
+  r.tension_fraction = s.span.tension() / s.span.conductor().rated_tensile_strength;
+  r.catenary_parameter = r.span_parameter = r.endurance_limit = kLineNaN;
+  r.undamped_max_stress = r.undamped_life_years = r.max_stress = r.max_stress_frequency = r.life_years = kLineNaN;
+  r.points = 1;
+  r.warnings.push_back(fmt::format("not scheduled: {}", message));
+  return r;
+}
+
+}  // namespace stockbridge::requests
