@@ -33,6 +33,7 @@ void PositionRules::validate() const {
   require_non_negative("spacing_min", spacing_min, "m");
   require_in_range("scan_points", scan_points, 3, 10000);
   require_in_range("max_evaluations", max_evaluations, 4, 100000);
+  require_in_range("local_searches", local_searches, 1, 5);
 }
 
 double position_objective(const SpanBalance& balance, PositionObjective objective) {
@@ -244,7 +245,7 @@ PositionSearch optimise_positions(const Span& span, const SpanTables& tables, co
     starts.emplace_back(run(x), std::move(x));
   }
   std::stable_sort(starts.begin(), starts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (std::size_t s = 0; s < 2 && s < starts.size(); ++s) {
+  for (std::size_t s = 0; s < static_cast<std::size_t>(rules.local_searches) && s < starts.size(); ++s) {
     if (!std::isfinite(starts[s].first)) break;
     search_locally(run, rules, starts[s].second);
   }

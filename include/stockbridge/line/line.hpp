@@ -34,11 +34,23 @@ struct LineSpan {
   std::string source;            ///< where it was given ("line.toml:34" or "spans.csv:12"), for messages
 };
 
+/// The position search's defaults for a line's spans (ScheduleRules::positions).
+inline span::PositionRules line_position_rules() {
+  span::PositionRules rules;
+  rules.scan_points = 21;
+  rules.max_evaluations = 40;
+  rules.local_searches = 1;
+  return rules;
+}
+
 /// The schedule's rules (the line file's [dampers] table, docs/line.md).
 struct ScheduleRules {
   int min_per_end = 0;  ///< 0: a span safe without dampers gets none
   int max_per_end = 3;
-  span::PositionRules positions;  ///< position_min, position_max, spacing_min, objective
+  /// position_min, position_max, spacing_min, objective; a lighter search than one
+  /// span's (a line has many): a scan of 21 positions for one damper, one local
+  /// search of at most 40 balances for several.
+  span::PositionRules positions = line_position_rules();
   /// Years: a span is safe when its life reaches this (and every point converged);
   /// none: when its largest fymax stress is within the endurance limit.
   std::optional<double> life_target;

@@ -31,9 +31,10 @@ struct PositionRules {
   PositionObjective objective = PositionObjective::max_stress;
   int scan_points = 41;       ///< one damper: the scan before the golden sections (>= 3)
   int max_evaluations = 60;   ///< several dampers: each local search's balances at most (>= 4)
+  int local_searches = 2;     ///< several dampers: local searches, from the best starts (>= 1)
 
   /// Throws InvalidParameter naming "position_min", "position_max", "spacing_min",
-  /// "scan_points" or "max_evaluations".
+  /// "scan_points", "max_evaluations" or "local_searches".
   void validate() const;
 };
 

@@ -1,0 +1,244 @@
+// stockbridge line as a user runs it: the schedule the same on one thread, two, two
+// MPI ranks and after an interruption (Ctrl-C or a killed process) resumed; each
+// row reproduced by `stockbridge span` on the span file --details writes; a journal
+// of other inputs refused; bad spans named by file and line.
+
+#include <csignal>
+#include <fstream>
+#include <sstream>
+#include <chrono>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+
+namespace stockbridge::testing {
+namespace {
+
+/// A small line: four spans of two conductors, tensions in all three forms, one
+/// damper type, coarse frequency grids (the line's cost, not its figures, is tried).
+std::string small_line() {
+  return R"([line]
+name = "test line"
+points = 30
+search_points = 20
+
+[conductor]
+type = "AAAC ASTER570"
+
+[wind]
+law = "cigre"
+speed_min = 1.0
+speed_max = 7.0
+
+[self_damping]
+law = "noiseux-1991"
+
+[fatigue]
+cycles = 5e8
+wind_weibull = { shape = 2.0, scale = 4.0 }
+aeolian_fraction = 0.3
+
+[dampers]
+types = [ { name = "sb1", file = ")" + kDamperExample + R"(" } ]
+max_per_end = 2
+position_max = 5.0
+
+[[span]]
+id = "T1-T2"
+length = 300
+tension_fraction = 0.12
+
+[[span]]
+id = "T2-T3"
+length = 420
+catenary_parameter = 1500
+terrain = 2
+
+[[span]]
+id = "T3-T4"
+length = 250
+tension = 30000
+conductor = "ACSR Drake"
+
+[[span]]
+id = "T4-T5"
+length = 380
+tension_fraction = 0.2
+conductor = "ACSR Linnet"
+)";
+}
+
+std::filesystem::path line_folder(const std::string& name, const std::string& text = small_line()) {
+  const auto dir = scratch_directory(name);
+  std::ofstream(dir / "line.toml") << text;
+  return dir;
+}
+
+/// The number of complete records in a journal (its lines after the first).
+int journal_records(const std::filesystem::path& journal) {
+  const std::string text = read_text(journal);
+  int lines = 0;
+  for (const char c : text) lines += c == '\n';
+  return std::max(0, lines - 1);
+}
+
+/// The schedule of the small line on one thread, made once for the tests that compare with it.
+const std::string& reference_schedule() {
+  static const std::string schedule = [] {
+    const auto dir = line_folder("line-reference");
+    const CliResult r = run_cli("line line.toml -o schedule.csv --quiet", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return read_text(dir / "schedule.csv");
+  }();
+  return schedule;
+}
+
+TEST(LineCli, TheScheduleIsTheSameOnOneAndTwoThreadsAndTwoRanks) {
+  const std::string& one = reference_schedule();
+  ASSERT_FALSE(one.empty());
+  EXPECT_NE(one.find("id,conductor,undamped_verdict,damper_type,positions_m,verdict"), std::string::npos) << one;
+  const auto dir = line_folder("line-threads");
+  const CliResult two = run_cli("line line.toml -o schedule.csv --threads 2 --json", dir);
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  EXPECT_EQ(read_text(dir / "schedule.csv"), one);
+  EXPECT_NE(two.out.find("\"spans\": 4"), std::string::npos) << two.out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "schedule_bill.csv"));
+#ifdef STOCKBRIDGE_TEST_MPIRUN
+  const std::string command = "cd '" + dir.string() + "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 '" +
+                              STOCKBRIDGE_TEST_MPIRUN + "' --oversubscribe -np 2 '" + STOCKBRIDGE_CLI +
+                              "' line line.toml --quiet -o ranks.csv > ranks.log 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir / "ranks.log");
+  EXPECT_EQ(read_text(dir / "ranks.csv"), one);
+#endif
+}
+
+TEST(LineCli, EveryRowIsReproducedBySpanOnItsDetailsFile) {
+  const auto dir = line_folder("line-details");
+  const CliResult r = run_cli("line line.toml -o schedule.csv --details spans --quiet", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> rows = lines_of(read_text(dir / "schedule.csv"));
+  ASSERT_EQ(rows.size(), 5u);
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const std::string id = rows[i].substr(0, rows[i].find(','));
+    const CliResult span = run_cli("span spans/" + id + ".toml --points 30 -o again.csv --json", dir);
+    ASSERT_EQ(span.exit_code, 0) << id << ": " << span.err;
+    // The schedule's max_stress_mpa is column 19 (after the seven label columns).
+    std::vector<std::string> cells;
+    std::stringstream row(rows[i]);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    const std::string key = "\"max_stress_fymax_mpa\": ";
+    const std::size_t at = span.out.find(key);
+    ASSERT_NE(at, std::string::npos) << span.out;
+    const double from_span = std::stod(span.out.substr(at + key.size()));
+    EXPECT_NEAR(from_span, std::stod(cells.at(18)), 1e-9 * from_span) << id;
+    EXPECT_EQ(read_text(dir / "again.csv"), read_text(dir / ("spans/" + id + ".csv"))) << id;
+  }
+}
+
+TEST(LineCli, AKilledRunResumedGivesTheSameSchedule) {
+  const auto dir = line_folder("line-killed");
+  const std::string command = "cd '" + dir.string() + "' && exec '" + std::string(STOCKBRIDGE_CLI) +
+                              "' line line.toml -o schedule.csv --quiet > run.log 2>&1";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Killed (no chance to clean up) once two spans are in the journal.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (journal_records(dir / "schedule.csv.journal") < 2 && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
+  EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv"));
+  const int kept = journal_records(dir / "schedule.csv.journal");
+  EXPECT_GE(kept, 2);
+  const CliResult resumed = run_cli("line line.toml -o schedule.csv --resume", dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find(std::to_string(kept) + " of 4 spans in schedule.csv.journal"), std::string::npos)
+      << resumed.err;
+  EXPECT_EQ(read_text(dir / "schedule.csv"), reference_schedule());
+}
+
+TEST(LineCli, CtrlCStopsCleanlyWithStatus130AndTheJournalResumes) {
+  const auto dir = line_folder("line-interrupted");
+  const std::string command = "cd '" + dir.string() + "' && exec '" + std::string(STOCKBRIDGE_CLI) +
+                              "' line line.toml -o schedule.csv > run.log 2> run.err";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (journal_records(dir / "schedule.csv.journal") < 1 && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << read_text(dir / "run.err");
+  EXPECT_NE(read_text(dir / "run.err").find("run again with --resume"), std::string::npos) << read_text(dir / "run.err");
+  EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "schedule_bill.csv"));
+  const CliResult resumed = run_cli("line line.toml -o schedule.csv --resume --quiet", dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(read_text(dir / "schedule.csv"), reference_schedule());
+  // Resuming a finished run computes nothing and writes the same again.
+  const CliResult again = run_cli("line line.toml -o schedule.csv --resume", dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("4 of 4 spans in schedule.csv.journal, 0 to compute"), std::string::npos) << again.err;
+  EXPECT_EQ(read_text(dir / "schedule.csv"), reference_schedule());
+}
+
+TEST(LineCli, AJournalOfOtherInputsIsRefused) {
+  const auto dir = line_folder("line-other-journal");
+  std::ofstream(dir / "schedule.csv.journal") << "stockbridge line journal 0123456789abcdef\n";
+  const CliResult r = run_cli("line line.toml -o schedule.csv --resume", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_NE(r.err.find("schedule.csv.journal was written for other inputs"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("run without --resume to start again"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv"));
+}
+
+TEST(LineCli, BadSpansAreNamedByFileLineAndKey) {
+  struct Case {
+    std::string csv;
+    std::string message;
+  };
+  const std::vector<Case> cases{
+      {"id,length_m,tension_fraction\nA,300,0.15\nB,400,\n", "spans.csv:3: span \"B\": no tension"},
+      {"id,length_m,tension_n,tension_fraction\nA,300,30000,0.15\n", "spans.csv:2: span \"A\": tension_fraction given beside tension"},
+      {"id,length_m,tension_kn\nA,300,30\n", "spans.csv: column 'tension_kn' is not a spans column"},
+      {"id,length_m,tension_fraction\nA,300,0.15\nA,200,0.15\n", "spans.csv:3: span[1].id = \"A\": given to an earlier span too"},
+      {"id,length_m,tension_fraction\nA,300,15\n", "spans.csv:2: span \"A\": tension_fraction = 15"},
+      {"id,length_m,tension_fraction,conductor\nA,300,0.15,ACSR Drakee\n", "spans.csv:2: conductor"},
+      {"\xEF\xBB\xBFid,length_m,tension_fraction\r\nA,-300,0.15\r\n", "spans.csv:2: span \"A\": length = -300"},
+  };
+  for (const Case& c : cases) {
+    std::string text = small_line();
+    text = text.substr(0, text.find("[[span]]"));
+    text.insert(0, "spans = \"spans.csv\"\n");
+    const auto dir = line_folder("line-bad", text);
+    std::ofstream(dir / "spans.csv", std::ios::binary) << c.csv;
+    const CliResult r = run_cli("line line.toml -o schedule.csv", dir);
+    EXPECT_EQ(r.exit_code, 2) << c.csv;
+    EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv.journal"));
+  }
+}
+
+}  // namespace
+}  // namespace stockbridge::testing
