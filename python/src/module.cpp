@@ -1,13 +1,19 @@
 // stockbridge._core: the Python binding. It holds no logic: each function converts
 // its arguments, calls the library with the GIL released, and returns numpy arrays.
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <complex>
+#include <condition_variable>
+#include <exception>
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -29,14 +35,17 @@
 #include "stockbridge/io/conductor_file.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/design_file.hpp"
+#include "stockbridge/io/line_file.hpp"
 #include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/io/span_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
+#include "stockbridge/line/schedule.hpp"
 #include "stockbridge/requests/conductor_request.hpp"
 #include "stockbridge/requests/cycle_request.hpp"
 #include "stockbridge/requests/design_request.hpp"
 #include "stockbridge/requests/identify_request.hpp"
 #include "stockbridge/requests/impedance_fit_request.hpp"
+#include "stockbridge/requests/line_request.hpp"
 #include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/response_request.hpp"
@@ -368,7 +377,8 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
                       const std::optional<std::string>& base,
                       const std::optional<std::vector<double>>& frequencies, int points, bool no_dampers,
                       const std::optional<std::string>& damper_model,
-                      const std::optional<std::pair<double, double>>& optimize_position, int threads) {
+                      const std::optional<std::pair<double, double>>& optimize_position, double spacing_min,
+                      const std::string& objective, int threads) {
   if (path.has_value() == text.has_value()) {
     throw InvalidParameter("give either file (a span file's path) or text (a span file's contents), one of the two");
   }
@@ -384,6 +394,8 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
     request.position_min = optimize_position->first;
     request.position_max = optimize_position->second;
   }
+  request.spacing_min = spacing_min;
+  request.objective = objective;
   request.threads = threads;
   requests::validate(request);
   io::SpanFile file =
@@ -404,6 +416,110 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   out["dampers"] = requests::span_damper_prefixes(a.span);  // the <damper> of the per-damper columns
   out["columns"] = columns.names();
   out["summary_json"] = requests::span_summary(*result).str();
+  return out;
+}
+
+/// The spans of a line scheduled on `threads` workers, each taking the next span
+/// not yet taken (as the line command deals them), all sharing one TableCache; the
+/// rows in the line's order, the same for any number of threads. A span whose own
+/// data makes its scheduling fail is a row with the message as its warning (verdict
+/// unknown), as in the command's schedule. The GIL is released while the workers
+/// run; Ctrl-C (a signal Python sees) stops them between balances and raises
+/// KeyboardInterrupt.
+std::vector<line::ScheduleRow> schedule_line(const io::LineFile& file, int threads) {
+  const std::size_t spans = file.line.spans().size();
+  std::vector<std::optional<line::ScheduleRow>> rows(spans);
+  line::TableCache cache;
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex mutex;
+  std::condition_variable finished;
+  int running = 0;
+  std::exception_ptr failure;
+  const auto stopped = [&stop] { return stop.load(); };
+  const auto work = [&] {
+    for (std::size_t i = next++; i < spans && !stop.load(); i = next++) {
+      try {
+        rows[i] = line::schedule_span(file.line, i, cache, stopped).row;
+      } catch (const Interrupted&) {
+        break;
+      } catch (const InvalidParameter& e) {
+        rows[i] = requests::failed_row(file, i, e.what());
+      } catch (const NumericalError& e) {
+        rows[i] = requests::failed_row(file, i, e.what());
+      } catch (...) {  // anything else ends the schedule: raised once the workers are done
+        const std::lock_guard lock(mutex);
+        if (!failure) failure = std::current_exception();
+        stop.store(true);
+        break;
+      }
+    }
+    const std::lock_guard lock(mutex);
+    --running;
+    finished.notify_all();
+  };
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    std::vector<std::jthread> workers;  // joined when they go out of scope, whatever happens
+    const int count = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads), spans));
+    try {
+      for (int k = 0; k < count; ++k) {
+        {
+          const std::lock_guard lock(mutex);
+          ++running;
+        }
+        try {
+          workers.emplace_back(work);
+        } catch (...) {
+          const std::lock_guard lock(mutex);
+          --running;
+          throw;
+        }
+      }
+    } catch (...) {
+      stop.store(true);
+      throw;
+    }
+    std::unique_lock lock(mutex);
+    while (!finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return running == 0; })) {
+      if (interrupted) continue;
+      lock.unlock();
+      {
+        py::gil_scoped_acquire gil;
+        interrupted = PyErr_CheckSignals() != 0;  // KeyboardInterrupt (or the handler's error) set
+      }
+      if (interrupted) stop.store(true);
+      lock.lock();
+    }
+  }
+  if (interrupted) throw py::error_already_set();
+  if (failure) std::rethrow_exception(failure);
+  std::vector<line::ScheduleRow> schedule;
+  schedule.reserve(spans);
+  for (std::optional<line::ScheduleRow>& row : rows) schedule.push_back(std::move(*row));
+  return schedule;
+}
+
+/// The line command's outputs (stockbridge.line wraps it): the schedule CSV's and the
+/// bill CSV's columns as arrays, the --json summary as JSON text and the line file's
+/// warnings (each also an UnusualValueWarning).
+py::dict line_schedule(const std::optional<std::string>& path, const std::optional<std::string>& text,
+                       const std::optional<std::string>& base, int threads) {
+  if (path.has_value() == text.has_value()) {
+    throw InvalidParameter("give either file (a line file's path) or text (a line file's contents), one of the two");
+  }
+  require_in_range("threads", threads, 1, 256);
+  const io::LineFile file =
+      path ? io::load_line_file(*path) : io::load_line_text(*text, "line(text=...)", base.value_or(std::string()));
+  warn(file.warnings);
+  const std::vector<line::ScheduleRow> rows = schedule_line(file, threads);
+  const std::vector<line::BillLine> bill = line::bill_of_materials(file.line, rows);
+  py::dict out;
+  out["schedule"] = table_arrays(requests::schedule_table().values(rows), {rows.size()});
+  out["bill"] = table_arrays(requests::bill_table().values(bill), {bill.size()});
+  out["summary_json"] = requests::line_summary(file, rows).str();
+  out["warnings"] = file.warnings;
   return out;
 }
 
@@ -525,6 +641,8 @@ PYBIND11_MODULE(_core, m) {
   py::dict defaults;
   defaults["span_points"] = requests::SpanRequest{}.points;
   defaults["span_threads"] = requests::SpanRequest{}.threads;
+  defaults["span_spacing_min"] = requests::SpanRequest{}.spacing_min;
+  defaults["span_objective"] = requests::SpanRequest{}.objective;
   defaults["design_threads"] = requests::DesignRequest{}.threads;
   defaults["fit_elements"] = requests::ImpedanceFitRequest{}.elements;
   defaults["fit_clamp_mass"] = requests::ImpedanceFitRequest{}.fit_clamp_mass;
@@ -554,9 +672,14 @@ PYBIND11_MODULE(_core, m) {
         py::arg("base") = py::none(),
         py::arg("frequencies") = py::none(), py::arg("points") = requests::SpanRequest{}.points,
         py::arg("no_dampers") = false, py::arg("damper_model") = py::none(),
-        py::arg("optimize_position") = py::none(), py::arg("threads") = requests::SpanRequest{}.threads,
+        py::arg("optimize_position") = py::none(), py::arg("spacing_min") = requests::SpanRequest{}.spacing_min,
+        py::arg("objective") = requests::SpanRequest{}.objective, py::arg("threads") = requests::SpanRequest{}.threads,
         "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
         "'converged', 'termination', 'messages', 'dampers', 'columns' and the --json summary as 'summary_json'.");
+  m.def("_line", &line_schedule, py::arg("file") = py::none(), py::arg("text") = py::none(),
+        py::arg("base") = py::none(), py::arg("threads") = 1,
+        "A line's damper schedule (stockbridge.line wraps it): 'schedule' and 'bill', the schedule and bill CSVs' "
+        "columns as arrays, the --json summary as 'summary_json' and the line file's 'warnings'.");
   m.def("_design", &design_search, py::arg("file"), py::arg("samples") = py::none(), py::arg("polish") = py::none(),
         py::arg("threads") = requests::DesignRequest{}.threads,
         "A design study's search (stockbridge.design wraps it): the design CSV's columns as arrays, 'stage', "

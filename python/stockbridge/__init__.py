@@ -9,6 +9,7 @@ built by the CMake project) and adds plots (``python3 -m stockbridge.plot``).
     s = sb.span("examples/aster570_400m.toml", points=50)
     drake = sb.conductor("ACSR Drake")   # the catalogue's [conductor] values, EI_min 44.25 N m^2
     d = sb.design("examples/design_aster570.toml", samples=16, threads=2)
+    schedule = sb.line("examples/line_example.toml", threads=2)["schedule"]   # minutes
     fit = sb.identify_impedance(sb.load_damper("examples/damper_to_identify.toml"),
                                 "examples/measured_impedance.csv")
 """
@@ -31,7 +32,7 @@ try:
     from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, conductor,  # noqa: F401
                         conductors, cycle, identify_global, identify_local, impedance, load_cable, load_conductor,
                         load_damper, load_strand, loop, modes, response, strand_bounds)
-    from ._core import _cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _span
+    from ._core import _cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _line, _span
 except ImportError:  # the plots work from the source tree without the compiled module
     _defaults = {}  # the library's defaults come with it
 
@@ -150,7 +151,8 @@ def _override(spec, damper, positions, ends, tension, tension_fraction, catenary
 def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_dampers=False, damper_model=None,
          optimize_position=None, threads=_defaults.get("span_threads"), text=None, spec=None, base=None,
          damper=None, positions=None, ends=None, tension=None, tension_fraction=None, catenary_parameter=None,
-         length=None, conductor_type=None):
+         length=None, conductor_type=None, spacing_min=_defaults.get("span_spacing_min"),
+         objective=_defaults.get("span_objective")):
     """The energy balance of a span over the wind band, as ``stockbridge span``.
 
     The span: a span file's path (`file`; its relative paths start at its folder), its
@@ -165,7 +167,9 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
     `frequencies` (Hz, increasing) or `points` log-spaced over the band;
     `no_dampers`; `damper_model` "travelling" or "weak" (None: the span file's
     [balance] damper_model, travelling by default); `optimize_position` = (amin,
-    amax) in m to search the dampers' position first; `threads` for the dampers'
+    amax) in m to search every damper's position first (each its own, at least
+    `spacing_min` m apart, minimising `objective`: "max_stress" or "life"; the
+    positions found in the summary's positions_m); `threads` for the dampers'
     impedance tables.
 
     Returns a dict: one array per column of the span CSV, by the CSV's names (stresses
@@ -179,14 +183,44 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
         out = _span(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
                     frequencies=frequencies, points=points, no_dampers=no_dampers, damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
-                    threads=threads)
+                    spacing_min=spacing_min, objective=objective, threads=threads)
     else:
         described, folder = _span_spec(file, text, spec, None if base is None else str(base))
         described = _override(described, *overrides)
         out = _span(text=_toml.document(described), base=folder, frequencies=frequencies, points=points,
                     no_dampers=no_dampers, damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
-                    threads=threads)
+                    spacing_min=spacing_min, objective=objective, threads=threads)
+    out["summary"] = json.loads(out.pop("summary_json"))
+    return out
+
+
+def line(file=None, text=None, base=None, threads=1):
+    """The damper schedule of a line, as ``stockbridge line``: for every span the
+    fewest dampers per end, of which type and where, that make it safe.
+
+    The line: a line file's path (`file`; its relative paths start at its folder) or
+    its contents (`text`, whose relative paths start at `base`, default the working
+    directory), one of the two. `threads` spans computed at once, sharing the
+    dampers' impedance tables (the same schedule for any number). Minutes for a real
+    line; Ctrl-C stops it (KeyboardInterrupt), nothing returned.
+
+    Returns a dict: 'schedule', one array per column of the schedule CSV by its names,
+    one value per span in the line's order (id, conductor, undamped_verdict,
+    damper_type, positions_m, verdict and warnings lists of str; dampers_per_end,
+    converged_points, points and search_balances int; converged and
+    terrain_hw_within bool; the rest float, NaN where the CSV's cell is empty: a
+    stress or life of a balance that did not converge throughout); 'bill', the bill
+    of materials CSV's columns (damper_type, dampers, spans, mass_kg); 'summary', the
+    --json summary's keys (spans, spans_safe, spans_unsafe, spans_unknown, bill,
+    governing_span, ...; None where the JSON has null; without the command's ranks,
+    threads and seconds); 'warnings', the line file's values outside the typical
+    ranges (each also an UnusualValueWarning; a span's own warnings are in its
+    schedule row). A line file the reader refuses raises InputError naming the file
+    (or ``line(text=...)``), line and key; a span whose scheduling fails is a row
+    with verdict unknown and the reason in its warnings, as in the command's CSV."""
+    out = _line(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
+                threads=threads)
     out["summary"] = json.loads(out.pop("summary_json"))
     return out
 

@@ -6,6 +6,7 @@
     python3 -m stockbridge.plot fit fitted.csv -o fit.png       (identify ... --fitted)
     python3 -m stockbridge.plot span span.csv -o span.png       (span: damped and undamped)
     python3 -m stockbridge.plot design designs.csv -o design.png (design: objective per variable)
+    python3 -m stockbridge.plot line schedule.csv -o schedule.png (line: stresses and dampers per span)
 
 Errors (a missing file or column, a cell that is not a number, nothing to plot, an
 output that cannot be written) print one line on stderr and exit with status 2,
@@ -23,6 +24,7 @@ import warnings
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.patches  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
 from matplotlib.ticker import FuncFormatter, LogLocator, MaxNLocator, NullFormatter  # noqa: E402
 
@@ -722,6 +724,121 @@ def plot_design(path, output):
     save(design_figure(path), output)
 
 
+# ---------------------------------------------------------------- line
+
+VERDICTS = ("safe", "unsafe", "unknown")
+VERDICT_COLOURS = {"safe": "C2", "unsafe": "C3", "unknown": "0.6"}
+LINE_TICK_LABELS = 24  # at most this many span ids along the x axis
+
+
+class Schedule:
+    """A line's schedule CSV (stockbridge line -o): per span its id, the largest fymax
+    stress with the recommended dampers and without (MPa, NaN where empty: a balance
+    that did not converge throughout), the endurance limit (MPa, per span: it depends
+    on the conductor), the dampers per end and the verdict."""
+
+    def __init__(self, path):
+        table = Table(path)
+        self.path = path
+        for name in ("id", "verdict", "dampers_per_end", "max_stress_mpa", "undamped_max_stress_mpa",
+                     "endurance_limit_mpa"):
+            if name not in table:
+                raise PlotError(f"{path}: missing column '{name}': expected a schedule CSV (stockbridge line -o)")
+        self.id = table.text("id")
+        self.verdict = table.text("verdict")
+        for i, verdict in enumerate(self.verdict):
+            if verdict not in VERDICTS:
+                raise PlotError(f"{path}:{table.rows[i][0]}: verdict = '{verdict}': expected safe, unsafe or unknown")
+        self.dampers = table.required("dampers_per_end")
+        for i, n in enumerate(self.dampers):
+            if n < 0 or n != int(n):
+                raise PlotError(f"{path}:{table.rows[i][0]}: dampers_per_end = {n:g}: expected a whole number >= 0")
+        self.stress = table.column("max_stress_mpa")
+        self.undamped = table.column("undamped_max_stress_mpa")
+        self.limit = table.column("endurance_limit_mpa")
+        for name, values in (("max_stress_mpa", self.stress), ("undamped_max_stress_mpa", self.undamped),
+                             ("endurance_limit_mpa", self.limit)):
+            for i, v in enumerate(values):
+                if v <= 0:
+                    raise PlotError(f"{path}:{table.rows[i][0]}: {name} = {v:g}: expected a positive stress (MPa)")
+        if not any(math.isfinite(v) for v in self.stress + self.undamped):
+            raise PlotError(f"{path}: no stress to plot (max_stress_mpa and undamped_max_stress_mpa are empty in "
+                            "every row)")
+
+    def count(self, verdict):
+        return sum(v == verdict for v in self.verdict)
+
+
+def span_ticks(axis, ids):
+    """Every span a minor tick, at most LINE_TICK_LABELS of them labelled with their
+    ids (every k-th, from the first), slanted."""
+    n = len(ids)
+    step = max(1, math.ceil(n / LINE_TICK_LABELS))
+    axis.set_xticks(range(n), minor=True)
+    axis.set_xticks(range(0, n, step), [ids[i] for i in range(0, n, step)], rotation=60, ha="right",
+                    rotation_mode="anchor", fontsize="small" if n > 12 else None)
+    axis.set_xlim(-0.7, n - 0.3)
+
+
+def line_figure(path):
+    """A line's schedule span by span along the line: the largest fymax stress at the
+    span clamp with the recommended dampers (filled circles) and without (hollow
+    grey circles, joined to it), and each span's endurance limit (a red step); unsafe
+    spans shaded red and unknown ones grey on both panels; below, the dampers per
+    end as bars coloured by verdict. The title gives the line's counts."""
+    schedule = Schedule(path)
+    n = len(schedule.id)
+    x = list(range(n))
+    figure, (stress, dampers) = plt.subplots(2, 1, figsize=FIGURE_SIZE, sharex=True, layout="constrained",
+                                             gridspec_kw={"height_ratios": [3, 2]})
+    for i, verdict in enumerate(schedule.verdict):
+        if verdict != "safe":
+            for axis in (stress, dampers):
+                axis.axvspan(i - 0.5, i + 0.5, color=VERDICT_COLOURS[verdict], alpha=0.15, linewidth=0)
+    both = [i for i in x if finite(schedule.stress[i], schedule.undamped[i])]
+    stress.vlines(both, [schedule.stress[i] for i in both], [schedule.undamped[i] for i in both], color="0.75",
+                  linewidth=1.0)
+    stress.plot(x, schedule.undamped, "o", color="0.45", markerfacecolor="none", markersize=5, label="without dampers")
+    stress.plot(x, schedule.stress, "o", color="C0", markersize=5, label="with the dampers")
+    edges = [e for i in x for e in (i - 0.5, i + 0.5)]  # each span's limit across its width, joined as steps
+    stress.plot(edges, [v for v in schedule.limit for _ in range(2)], color="C3", linewidth=1.2,
+                label="endurance limit")
+    values = plotted(stress, "y")
+    log_scale(stress, "y")  # every value is positive
+    low, high = min(values), max(values)
+    stress.set_ylim(low / (high / low) ** 0.05, high * (high / low) ** 0.3)  # room for the legend on top
+    stress.set_ylabel("largest fymax stress (MPa)")
+    stress.grid(True, which="major", axis="y", alpha=0.3)
+    handles, labels = stress.get_legend_handles_labels()
+    for verdict in ("unsafe", "unknown"):
+        if schedule.count(verdict):
+            handles.append(matplotlib.patches.Patch(color=VERDICT_COLOURS[verdict], alpha=0.15))
+            labels.append(f"{verdict} span")
+    stress.legend(handles, labels, fontsize="small", ncol=len(handles), loc="upper center")
+    colours = [VERDICT_COLOURS[v] for v in schedule.verdict]
+    dampers.bar(x, schedule.dampers, width=0.7, color=colours)
+    none = [i for i in x if schedule.dampers[i] == 0]
+    if none:  # a span without dampers: its verdict's colour as a flat mark on the axis
+        dampers.scatter(none, [0.0] * len(none), marker="_", s=60, linewidths=3,
+                        c=[colours[i] for i in none], clip_on=False, zorder=3)
+    dampers.set_ylim(0, max(max(schedule.dampers), 1) * 1.25 + 0.6)  # room for the legend on top
+    most = int(max(schedule.dampers))
+    dampers.set_yticks(range(0, most + 1, max(1, math.ceil(most / 6))))  # none above the largest count
+    dampers.set_ylabel("dampers per end")
+    dampers.set_xlabel("span (id), along the line")
+    dampers.grid(True, axis="y", alpha=0.3)
+    dampers.legend([matplotlib.patches.Patch(color=VERDICT_COLOURS[v]) for v in VERDICTS],
+                   [f"{v}: {schedule.count(v)}" for v in VERDICTS], fontsize="small", ncol=3, loc="upper left")
+    span_ticks(dampers, schedule.id)
+    counts = ", ".join(f"{schedule.count(v)} {v}" for v in VERDICTS)
+    stress.set_title(f"Damper schedule ({path}): {n} spans, {counts}", fontsize="medium")
+    return figure
+
+
+def plot_line(path, output):
+    save(line_figure(path), output)
+
+
 # ---------------------------------------------------------------- command line
 
 class Parser(argparse.ArgumentParser):
@@ -746,7 +863,9 @@ def parser():
                        ("fit", "measured and fitted loops or impedance (identify ... --fitted)"),
                        ("span", "amplitude and fymax stress over frequency, damped and undamped, of a span CSV"),
                        ("design", "objective over each variable of a design CSV: feasible, infeasible, polished, "
-                        "best")):
+                        "best"),
+                       ("line", "stresses with and without dampers and the dampers per end, span by span, of a "
+                        "schedule CSV (stockbridge line)")):
         command = commands.add_parser(name, help=text)
         command.add_argument("csv")
         command.add_argument("-o", "--output", required=True)
@@ -764,6 +883,8 @@ def run(args):
         plot_span(args.csv, args.output)
     elif args.command == "design":
         plot_design(args.csv, args.output)
+    elif args.command == "line":
+        plot_line(args.csv, args.output)
     else:
         plot_fit(args.csv, args.output)
 

@@ -202,6 +202,30 @@ void search_locally(PositionObjectiveRun& run, const PositionRules& rules, std::
   if (local.failure) std::rethrow_exception(local.failure);
 }
 
+/// The radical inverse of i in `base` (the Halton sequence's coordinate).
+double radical_inverse(int i, int base) {
+  double inverse = 0.0, digit = 1.0 / base;
+  for (; i > 0; i /= base, digit /= base) inverse += digit * (i % base);
+  return inverse;
+}
+
+/// `count` arrangements of `n` dampers spread evenly over every arrangement the rules
+/// allow (Halton points, each sorted and mapped onto increasing positions at least
+/// spacing_min apart): the objective's basins are too many for starts alone.
+std::vector<std::vector<double>> spread_arrangements(std::size_t n, int count, const PositionRules& rules) {
+  static constexpr int kBases[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29};
+  const double room = rules.position_max - rules.position_min - static_cast<double>(n - 1) * rules.spacing_min;
+  std::vector<std::vector<double>> out;
+  for (int i = 1; i <= count; ++i) {
+    std::vector<double> u(n);
+    for (std::size_t k = 0; k < n; ++k) u[k] = radical_inverse(i, kBases[k % 10]);
+    std::sort(u.begin(), u.end());
+    for (std::size_t k = 0; k < n; ++k) u[k] = rules.position_min + static_cast<double>(k) * rules.spacing_min + room * u[k];
+    out.push_back(std::move(u));
+  }
+  return out;
+}
+
 }  // namespace
 
 PositionSearch optimise_positions(const Span& span, const SpanTables& tables, const BalanceOptions& options,
@@ -242,6 +266,12 @@ PositionSearch optimise_positions(const Span& span, const SpanTables& tables, co
   starts.emplace_back(run(own), own);
   for (const double fraction : {0.3, 0.5, 0.7, 0.9}) {
     std::vector<double> x = usual_positions(span, f_max, count, fraction, fit);
+    starts.emplace_back(run(x), std::move(x));
+  }
+  // The objective has a basin near every node of the shortest waves: a local search
+  // stays in its start's. Arrangements spread over all that are allowed find the
+  // best basins; the local searches start from the best of everything tried.
+  for (std::vector<double>& x : spread_arrangements(n, rules.scan_points * static_cast<int>(n) / 2, rules)) {
     starts.emplace_back(run(x), std::move(x));
   }
   std::stable_sort(starts.begin(), starts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });

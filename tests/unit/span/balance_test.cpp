@@ -339,11 +339,13 @@ TEST(SpanBalance, ThePositionSearchFindsTheBestOfAFineScan) {
   EXPECT_NEAR(found.positions[0], best_at, 0.02);
 }
 
-// Two dampers per end, each its own position: the search (usual starts, then COBYLA)
-// is at least as good as a 0.1 m grid of both positions, and keeps the spacing.
-TEST(SpanBalance, TwoDampersPositionsSearchedTogetherBeatAGrid) {
+// Two dampers per end, each its own position: the search (the usual starts and
+// arrangements spread over the range, then COBYLA) comes within 1 % of the best of a
+// 0.1 m grid of both positions (some 350 balances against its 100), and keeps the
+// spacing.
+TEST(SpanBalance, TwoDampersPositionsSearchedTogetherNearlyMatchAGrid) {
   const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}, {sauter_damper(), 2.0, true, "sauter", nullptr}});
-  const std::vector<double> f{8.0, 14.0, 25.0, 40.0};
+  const std::vector<double> f = band_frequencies(span, 20);
   BalanceOptions options = fast_options();
   options.polish = false;
   const SpanTables tables(span, f, options.table);
@@ -356,15 +358,17 @@ TEST(SpanBalance, TwoDampersPositionsSearchedTogetherBeatAGrid) {
   EXPECT_GE(found.positions[1] - found.positions[0], rules.spacing_min - 1e-6);
   EXPECT_GE(found.positions[0], rules.position_min - 1e-9);
   EXPECT_LE(found.positions[1], rules.position_max + 1e-9);
-  double grid = std::numeric_limits<double>::infinity();
+  double grid = std::numeric_limits<double>::infinity(), grid_a = 0.0, grid_b = 0.0;
   for (double a = 0.5; a <= 3.5 + 1e-9; a += 0.1) {
     for (double b = a + 0.4; b <= 3.5 + 1e-9; b += 0.1) {
       std::vector<SpanDamper> d = span.dampers();
       d[0].position = a, d[1].position = b;
-      grid = std::min(grid, run_balance(span.with_dampers(d), tables, options).summary.max_stress_fymax);
+      const double s = run_balance(span.with_dampers(d), tables, options).summary.max_stress_fymax;
+      if (s < grid) grid = s, grid_a = a, grid_b = b;
     }
   }
-  EXPECT_LE(found.max_stress_fymax, grid * 1.01) << "found " << found.positions[0] << ", " << found.positions[1];
+  EXPECT_LE(found.max_stress_fymax, grid * 1.01) << "found " << found.positions[0] << ", " << found.positions[1]
+                                                 << "; the grid's best " << grid_a << ", " << grid_b;
   // Its objective is the stress it reports, over the endurance limit.
   std::vector<SpanDamper> d = span.dampers();
   d[0].position = found.positions[0], d[1].position = found.positions[1];

@@ -1,0 +1,180 @@
+// A line's pieces: schedule records give their rows back bit for bit (what ranks send
+// and --resume reads) and refuse a record cut short; the rules and the line file are
+// checked where the user wrote them.
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/io/line_file.hpp"
+#include "stockbridge/requests/line_request.hpp"
+
+namespace stockbridge::line {
+namespace {
+
+ScheduleRow a_row() {
+  ScheduleRow r;
+  r.index = 17;
+  r.id = "T12\tT13 \\ river";
+  r.conductor = "ACSR Drake";
+  r.length = 420.0;
+  r.tension = 27795.000000000004;
+  r.tension_fraction = 0.15000000000000002;
+  r.catenary_parameter = 1804.1382647817643;
+  r.span_parameter = 7.905792488860598;
+  r.terrain = 2;
+  r.terrain_within = 0;
+  r.endurance_limit = 8.73234423885417e6;
+  r.undamped_max_stress = 4.959895173457283e7;
+  r.undamped_life_years = 0.001538996328427709;
+  r.undamped_verdict = span::Verdict::unsafe;
+  r.damper_type = "sb1";
+  r.per_end = 2;
+  r.positions = {1.33, 4.1};
+  r.max_stress = 7.130785512570936e6;
+  r.max_stress_frequency = 6.076401576332188;
+  r.life_years = std::numeric_limits<double>::infinity();
+  r.verdict = span::Verdict::safe;
+  r.converged = 99;
+  r.points = 100;
+  r.balances = 125;
+  r.warnings = {"first\nsecond line", "", "a | b"};
+  return r;
+}
+
+TEST(ScheduleRecord, GivesItsRowBackBitForBit) {
+  const ScheduleRow r = a_row();
+  const std::string record = requests::schedule_record(r);
+  EXPECT_EQ(record.find('\n'), std::string::npos);
+  const ScheduleRow back = requests::parse_schedule_record(record);
+  EXPECT_EQ(requests::schedule_record(back), record);
+  EXPECT_EQ(back.id, r.id);
+  EXPECT_EQ(back.warnings, r.warnings);
+  EXPECT_EQ(back.positions, r.positions);
+  EXPECT_EQ(back.tension, r.tension);
+  EXPECT_EQ(back.catenary_parameter, r.catenary_parameter);
+  EXPECT_TRUE(std::isinf(back.life_years));
+  EXPECT_EQ(back.verdict, span::Verdict::safe);
+  // The CSV row of the record's row is the row's.
+  EXPECT_EQ(requests::schedule_table().values(back).csv(), requests::schedule_table().values(r).csv());
+  ScheduleRow missing = r;
+  missing.max_stress = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(requests::parse_schedule_record(requests::schedule_record(missing)).max_stress));
+}
+
+TEST(ScheduleRecord, ARecordCutShortIsRefused) {
+  const std::string record = requests::schedule_record(a_row());
+  for (const std::size_t keep : {std::size_t{0}, std::size_t{10}, record.size() / 2, record.size() - 4}) {
+    EXPECT_THROW(requests::parse_schedule_record(record.substr(0, keep)), InvalidParameter) << keep;
+  }
+}
+
+TEST(ScheduleCsv, StressesOfABalanceNotConvergedThroughoutAreLeftEmpty) {
+  ScheduleRow r = a_row();
+  const std::string csv = requests::schedule_table().values(r).csv();
+  // converged 99 of 100: max_stress_mpa, life and the ratio empty; the undamped figures kept
+  EXPECT_NE(csv.find(",49.59895173457283,0.001538996328427709,2,,,,,,0,99,100,125"), std::string::npos) << csv;
+  r.converged = 100;
+  EXPECT_NE(requests::schedule_table().values(r).csv().find(",2,7.130785512570936,"), std::string::npos);
+}
+
+TEST(ScheduleRules, AreCheckedAsTheLineFileSpellsThem) {
+  const auto field_of = [](ScheduleRules r) {
+    try {
+      r.validate();
+    } catch (const InvalidParameter& e) {
+      return e.field();
+    }
+    return std::string("(accepted)");
+  };
+  ScheduleRules r;
+  EXPECT_EQ(field_of(r), "(accepted)");
+  r.max_per_end = 0;
+  EXPECT_EQ(field_of(r), "dampers.max_per_end");
+  r = ScheduleRules{};
+  r.min_per_end = 3, r.max_per_end = 2;
+  EXPECT_EQ(field_of(r), "dampers.max_per_end");
+  r = ScheduleRules{};
+  r.positions.position_max = 0.2;
+  EXPECT_EQ(field_of(r), "dampers.position_max");
+  r = ScheduleRules{};
+  r.positions.spacing_min = 4.0;  // three dampers 4 m apart do not fit in 0.5 .. 8 m
+  EXPECT_EQ(field_of(r), "dampers.spacing_min");
+  r = ScheduleRules{};
+  r.position_step = 0.0;
+  EXPECT_EQ(field_of(r), "dampers.position_step");
+  r = ScheduleRules{};
+  r.life_target = -1.0;
+  EXPECT_EQ(field_of(r), "dampers.life_target");
+}
+
+std::string line_text(const std::string& extra_dampers, const std::string& spans) {
+  return std::string(R"([conductor]
+type = "AAAC ASTER570"
+[wind]
+law = "cigre"
+[self_damping]
+law = "noiseux-1991"
+[fatigue]
+cycles = 5e8
+[dampers]
+types = [ { name = "sb1", file = ")") + STOCKBRIDGE_SOURCE_DIR + "/examples/sauter2003.toml\" } ]\n" + extra_dampers +
+         spans;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    io::load_line_text(text, "line(text=...)");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(LineFile, SpansAreReadWithTheirTensionInAnyForm) {
+  const io::LineFile f = io::load_line_text(
+      line_text("", "[[span]]\nid = \"A\"\nlength = 300\ntension_fraction = 0.15\n"
+                    "[[span]]\nid = \"B\"\nlength = 400\ncatenary_parameter = 1500\nconductor = \"ACSR Drake\"\n"
+                    "wind = { speed_max = 6 }\n"
+                    "[[span]]\nid = \"C\"\nlength = 200\ntension = 30000\nterrain = 3\n"),
+      "line(text=...)");
+  ASSERT_EQ(f.line.spans().size(), 3u);
+  const auto& a = f.line.spans()[0].span;
+  EXPECT_DOUBLE_EQ(a.tension(), 0.15 * a.conductor().rated_tensile_strength);
+  const auto& b = f.line.spans()[1].span;
+  EXPECT_EQ(b.conductor().name, "ACSR Drake");
+  EXPECT_NEAR(b.tension(), 1500.0 * b.conductor().mass_per_length * 9.80665, 1e-9 * b.tension());
+  EXPECT_EQ(b.wind().speed_max, 6.0);
+  EXPECT_EQ(f.line.spans()[2].span.terrain(), 3);
+  EXPECT_EQ(f.line.spans()[2].tension_form, "tension");
+  ASSERT_EQ(f.line.types().size(), 1u);
+  EXPECT_NEAR(*f.line.types()[0].mass, 2.412, 1e-9);  // its clamp (0.7 kg) and two masses of 0.856 kg
+}
+
+TEST(LineFile, MistakesAreNamedWhereTheyAre) {
+  EXPECT_NE(error_of(line_text("", "[[span]]\nid = \"A\"\nlength = 300\n")).find("missing key 'tension' in [span[0]]"),
+            std::string::npos);
+  EXPECT_NE(error_of(line_text("", "[[span]]\nid = \"A\"\nlength = 300\ntension = 1\ntension_fraction = 0.1\n"))
+                .find("span[0].tension_fraction: given beside tension"),
+            std::string::npos);
+  EXPECT_NE(error_of(line_text("objective = \"lifetime\"\n", "[[span]]\nid = \"A\"\nlength = 300\ntension = 3e4\n"))
+                .find("dampers.objective = \"lifetime\""),
+            std::string::npos);
+  EXPECT_NE(error_of(line_text("objective = \"life\"\n", "[[span]]\nid = \"A\"\nlength = 300\ntension = 3e4\n"))
+                .find("the line gives no climate"),
+            std::string::npos);
+  EXPECT_NE(error_of(line_text("", "")).find("the line has no span"), std::string::npos);
+  EXPECT_NE(error_of(line_text("", "[[span]]\nid = \"A\"\nlength = 300\ntension = 3e5\n")).find("span \"A\": tension"),
+            std::string::npos);
+  EXPECT_NE(error_of(line_text("max_per_end = 0\n", "[[span]]\nid = \"A\"\nlength = 300\ntension = 3e4\n"))
+                .find("max_per_end"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace stockbridge::line
