@@ -35,7 +35,8 @@ std::optional<Span> with_every_other_curve(const Span& span, int parity) {
 std::string measured_names(const Span& span) {
   std::string names;
   for (const SpanDamper& d : span.dampers()) {
-    if (d.measured()) names += fmt::format("{}{}", names.empty() ? "" : ", ", d.name);
+    if (!d.measured() || (", " + names + ", ").find(", " + d.name + ", ") != std::string::npos) continue;
+    names += fmt::format("{}{}", names.empty() ? "" : ", ", d.name);
   }
   return names;
 }

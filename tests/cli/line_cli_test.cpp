@@ -200,6 +200,26 @@ TEST(LineCli, CtrlCStopsCleanlyWithStatus130AndTheJournalResumes) {
   EXPECT_EQ(read_text(dir / "schedule.csv"), reference_schedule());
 }
 
+// A damper type known by a measured sheet: nothing solved, so the sanitizer builds
+// run a whole line (two threads taking spans) in a second.
+TEST(LineCli, AMeasuredDamperTypeOnTwoThreads) {
+  std::string text = small_line();
+  const std::string model = "{ name = \"sb1\", file = \"" + kDamperExample + "\" }";
+  text.replace(text.find(model), model.size(),
+               "{ name = \"vendor\", impedance = \"" + std::string(STOCKBRIDGE_SOURCE_DIR) +
+                   "/examples/vendor_sheet.csv\", mass = 2.4 }");
+  text.replace(text.find("points = 30\nsearch_points = 20"), 31, "points = 12\nsearch_points = 10");
+  const auto dir = line_folder("line-sheet", text);
+  const CliResult two = run_cli("line line.toml -o two.csv --threads 2 --quiet", dir);
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  const CliResult one = run_cli("line line.toml -o one.csv --quiet", dir);
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(read_text(dir / "two.csv"), read_text(dir / "one.csv"));
+  EXPECT_NE(read_text(dir / "one.csv").find("vendor"), std::string::npos);
+  EXPECT_NE(read_text(dir / "one_bill.csv").find("damper_type,dampers,spans,mass_kg"), std::string::npos)
+      << read_text(dir / "one_bill.csv");
+}
+
 TEST(LineCli, AJournalOfOtherInputsIsRefused) {
   const auto dir = line_folder("line-other-journal");
   std::ofstream(dir / "schedule.csv.journal") << "stockbridge line journal 0123456789abcdef\n";

@@ -312,7 +312,8 @@ TEST(SpanCli, PositionSearchReportsAndBalancesAtThePositionFound) {
   EXPECT_LE(span_json_number(r.out, "max_stress_fymax_mpa"), span_json_number(at_file.out, "max_stress_fymax_mpa") * (1 + 1e-9));
   const CliResult report = run_cli(band + " --optimize-position 0.5:3 -o span2.csv", dir);
   ASSERT_EQ(report.exit_code, 0) << report.err;
-  EXPECT_NE(report.out.find("position: "), std::string::npos) << report.out;
+  EXPECT_NE(report.out.find("positions: "), std::string::npos) << report.out;
+  EXPECT_NE(report.out.find("minimise the largest fymax stress"), std::string::npos) << report.out;
 }
 
 /// Exit 2, one line on stderr containing `mention`, and no output file.

@@ -21,6 +21,7 @@
 #include "stockbridge/requests/cycle_request.hpp"
 #include "stockbridge/requests/design_request.hpp"
 #include "stockbridge/requests/identify_request.hpp"
+#include "stockbridge/requests/line_request.hpp"
 #include "stockbridge/requests/impedance_fit_request.hpp"
 #include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/response_request.hpp"
@@ -61,6 +62,8 @@ std::map<std::string, std::string> documented_output_tables() {
       {"identify_global_fitted_a", documented_table(global_fitted_table(GlobalRequest{}))},
       {"identify_global_fitted_b", documented_table(global_fitted_table(experiment_b))},
       {"identify_impedance_fitted", documented_table(fitted_table())},
+      {"schedule", documented_table(schedule_table())},
+      {"bill", documented_table(bill_table())},
   };
 }
 
