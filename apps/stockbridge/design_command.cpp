@@ -66,6 +66,15 @@ void print_design_report(const design::DesignStudy& study, const design::DesignR
   for (std::size_t d = 0; d < study.variables().size(); ++d) {
     fmt::print("  {} = {}\n", study.variables()[d].name, design_value(best.x[d]));
   }
+  for (std::size_t k = 0; k < best.spans.size(); ++k) {
+    const design::SpanFigures& f = best.spans[k];
+    const auto position = study.position_on(k, best.x);
+    fmt::print("  span {}: {:.3g} MPa, {:.3g} of its endurance limit{}{}{}\n", study.spans()[k].name, f.max_stress / 1e6,
+               f.max_stress_ratio, position ? fmt::format(", dampers from {:.3g} m", *position) : std::string(),
+               k == best.span_at_max ? " (governs)" : "",
+               f.worse_than_undamped() ? fmt::format(": WORSE than undamped ({:.3g} MPa)", f.undamped_max_stress / 1e6)
+                                       : std::string());
+  }
   for (std::size_t j = 0; j < result.polishes.size(); ++j) {
     const SolverSummary& p = result.polishes[j];
     fmt::print("polish {}: {} after {} candidates{}\n", j, p.converged() ? "converged" : "stopped", p.evaluations,

@@ -59,6 +59,10 @@ class Bytes {
     put<std::uint64_t>(e.span_at_max);
     put(e.failure);
     put(e.infeasibility);
+    put<std::uint64_t>(e.spans.size());
+    for (const design::SpanFigures& f : e.spans) {
+      for (const double v : {f.max_stress_ratio, f.max_stress, f.undamped_max_stress, f.life_years}) put(v);
+    }
   }
   void put(const SolverSummary& s) {
     put<std::int32_t>(static_cast<std::int32_t>(s.termination));
@@ -103,6 +107,10 @@ class Reader {
     e.span_at_max = get<std::uint64_t>();
     e.failure = text();
     e.infeasibility = text();
+    e.spans.resize(get<std::uint64_t>());
+    for (design::SpanFigures& f : e.spans) {
+      for (double* v : {&f.max_stress_ratio, &f.max_stress, &f.undamped_max_stress, &f.life_years}) *v = get<double>();
+    }
     return e;
   }
   SolverSummary summary() {
@@ -118,59 +126,61 @@ class Reader {
   const char* end_;
 };
 
-/// Rank r runs tasks r, r + size, ... on its threads; every rank then has every
-/// task's evaluations (MPI_Allgatherv). A task that throws on one rank makes every
-/// rank throw its message.
+/// The tasks dealt one at a time to whichever thread of whichever rank is free
+/// (Processes::deal: candidates differ in cost); rank 0 gathers every task's
+/// evaluations and sends them all to every rank (MPI_Bcast), so that every rank goes
+/// on with the same. A task that throws makes every rank throw its message.
 class MpiRunner final : public design::TaskRunner {
  public:
-  MpiRunner(int rank, int size, int threads) : rank_(rank), size_(size), threads_(threads) {}
+  MpiRunner(const Processes& processes, int threads) : processes_(processes), threads_(threads) {}
 
   std::vector<design::TaskOutput> run(int tasks, const std::function<design::TaskOutput(int)>& task) override {
-    std::vector<int> mine;
-    for (int t = rank_; t < tasks; t += size_) mine.push_back(t);
-    Bytes bytes;
-    try {
-      design::ThreadRunner threads(threads_);
-      const auto results = threads.run(static_cast<int>(mine.size()), [&](int k) { return task(mine[k]); });
-      bytes.put<std::uint8_t>(0);
-      for (std::size_t k = 0; k < mine.size(); ++k) {
-        bytes.put<std::int64_t>(mine[k]);
-        bytes.put<std::uint64_t>(results[k].evaluations.size());
-        for (const design::Evaluation& e : results[k].evaluations) bytes.put(e);
-        bytes.put(results[k].optimiser);
+    std::vector<std::size_t> todo(static_cast<std::size_t>(tasks));
+    for (std::size_t t = 0; t < todo.size(); ++t) todo[t] = t;
+    std::vector<std::string> records(todo.size());
+    const auto run_one = [&](std::size_t t) {
+      Bytes bytes;
+      try {
+        const design::TaskOutput out = task(static_cast<int>(t));
+        bytes.put<std::uint8_t>(0);
+        bytes.put<std::uint64_t>(out.evaluations.size());
+        for (const design::Evaluation& e : out.evaluations) bytes.put(e);
+        bytes.put(out.optimiser);
+      } catch (const std::exception& error) {
+        bytes = Bytes();
+        bytes.put<std::uint8_t>(1);
+        bytes.put(std::string(error.what()));
       }
-    } catch (const std::exception& error) {
-      bytes = Bytes();
-      bytes.put<std::uint8_t>(1);
-      bytes.put(std::string(error.what()));
+      return std::string(bytes.buffer().begin(), bytes.buffer().end());
+    };
+    const std::atomic<bool> never(false);
+    processes_.deal(threads_, todo, run_one, [&](std::size_t t, const std::string& record) { records.at(t) = record; },
+                    never);
+    // Rank 0 has every record: to every rank, each with its length.
+    Bytes all;
+    if (processes_.rank() == 0) {
+      for (const std::string& r : records) all.put(r);
     }
-    std::vector<char>& send = bytes.buffer();
-    const int size = static_cast<int>(send.size());
-    std::vector<int> sizes(static_cast<std::size_t>(size_)), offsets(static_cast<std::size_t>(size_));
-    MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, MPI_COMM_WORLD);
-    int total = 0;
-    for (int r = 0; r < size_; ++r) {
-      offsets[static_cast<std::size_t>(r)] = total;
-      total += sizes[static_cast<std::size_t>(r)];
-    }
-    std::vector<char> all(static_cast<std::size_t>(total));
-    MPI_Allgatherv(send.data(), size, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
-    std::vector<design::TaskOutput> out(static_cast<std::size_t>(tasks));
-    for (int r = 0; r < size_; ++r) {
-      Reader in(all.data() + offsets[static_cast<std::size_t>(r)], static_cast<std::size_t>(sizes[static_cast<std::size_t>(r)]));
+    std::uint64_t size = all.buffer().size();
+    MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    all.buffer().resize(size);
+    MPI_Bcast(all.buffer().data(), static_cast<int>(size), MPI_CHAR, 0, MPI_COMM_WORLD);
+    Reader records_in(all.buffer().data(), all.buffer().size());
+    std::vector<design::TaskOutput> out(todo.size());
+    for (design::TaskOutput& o : out) {
+      const std::string record = records_in.text();
+      Reader in(record.data(), record.size());
       if (in.get<std::uint8_t>() != 0) throw std::runtime_error(in.text());
-      while (!in.done()) {
-        const auto t = static_cast<std::size_t>(in.get<std::int64_t>());
-        const auto n = in.get<std::uint64_t>();
-        for (std::uint64_t k = 0; k < n; ++k) out.at(t).evaluations.push_back(in.evaluation());
-        out.at(t).optimiser = in.summary();
-      }
+      const auto n = in.get<std::uint64_t>();
+      for (std::uint64_t k = 0; k < n; ++k) o.evaluations.push_back(in.evaluation());
+      o.optimiser = in.summary();
     }
     return out;
   }
 
  private:
-  int rank_, size_, threads_;
+  const Processes& processes_;
+  int threads_;
 };
 
 #endif
@@ -388,7 +398,7 @@ void Processes::deal(int threads, const std::vector<std::size_t>& todo,
 
 std::unique_ptr<design::TaskRunner> Processes::runner(int threads) const {
 #ifdef STOCKBRIDGE_WITH_MPI
-  if (mpi_) return std::make_unique<MpiRunner>(rank_, size_, threads);
+  if (mpi_) return std::make_unique<MpiRunner>(*this, threads);
 #endif
   return std::make_unique<design::ThreadRunner>(threads);
 }

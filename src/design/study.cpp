@@ -34,15 +34,19 @@ void validate_variable(const DesignVariable& v, std::size_t i, const damper::Dam
   const std::string field = fmt::format("variable[{}]", i);
   if (!(std::isfinite(v.min) && std::isfinite(v.max))) throw_invalid(field + ".min", v.min, "finite bounds");
   if (!(v.min < v.max)) throw_invalid(field + ".max", v.max, fmt::format("a value > min = {}", v.min));
-  if (v.name == kPosition) {
+  if (v.name == kPosition || v.name == kPositionLoopFraction) {
     if (!(v.min > 0.0)) throw_invalid(field + ".min", v.min, "a position > 0 m from the span clamp");
+    if (v.name == kPositionLoopFraction && !(v.max <= 5.0)) {
+      throw_invalid(field + ".max", v.max, "a fraction of the shortest loop up to 5");
+    }
     for (const DesignSpan& s : spans) {
       if (s.span.dampers().empty()) {
-        throw InvalidParameter(field + ".name", fmt::format(" = \"position\": span {} has no [[damper]] to move", s.name));
+        throw InvalidParameter(field + ".name", fmt::format(" = \"{}\": span {} has no [[damper]] to move", v.name, s.name));
       }
       double last = 0.0;  // the farthest damper beyond the first, which the position places
       for (const span::SpanDamper& d : s.span.dampers()) last = std::max(last, d.position - s.span.dampers().front().position);
-      if (!(v.max + last < 0.5 * s.span.length())) {
+      const double farthest = v.name == kPosition ? v.max : v.max * span::shortest_loop(s.span);
+      if (!(farthest + last < 0.5 * s.span.length())) {
         throw_invalid(field + ".max", v.max, fmt::format("a position whose dampers stay within half of span {} ({} m)", s.name,
                                                          0.5 * s.span.length()));
       }
@@ -81,7 +85,7 @@ DesignStudy::DesignStudy(damper::DamperDescription base, std::vector<DesignSpan>
     const std::string field = fmt::format("tie[{}]", i);
     check_path(field + ".name", t.name, base_);
     const auto followed = std::find_if(variables_.begin(), variables_.end(), [&](const auto& v) { return v.name == t.equals; });
-    if (followed == variables_.end() || t.equals == kPosition) {
+    if (followed == variables_.end() || t.equals == kPosition || t.equals == kPositionLoopFraction) {
       throw InvalidParameter(field + ".equals", fmt::format(" = \"{}\": expected the name of a damper [[variable]]", t.equals));
     }
     for (const DesignVariable& v : variables_) {
@@ -104,7 +108,10 @@ DesignStudy::DesignStudy(damper::DamperDescription base, std::vector<DesignSpan>
 std::vector<double> DesignStudy::base_values() const {
   std::vector<double> x;
   for (const DesignVariable& v : variables_) {
-    x.push_back(v.name == kPosition ? spans_.front().span.dampers().front().position : damper_number(base_, v.name));
+    const double first = v.name == kPosition || v.name == kPositionLoopFraction ? spans_.front().span.dampers().front().position : 0.0;
+    x.push_back(v.name == kPosition               ? first
+                : v.name == kPositionLoopFraction ? first / shortest_loop(0)
+                                                  : damper_number(base_, v.name));
   }
   return x;
 }
@@ -120,7 +127,7 @@ damper::DamperDescription DesignStudy::damper_of(const std::vector<double>& x) c
     set.push_back(path);
   };
   for (std::size_t i = 0; i < variables_.size(); ++i) {
-    if (variables_[i].name != kPosition) assign(variables_[i].name, x[i]);
+    if (variables_[i].name != kPosition && variables_[i].name != kPositionLoopFraction) assign(variables_[i].name, x[i]);
   }
   for (const DesignTie& t : ties_) {
     const auto k = std::find_if(variables_.begin(), variables_.end(), [&](const auto& v) { return v.name == t.equals; });
@@ -139,6 +146,16 @@ damper::DamperDescription DesignStudy::damper_of(const std::vector<double>& x) c
     if (mass_set && !inertia_set) d.arms[a].inertia = base_.arms[a].inertia * d.arms[a].mass / base_.arms[a].mass;
   }
   return d;
+}
+
+double DesignStudy::shortest_loop(std::size_t k) const { return span::shortest_loop(spans_.at(k).span); }
+
+std::optional<double> DesignStudy::position_on(std::size_t k, const std::vector<double>& x) const {
+  for (std::size_t i = 0; i < variables_.size(); ++i) {
+    if (variables_[i].name == kPosition) return x.at(i);
+    if (variables_[i].name == kPositionLoopFraction) return x.at(i) * shortest_loop(k);
+  }
+  return std::nullopt;
 }
 
 std::optional<double> DesignStudy::position_of(const std::vector<double>& x) const {
@@ -206,17 +223,17 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
   }
   e.total_mass = damper->clamp_mass();
   for (const damper::Arm& arm : damper->arms()) e.total_mass += arm.description().mass;
-  const std::optional<double> position = study.position_of(x);
   std::vector<double> damper_key;  // the damper variables' values: what the tables depend on
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (study.variables()[i].name != kPosition) damper_key.push_back(x[i]);
+    const std::string& name = study.variables()[i].name;
+    if (name != kPosition && name != kPositionLoopFraction) damper_key.push_back(x[i]);
   }
   double ratio = 0.0, curvature = 0.0, life = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < study.spans().size(); ++k) {
     const DesignSpan& design_span = study.spans()[k];
     std::optional<span::Span> s;
     try {
-      s.emplace(study.span_with(k, *damper, position));
+      s.emplace(study.span_with(k, *damper, study.position_on(k, x)));
     } catch (const InvalidParameter& error) {
       e.infeasibility = fmt::format("span {}: {}", design_span.name, error.what());
       return e;
@@ -237,6 +254,8 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
       return e;
     }
     const double r = b.max_stress_fymax / b.endurance_limit;
+    e.spans.push_back(SpanFigures{r, b.max_stress_fymax, b.undamped_max_stress_fymax,
+                                  b.life ? b.life->life_years : std::numeric_limits<double>::quiet_NaN()});
     if (k == 0 || r > ratio) {
       ratio = r;
       e.max_stress = b.max_stress_fymax;

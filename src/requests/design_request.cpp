@@ -1,5 +1,8 @@
 #include "stockbridge/requests/design_request.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 #include <cmath>
 #include <limits>
 
@@ -52,6 +55,23 @@ io::JsonObject design_figures(const design::DesignStudy& study, const design::Ev
     o.add_null("position_m");
   }
   o.add("variables", variables);
+  if (e.converged()) {
+    std::vector<io::JsonObject> spans;
+    std::vector<std::string> worse;
+    for (std::size_t k = 0; k < e.spans.size(); ++k) {
+      const design::SpanFigures& f = e.spans[k];
+      const std::string& name = study.spans()[k].name;
+      spans.push_back(io::JsonObject()
+                          .add("span", name)
+                          .add("stress_ratio", f.max_stress_ratio)
+                          .add("max_stress_mpa", f.max_stress / 1e6)
+                          .add("undamped_max_stress_mpa", f.undamped_max_stress / 1e6)
+                          .add("life_years", f.life_years)
+                          .add("worse_than_undamped", f.worse_than_undamped()));
+      if (f.worse_than_undamped()) worse.push_back(name);
+    }
+    o.add("governing_span", study.spans().at(e.span_at_max).name).add("spans", spans).add("spans_worse_than_undamped", worse);
+  }
   if (!e.converged() && e.termination != Termination::not_run) {
     o.add("termination", termination_name(e.termination)).add("note", e.failure);
   } else if (!e.infeasibility.empty()) {
@@ -78,16 +98,49 @@ DesignQuantity design_figure(std::string name, std::string unit, std::string mea
 
 }  // namespace
 
+namespace {
+
+/// The per-span columns' prefixes: the spans' names where every one is unique and
+/// made of letters, digits and '_', else span1, span2, ...
+std::vector<std::string> design_span_prefixes(const design::DesignStudy& study) {
+  std::vector<std::string> names;
+  bool usable = true;
+  for (const design::DesignSpan& s : study.spans()) {
+    usable = usable && !s.name.empty() && std::all_of(s.name.begin(), s.name.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+    usable = usable && std::find(names.begin(), names.end(), s.name) == names.end();
+    names.push_back(s.name);
+  }
+  if (!usable) {
+    for (std::size_t k = 0; k < names.size(); ++k) names[k] = fmt::format("span{}", k + 1);
+  }
+  return names;
+}
+
+double span_figure(const design::Evaluation& e, std::size_t k, double design::SpanFigures::*member) {
+  return k < e.spans.size() ? e.spans[k].*member : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 Table<design::StudyEvaluation> design_table(const design::DesignStudy& study) {
   using S = design::StudyEvaluation;
   using E = design::Evaluation;
+  using F = design::SpanFigures;
   const design::Objective objective = study.objective();
   std::vector<std::string> variables;
   for (const design::DesignVariable& v : study.variables()) variables.push_back(v.name);
+  std::vector<std::string> span_names;
+  for (const design::DesignSpan& s : study.spans()) span_names.push_back(s.name);
   return Table<S>(
       {
           {"stage", "", "`base`, `sample` or `polish`", ColumnKind::label, {},
            [](const S& s, std::size_t) { return std::string(design::stage_name(s.stage)); }},
+          {"governing_span", "", "the span of the largest stress ratio (empty unless converged)", ColumnKind::label, {},
+           [span_names](const S& s, std::size_t) {
+             return s.evaluation.converged() ? span_names.at(s.evaluation.span_at_max) : std::string();
+           }},
           {"run", "", "the sample's index, or the polish's (0 for the base)", ColumnKind::count,
            [](const S& s, std::size_t) { return static_cast<double>(s.run); }, {}},
           {"<variable>", "as the damper file", "each variable by its name (`arm.left.mass`, `position`): the candidate",
@@ -113,8 +166,23 @@ Table<design::StudyEvaluation> design_table(const design::DesignStudy& study) {
            [](const S& s, std::size_t) { return s.evaluation.converged() ? 1.0 : 0.0; }, {}},
           {"feasible", "", "1 when converged and within the constraints", ColumnKind::flag,
            [](const S& s, std::size_t) { return s.evaluation.feasible() ? 1.0 : 0.0; }, {}},
+          {"<span>_stress_ratio", "", "each span's largest fymax stress / its endurance limit", ColumnKind::number,
+           [](const S& s, std::size_t k) { return span_figure(s.evaluation, k, &F::max_stress_ratio); }, {}},
+          {"<span>_max_stress_mpa", "MPa", "each span's largest fymax stress", ColumnKind::number,
+           [](const S& s, std::size_t k) { return span_figure(s.evaluation, k, &F::max_stress) / 1e6; }, {}},
+          {"<span>_undamped_max_stress_mpa", "MPa", "the same span's without dampers", ColumnKind::number,
+           [](const S& s, std::size_t k) { return span_figure(s.evaluation, k, &F::undamped_max_stress) / 1e6; }, {}},
+          {"<span>_life_years", "years", "each span's life (with its climate)", ColumnKind::number,
+           [](const S& s, std::size_t k) { return span_figure(s.evaluation, k, &F::life_years); }, {}},
+          {"<span>_worse_than_undamped", "", "1 where the candidate raises the span's largest stress above its undamped one",
+           ColumnKind::flag,
+           [](const S& s, std::size_t k) {
+             return k < s.evaluation.spans.size() ? (s.evaluation.spans[k].worse_than_undamped() ? 1.0 : 0.0)
+                                                   : std::numeric_limits<double>::quiet_NaN();
+           },
+           {}},
       },
-      {{"<variable>", variables}});
+      {{"<variable>", variables}, {"<span>", design_span_prefixes(study)}});
 }
 
 io::JsonObject design_summary(const design::DesignStudy& study, const design::DesignResult& result,
@@ -163,6 +231,11 @@ std::optional<std::string> best_damper_file(const design::DesignStudy& study, co
                                     reported_objective(study.objective(), base));
   if (const auto position = study.position_of(best.x)) {
     comment += fmt::format("\nposition = {} m from the span clamp: place the spans' dampers there", *position);
+  } else if (study.position_on(0, best.x)) {
+    comment += "\nthe first damper's position on each span (a fraction of its shortest loop):";
+    for (std::size_t k = 0; k < study.spans().size(); ++k) {
+      comment += fmt::format("\n  {}: {:.3g} m", study.spans()[k].name, *study.position_on(k, best.x));
+    }
   }
   for (std::size_t d = 0; d < study.variables().size(); ++d) {
     comment += fmt::format("\n{} = {}", study.variables()[d].name, best.x[d]);

@@ -46,6 +46,11 @@ double position_objective(const SpanBalance& balance, PositionObjective objectiv
   return std::log10(std::max(s.life->damage_per_year, 1e-300));
 }
 
+double shortest_loop(const Span& span) {
+  const double f_max = band_frequencies(span, 2).back();
+  return std::sqrt(span.tension() / span.conductor().mass_per_length) / (2.0 * f_max);
+}
+
 std::vector<double> usual_positions(const Span& span, double f_max, int count, double fraction, const PositionRules& rules) {
   const double speed = std::sqrt(span.tension() / span.conductor().mass_per_length);
   const double loop = speed / (2.0 * f_max);

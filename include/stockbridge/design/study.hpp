@@ -30,6 +30,10 @@ std::string_view objective_name(Objective objective);
 
 /// The name of the variable that moves the spans' dampers (m from the span clamp).
 inline constexpr std::string_view kPosition = "position";
+/// The variable that moves them by a rule that scales with each span's conductor
+/// and tension: the first damper at this fraction of the span's shortest loop
+/// c / (2 f_max) (MODEL.md section 12; c = sqrt(T / m), f_max the band's top).
+inline constexpr std::string_view kPositionLoopFraction = "position_loop_fraction";
 
 struct DesignVariable {
   std::string name;  ///< a damper number's path (damper_numbers.hpp) or "position"
@@ -80,8 +84,14 @@ class DesignStudy {
   /// changes while its inertia is neither a variable nor tied keeps its radius of
   /// gyration (the inertia scales with the mass). Validated (InvalidParameter).
   damper::DamperDescription damper_of(const std::vector<double>& x) const;
-  /// The dampers' position of a candidate: the position variable, none if not varied.
+  /// The dampers' position of a candidate: the position variable, none if not varied
+  /// (or varied as a fraction of the loop: position_on).
   std::optional<double> position_of(const std::vector<double>& x) const;
+  /// The first damper's position on span k (m): the position variable, or the loop
+  /// fraction times span k's shortest loop; none where neither is varied.
+  std::optional<double> position_on(std::size_t k, const std::vector<double>& x) const;
+  /// Span k's shortest loop c / (2 f_max), m.
+  double shortest_loop(std::size_t k) const;
   /// Span k with the candidate's damper in place of every damper of its file, at the
   /// candidate's position (every damper moved together) or the file's.
   span::Span span_with(std::size_t k, const damper::Damper& damper, std::optional<double> position) const;
@@ -94,6 +104,16 @@ class DesignStudy {
   std::vector<DesignTie> ties_;
   DesignConstraints constraints_;
   int points_;
+};
+
+/// A candidate's figures on one span (NaN where the candidate was not balanced there).
+struct SpanFigures {
+  double max_stress_ratio = std::numeric_limits<double>::quiet_NaN();     ///< its largest fymax stress / endurance limit
+  double max_stress = std::numeric_limits<double>::quiet_NaN();           ///< Pa
+  double undamped_max_stress = std::numeric_limits<double>::quiet_NaN();  ///< Pa, the same span without dampers
+  double life_years = std::numeric_limits<double>::quiet_NaN();           ///< with the span's climate
+  /// The candidate's dampers raise the span's largest stress above its undamped one.
+  bool worse_than_undamped() const { return max_stress > undamped_max_stress; }
 };
 
 /// A candidate's figures. `objective` is what the study compares (smaller is better
@@ -117,6 +137,7 @@ struct Evaluation {
   double total_mass = std::numeric_limits<double>::quiet_NaN();        ///< kg
   double messenger_curvature_max = std::numeric_limits<double>::quiet_NaN();  ///< 1/m
   double shortest_life_years = std::numeric_limits<double>::quiet_NaN();     ///< with objective life
+  std::vector<SpanFigures> spans;  ///< one per span of the study, in its order (converged candidates)
 
   bool converged() const { return termination == Termination::converged; }
   /// Converged and within the design space: the only candidates a study ranks as answers.

@@ -50,6 +50,10 @@ struct PositionSearch {
 /// life, where the span gives no climate).
 double position_objective(const SpanBalance& balance, PositionObjective objective);
 
+/// The span's shortest loop c / (2 f_max), m: c = sqrt(T / m), f_max the top of its
+/// wind band (St speed_max / D). Practice places the first damper at a fraction of it.
+double shortest_loop(const Span& span);
+
 /// The usual first arrangement of `count` dampers (m from the clamp, increasing):
 /// the first at `fraction` of the shortest loop c / (2 f_max) (c = sqrt(T / m),
 /// f_max the band's top frequency), each further one 1.3 times the previous

@@ -205,3 +205,46 @@ TEST(DesignSearch, OneVariableMatchesADenseScan) {
 
 }  // namespace
 }  // namespace stockbridge::design
+
+namespace stockbridge::design {
+namespace {
+
+// The position as a fraction of each span's shortest loop: the dampers move with the
+// conductor and tension (two spans of different tension, different positions), and a
+// candidate's figures are given span by span, the governing one the largest.
+TEST(DesignStudy, APositionByTheLoopScalesWithEachSpanAndFiguresComeSpanBySpan) {
+  const damper::DamperDescription d = two_arm_damper(12);
+  DesignSpan slack = aster_span(d), taut = aster_span(d);
+  taut.name = "taut";
+  taut.span = span::Span(taut.span.conductor(), taut.span.length(), 1.6 * taut.span.tension(), taut.span.wind(),
+                         taut.span.self_damping(), taut.span.dampers(), taut.span.fatigue());
+  const DesignStudy study(d, {slack, taut}, Objective::max_stress, {{std::string(kPositionLoopFraction), 0.2, 1.5}}, {},
+                          {}, 6);
+  const double loop_slack = span::shortest_loop(slack.span), loop_taut = span::shortest_loop(taut.span);
+  EXPECT_NEAR(loop_taut / loop_slack, std::sqrt(1.6), 1e-12);  // c = sqrt(T / m)
+  EXPECT_NEAR(study.base_values()[0], 1.0 / loop_slack, 1e-12);  // the file's 1 m on the first span
+  EXPECT_FALSE(study.position_of({0.6}));
+  EXPECT_NEAR(*study.position_on(0, {0.6}), 0.6 * loop_slack, 1e-12);
+  EXPECT_NEAR(*study.position_on(1, {0.6}), 0.6 * loop_taut, 1e-12);
+  const Evaluation e = evaluate(study, {0.6});
+  ASSERT_TRUE(e.converged()) << e.failure;
+  ASSERT_EQ(e.spans.size(), 2u);
+  const double largest = std::max(e.spans[0].max_stress_ratio, e.spans[1].max_stress_ratio);
+  EXPECT_EQ(e.max_stress_ratio, largest);
+  EXPECT_EQ(e.spans[e.span_at_max].max_stress_ratio, largest);
+  for (const SpanFigures& f : e.spans) {
+    EXPECT_GT(f.undamped_max_stress, 0.0);
+    EXPECT_EQ(f.worse_than_undamped(), f.max_stress > f.undamped_max_stress);
+  }
+  // A fraction whose dampers would leave the span's half is refused at the variable.
+  try {
+    DesignStudy(d, {slack}, Objective::max_stress, {{std::string(kPositionLoopFraction), 0.2, 5.0}}, {}, {}, 6);
+  } catch (const InvalidParameter& error) {
+    ADD_FAILURE() << "a fraction of 5 loops (about 8 m) fits in 200 m: " << error.what();
+  }
+  EXPECT_THROW(DesignStudy(d, {slack}, Objective::max_stress, {{std::string(kPositionLoopFraction), 0.2, 6.0}}, {}, {}, 6),
+               InvalidParameter);
+}
+
+}  // namespace
+}  // namespace stockbridge::design
