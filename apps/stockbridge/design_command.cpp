@@ -2,7 +2,12 @@
 // damper, the spans it serves, the numbers varied, constraints, an objective) on
 // threads and MPI ranks (design/search.hpp).
 
+#include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <mutex>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -19,6 +24,7 @@
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/design_file.hpp"
 #include "stockbridge/requests/design_request.hpp"
+#include "journal_file.hpp"
 #include "task_runner.hpp"
 
 namespace stockbridge::cli {
@@ -34,9 +40,87 @@ struct DesignOptions {
   int threads = requests::DesignRequest{}.threads;
   bool json = false;
   bool quiet = false;
+  bool resume = false;
   std::string output;
   std::string best;
 };
+
+constexpr std::string_view kDesignJournalHead = "stockbridge design journal";
+
+/// Every candidate evaluated, recorded as it completes (each rank in its own file:
+/// <output>.journal for rank 0, <output>.journal.<rank> for the others), and with
+/// --resume recalled from every rank's file of the interrupted run.
+class DesignJournal final : public design::EvaluationJournal {
+ public:
+  DesignJournal(const std::string& output, const std::string& head, const Processes& processes, bool resume) {
+    const std::filesystem::path base(output);
+    const std::filesystem::path folder = base.parent_path().empty() ? std::filesystem::path(".") : base.parent_path();
+    const std::string prefix = base.filename().string() + ".journal";
+    std::vector<std::filesystem::path> files;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (name == prefix || name.starts_with(prefix + ".")) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    for (const std::filesystem::path& file : files) {
+      if (!resume) {
+        // Another run's journals of ranks this run has not: gone, so that a later
+        // --resume reads this run's alone.
+        const std::string rank = file.filename().string().substr(prefix.size());
+        if (processes.rank() == 0 && rank.size() > 1 && std::stoi(rank.substr(1)) >= processes.size()) {
+          std::filesystem::remove(file, ec);
+        }
+        continue;
+      }
+      const JournalRecords journal = read_journal(file, head);
+      cut_short_ += journal.cut_short;
+      for (const std::string& record : journal.records) {
+        try {
+          design::Evaluation e = requests::parse_evaluation_record(record);
+          std::vector<double> x = e.x;
+          recalled_.insert_or_assign(std::move(x), std::move(e));
+        } catch (const InvalidParameter&) {
+          ++cut_short_;
+        }
+      }
+    }
+    const std::filesystem::path own =
+        processes.rank() == 0 ? folder / prefix : folder / fmt::format("{}.{}", prefix, processes.rank());
+    file_.emplace(own, head, resume);
+  }
+
+  std::optional<design::Evaluation> recall(const std::vector<double>& x) override {
+    if (InterruptRequest::requested()) throw Interrupted("the design study was stopped");
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto found = recalled_.find(x);
+    if (found == recalled_.end()) return std::nullopt;
+    ++recalled_now_;
+    return found->second;
+  }
+
+  void record(const design::Evaluation& evaluation) override {
+    const std::string record = requests::evaluation_record(evaluation);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    file_->write(record);
+  }
+
+  std::size_t kept() const { return recalled_.size(); }
+  int cut_short() const { return cut_short_; }
+  int recalled_now() const { return recalled_now_; }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::vector<double>, design::Evaluation> recalled_;
+  std::optional<JournalFile> file_;
+  int cut_short_ = 0;
+  int recalled_now_ = 0;
+};
+
+std::string design_text_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 std::string design_value(double value) { return fmt::format("{:.4g}", value); }
 
@@ -124,7 +208,26 @@ int run_design_command(const DesignOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress("design", options.quiet || processes.rank() != 0, "candidates");
   const std::unique_ptr<design::TaskRunner> runner = processes.runner(options.threads);
-  const design::DesignResult result = design::run_search(file.study, search, *runner, std::ref(progress));
+  const std::string head =
+      fmt::format("{} {}", kDesignJournalHead, requests::design_fingerprint(file.inputs, design_text_of(options.design_file)));
+  DesignJournal journal(options.output, head, processes, options.resume);
+  if (options.resume && !options.quiet && processes.rank() == 0) {
+    fmt::print(stderr, "design: resuming: {} candidate(s) in the journal{}\n", journal.kept(),
+               journal.cut_short() > 0 ? fmt::format(" ({} record(s) cut short, computed again)", journal.cut_short()) : "");
+  }
+  std::optional<design::DesignResult> searched;
+  {
+    const InterruptRequest interrupt;
+    try {
+      searched.emplace(design::run_search(file.study, search, *runner, std::ref(progress), &journal));
+    } catch (const Interrupted&) {
+      fmt::print(stderr, "design: interrupted; {}.journal keeps every candidate evaluated: run again with --resume to "
+                         "go on (nothing else written)\n",
+                 options.output);
+      return kInterrupted;
+    }
+  }
+  const design::DesignResult& result = *searched;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (processes.rank() != 0) return result.best ? kSuccess : kNotConverged;
 
@@ -139,8 +242,9 @@ int run_design_command(const DesignOptions& options) {
   } else {
     print_design_report(file.study, result);
   }
-  fmt::print(stderr, "design: {} candidates in {:.1f} s on {} rank(s) x {} thread(s)\n", result.evaluations.size(),
-             seconds, processes.size(), options.threads);
+  fmt::print(stderr, "design: {} candidates in {:.1f} s on {} rank(s) x {} thread(s){}\n", result.evaluations.size(),
+             seconds, processes.size(), options.threads,
+             options.resume ? fmt::format(", {} recalled from the journal", journal.recalled_now()) : "");
   print_unconverged_candidates(result, options.output);
   if (best) return kSuccess;
   fmt::print(stderr, "design: no candidate is feasible ({} written, {} not)\n", options.output, options.best);
@@ -157,6 +261,9 @@ void add_design_command(CLI::App& app, int& exit_code) {
   sub->add_option("--samples", options->samples, "Space-filling candidates (instead of the file's samples)");
   sub->add_option("--polish", options->polish, "Best candidates polished locally (instead of the file's polish; 0: none)");
   sub->add_option("--threads", options->threads, "Candidates evaluated at once (per MPI rank)")->capture_default_str();
+  sub->add_flag("--resume", options->resume,
+                "Go on from the journal (<output>.journal) of an interrupted run: candidates evaluated there are not "
+                "evaluated again");
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
   sub->add_option("-o,--output", options->output, "Output CSV file: every candidate evaluated")->required();

@@ -4,8 +4,6 @@
 // recorded span by span in a journal beside the schedule so that --resume goes on
 // where an interrupted run stopped.
 
-#include <unistd.h>
-
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -29,6 +27,7 @@
 #include "stockbridge/io/line_file.hpp"
 #include "stockbridge/requests/line_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
+#include "journal_file.hpp"
 #include "task_runner.hpp"
 
 namespace stockbridge::cli {
@@ -47,11 +46,6 @@ struct LineOptions {
   bool json = false;
   bool quiet = false;
 };
-
-/// Ctrl-C: the deal stops, the spans under way give up, the journal stays whole.
-std::atomic<bool> line_interrupted{false};
-
-extern "C" void line_on_interrupt(int) { line_interrupted.store(true); }
 
 constexpr std::string_view kJournalHead = "stockbridge line journal";
 
@@ -76,30 +70,15 @@ std::string line_text_of(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-/// The journal's records of this line (the journal of other inputs refused); none
-/// where there is no journal. Lines cut short (an interruption mid-write) are left
-/// out: those spans are computed again.
+/// The journal's rows of this line (the journal of other inputs refused); records
+/// cut short (an interruption mid-write) are left out: those spans are computed again.
 std::map<std::size_t, line::ScheduleRow> read_line_journal(const std::filesystem::path& path,
                                                            const std::string& fingerprint, std::size_t spans,
                                                            int& cut_short) {
+  JournalRecords journal = read_journal(path, fmt::format("{} {}", kJournalHead, fingerprint));
+  cut_short = journal.cut_short;
   std::map<std::size_t, line::ScheduleRow> rows;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return rows;
-  std::string head;
-  std::getline(in, head);
-  const std::string expected = fmt::format("{} {}", kJournalHead, fingerprint);
-  if (head != expected) {
-    throw InvalidParameter(fmt::format("--resume: {} was written for other inputs (its first line is '{}', these "
-                                       "inputs give '{}': the line file or a file it reads changed): run without "
-                                       "--resume to start again",
-                                       path.string(), printable(head), expected));
-  }
-  std::string record;
-  while (std::getline(in, record)) {
-    if (in.eof()) {  // no line break after it: cut short
-      ++cut_short;
-      break;
-    }
+  for (const std::string& record : journal.records) {
     try {
       line::ScheduleRow row = requests::parse_schedule_record(record);
       if (row.index < spans) rows.insert_or_assign(row.index, std::move(row));
@@ -109,32 +88,6 @@ std::map<std::size_t, line::ScheduleRow> read_line_journal(const std::filesystem
   }
   return rows;
 }
-
-/// The journal opened for appending records, each written whole and flushed to disk.
-class LineJournal {
- public:
-  LineJournal(const std::filesystem::path& path, const std::string& fingerprint, bool append) : path_(path) {
-    file_ = std::fopen(path.string().c_str(), append ? "ab" : "wb");
-    if (!file_) throw OutputError(fmt::format("{}: cannot write the journal", path.string()));
-    if (!append || std::ftell(file_) == 0) write(fmt::format("{} {}\n", kJournalHead, fingerprint));
-  }
-  ~LineJournal() {
-    if (file_) std::fclose(file_);
-  }
-  LineJournal(const LineJournal&) = delete;
-  LineJournal& operator=(const LineJournal&) = delete;
-
-  void write(const std::string& text) {
-    if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fflush(file_) != 0) {
-      throw OutputError(fmt::format("{}: cannot write the journal", path_.string()));
-    }
-    ::fsync(fileno(file_));
-  }
-
- private:
-  std::filesystem::path path_;
-  std::FILE* file_ = nullptr;
-};
 
 std::string line_positions(const line::ScheduleRow& row) {
   std::string out;
@@ -238,17 +191,16 @@ int run_line_command(const LineOptions& options) {
   for (std::size_t i = 0; i < spans; ++i) {
     if (!rows.contains(i)) todo.push_back(i);
   }
-  std::optional<LineJournal> journal;
-  if (root) journal.emplace(journal_path, fingerprint, options.resume);
+  std::optional<JournalFile> journal;
+  if (root) journal.emplace(journal_path, fmt::format("{} {}", kJournalHead, fingerprint), options.resume);
   if (root && options.resume && !options.quiet) {
     fmt::print(stderr, "line: resuming: {} of {} spans in {}{}, {} to compute\n", rows.size(), spans, journal_path,
                cut_short > 0 ? fmt::format(" ({} record(s) cut short, computed again)", cut_short) : "", todo.size());
   }
 
-  line_interrupted.store(false);
-  const auto previous = std::signal(SIGINT, line_on_interrupt);
+  std::optional<InterruptRequest> interrupt(std::in_place);
   line::TableCache cache;
-  const auto stop = [] { return line_interrupted.load(); };
+  const auto stop = [] { return InterruptRequest::requested(); };
   const auto start = std::chrono::steady_clock::now();
   const auto run = [&](std::size_t i) -> std::string {
     try {
@@ -265,7 +217,7 @@ int run_line_command(const LineOptions& options) {
   };
   std::size_t done_now = 0;
   const auto done = [&](std::size_t i, const std::string& record) {
-    journal->write(record + "\n");
+    journal->write(record);
     line::ScheduleRow row = requests::parse_schedule_record(record);
     ++done_now;
     if (!options.quiet) {
@@ -279,15 +231,16 @@ int run_line_command(const LineOptions& options) {
     }
     rows.insert_or_assign(i, std::move(row));
   };
-  processes.deal(options.threads, todo, run, done, line_interrupted);
-  std::signal(SIGINT, previous);
+  processes.deal(options.threads, todo, run, done, InterruptRequest::flag());
+  const bool interrupted = InterruptRequest::requested();
+  interrupt.reset();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!root) return kSuccess;
-  if (line_interrupted.load() || rows.size() < spans) {
+  if (interrupted || rows.size() < spans) {
     fmt::print(stderr, "line: interrupted after {} of {} spans; {} keeps them: run again with --resume to compute the "
                        "rest (nothing else written)\n",
                rows.size(), spans, journal_path);
-    return 130;
+    return kInterrupted;
   }
   std::vector<line::ScheduleRow> schedule;
   for (auto& [i, row] : rows) schedule.push_back(std::move(row));

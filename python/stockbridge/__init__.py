@@ -9,7 +9,7 @@ built by the CMake project) and adds plots (``python3 -m stockbridge.plot``).
     s = sb.span("examples/aster570_400m.toml", points=50)
     drake = sb.conductor("ACSR Drake")   # the catalogue's [conductor] values, EI_min 44.25 N m^2
     d = sb.design("examples/design_aster570.toml", samples=16, threads=2)
-    schedule = sb.line("examples/line_example.toml", threads=2)["schedule"]   # minutes
+    schedule = sb.line("examples/line_short.toml", threads=2)["schedule"]
     fit = sb.identify_impedance(sb.load_damper("examples/damper_to_identify.toml"),
                                 "examples/measured_impedance.csv")
 """
@@ -233,13 +233,17 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
 
     Returns a dict: one array per column of the design CSV, by the CSV's names (one
     value per candidate in the CSV's order: the base, the samples, the polishes;
-    'run' int, 'converged' and 'feasible' bool, the rest float, NaN where not
-    computed), 'stage' (array of str: base, sample or polish), 'columns' (the CSV's
+    'run' int, 'converged', 'feasible' and each span's '<span>_worse_than_undamped'
+    bool, the rest float, NaN where not computed), 'stage' (array of str: base,
+    sample or polish), 'governing_span' (array of str: the span of the largest
+    stress ratio, empty unless converged), 'columns' (the CSV's
     order), 'variables' (the variables' names, their columns), 'summary' (the --json
     summary's keys, None where the JSON has null) and 'best_damper': the text of the
     --best damper file, None when no candidate is feasible."""
     out = _design(file=str(file), samples=samples, polish=polish, threads=threads)
-    out["stage"] = numpy.array(out["stage"], dtype=str)
+    for name in ("stage", "governing_span"):
+        if name in out:
+            out[name] = numpy.array(out[name], dtype=str)
     out["summary"] = json.loads(out.pop("summary_json"))
     return out
 

@@ -575,9 +575,10 @@ class Designs:
                 raise PlotError(f"{path}: missing column '{name}': expected a design CSV (stockbridge design -o)")
         start, end = header.index("run") + 1, header.index("objective")
         self.variables = header[start:end]
-        if header[0] != "stage" or not self.variables or header[end:] != DESIGN_FIGURES:
+        if header[0] != "stage" or not self.variables or header[end:end + len(DESIGN_FIGURES)] != DESIGN_FIGURES:
             raise PlotError(f"{path}: expected the columns stage, run, the variables, {', '.join(DESIGN_FIGURES)} "
-                            "in this order (a design CSV)")
+                            "in this order (a design CSV; governing_span before run and each span's figures after "
+                            "them are allowed)")
         self.stage = table.text("stage")
         for i, stage in enumerate(self.stage):
             if stage not in DESIGN_STAGES:

@@ -91,8 +91,9 @@ namespace {
 /// constraints as inequalities g <= 0; every distinct candidate it evaluates, in order.
 class Polish {
  public:
-  Polish(const DesignStudy& study, const SearchOptions& options, TableCache& cache, const std::function<void()>& tick)
-      : study_(study), options_(options), cache_(cache), tick_(tick) {}
+  using Evaluate = std::function<Evaluation(const std::vector<double>&)>;
+  Polish(const DesignStudy& study, const SearchOptions& options, const Evaluate& evaluate, const std::function<void()>& tick)
+      : study_(study), options_(options), evaluate_(evaluate), tick_(tick) {}
 
   /// From `start` (an evaluation already made: not made or recorded again): the
   /// candidates evaluated, and how the optimiser ended.
@@ -145,7 +146,7 @@ class Polish {
     }
     if (evaluations_.empty() && x == start_->x) return *start_;
     if (evaluations_.empty() || evaluations_.back().x != x) {
-      evaluations_.push_back(evaluate(study_, x, &cache_));
+      evaluations_.push_back(evaluate_(x));
       tick_();
     }
     return evaluations_.back();
@@ -181,7 +182,7 @@ class Polish {
 
   const DesignStudy& study_;
   const SearchOptions& options_;
-  TableCache& cache_;
+  const Evaluate& evaluate_;
   const std::function<void()>& tick_;
   const Evaluation* start_ = nullptr;
   std::vector<Evaluation> evaluations_;
@@ -212,7 +213,7 @@ std::vector<std::size_t> polish_starts(const std::vector<StudyEvaluation>& evalu
 }  // namespace
 
 DesignResult run_search(const DesignStudy& study, const SearchOptions& options, TaskRunner& runner,
-                        const SearchProgress& progress) {
+                        const SearchProgress& progress, EvaluationJournal* journal) {
   options.validate();
   std::mutex progress_mutex;
   int done = 0;
@@ -224,10 +225,18 @@ DesignResult run_search(const DesignStudy& study, const SearchOptions& options, 
   };
 
   TableCache cache;
+  const Polish::Evaluate evaluate_once = [&](const std::vector<double>& x) {
+    if (journal) {
+      if (std::optional<Evaluation> recalled = journal->recall(x)) return std::move(*recalled);
+    }
+    Evaluation e = evaluate(study, x, &cache);
+    if (journal) journal->record(e);
+    return e;
+  };
   std::vector<std::vector<double>> candidates{study.base_values()};
   for (auto& x : space_filling_sample(study.variables(), options.samples, options.seed)) candidates.push_back(std::move(x));
   const auto first = runner.run(static_cast<int>(candidates.size()), [&](int i) {
-    TaskOutput out{{evaluate(study, candidates[static_cast<std::size_t>(i)], &cache)}, {}};
+    TaskOutput out{{evaluate_once(candidates[static_cast<std::size_t>(i)])}, {}};
     tick();
     return out;
   });
@@ -238,7 +247,7 @@ DesignResult run_search(const DesignStudy& study, const SearchOptions& options, 
 
   const std::vector<std::size_t> starts = polish_starts(result.evaluations, options.polish);
   const auto polished = runner.run(static_cast<int>(starts.size()), [&](int j) {
-    return Polish(study, options, cache, tick).run(result.evaluations[starts[static_cast<std::size_t>(j)]].evaluation);
+    return Polish(study, options, evaluate_once, tick).run(result.evaluations[starts[static_cast<std::size_t>(j)]].evaluation);
   });
   for (std::size_t j = 0; j < polished.size(); ++j) {
     for (const Evaluation& e : polished[j].evaluations) result.evaluations.push_back({Stage::polish, static_cast<int>(j), e});

@@ -29,9 +29,9 @@ std::filesystem::path span_resolve(const std::filesystem::path& file, const std:
 
 /// Where a span's relative paths start, as messages say it.
 std::string span_base(const TomlTable& table, const std::filesystem::path& base_directory) {
-  if (table.has_lines()) return "the span file's folder";
-  if (base_directory.empty()) return "the working directory (span text has no folder)";
-  return fmt::format("{} (the span text's base folder)", printable(base_directory.string(), 300));
+  if (table.has_lines()) return "the file's folder";
+  if (base_directory.empty()) return "the working directory (the text has no folder)";
+  return fmt::format("{} (the text's base folder)", printable(base_directory.string(), 300));
 }
 
 /// A file the span file names at `key` (a conductor file, a damper file, a measured

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "record_text.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/damper_file.hpp"
 
@@ -241,6 +242,66 @@ std::optional<std::string> best_damper_file(const design::DesignStudy& study, co
     comment += fmt::format("\n{} = {}", study.variables()[d].name, best.x[d]);
   }
   return io::damper_file_toml(study.damper_of(best.x), comment);
+}
+
+namespace {
+
+constexpr std::string_view kEvaluationTag = "candidate-v1";
+
+}  // namespace
+
+std::string evaluation_record(const design::Evaluation& e) {
+  using record_text::escaped;
+  std::string out = fmt::format("{}\t{}", kEvaluationTag, e.x.size());
+  for (const double v : e.x) out += fmt::format("\t{}", v);
+  out += fmt::format("\t{}", static_cast<int>(e.termination));
+  for (const double v : {e.objective, e.max_stress_ratio, e.max_stress, e.frequency_at_max_hz, e.total_mass,
+                         e.messenger_curvature_max, e.shortest_life_years}) {
+    out += fmt::format("\t{}", v);
+  }
+  out += fmt::format("\t{}\t{}", e.span_at_max, e.spans.size());
+  for (const design::SpanFigures& f : e.spans) {
+    out += fmt::format("\t{}\t{}\t{}\t{}", f.max_stress_ratio, f.max_stress, f.undamped_max_stress, f.life_years);
+  }
+  out += '\t';
+  out += escaped(e.failure);
+  out += '\t';
+  out += escaped(e.infeasibility);
+  out += "\tend";
+  return out;
+}
+
+design::Evaluation parse_evaluation_record(std::string_view record) {
+  record_text::RecordFields f(record);
+  if (f.text() != kEvaluationTag) record_text::bad_record("not a candidate record");
+  design::Evaluation e;
+  const long long n = f.integer();
+  if (n < 0 || n > 1000) record_text::bad_record("a count of variables out of range");
+  for (long long k = 0; k < n; ++k) e.x.push_back(f.number());
+  const long long termination = f.integer();
+  if (termination < 0 || termination > static_cast<long long>(Termination::no_root)) {
+    record_text::bad_record("a termination out of range");
+  }
+  e.termination = static_cast<Termination>(termination);
+  for (double* v : {&e.objective, &e.max_stress_ratio, &e.max_stress, &e.frequency_at_max_hz, &e.total_mass,
+                    &e.messenger_curvature_max, &e.shortest_life_years}) {
+    *v = f.number();
+  }
+  e.span_at_max = static_cast<std::size_t>(f.integer());
+  const long long spans = f.integer();
+  if (spans < 0 || spans > 100000) record_text::bad_record("a count of spans out of range");
+  e.spans.resize(static_cast<std::size_t>(spans));
+  for (design::SpanFigures& s : e.spans) {
+    for (double* v : {&s.max_stress_ratio, &s.max_stress, &s.undamped_max_stress, &s.life_years}) *v = f.number();
+  }
+  e.failure = f.text();
+  e.infeasibility = f.text();
+  if (f.text() != "end" || !f.done()) record_text::bad_record("no end mark");
+  return e;
+}
+
+std::string design_fingerprint(const std::vector<std::filesystem::path>& inputs, std::string_view design_text) {
+  return record_text::input_fingerprint(design_text, inputs);
 }
 
 }  // namespace stockbridge::requests

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
-#include "stockbridge/version.hpp"
+#include "record_text.hpp"
 
 namespace stockbridge::requests {
 
@@ -145,74 +145,11 @@ io::JsonObject line_summary(const io::LineFile& file, const std::vector<line::Sc
 
 namespace {
 
-std::string escaped(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '\\') out += "\\\\";
-    else if (c == '\t') out += "\\t";
-    else if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else out += c;
-  }
-  return out;
-}
-
-std::string unescaped(std::string_view text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] != '\\' || i + 1 == text.size()) {
-      out += text[i];
-      continue;
-    }
-    const char c = text[++i];
-    out += c == 't' ? '\t' : c == 'n' ? '\n' : c == 'r' ? '\r' : c;
-  }
-  return out;
-}
+using record_text::bad_record;
+using record_text::escaped;
+using record_text::RecordFields;
 
 constexpr std::string_view kRecordTag = "span-v1";
-
-[[noreturn]] void bad_record(std::string_view why) {
-  throw InvalidParameter("record", fmt::format(": {}", why));
-}
-
-class RecordFields {
- public:
-  explicit RecordFields(std::string_view record) {
-    std::size_t start = 0;
-    while (true) {
-      const std::size_t tab = record.find('\t', start);
-      fields_.push_back(record.substr(start, tab == std::string_view::npos ? std::string_view::npos : tab - start));
-      if (tab == std::string_view::npos) break;
-      start = tab + 1;
-    }
-  }
-  std::size_t size() const { return fields_.size(); }
-  std::string text() { return unescaped(next()); }
-  double number() {
-    const std::string_view f = next();
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(f.data(), f.data() + f.size(), value);
-    if (error != std::errc() || end != f.data() + f.size()) bad_record(fmt::format("'{}' is not a number", printable(f)));
-    return value;
-  }
-  long long integer() {
-    const std::string_view f = next();
-    long long value = 0;
-    const auto [end, error] = std::from_chars(f.data(), f.data() + f.size(), value);
-    if (error != std::errc() || end != f.data() + f.size()) bad_record(fmt::format("'{}' is not an integer", printable(f)));
-    return value;
-  }
-  bool done() const { return next_ == fields_.size(); }
-
- private:
-  std::string_view next() {
-    if (next_ >= fields_.size()) bad_record("cut short");
-    return fields_[next_++];
-  }
-  std::vector<std::string_view> fields_;
-  std::size_t next_ = 0;
-};
 
 span::Verdict verdict_from(long long v) {
   if (v < 0 || v > 2) bad_record("a verdict out of range");
@@ -233,7 +170,10 @@ std::string schedule_record(const line::ScheduleRow& r) {
                      r.points, r.balances, escaped(r.damper_type), r.positions.size());
   for (const double x : r.positions) out += fmt::format("\t{}", x);
   out += fmt::format("\t{}", r.warnings.size());
-  for (const std::string& w : r.warnings) out += "\t" + escaped(w);
+  for (const std::string& w : r.warnings) {
+    out += '\t';
+    out += escaped(w);
+  }
   out += "\tend";
   return out;
 }
@@ -269,34 +209,8 @@ line::ScheduleRow parse_schedule_record(std::string_view record) {
   return r;
 }
 
-namespace {
-
-/// FNV-1a, 64 bits: enough to tell inputs apart (not a defence against forgery).
-struct Digest {
-  std::uint64_t h = 1469598103934665603ULL;
-  void add(std::string_view bytes) {
-    for (const unsigned char c : bytes) h = (h ^ c) * 1099511628211ULL;
-    const std::string size = fmt::format("|{}|", bytes.size());
-    for (const unsigned char c : size) h = (h ^ c) * 1099511628211ULL;
-  }
-};
-
-std::string file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-}  // namespace
-
 std::string line_fingerprint(const io::LineFile& file, std::string_view line_text) {
-  Digest d;
-  d.add(version_string);
-  d.add(line_text);
-  for (const std::filesystem::path& input : file.inputs) {
-    d.add(input.string());
-    d.add(file_bytes(input));
-  }
-  return fmt::format("{:016x}", d.h);
+  return record_text::input_fingerprint(line_text, file.inputs);
 }
 
 line::ScheduleRow failed_row(const io::LineFile& file, std::size_t index, std::string_view message) {

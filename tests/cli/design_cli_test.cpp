@@ -8,6 +8,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <thread>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -205,6 +210,82 @@ TEST(DesignCli, BadStudiesAreOneLineAndWriteNothing) {
     EXPECT_FALSE(std::filesystem::exists(dir / "designs.csv"));
     EXPECT_FALSE(std::filesystem::exists(dir / "best.toml"));
   }
+}
+
+}  // namespace
+}  // namespace stockbridge::testing
+
+namespace stockbridge::testing {
+namespace {
+
+/// The candidates recorded in a design journal (its lines after the first).
+int design_journal_records(const std::filesystem::path& journal) {
+  const std::string text = read_text(journal);
+  return std::max(0, static_cast<int>(std::count(text.begin(), text.end(), '\n')) - 1);
+}
+
+/// Runs the study in `dir` in the background and stops it with `signal` once the
+/// journal holds `records` candidates; the process's wait status.
+int design_run_stopped(const std::filesystem::path& dir, int signal, int records) {
+  const std::string command = "cd '" + dir.string() + "' && exec '" + std::string(STOCKBRIDGE_CLI) +
+                              "' design study.toml -o designs.csv --best best.toml > run.log 2> run.err";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (design_journal_records(dir / "designs.csv.journal") < records && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ::kill(pid, signal);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return status;
+}
+
+// Every candidate is journaled as it completes: a study killed midway, or stopped
+// with Ctrl-C (status 130, nothing but the journal written), resumed with --resume
+// evaluates only what is missing and writes the same files as an uninterrupted run.
+TEST(DesignCli, AnInterruptedStudyResumesToTheSameDesign) {
+  const auto whole = study_folder("design-whole", small_study());
+  ASSERT_EQ(run_cli("design study.toml --quiet -o designs.csv --best best.toml", whole).exit_code, 0);
+  const int all = design_journal_records(whole / "designs.csv.journal");
+  ASSERT_GE(all, 1 + kSamples);
+
+  const auto killed = study_folder("design-killed", small_study());
+  ASSERT_TRUE(WIFSIGNALED(design_run_stopped(killed, SIGKILL, 2))) << "the study ended before it was killed";
+  EXPECT_FALSE(std::filesystem::exists(killed / "designs.csv"));
+  const CliResult resumed = run_cli("design study.toml --resume -o designs.csv --best best.toml", killed);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("design: resuming: "), std::string::npos) << resumed.err;
+  EXPECT_EQ(read_text(killed / "designs.csv"), read_text(whole / "designs.csv"));
+  EXPECT_EQ(read_text(killed / "best.toml"), read_text(whole / "best.toml"));
+
+  const auto stopped = study_folder("design-ctrl-c", small_study());
+  const int status = design_run_stopped(stopped, SIGINT, 1);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << read_text(stopped / "run.err");
+  EXPECT_NE(read_text(stopped / "run.err").find("run again with --resume"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(stopped / "designs.csv"));
+  EXPECT_FALSE(std::filesystem::exists(stopped / "best.toml"));
+  const CliResult again = run_cli("design study.toml --resume --quiet -o designs.csv --best best.toml", stopped);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(read_text(stopped / "designs.csv"), read_text(whole / "designs.csv"));
+  // A finished study resumed evaluates nothing again.
+  const CliResult done = run_cli("design study.toml --resume -o designs.csv --best best.toml", whole);
+  ASSERT_EQ(done.exit_code, 0) << done.err;
+  EXPECT_NE(done.err.find(std::to_string(all) + " recalled from the journal"), std::string::npos) << done.err;
+  EXPECT_EQ(design_journal_records(whole / "designs.csv.journal"), all);
+}
+
+TEST(DesignCli, AJournalOfAnotherStudyIsRefused) {
+  const auto dir = study_folder("design-other-journal", small_study());
+  std::ofstream(dir / "designs.csv.journal") << "stockbridge design journal 0000000000000000\n";
+  const CliResult r = run_cli("design study.toml --resume -o designs.csv --best best.toml", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_NE(r.err.find("designs.csv.journal was written for other inputs"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -379,12 +379,184 @@ def test_span_overrides_without_editing_text(tmp_path):
         sheet = sb.span(SPAN, frequencies=f, damper=tmp_path / "sheet.csv")
     assert sheet["dampers"] == ["sheet"] and sheet["summary"]["sheet_error_estimate"] is not None
     # Relative paths of text start at `base`, and the message names it.
-    with pytest.raises(sb.InputError, match=r"relative paths start at .*the span text's base folder"):
+    with pytest.raises(sb.InputError, match=r"relative paths start at .*the text's base folder"):
         sb.span(text=open(SPAN).read(), base=str(tmp_path), frequencies=f)
     with pytest.raises(sb.InvalidParameter, match="one of tension, tension_fraction and catenary_parameter"):
         sb.span(SPAN, tension=3e4, catenary_parameter=1800.0)
     with pytest.raises(sb.InvalidParameter, match="give one of file"):
         sb.span(SPAN, spec=spec, length=300.0)
+
+
+def test_span_position_search_takes_the_spacing_and_objective_as_the_program(tmp_path):
+    """spacing_min and objective are --spacing-min and --objective: every damper's
+    position searched (each its own), the same summary as the program's."""
+    shutil.copy(os.path.join(SOURCE, "examples", "sauter2003.toml"), tmp_path / "sauter2003.toml")
+    two = open(SPAN).read() + '\n[[damper]]\nfile = "sauter2003.toml"\nposition = 2.0\nends = "both"\n'
+    (tmp_path / "two.toml").write_text(two)
+    out = subprocess.run([CLI, "span", "two.toml", "--points", "12", "--optimize-position", "0.5:5",
+                          "--spacing-min", "1.5", "--objective", "life", "--json", "-o", "s.csv"],
+                         cwd=tmp_path, check=True, capture_output=True, text=True).stdout
+    s = sb.span(tmp_path / "two.toml", points=12, optimize_position=(0.5, 5.0), spacing_min=1.5, objective="life")
+    summary = json.loads(out)
+    del summary["seconds"]  # the program's wall time
+    assert s["summary"] == summary
+    positions = s["summary"]["positions_m"]
+    assert len(positions) == 2 and s["summary"]["position_optimized"] is True
+    assert all(0.5 <= x <= 5.0 for x in positions) and abs(positions[1] - positions[0]) >= 1.5 - 1e-9
+    with pytest.raises(sb.InvalidParameter, match='objective = "lifetime"'):
+        sb.span(SPAN, points=12, optimize_position=(0.5, 5.0), objective="lifetime")
+    with pytest.raises(sb.InvalidParameter, match="spacing_min = -1"):
+        sb.span(SPAN, points=12, optimize_position=(0.5, 5.0), spacing_min=-1.0)
+
+
+# A line of four spans (three conductors, the tension in each of its forms), cut to
+# seconds: 30 frequencies per balance, 20 for the position search, at most 2 dampers
+# per end within 5 m of the clamp (tests/cli/line_cli_test.cpp's small line).
+SMALL_LINE = """[line]
+name = "test line"
+points = 30
+search_points = 20
+
+[conductor]
+type = "AAAC ASTER570"
+
+[wind]
+law = "cigre"
+speed_min = 1.0
+speed_max = 7.0
+
+[self_damping]
+law = "noiseux-1991"
+
+[fatigue]
+cycles = 5e8
+wind_weibull = { shape = 2.0, scale = 4.0 }
+aeolian_fraction = 0.3
+
+[dampers]
+types = [ { name = "sb1", file = "sauter2003.toml" } ]
+max_per_end = 2
+position_max = 5.0
+
+[[span]]
+id = "T1-T2"
+length = 300
+tension_fraction = 0.12
+
+[[span]]
+id = "T2-T3"
+length = 420
+catenary_parameter = 1500
+terrain = 2
+
+[[span]]
+id = "T3-T4"
+length = 250
+tension = 30000
+conductor = "ACSR Drake"
+
+[[span]]
+id = "T4-T5"
+length = 380
+tension_fraction = 0.2
+conductor = "ACSR Linnet"
+"""
+SMALL_LINE_IDS = ["T1-T2", "T2-T3", "T3-T4", "T4-T5"]
+
+
+@pytest.fixture(scope="module")
+def line_runs(tmp_path_factory):
+    """The small line scheduled twice (about 8 s each): from its file on one thread,
+    and from its text (the damper file relative to `base`) on two."""
+    folder = tmp_path_factory.mktemp("line")
+    shutil.copy(os.path.join(SOURCE, "examples", "sauter2003.toml"), folder / "sauter2003.toml")
+    (folder / "line.toml").write_text(SMALL_LINE)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # nothing unusual in the small line
+        one = sb.line(folder / "line.toml")
+    two = sb.line(text=SMALL_LINE, base=folder, threads=2)
+    return one, two
+
+
+def test_line_returns_the_schedule_bill_and_summary(line_runs):
+    out, _ = line_runs
+    assert set(out) == {"schedule", "bill", "summary", "warnings"}
+    assert set(out) <= documented_keys("line", ["-"])
+    assert out["warnings"] == []
+    s = out["schedule"]
+    assert list(s)[:7] == ["id", "conductor", "undamped_verdict", "damper_type", "positions_m", "verdict", "warnings"]
+    assert s["id"] == SMALL_LINE_IDS
+    assert s["conductor"] == ["AAAC ASTER570", "AAAC ASTER570", "ACSR Drake", "ACSR Linnet"]
+    assert s["dampers_per_end"].dtype == np.int64 and s["dampers_per_end"].shape == (4,)
+    assert all(0 <= n <= 2 for n in s["dampers_per_end"])
+    assert all(v in ("safe", "unsafe", "unknown") for v in s["verdict"] + s["undamped_verdict"])
+    assert s["converged"].dtype == bool and s["max_stress_mpa"].dtype == np.float64
+    assert s["length_m"].tolist() == [300.0, 420.0, 250.0, 380.0]
+    assert s["tension_n"][2] == 30000.0 and s["catenary_parameter_m"][1] == 1500.0
+    for n, text, kind, warning in zip(s["dampers_per_end"], s["positions_m"], s["damper_type"], s["warnings"]):
+        assert isinstance(text, str) and isinstance(warning, str)
+        positions = [float(x) for x in text.split(";")] if text else []  # one end's, ';'-separated
+        assert len(positions) == n and positions == sorted(positions)
+        assert all(0 < x <= 5.0 for x in positions)
+        assert kind == ("sb1" if n > 0 else "")
+    for verdict, ratio in zip(s["verdict"], s["stress_ratio"]):  # a safe span's stress is below the endurance limit
+        assert ratio < 1 if verdict == "safe" else not ratio < 1
+    assert np.allclose(s["stress_ratio"], s["max_stress_mpa"] / s["endurance_limit_mpa"], rtol=1e-12, equal_nan=True)
+    assert out["bill"]["damper_type"] == (["sb1"] if s["dampers_per_end"].any() else [])
+
+
+def test_line_on_two_threads_equals_one(line_runs):
+    one, two = line_runs
+    for table in ("schedule", "bill"):
+        assert list(one[table]) == list(two[table])
+        for column, values in one[table].items():
+            if isinstance(values, list):
+                assert values == two[table][column], column
+            else:
+                assert values.dtype == two[table][column].dtype, column
+                assert np.array_equal(values, two[table][column], equal_nan=values.dtype == np.float64), column
+    assert one["summary"] == two["summary"]
+
+
+def test_line_summary_counts_the_schedule(line_runs):
+    out, _ = line_runs
+    s, summary = out["schedule"], out["summary"]
+    assert summary["line"] == "test line" and summary["spans"] == 4
+    for verdict in ("safe", "unsafe", "unknown"):
+        assert summary[f"spans_{verdict}"] == s["verdict"].count(verdict)
+    assert summary["spans_safe"] + summary["spans_unsafe"] + summary["spans_unknown"] == 4
+    assert summary["governing_span"] in SMALL_LINE_IDS
+    assert summary["governing_stress_ratio"] == np.nanmax(s["stress_ratio"])
+    counts = {entry["dampers_per_end"]: entry["spans"] for entry in summary["dampers_per_end"]}
+    assert counts == {n: int((s["dampers_per_end"] == n).sum()) for n in set(s["dampers_per_end"].tolist())}
+    bill = out["bill"]
+    assert summary["bill"] == [{"damper_type": t, "dampers": int(d), "spans": int(n), "mass_kg": m}
+                               for t, d, n, m in zip(bill["damper_type"], bill["dampers"], bill["spans"], bill["mass_kg"])]
+    assert sum(entry["dampers"] for entry in summary["bill"]) == 2 * s["dampers_per_end"].sum()  # both ends
+
+
+def test_line_errors_are_those_of_a_span_file(tmp_path):
+    """A bad line is refused before anything is computed, with the exception a bad span
+    file gets and a message naming the key."""
+    shutil.copy(os.path.join(SOURCE, "examples", "sauter2003.toml"), tmp_path / "sauter2003.toml")
+    missing = SMALL_LINE.replace("tension = 30000\n", "")
+    with pytest.raises(ValueError) as span_error:
+        sb.span(text=open(SPAN).read().replace("tension_fraction = 0.15", ""), frequencies=[15.0])
+    with pytest.raises(ValueError, match=r"^line\(text=\.\.\.\): missing key 'tension'") as line_error:
+        sb.line(text=missing, base=tmp_path)
+    assert type(line_error.value) is type(span_error.value) is sb.InputError
+    assert "tension" in str(span_error.value)
+    (tmp_path / "line.toml").write_text(SMALL_LINE.replace("length = 250", "length = -250"))
+    with pytest.raises(sb.InputError, match=r"line.toml:\d+: .*length = -250"):
+        sb.line(tmp_path / "line.toml")
+    with pytest.raises(sb.InputError, match="none.toml: no such file"):
+        sb.line(tmp_path / "none.toml")
+    with pytest.raises(sb.InvalidParameter, match="either file"):
+        sb.line()
+    with pytest.raises(sb.InvalidParameter, match="either file"):
+        sb.line(tmp_path / "line.toml", text=SMALL_LINE)
+    with pytest.raises(sb.InvalidParameter, match="threads = 0"):
+        sb.line(text=SMALL_LINE, threads=0)
 
 
 DESIGN = os.path.join(SOURCE, "examples", "design_aster570.toml")
@@ -418,11 +590,13 @@ def design_run(tmp_path_factory):
 def test_design_returns_the_documented_keys(design_run):
     folder, _, d = design_run
     assert d["variables"] == ["arm.left.mass", "arm.left.cable.length", "position"]
-    assert d["columns"][:2] == ["stage", "run"] and d["columns"][2:5] == d["variables"]
+    assert d["columns"][:3] == ["stage", "governing_span", "run"] and d["columns"][3:6] == d["variables"]
     assert set(d) == set(d["columns"]) | {"columns", "variables", "summary", "best_damper"}
-    documented = documented_keys("design", ["-"])
+    documented = {name.replace("<span>", "aster570_400m") for name in documented_keys("design", ["-"])}
     assert "<variable>" in documented
     assert set(d) == documented - {"<variable>"} | set(d["variables"])
+    assert d["governing_span"].tolist() == ["aster570_400m" if ok else "" for ok in d["converged"]]
+    assert d["aster570_400m_worse_than_undamped"].dtype == bool
     n = d["summary"]["evaluations"]
     assert n == len(d["stage"]) == 1 + 3 + len([s for s in d["stage"] if s == "polish"])
     assert d["stage"].tolist()[:4] == ["base", "sample", "sample", "sample"]
@@ -434,8 +608,9 @@ def test_design_equals_the_programs_csv_json_and_best_file(design_run):
     folder, summary, d = design_run
     rows = read_csv(folder / "designs.csv")
     assert d["columns"] == list(rows[0].keys())
-    assert d["stage"].tolist() == [row["stage"] for row in rows]
-    for column in d["columns"][1:]:
+    for column in ("stage", "governing_span"):
+        assert d[column].tolist() == [row[column] for row in rows], column
+    for column in d["columns"][2:]:
         expected = np.array([float(row[column]) if row[column] else np.nan for row in rows])
         assert np.array_equal(d[column].astype(float), expected, equal_nan=True), column  # exactly: threads change nothing
     del summary["seconds"]  # the program's wall time

@@ -551,3 +551,82 @@ def test_impedance_fit_plot_overlays_measured_and_fitted_curves(tmp_path):
     assert len(measured.get_xdata()) == len(model.get_xdata()) == 6
     for a, b in zip(measured.get_ydata(), model.get_ydata()):  # the fit reproduces its own curve
         assert abs(a / b - 1) < 1e-4
+
+
+# ---------------------------------------------------------------- line
+
+SCHEDULE_HEADER = ("id,length_m,dampers_per_end,max_stress_mpa,undamped_max_stress_mpa,endurance_limit_mpa,stress_ratio,"
+                   "margin_percent,verdict,converged\n")
+# Five spans as stockbridge line writes them: one unsafe (T3-T4), one whose balance
+# did not converge (T4-T5: its stresses empty, verdict unknown), one without dampers.
+SCHEDULE = SCHEDULE_HEADER + ("T1-T2,300,2,6.65,39.2,8.73,0.762,23.8,safe,1\n"
+                              "T2-T3,420,1,7.9,40.9,8.73,0.905,9.5,safe,1\n"
+                              "T3-T4,250,3,9.4,48.7,8.73,1.077,-7.7,unsafe,1\n"
+                              "T4-T5,380,2,,,8.73,,,unknown,0\n"
+                              "T5-T6,310,0,1.96,1.96,8.73,0.225,77.5,safe,1\n")
+
+
+def test_line_plot_writes_a_png(tmp_path):
+    (tmp_path / "schedule.csv").write_text(SCHEDULE)
+    result = plot("line", "schedule.csv", "-o", "schedule.png", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert os.path.getsize(tmp_path / "schedule.png") > 10000
+    assert png_size(tmp_path / "schedule.png") == (800, 600)
+
+
+def test_line_plot_draws_the_stresses_the_limit_and_the_dampers_per_span(tmp_path):
+    from matplotlib.colors import to_rgba
+    (tmp_path / "schedule.csv").write_text(SCHEDULE)
+    module = plot_module()
+    figure = module.line_figure(str(tmp_path / "schedule.csv"))
+    stress, dampers = figure.axes
+    assert stress.get_ylabel() == "largest fymax stress (MPa)" and stress.get_yscale() == "log"
+    assert dampers.get_ylabel() == "dampers per end" and "span" in dampers.get_xlabel()
+    lines = {line.get_label(): line for line in stress.get_lines()}
+    assert list(lines) == ["without dampers", "with the dampers", "endurance limit"]
+    nan = float("nan")
+    assert list(lines["with the dampers"].get_xdata()) == [0, 1, 2, 3, 4]
+    assert list(lines["with the dampers"].get_ydata()) == pytest.approx([6.65, 7.9, 9.4, nan, 1.96], nan_ok=True)
+    assert list(lines["without dampers"].get_ydata()) == pytest.approx([39.2, 40.9, 48.7, nan, 1.96], nan_ok=True)
+    assert set(lines["endurance limit"].get_ydata()) == {8.73}
+    assert list(lines["endurance limit"].get_xdata())[::9] == [-0.5, 4.5]  # across every span's width
+    bars = dampers.containers[0]  # the bars (the shading is among the patches too)
+    assert [bar.get_height() for bar in bars] == [2, 1, 3, 2, 0]
+    colours = {"safe": "C2", "unsafe": "C3", "unknown": "0.6"}
+    for bar, verdict in zip(bars, ["safe", "safe", "unsafe", "unknown", "safe"]):
+        assert bar.get_facecolor() == to_rgba(colours[verdict]), verdict
+    assert [label.get_text() for label in dampers.get_xticklabels()] == ["T1-T2", "T2-T3", "T3-T4", "T4-T5", "T5-T6"]
+    shaded = sorted((round((p.get_xy()[:, 0].min() + p.get_xy()[:, 0].max()) / 2, 9), p.get_facecolor()[:3])
+                    for p in stress.patches)  # (middle, colour) of each span's shading
+    assert shaded == [(2.0, to_rgba("C3")[:3]), (3.0, to_rgba("0.6")[:3])]  # the unsafe and the unknown span
+    legend = [text.get_text() for text in stress.get_legend().get_texts()]
+    assert legend[-2:] == ["unsafe span", "unknown span"]
+    assert stress.get_title().endswith(": 5 spans, 3 safe, 1 unsafe, 1 unknown")
+    module.plt.close(figure)
+
+
+def test_line_plot_of_a_long_line_labels_some_spans(tmp_path):
+    rows = "".join(f"T{k}-T{k + 1},300,2,7,40,8.73,0.8,20,safe,1\n" for k in range(1, 61))
+    (tmp_path / "long.csv").write_text(SCHEDULE_HEADER + rows)
+    module = plot_module()
+    figure = module.line_figure(str(tmp_path / "long.csv"))
+    axis = figure.axes[1]
+    labels = [label.get_text() for label in axis.get_xticklabels()]
+    assert labels == [f"T{k}-T{k + 1}" for k in range(1, 61, 3)]  # every third of 60: at most 24
+    assert set(axis.get_xticks()) | set(axis.get_xticks(minor=True)) == set(range(60))  # every span a tick
+    module.plt.close(figure)
+
+
+@pytest.mark.parametrize("contents,mention", [
+    ("id,verdict,dampers_per_end\nT1,safe,2\n", "missing column 'max_stress_mpa'"),
+    (SCHEDULE_HEADER, "no data rows"),
+    (SCHEDULE_HEADER + "T1,300,2,7,40,8.73,0.8,20,fine,1\n", "verdict = 'fine'"),
+    (SCHEDULE_HEADER + "T1,300,1.5,7,40,8.73,0.8,20,safe,1\n", "dampers_per_end = 1.5"),
+    (SCHEDULE_HEADER + "T1,300,,7,40,8.73,0.8,20,safe,1\n", "'dampers_per_end' is empty"),
+    (SCHEDULE_HEADER + "T1,300,2,0,40,8.73,0.8,20,safe,1\n", "max_stress_mpa = 0"),
+    (SCHEDULE_HEADER + "T1,300,2,,,8.73,,,unknown,0\n", "no stress to plot"),
+    (SCHEDULE_HEADER + "T1,300,2,abc,40,8.73,0.8,20,safe,1\n", "'abc'")])
+def test_line_bad_files_get_one_line_and_exit_two(tmp_path, contents, mention):
+    (tmp_path / "bad.csv").write_text(contents)
+    result = plot("line", "bad.csv", "-o", "bad.png", cwd=tmp_path)
+    assert_bad(result, tmp_path, "bad.png", mention, "bad.csv")

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,8 +81,24 @@ using SearchProgress = std::function<void(int, int)>;
 std::vector<std::vector<double>> space_filling_sample(const std::vector<DesignVariable>& variables, int count,
                                                       std::uint64_t seed);
 
+/// Where a study's evaluations are kept as they are made and found again: a resumed
+/// study recalls those of its interrupted run instead of computing them, and, the
+/// search being deterministic, takes the same path to the same result.
+class EvaluationJournal {
+ public:
+  virtual ~EvaluationJournal() = default;
+  /// The evaluation of candidate x made before, if any (from any thread). May throw
+  /// (Interrupted: the study was asked to stop).
+  virtual std::optional<Evaluation> recall(const std::vector<double>& x) = 0;
+  /// A new evaluation as it completes (from any thread).
+  virtual void record(const Evaluation& evaluation) = 0;
+};
+
+/// The search: the base design, the sample (on the runner's workers), then the
+/// polishes from the best feasible candidates. With a journal, every candidate is
+/// recalled from it where it was evaluated before, and recorded as it is made.
 DesignResult run_search(const DesignStudy& study, const SearchOptions& options, TaskRunner& runner,
-                        const SearchProgress& progress = {});
+                        const SearchProgress& progress = {}, EvaluationJournal* journal = nullptr);
 
 /// Whether a is better than b: feasible before infeasible, converged before not,
 /// then the smaller objective.

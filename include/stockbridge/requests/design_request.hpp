@@ -3,7 +3,9 @@
 // the study's evaluations as the rows every front end shows (CSV columns, Python
 // arrays), the summary (the --json keys), and the best design as a damper file.
 
+#include <filesystem>
 #include <optional>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -55,6 +57,16 @@ io::JsonObject design_summary(const design::DesignStudy& study, const design::De
 
 /// The best design as a complete damper file (the `impedance` and `span` commands
 /// read it), its position and figures in comments; none when nothing is feasible.
+/// A candidate's evaluation as one line of text (a design journal's record): tab
+/// separated, numbers in their shortest round-trip form; it reads back bit for bit.
+std::string evaluation_record(const design::Evaluation& evaluation);
+/// The evaluation of a record; InvalidParameter naming "record" where it is not one
+/// (a record cut short by an interruption).
+design::Evaluation parse_evaluation_record(std::string_view record);
+/// The digest a design journal's first line holds: the program's version, the design
+/// file's bytes (`design_text`) and every file it reads.
+std::string design_fingerprint(const std::vector<std::filesystem::path>& inputs, std::string_view design_text);
+
 std::optional<std::string> best_damper_file(const design::DesignStudy& study, const design::DesignResult& result,
                                             std::string_view design_file);
 

@@ -147,7 +147,7 @@ TEST(SpanConductorFile, AMissingFileSaysWhereItWasLookedFor) {
   EXPECT_NE(message.find("span.toml:2: conductor.file: \"nowhere.toml\": expected an existing conductor file (looked for "),
             std::string::npos)
       << message;
-  EXPECT_NE(message.find("relative paths start at the span file's folder"), std::string::npos) << message;
+  EXPECT_NE(message.find("relative paths start at the file's folder"), std::string::npos) << message;
   // Span text (Python's span(text=...)) has no folder: the working directory.
   try {
     load_span_text(span_with("[conductor]\nfile = \"nowhere.toml\"\n"), "span(text=...)");
