@@ -218,30 +218,10 @@ TEST(DesignCli, BadStudiesAreOneLineAndWriteNothing) {
 namespace stockbridge::testing {
 namespace {
 
-/// The candidates recorded in a design journal (its lines after the first).
-int design_journal_records(const std::filesystem::path& journal) {
-  const std::string text = read_text(journal);
-  return std::max(0, static_cast<int>(std::count(text.begin(), text.end(), '\n')) - 1);
-}
-
-/// Runs the study in `dir` in the background and stops it with `signal` once the
-/// journal holds `records` candidates; the process's wait status.
+/// Runs the study in `dir` and stops it with `signal` once the journal holds `records` candidates.
 int design_run_stopped(const std::filesystem::path& dir, int signal, int records) {
-  const std::string command = "cd '" + dir.string() + "' && exec '" + std::string(STOCKBRIDGE_CLI) +
-                              "' design study.toml -o designs.csv --best best.toml > run.log 2> run.err";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
-  while (design_journal_records(dir / "designs.csv.journal") < records && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  ::kill(pid, signal);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return status;
+  return run_cli_stopped("design study.toml -o designs.csv --best best.toml", dir, dir / "designs.csv.journal", records,
+                         signal);
 }
 
 // Every candidate is journaled as it completes: a study killed midway, or stopped
@@ -250,7 +230,7 @@ int design_run_stopped(const std::filesystem::path& dir, int signal, int records
 TEST(DesignCli, AnInterruptedStudyResumesToTheSameDesign) {
   const auto whole = study_folder("design-whole", small_study());
   ASSERT_EQ(run_cli("design study.toml --quiet -o designs.csv --best best.toml", whole).exit_code, 0);
-  const int all = design_journal_records(whole / "designs.csv.journal");
+  const int all = journal_records(whole / "designs.csv.journal");
   ASSERT_GE(all, 1 + kSamples);
 
   const auto killed = study_folder("design-killed", small_study());
@@ -276,7 +256,7 @@ TEST(DesignCli, AnInterruptedStudyResumesToTheSameDesign) {
   const CliResult done = run_cli("design study.toml --resume -o designs.csv --best best.toml", whole);
   ASSERT_EQ(done.exit_code, 0) << done.err;
   EXPECT_NE(done.err.find(std::to_string(all) + " recalled from the journal"), std::string::npos) << done.err;
-  EXPECT_EQ(design_journal_records(whole / "designs.csv.journal"), all);
+  EXPECT_EQ(journal_records(whole / "designs.csv.journal"), all);
 }
 
 TEST(DesignCli, AJournalOfAnotherStudyIsRefused) {

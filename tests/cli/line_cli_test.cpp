@@ -78,14 +78,6 @@ std::filesystem::path line_folder(const std::string& name, const std::string& te
   return dir;
 }
 
-/// The number of complete records in a journal (its lines after the first).
-int journal_records(const std::filesystem::path& journal) {
-  const std::string text = read_text(journal);
-  int lines = 0;
-  for (const char c : text) lines += c == '\n';
-  return std::max(0, lines - 1);
-}
-
 /// The schedule of the small line on one thread, made once for the tests that compare with it.
 const std::string& reference_schedule() {
   static const std::string schedule = [] {
@@ -141,22 +133,8 @@ TEST(LineCli, EveryRowIsReproducedBySpanOnItsDetailsFile) {
 
 TEST(LineCli, AKilledRunResumedGivesTheSameSchedule) {
   const auto dir = line_folder("line-killed");
-  const std::string command = "cd '" + dir.string() + "' && exec '" + std::string(STOCKBRIDGE_CLI) +
-                              "' line line.toml -o schedule.csv --quiet > run.log 2>&1";
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
   // Killed (no chance to clean up) once two spans are in the journal.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
-  while (journal_records(dir / "schedule.csv.journal") < 2 && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  const int status = run_cli_stopped("line line.toml -o schedule.csv --quiet", dir, dir / "schedule.csv.journal", 2, SIGKILL);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
   EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv"));
   const int kept = journal_records(dir / "schedule.csv.journal");
@@ -170,21 +148,7 @@ TEST(LineCli, AKilledRunResumedGivesTheSameSchedule) {
 
 TEST(LineCli, CtrlCStopsCleanlyWithStatus130AndTheJournalResumes) {
   const auto dir = line_folder("line-interrupted");
-  const std::string command = "cd '" + dir.string() + "' && exec '" + std::string(STOCKBRIDGE_CLI) +
-                              "' line line.toml -o schedule.csv > run.log 2> run.err";
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
-  while (journal_records(dir / "schedule.csv.journal") < 1 && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  ::kill(pid, SIGINT);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  const int status = run_cli_stopped("line line.toml -o schedule.csv", dir, dir / "schedule.csv.journal", 1, SIGINT);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130) << read_text(dir / "run.err");
   EXPECT_NE(read_text(dir / "run.err").find("run again with --resume"), std::string::npos) << read_text(dir / "run.err");

@@ -1,11 +1,14 @@
 #pragma once
 // Runs the stockbridge program as a user would and captures what it says.
 
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 #include <sys/wait.h>
 
@@ -64,6 +67,36 @@ inline CliResult run_cli(const std::string& arguments, const std::filesystem::pa
   result.out = read_text(out);
   result.err = read_text(err);
   return result;
+}
+
+/// The records of a journal (its lines after the first; 0 while there is none).
+inline int journal_records(const std::filesystem::path& journal) {
+  const std::string text = read_text(journal);
+  int lines = 0;
+  for (const char c : text) lines += c == '\n';
+  return lines > 0 ? lines - 1 : 0;
+}
+
+/// Runs `stockbridge <arguments>` in `directory` in the background (stdout to
+/// run.log, stderr to run.err) and sends it `signal` once `journal` holds `records`
+/// records (within five minutes); its wait status.
+inline int run_cli_stopped(const std::string& arguments, const std::filesystem::path& directory,
+                           const std::filesystem::path& journal, int records, int signal) {
+  const std::string command = "cd '" + directory.string() + "' && exec '" + STOCKBRIDGE_CLI + "' " + arguments +
+                              " > run.log 2> run.err";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (journal_records(journal) < records && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ::kill(pid, signal);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return status;
 }
 
 }  // namespace stockbridge::testing
