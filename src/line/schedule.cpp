@@ -54,19 +54,26 @@ long long TableCache::nodes() const {
 
 namespace {
 
-/// Positions (increasing) rounded to the rules' step, their spacing and range kept,
-/// as the decimal numbers the schedule prints.
+/// Positions (increasing) rounded to the rules' step, their range and spacing kept
+/// (in whole steps), as the decimal numbers the schedule prints.
 std::vector<double> rounded_positions(std::vector<double> x, const ScheduleRules& rules) {
   std::sort(x.begin(), x.end());
   const double step = rules.position_step;
-  const int digits = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
-  const auto decimal = [digits](double v) { return std::stod(fmt::format("{:.{}f}", v, digits)); };
   const span::PositionRules& p = rules.positions;
+  const auto lo = static_cast<long long>(std::ceil(p.position_min / step - 1e-9));
+  const auto hi = static_cast<long long>(std::floor(p.position_max / step + 1e-9));
+  const auto spacing = static_cast<long long>(std::ceil(p.spacing_min / step - 1e-9));
+  const auto n = static_cast<long long>(x.size());
+  std::vector<long long> steps(x.size());
+  for (long long k = 0; k < n; ++k) {
+    long long i = std::llround(x[static_cast<std::size_t>(k)] / step);
+    i = std::max(lo + k * spacing, std::min(i, hi - (n - 1 - k) * spacing));  // the range wins where they cannot both fit
+    if (k > 0) i = std::max(i, steps[static_cast<std::size_t>(k - 1)] + spacing);
+    steps[static_cast<std::size_t>(k)] = i;
+  }
+  const int digits = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
   for (std::size_t k = 0; k < x.size(); ++k) {
-    double v = std::round(x[k] / step) * step;
-    v = std::clamp(v, std::ceil(p.position_min / step - 1e-9) * step, std::floor(p.position_max / step + 1e-9) * step);
-    if (k > 0 && v < x[k - 1] + p.spacing_min - 1e-9) v = std::ceil((x[k - 1] + p.spacing_min) / step - 1e-9) * step;
-    x[k] = decimal(v);
+    x[k] = std::stod(fmt::format("{:.{}f}", static_cast<double>(steps[k]) * step, digits));
   }
   return x;
 }
