@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -147,6 +148,60 @@ void write_line_details(const std::filesystem::path& directory, const io::LineFi
   io::write_file_atomically(directory / (stem + ".csv"), requests::span_table(analysis.span).values(analysis.balance.points).csv());
 }
 
+/// The line file, its outputs checked apart from every file it reads, its warnings printed.
+io::LineFile read_line_input(const LineOptions& options, const std::vector<CommandFile>& outputs) {
+  require_outputs_apart(outputs, {{"the line file", options.line_file}});
+  io::LineFile file = io::load_line_file(options.line_file);
+  std::vector<CommandFile> inputs;
+  for (const auto& p : file.inputs) inputs.push_back({"a file the line file reads", p.string()});
+  require_outputs_apart(outputs, inputs);
+  print_warnings(file.warnings);
+  return file;
+}
+
+/// --details: the folder made, every span's file name checked unique.
+void prepare_line_details(const std::string& folder, const io::LineFile& file) {
+  std::set<std::string> stems;
+  for (const line::LineSpan& s : file.line.spans()) {
+    if (!stems.insert(line_file_stem(s.id)).second) {
+      throw InvalidParameter(fmt::format("--details: two spans' ids give the file name {} (ids keep letters, digits, "
+                                         "'.', '_' and '-'; the rest becomes '_')",
+                                         line_file_stem(s.id)));
+    }
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (!std::filesystem::is_directory(folder)) throw OutputError(fmt::format("--details {}: cannot make the folder", folder));
+}
+
+/// The schedule, the bill and the report (or JSON); the exit status.
+int write_line_outputs(const LineOptions& options, const io::LineFile& file, const std::vector<line::ScheduleRow>& schedule,
+                       const Processes& processes, double seconds, std::size_t computed) {
+  io::write_file_atomically(options.output, requests::schedule_table().values(schedule).csv());
+  io::write_file_atomically(line_bill_path(options),
+                            requests::bill_table().values(line::bill_of_materials(file.line, schedule)).csv());
+  if (options.json) {
+    fmt::print("{}\n", requests::line_summary(file, schedule)
+                           .add("ranks", processes.size())
+                           .add("threads", options.threads)
+                           .add("seconds", seconds)
+                           .str());
+  } else {
+    print_line_report(file, schedule);
+  }
+  int not_converged = 0;
+  for (const line::ScheduleRow& r : schedule) not_converged += r.converged < r.points;
+  if (!options.quiet) {
+    fmt::print(stderr, "line: {} spans ({} computed now) in {:.1f} s on {} rank(s) x {} thread(s)\n", schedule.size(),
+               computed, seconds, processes.size(), options.threads);
+  }
+  if (not_converged == 0) return kSuccess;
+  fmt::print(stderr, "line: {} span(s) not converged throughout (converged = 0 in {}; their stresses left empty, "
+                     "their verdicts unknown unless a converged point exceeds the limit)\n",
+             not_converged, options.output);
+  return kNotConverged;
+}
+
 int run_line_command(const LineOptions& options) {
   Processes processes;
   const bool root = processes.rank() == 0;
@@ -156,33 +211,10 @@ int run_line_command(const LineOptions& options) {
   }
   require_in_range("threads", options.threads, 1, 256);
   const std::string journal_path = options.output + ".journal";
-  const std::string bill_path = line_bill_path(options);
-  const io::LineFile file = [&] {
-    require_outputs_apart({{"-o", options.output}, {"--bill", bill_path}, {"the journal", journal_path}},
-                          {{"the line file", options.line_file}});
-    io::LineFile read = io::load_line_file(options.line_file);
-    std::vector<CommandFile> inputs;
-    for (const auto& p : read.inputs) inputs.push_back({"a file the line file reads", p.string()});
-    require_outputs_apart({{"-o", options.output}, {"--bill", bill_path}, {"the journal", journal_path}}, inputs);
-    print_warnings(read.warnings);
-    return read;
-  }();
+  const io::LineFile file = read_line_input(
+      options, {{"-o", options.output}, {"--bill", line_bill_path(options)}, {"the journal", journal_path}});
   const std::size_t spans = file.line.spans().size();
-  if (!options.details.empty()) {
-    std::set<std::string> stems;
-    for (const line::LineSpan& s : file.line.spans()) {
-      if (!stems.insert(line_file_stem(s.id)).second) {
-        throw InvalidParameter(fmt::format("--details: two spans' ids give the file name {} (ids keep letters, digits, "
-                                           "'.', '_' and '-'; the rest becomes '_')",
-                                           line_file_stem(s.id)));
-      }
-    }
-    std::error_code ec;
-    std::filesystem::create_directories(options.details, ec);
-    if (!std::filesystem::is_directory(options.details)) {
-      throw OutputError(fmt::format("--details {}: cannot make the folder", options.details));
-    }
-  }
+  if (!options.details.empty()) prepare_line_details(options.details, file);
   const std::string fingerprint = requests::line_fingerprint(file, line_text_of(options.line_file));
   std::map<std::size_t, line::ScheduleRow> rows;
   int cut_short = 0;
@@ -247,32 +279,11 @@ int run_line_command(const LineOptions& options) {
   if (!options.details.empty()) {  // spans from the journal whose details are missing: balanced again
     for (const line::ScheduleRow& row : schedule) {
       const std::filesystem::path csv = std::filesystem::path(options.details) / (line_file_stem(row.id) + ".csv");
-      if (std::filesystem::exists(csv) || row.endurance_limit != row.endurance_limit) continue;
+      if (std::filesystem::exists(csv) || std::isnan(row.endurance_limit)) continue;  // a span not scheduled has none
       write_line_details(options.details, file, row, line::analyse_arrangement(file.line, row, cache));
     }
   }
-  io::write_file_atomically(options.output, requests::schedule_table().values(schedule).csv());
-  io::write_file_atomically(bill_path, requests::bill_table().values(line::bill_of_materials(file.line, schedule)).csv());
-  if (options.json) {
-    fmt::print("{}\n", requests::line_summary(file, schedule)
-                           .add("ranks", processes.size())
-                           .add("threads", options.threads)
-                           .add("seconds", seconds)
-                           .str());
-  } else {
-    print_line_report(file, schedule);
-  }
-  int not_converged = 0;
-  for (const line::ScheduleRow& r : schedule) not_converged += r.converged < r.points;
-  if (!options.quiet) {
-    fmt::print(stderr, "line: {} spans ({} computed now) in {:.1f} s on {} rank(s) x {} thread(s)\n", spans,
-               done_now, seconds, processes.size(), options.threads);
-  }
-  if (not_converged == 0) return kSuccess;
-  fmt::print(stderr, "line: {} span(s) not converged throughout (converged = 0 in {}; their stresses left empty, "
-                     "their verdicts unknown unless a converged point exceeds the limit)\n",
-             not_converged, options.output);
-  return kNotConverged;
+  return write_line_outputs(options, file, schedule, processes, seconds, done_now);
 }
 
 }  // namespace
