@@ -376,6 +376,35 @@ TEST(SpanBalance, TwoDampersPositionsSearchedTogetherNearlyMatchAGrid) {
   EXPECT_DOUBLE_EQ(found.objective, at.summary.max_stress_fymax / at.summary.endurance_limit);
 }
 
+// Each objective is minimised: the position of least damage per year has no more
+// damage than the position of least stress, and no less stress (the two differ:
+// the life weighs the frequencies by how often the wind blows there).
+TEST(SpanBalance, ThePositionSearchMinimisesTheObjectiveItIsGiven) {
+  FatigueSpec fatigue;
+  fatigue.cycles = 5e8;
+  fatigue.life = LifeModel{};
+  fatigue.life->wind_weibull = {2.0, 4.0};
+  fatigue.life->aeolian_fraction = 0.3;
+  const Span span(aster570(), 400.0, aster570_tension, WindModel{}, SelfDampingModel{},
+                  {{sauter_damper(), 1.0, true, "sauter", nullptr}}, fatigue);
+  BalanceOptions options = fast_options();
+  options.polish = false;
+  const SpanTables tables(span, band_frequencies(span, 12), options.table);
+  PositionRules rules;
+  rules.position_max = 4.0;
+  rules.scan_points = 21;
+  const PositionSearch by_stress = optimise_positions(span, tables, options, rules);
+  rules.objective = PositionObjective::life;
+  const PositionSearch by_life = optimise_positions(span, tables, options, rules);
+  EXPECT_EQ(by_life.criterion, PositionObjective::life);
+  const auto balance_at = [&](double x) { return run_balance(span.with_dampers_at(x), tables, options); };
+  const SpanBalance at_stress = balance_at(by_stress.positions[0]), at_life = balance_at(by_life.positions[0]);
+  ASSERT_TRUE(at_stress.summary.life && at_life.summary.life);
+  EXPECT_LE(at_life.summary.life->damage_per_year, at_stress.summary.life->damage_per_year * (1 + 1e-9));
+  EXPECT_LE(at_stress.summary.max_stress_fymax, at_life.summary.max_stress_fymax * (1 + 1e-9));
+  EXPECT_DOUBLE_EQ(by_life.objective, std::log10(at_life.summary.life->damage_per_year));
+}
+
 TEST(SpanBalance, ThePositionSearchStopsWhenAsked) {
   const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}, {sauter_damper(), 2.0, true, "sauter", nullptr}});
   const std::vector<double> f{12.0, 25.0};
