@@ -20,6 +20,10 @@
 
 namespace stockbridge::io {
 
+struct LineDocument {
+  toml::table table;
+};
+
 namespace line_reading {
 
 using span_reading::SpanReading;
@@ -349,8 +353,8 @@ LineFile build_line(toml::table document, const TomlSource& source, const std::f
   warnings.insert(warnings.begin(), shared.warnings.begin(), shared.warnings.end());
   std::sort(shared.inputs.begin(), shared.inputs.end());
   shared.inputs.erase(std::unique(shared.inputs.begin(), shared.inputs.end()), shared.inputs.end());
-  return LineFile{std::move(*built), std::move(name), std::move(shared.inputs), std::move(warnings), std::move(document),
-                  base};
+  return LineFile{std::move(*built), std::move(name), std::move(shared.inputs), std::move(warnings),
+                  std::make_shared<const LineDocument>(LineDocument{std::move(document)}), base};
 }
 
 }  // namespace line_reading
@@ -379,7 +383,7 @@ std::string span_file_text(const LineFile& file, const line::ScheduleRow& row) {
   const line::LineSpan& s = file.line.spans().at(row.index);
   toml::table doc;
   for (const char* key : {"conductor", "wind", "self_damping", "fatigue", "balance"}) {
-    if (const toml::table* t = file.document.get_as<toml::table>(key)) doc.insert(key, *t);
+    if (const toml::table* t = file.document->table.get_as<toml::table>(key)) doc.insert(key, *t);
   }
   const std::filesystem::path& base = file.base_directory;
   if (!s.conductor.empty()) {

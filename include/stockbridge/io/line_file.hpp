@@ -31,22 +31,25 @@
 // wind_speed_min_m_s, wind_speed_max_m_s; a UTF-8 BOM and CRLF accepted.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <toml++/toml.h>
-
 #include "stockbridge/line/schedule.hpp"
 
 namespace stockbridge::io {
+
+/// The line file as parsed (private to the library): the shared tables a span file
+/// of one span restates.
+struct LineDocument;
 
 struct LineFile {
   line::Line line;
   std::string name;                            ///< [line] name, or the file's stem
   std::vector<std::filesystem::path> inputs;   ///< every file read beside the line file (fingerprinted by a journal)
   std::vector<std::string> warnings;           ///< values outside their typical ranges, each at its line
-  toml::table document;                        ///< as read: the shared tables a span file of one span restates
+  std::shared_ptr<const LineDocument> document;  ///< as read
   std::filesystem::path base_directory;        ///< where the line file's relative paths start
 };
 
