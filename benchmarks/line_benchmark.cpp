@@ -39,7 +39,7 @@ void BM_LineSpan(benchmark::State& state) {
   state.counters["per_end"] = per_end;
   state.counters["search_balances"] = balances;
 }
-// T01-T02 (2 per end), T07-T08 (3, unsafe), T17-T18 (1), T37-T38 (Linnet: none)
+// T01-T02 and T07-T08 (2 per end), T17-T18 (1), T37-T38 (Linnet: none)
 BENCHMARK(BM_LineSpan)->Arg(0)->Arg(6)->Arg(16)->Arg(36)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace

@@ -282,6 +282,11 @@ std::vector<std::thread> start_threads(int threads, DealState& state, const std:
   return workers;
 }
 
+/// How often a rank's dealing thread looks for messages and finished tasks: seldom
+/// enough not to take the core from a computing thread that shares it (mpirun binds
+/// each rank to one core), often enough next to tasks of a second or more.
+constexpr std::chrono::milliseconds kDealPoll{20};
+
 #ifdef STOCKBRIDGE_WITH_MPI
 enum DealTag : int { kDealRequest = 11, kDealTask = 12, kDealRecord = 13, kDealDone = 14 };
 
@@ -293,7 +298,7 @@ void deal_as_worker(int threads, const std::function<std::string(std::size_t)>& 
   std::vector<std::thread> workers = start_threads(threads, state, run);
   bool no_more = false;
   while (true) {
-    for (auto& [t, record] : state.take_records(std::chrono::milliseconds(2), threads)) {
+    for (auto& [t, record] : state.take_records(kDealPoll, threads)) {
       std::vector<char> bytes(sizeof(std::uint64_t) + record.size());
       const std::uint64_t index = t;
       std::memcpy(bytes.data(), &index, sizeof index);
@@ -386,7 +391,7 @@ void Processes::deal(int threads, const std::vector<std::size_t>& todo,
     if (!record.empty()) done(t, record);
   };
   while (true) {
-    const auto wait = std::chrono::milliseconds(mpi_ ? 2 : 200);
+    const auto wait = mpi_ ? kDealPoll : std::chrono::milliseconds(200);
     for (auto& [t, record] : state.take_records(wait, threads)) pass_on(t, record);
 #ifdef STOCKBRIDGE_WITH_MPI
     if (mpi_) ranks_open -= serve_ranks(take, done);
