@@ -96,7 +96,10 @@ class PositionObjectiveRun {
     ++best_.balances;
     const SpanBalance b = run_balance(span_.with_dampers(std::move(dampers)), tables_, options_);
     const double value = position_objective(b, rules_.objective);
-    if (value < best_.objective) {
+    // COBYLA may try arrangements a little inside the spacing on its way: never the answer.
+    bool spaced = true;
+    for (std::size_t k = 1; k < sorted.size(); ++k) spaced = spaced && sorted[k] - sorted[k - 1] >= rules_.spacing_min - 1e-9;
+    if (spaced && value < best_.objective) {
       best_.objective = value;
       best_.max_stress_fymax = b.summary.max_stress_fymax;
       best_sorted_ = sorted;

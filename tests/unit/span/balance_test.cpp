@@ -355,7 +355,7 @@ TEST(SpanBalance, TwoDampersPositionsSearchedTogetherNearlyMatchAGrid) {
   rules.spacing_min = 0.4;
   const PositionSearch found = optimise_positions(span, tables, options, rules);
   ASSERT_EQ(found.positions.size(), 2u);
-  EXPECT_GE(found.positions[1] - found.positions[0], rules.spacing_min - 1e-6);
+  EXPECT_GE(found.positions[1] - found.positions[0], rules.spacing_min - 1e-9);
   EXPECT_GE(found.positions[0], rules.position_min - 1e-9);
   EXPECT_LE(found.positions[1], rules.position_max + 1e-9);
   double grid = std::numeric_limits<double>::infinity(), grid_a = 0.0, grid_b = 0.0;
