@@ -1,6 +1,7 @@
 // stockbridge impedance: Z(f, amplitude) of a damper over a frequency sweep.
 
 #include <chrono>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "input_files.hpp"
 #include "option_parsing.hpp"
 #include "progress.hpp"
+#include "report_output.hpp"
 #include "solver_options.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/damper/sweep.hpp"
@@ -38,6 +40,7 @@ struct ImpedanceOptions {
   bool json = false;
   bool quiet = false;
   std::string output;
+  std::optional<std::string> report;
 };
 
 requests::SweepRequest sweep_request(const ImpedanceOptions& options) {
@@ -57,13 +60,23 @@ requests::SweepRequest sweep_request(const ImpedanceOptions& options) {
 int run_impedance_command(const ImpedanceOptions& options) {
   const requests::SweepRequest request = sweep_request(options);
   const damper::SweepSpec spec = requests::sweep_spec(request);
-  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}});
+  check_report_path(options.report);
+  const damper::Damper damper =
+      read_damper_input(options.damper_file, {{"-o", options.output}, {"--report", options.report.value_or("")}});
   warn_unusual_options(requests::unusual_values(request));
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress("impedance", options.quiet);
   const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::string report;
+  if (options.report) {
+    const requests::ModesResult modes = requests::run_modes(damper);
+    report = report::impedance_report({std::filesystem::path(options.damper_file).stem().string(), &damper, &runs,
+                                       spec.constant_displacement, &modes},
+                                      report_context());
+  }
   io::write_file_atomically(options.output, requests::impedance_table(damper).values(requests::sweep_points(runs)).csv());
+  if (options.report) io::write_file_atomically(*options.report, report);
 
   const requests::SweepTally tally = requests::tally(runs);
   std::vector<std::string> failures;
@@ -103,6 +116,7 @@ void add_impedance_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
+  add_report_option(*sub, options->report, "the damper's numbers, |Z|, phase and power per amplitude, its linear modes");
   sub->callback([options, &exit_code] { exit_code = run_impedance_command(*options); });
 }
 

@@ -1,4 +1,5 @@
 #include "input_files.hpp"
+#include "report_output.hpp"
 
 #include <filesystem>
 
@@ -54,7 +55,10 @@ cable::Cable read_cable_input(const std::string& path, const std::vector<Command
 }
 
 void print_warnings(const std::vector<std::string>& lines) {
-  for (const std::string& line : lines) fmt::print(stderr, "warning: {}\n", line);
+  for (const std::string& line : lines) {
+    fmt::print(stderr, "warning: {}\n", line);
+    remember_warning(line);
+  }
 }
 
 void print_warnings(const std::vector<Warning>& warnings) {

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "misspellings.hpp"
+#include "report_output.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/version.hpp"
 
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", fmt::format("stockbridge {}", stockbridge::version()));
   int exit_code = cli::kSuccess;
+  cli::remember_command_line(argc, argv);
   cli::add_loop_command(app, exit_code);
   cli::add_cycle_command(app, exit_code);
   cli::add_identify_command(app, exit_code);

@@ -17,6 +17,7 @@
 #include "input_files.hpp"
 #include "option_parsing.hpp"
 #include "progress.hpp"
+#include "report_output.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
@@ -42,6 +43,7 @@ struct SpanOptions {
   bool json = false;
   bool quiet = false;
   std::string output;
+  std::optional<std::string> report;
 };
 
 requests::SpanRequest span_request_of(const SpanOptions& options) {
@@ -156,13 +158,17 @@ void print_span_report(const requests::SpanResult& result) {
 
 int run_span_command(const SpanOptions& options) {
   const requests::SpanRequest request = span_request_of(options);
-  const io::SpanFile file = read_span_input(options.span_file, {{"-o", options.output}});
+  check_report_path(options.report);
+  const io::SpanFile file = read_span_input(options.span_file, {{"-o", options.output}, {"--report", options.report.value_or("")}});
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress("span: impedance tables", options.quiet);
   const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const span::SpanAnalysis& a = result.analysis;
+  print_warnings(a.warnings);
+  const std::string report = options.report ? report::span_report(result, report_context()) : std::string();
   io::write_file_atomically(options.output, span_csv(a));
+  if (options.report) io::write_file_atomically(*options.report, report);
 
   const span::BalanceSummary& summary = a.balance.summary;
   if (options.json) {
@@ -171,7 +177,6 @@ int run_span_command(const SpanOptions& options) {
     print_span_report(result);
   }
   fmt::print(stderr, "span: {} points in {:.2f} s, {} converged\n", summary.points, seconds, summary.converged);
-  for (const std::string& warning : a.warnings) fmt::print(stderr, "warning: {}\n", warning);
   for (const span::BalancePoint& p : a.balance.points) {
     if (p.several_states) fmt::print(stderr, "  note: f = {:.4g} Hz: {}\n", p.frequency_hz, p.note);
   }
@@ -218,6 +223,7 @@ void add_span_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
+  add_report_option(*sub, options->report, "the inputs, the verdict, the stress, amplitude and power curves, the life");
   sub->callback([options, &exit_code] { exit_code = run_span_command(*options); });
 }
 

@@ -1,0 +1,339 @@
+#include "stockbridge/report/svg_chart.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string_view>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/report/html_page.hpp"
+
+namespace stockbridge::report {
+
+namespace {
+
+constexpr double kWidth = 720.0;
+constexpr double kPlotHeight = 300.0;
+constexpr double kLeft = 74.0;
+constexpr double kCharWidth = 6.6;  // of the 12 px labels, for layout only
+constexpr std::string_view kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                                         "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+
+/// A number as a tick label: at most four significant digits, no trailing zeros.
+std::string tick_label(double v) {
+  if (std::abs(v) < 1e-12) return "0";
+  return fmt::format("{:.4g}", v);
+}
+
+double nice_step(double range, int wanted) {
+  const double raw = range / wanted;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double m : {1.0, 2.0, 5.0}) {
+    if (m * decade >= raw) return m * decade;
+  }
+  return 10.0 * decade;
+}
+
+/// The range an axis shows: the given ends, else the data's (and a linear axis of
+/// non-negative values from 0, to its outer ticks).
+struct Range {
+  double lo = 0.0, hi = 1.0;
+};
+
+Range axis_range(const Axis& axis, std::vector<double> values, std::string_view which) {
+  std::erase_if(values, [&](double v) { return !std::isfinite(v) || (axis.log && v <= 0.0); });
+  if (values.empty() && !(axis.min && axis.max)) {
+    if (axis.log) throw InvalidParameter(fmt::format("chart: the {} axis is logarithmic and has no positive value", which));
+    values = {0.0, 1.0};
+  }
+  const auto [lo_it, hi_it] = std::minmax_element(values.begin(), values.end());
+  Range r{axis.min.value_or(values.empty() ? 0.0 : *lo_it), axis.max.value_or(values.empty() ? 1.0 : *hi_it)};
+  if (axis.log) {
+    if (r.lo <= 0.0 || r.hi <= 0.0) throw InvalidParameter(fmt::format("chart: the {} axis is logarithmic and its range is not positive", which));
+    if (r.hi <= r.lo) {
+      r.lo /= 2.0;
+      r.hi *= 2.0;
+    }
+    const double pad = axis.min || axis.max ? 0.0 : 0.02 * std::log10(r.hi / r.lo);
+    if (!axis.min) r.lo /= std::pow(10.0, pad);
+    if (!axis.max) r.hi *= std::pow(10.0, pad);
+    return r;
+  }
+  if (r.hi <= r.lo) {
+    const double half = r.lo == 0.0 ? 1.0 : 0.5 * std::abs(r.lo);
+    r.lo -= half;
+    r.hi += half;
+  }
+  if (!axis.min && r.lo >= 0.0 && r.lo < 0.5 * r.hi) r.lo = 0.0;
+  const double step = nice_step(r.hi - r.lo, 5);
+  if (!axis.min) r.lo = std::floor(r.lo / step + 1e-9) * step;
+  if (!axis.max) r.hi = std::ceil(r.hi / step - 1e-9) * step;
+  return r;
+}
+
+/// Maps a value on an axis to a pixel coordinate between p0 (at lo) and p1 (at hi).
+struct Scale {
+  Range range;
+  bool log = false;
+  double p0 = 0.0, p1 = 1.0;
+  double operator()(double v) const {
+    const double t = log ? std::log(v / range.lo) / std::log(range.hi / range.lo) : (v - range.lo) / (range.hi - range.lo);
+    return p0 + t * (p1 - p0);
+  }
+  bool shows(double v) const {
+    if (!std::isfinite(v) || (log && v <= 0.0)) return false;
+    const double tol = 1e-9 * (log ? range.hi : std::max(std::abs(range.lo), std::abs(range.hi)));
+    return v >= range.lo - tol && v <= range.hi + tol;
+  }
+};
+
+std::string dash_of(LineStyle style) {
+  switch (style) {
+    case LineStyle::dashed: return " stroke-dasharray=\"7 4\"";
+    case LineStyle::dotted: return " stroke-dasharray=\"2 3\"";
+    default: return "";
+  }
+}
+
+std::string_view colour_of(const Series& s, std::size_t index) {
+  const std::size_t n = std::size(kPalette);
+  return kPalette[(s.colour >= 0 ? static_cast<std::size_t>(s.colour) : index) % n];
+}
+
+/// The title in lines of at most `width` characters (split at spaces).
+std::vector<std::string> wrap(std::string_view text, std::size_t width) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      lines.push_back(line);
+      line.clear();
+    }
+    if (!line.empty()) line += ' ';
+    line += word;
+    start = end + 1;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+/// The curve of a series as polylines, broken where a value is missing or off the axes.
+std::string curve(const Series& s, std::string_view colour, const Scale& x, const Scale& y) {
+  std::string out;
+  if (s.style == LineStyle::markers) {
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!x.shows(s.x[i]) || !y.shows(s.y[i])) continue;
+      out += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.2\" fill=\"{}\"/>", x(s.x[i]), y(s.y[i]), colour);
+    }
+    return out;
+  }
+  std::vector<std::pair<double, double>> run;
+  const auto flush = [&] {
+    if (run.size() == 1) {  // a lone point between gaps: a dot where it is
+      out += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"2\" fill=\"{}\"/>", run[0].first, run[0].second, colour);
+    } else if (run.size() > 1) {
+      out += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.8\"{} points=\"", colour, dash_of(s.style));
+      for (const auto& [px, py] : run) out += fmt::format("{:.1f},{:.1f} ", px, py);
+      out.back() = '"';
+      out += "/>";
+    }
+    run.clear();
+  };
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    if (!x.shows(s.x[i]) || !y.shows(s.y[i])) {
+      flush();
+      continue;
+    }
+    run.emplace_back(x(s.x[i]), y(s.y[i]));
+  }
+  flush();
+  return out;
+}
+
+std::string legend_sample(const Series& s, std::string_view colour, double x, double y) {
+  if (s.style == LineStyle::markers) {
+    return fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.2\" fill=\"{}\"/>", x + 12, y, colour);
+  }
+  return fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"1.8\"{}/>",
+                     x, y, x + 24, y, colour, dash_of(s.style));
+}
+
+}  // namespace
+
+std::vector<double> ticks(double lo, double hi, bool log) {
+  std::vector<double> out;
+  if (!(hi > lo)) return {lo};
+  if (log && hi / lo >= 10.0) {
+    const int first = static_cast<int>(std::floor(std::log10(lo) + 1e-9));
+    const int last = static_cast<int>(std::ceil(std::log10(hi) - 1e-9));
+    const int decades = last - first;
+    const int every = decades > 8 ? 2 : 1;
+    const std::vector<double> mantissas = decades <= 2 ? std::vector<double>{1, 2, 5} : std::vector<double>{1};
+    for (int d = first; d <= last; d += every) {
+      for (const double m : mantissas) {
+        const double v = m * std::pow(10.0, d);
+        if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9)) out.push_back(v);
+      }
+    }
+    if (out.size() >= 2) return out;
+    out.clear();
+  }
+  const double step = nice_step(hi - lo, log ? 4 : 5);
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi * (1 + 1e-12) + 1e-12 * step; k += 1.0) {
+    const double v = k * step;
+    if (!log || v > 0.0) out.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  }
+  return out;
+}
+
+std::string svg(const Chart& chart) {
+  std::vector<double> xs, ys;
+  for (const Series& s : chart.series) {
+    if (s.x.size() != s.y.size()) {
+      throw InvalidParameter(fmt::format("chart '{}': series '{}' has {} x and {} y values", chart.title, s.label,
+                                         s.x.size(), s.y.size()));
+    }
+    xs.insert(xs.end(), s.x.begin(), s.x.end());
+    ys.insert(ys.end(), s.y.begin(), s.y.end());
+  }
+  for (const ReferenceLine& r : chart.references) ys.push_back(r.y);
+  const bool categories = !chart.x_categories.empty();
+  Axis x_axis = chart.x;
+  if (categories) {
+    x_axis.log = false;
+    x_axis.min = -0.5;
+    x_axis.max = static_cast<double>(chart.x_categories.size()) - 0.5;
+  }
+  const Range xr = axis_range(x_axis, xs, "x");
+  const Range yr = axis_range(chart.y, ys, "y");
+
+  const std::vector<std::string> title = wrap(chart.title, 76);
+  const double title_height = 8.0 + 18.0 * static_cast<double>(title.size());
+  const double top = title_height + (chart.top ? 44.0 : 10.0);
+  const double right = chart.right ? kWidth - 74.0 : kWidth - 24.0;
+  const double bottom = top + kPlotHeight;
+  const bool rotated = categories && chart.x_categories.size() > 12;
+  std::size_t longest = 0;
+  for (const std::string& c : chart.x_categories) longest = std::max(longest, c.size());
+  const double tick_band = rotated ? 12.0 + 0.72 * kCharWidth * static_cast<double>(std::min<std::size_t>(longest, 16)) : 18.0;
+
+  // The legend below the axis label, wrapped to the chart's width.
+  struct Entry {
+    std::size_t series;
+    double x, row;
+  };
+  std::vector<Entry> entries;
+  double lx = kLeft, row = 0;
+  for (std::size_t i = 0; i < chart.series.size(); ++i) {
+    if (chart.series[i].label.empty()) continue;
+    const double w = 34.0 + kCharWidth * static_cast<double>(chart.series[i].label.size()) + 18.0;
+    if (lx + w > kWidth - 10.0 && lx > kLeft) {
+      lx = kLeft;
+      row += 1;
+    }
+    entries.push_back({i, lx, row});
+    lx += w;
+  }
+  const double legend_top = bottom + tick_band + 34.0;
+  const double height = legend_top + (entries.empty() ? 0.0 : 18.0 * (row + 1)) + 6.0;
+
+  const Scale x{xr, x_axis.log, kLeft, right};
+  const Scale y{yr, chart.y.log, bottom, top};
+  std::string out = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {:.0f} {:.0f}\" width=\"100%\" role=\"img\" "
+      "font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">",
+      kWidth, height);
+  out += fmt::format("<title>{}</title>", escape(chart.title));
+  for (std::size_t i = 0; i < title.size(); ++i) {
+    out += fmt::format("<text x=\"{:.0f}\" y=\"{:.0f}\" font-size=\"14\" font-weight=\"bold\">{}</text>", kLeft,
+                       20.0 + 18.0 * static_cast<double>(i), escape(title[i]));
+  }
+  // Grid and ticks.
+  out += "<g stroke=\"#e3e3e3\" stroke-width=\"1\">";
+  std::string labels;
+  if (categories) {
+    const std::size_t n = chart.x_categories.size();
+    const std::size_t every = n > 60 ? (n + 59) / 60 : 1;
+    for (std::size_t k = 0; k < n; k += every) {
+      const double px = x(static_cast<double>(k));
+      out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\"/>", px, top, bottom);
+      if (rotated) {
+        labels += fmt::format("<text transform=\"translate({:.1f},{:.1f}) rotate(-50)\" text-anchor=\"end\" font-size=\"10\">{}</text>",
+                              px + 3, bottom + 12, escape(chart.x_categories[k]));
+      } else {
+        labels += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", px, bottom + 16,
+                              escape(chart.x_categories[k]));
+      }
+    }
+  } else {
+    for (const double t : ticks(xr.lo, xr.hi, x_axis.log)) {
+      const double px = x(t);
+      out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\"/>", px, top, bottom);
+      labels += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", px, bottom + 16, tick_label(t));
+    }
+  }
+  for (const double t : ticks(yr.lo, yr.hi, chart.y.log)) {
+    const double py = y(t);
+    out += fmt::format("<line x1=\"{1:.1f}\" y1=\"{0:.1f}\" x2=\"{2:.1f}\" y2=\"{0:.1f}\"/>", py, kLeft, right);
+    labels += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{}</text>", kLeft - 6, py + 4, tick_label(t));
+  }
+  out += "</g>" + labels;
+  // Secondary axes: their own nice ticks, placed by the primary scale.
+  if (chart.top && !categories) {
+    const double s = chart.top->scale;
+    out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#444\"/>", kLeft, top, right, top);
+    for (const double t : ticks(s * xr.lo, s * xr.hi, x_axis.log)) {
+      const double px = x(t / s);
+      out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"#444\"/>"
+                         "<text x=\"{0:.1f}\" y=\"{3:.1f}\" text-anchor=\"middle\">{4}</text>",
+                         px, top, top - 5, top - 9, tick_label(t));
+    }
+    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", 0.5 * (kLeft + right), top - 27,
+                       escape(chart.top->label));
+  }
+  if (chart.right) {
+    const double s = chart.right->scale;
+    for (const double t : ticks(s * yr.lo, s * yr.hi, chart.y.log)) {
+      const double py = y(t / s);
+      out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#444\"/>"
+                         "<text x=\"{3:.1f}\" y=\"{4:.1f}\">{5}</text>",
+                         right, py, right + 5, right + 8, py + 4, tick_label(t));
+    }
+    out += fmt::format("<text transform=\"translate({:.1f},{:.1f}) rotate(90)\" text-anchor=\"middle\">{}</text>",
+                       kWidth - 14, 0.5 * (top + bottom), escape(chart.right->label));
+  }
+  // The frame and the axis labels.
+  out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"#444\"/>",
+                     kLeft, top, right - kLeft, kPlotHeight);
+  out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", 0.5 * (kLeft + right),
+                     bottom + tick_band + 20, escape(chart.x.label));
+  out += fmt::format("<text transform=\"translate(16,{:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
+                     0.5 * (top + bottom), escape(chart.y.label));
+  // Reference lines, then the curves on top.
+  for (const ReferenceLine& r : chart.references) {
+    if (!y.shows(r.y)) continue;
+    out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#000\" stroke-width=\"1.2\" "
+                       "stroke-dasharray=\"9 3 2 3\"/><text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\" font-size=\"11\">{}</text>",
+                       kLeft, y(r.y), right, y(r.y), right - 4, y(r.y) - 4, escape(r.label));
+  }
+  for (std::size_t i = 0; i < chart.series.size(); ++i) {
+    out += curve(chart.series[i], colour_of(chart.series[i], i), x, y);
+  }
+  for (const Entry& e : entries) {
+    const Series& s = chart.series[e.series];
+    const double ey = legend_top + 18.0 * e.row;
+    out += legend_sample(s, colour_of(s, e.series), e.x, ey - 4);
+    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>", e.x + 30, ey, escape(s.label));
+  }
+  out += "</svg>";
+  return out;
+}
+
+}  // namespace stockbridge::report
