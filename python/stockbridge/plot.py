@@ -4,7 +4,8 @@
                                 [--re-im] [--linear] [--power]
     python3 -m stockbridge.plot loop cycle.csv -o loop.png      (cycle, response or loop CSV)
     python3 -m stockbridge.plot fit fitted.csv -o fit.png       (identify ... --fitted)
-    python3 -m stockbridge.plot span span.csv -o span.png       (span: damped and undamped)
+    python3 -m stockbridge.plot span span.csv [more.csv ...] [--label NAME ...] [--summary span.json ...] -o span.png
+                                (span: damped and undamped, the verdict; --summary: positions, life)
     python3 -m stockbridge.plot design designs.csv -o design.png (design: objective per variable)
     python3 -m stockbridge.plot line schedule.csv -o schedule.png (line: stresses and dampers per span)
 
@@ -16,9 +17,12 @@ without writing the output file.
 import argparse
 import csv
 import io
+import json
 import math
 import os
+import re
 import sys
+import textwrap
 import warnings
 
 import matplotlib
@@ -488,68 +492,336 @@ def plot_fit(path, output):
 
 # ---------------------------------------------------------------- span
 
-def span_figure(path):
-    """The span's balance: the antinode amplitude, the fymax stress at the span clamp
-    and, where the CSV has it, the outer wires' bending strain there (microstrain
-    peak-to-peak, what field practice quotes), over frequency, with dampers and
-    without, and the endurance limit (the CSV's endurance_limit_mpa column) as a
-    horizontal line; with a damper from a measured sheet, the band its interpolation
-    leaves around the stress; non-converged frequencies as red crosses."""
-    table = Table(path)
-    frequency = table.required("frequency_hz")
-    for i, f in enumerate(frequency):
-        if f <= 0:
-            raise PlotError(f"{path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
-    converged = [value == 1.0 for value in table.required("converged")]
-    good = [i for i, ok in enumerate(converged) if ok]
-    if not good:
-        raise PlotError(f"{path}: no converged point to plot (converged = 0 in every row)")
-    names = ["amplitude_m", "undamped_amplitude_m", "stress_fymax_mpa", "undamped_stress_fymax_mpa"]
-    strain = "bending_strain_pp_microstrain" in table.header
-    if strain:
-        names += ["bending_strain_pp_microstrain", "undamped_bending_strain_pp_microstrain"]
-    columns = {name: table.required(name, good) for name in names}
-    limit = table.required("endurance_limit_mpa")
-    if len({round(v, 9) for v in limit}) != 1:
-        raise PlotError(f"{path}: endurance_limit_mpa differs between rows: expected one value (a span CSV)")
-    damped = any(name.endswith("_end1_velocity_m_s") for name in table.header)
-    f = [frequency[i] for i in good]
+FILE_COLOURS = ["C0", "C1", "C2", "C4", "C5", "C6", "C8", "C9"]  # one per span CSV: red is the limit's, grey the undamped's
+TITLE_WIDTH = 100  # characters of a title line before it wraps
+LIVES_NOTE = ("Lives are comparative: they rest on the assumed climate (the span file's wind_weibull, "
+              "aeolian_fraction) and the Safe Border Line.")
+SUMMARY_HINT = "expected the JSON summary that stockbridge span --json prints"
+
+
+def years(value):
+    """A life in years: whole years from 10 on, else two significant digits (1.0, 0.0015)."""
+    return f"{value:,.0f}" if value >= 10 else f"{value:#.2g}"
+
+
+def points(n):
+    return f"{n} point{'' if n == 1 else 's'}"
+
+
+class SpanRun:
+    """One span CSV (stockbridge span -o): per frequency the antinode amplitude, the
+    fymax stress and (where the CSV has them) the bending strain at the span clamp,
+    with the dampers and without; whether each point converged; the endurance limit
+    (the same in every row); the wind speed over the frequency, D / St (None without a
+    wind_speed_m_s column); and the verdict the CSV carries, as the program judges it:
+    safe when every point converged within the limit, unsafe when a converged point
+    exceeds it, else unknown."""
+
+    NAMES = ["amplitude_m", "undamped_amplitude_m", "stress_fymax_mpa", "undamped_stress_fymax_mpa"]
+    STRAIN = ["bending_strain_pp_microstrain", "undamped_bending_strain_pp_microstrain"]
+
+    def __init__(self, path, label=None):
+        table = Table(path)
+        self.path, self.named = path, label is not None
+        self.label = label or os.path.splitext(os.path.basename(path))[0]
+        self.frequency = table.required("frequency_hz")
+        for i, f in enumerate(self.frequency):
+            if f <= 0:
+                raise PlotError(f"{path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
+        self.converged = [value == 1.0 for value in table.required("converged")]
+        self.good = [i for i, ok in enumerate(self.converged) if ok]
+        if not self.good:
+            raise PlotError(f"{path}: no converged point to plot (converged = 0 in every row)")
+        self.strain = "bending_strain_pp_microstrain" in table
+        self.columns = {name: table.required(name, self.good) for name in self.NAMES + (self.STRAIN if self.strain else [])}
+        limit = table.required("endurance_limit_mpa")
+        if len({round(v, 9) for v in limit}) != 1:
+            raise PlotError(f"{path}: endurance_limit_mpa differs between rows: expected one value (a span CSV)")
+        self.limit = limit[0]
+        self.limit_strain = table.required("endurance_limit_pp_microstrain")[0] if self.strain else None
+        self.damped = any(name.endswith("_end1_velocity_m_s") for name in table.header)
+        self.band = ((table.column("stress_fymax_low_mpa"), table.column("stress_fymax_high_mpa"))
+                     if "stress_fymax_low_mpa" in table and "stress_fymax_high_mpa" in table else None)
+        self.wind_ratio = self._wind_ratio(table)
+        stress = self.columns["stress_fymax_mpa"]
+        self.peak = max(self.good, key=lambda i: stress[i])  # the first of the largest
+        self.max_stress = stress[self.peak]
+        self.missing = len(self.converged) - len(self.good)
+        self.verdict = "unsafe" if self.max_stress > self.limit else "unknown" if self.missing else "safe"
+
+    def _wind_ratio(self, table):
+        """U / f in m (D / St: the frequency is St U / D) from the wind_speed_m_s column;
+        None without it, or (with a warning) where it is not proportional to the frequency."""
+        if "wind_speed_m_s" not in table:
+            return None
+        ratios = [u / f for u, f in zip(table.column("wind_speed_m_s"), self.frequency) if math.isfinite(u)]
+        if not ratios or ratios[0] <= 0 or any(not math.isclose(r, ratios[0], rel_tol=1e-6) for r in ratios):
+            warnings.warn(f"{self.path}: wind_speed_m_s is not proportional to frequency_hz (U = f D / St): "
+                          "no wind speed axis")
+            return None
+        return ratios[0]
+
+    def name(self, several):
+        """The run's name in the title: its label among several files or when given, else its path."""
+        return self.label if several or self.named else self.path
+
+    def verdict_text(self, limit=True):
+        """"safe, max 7.87 MPa at 23.4 Hz (limit 8.73 MPa)" (without the limit unless `limit`)."""
+        verdict = f"unknown ({points(self.missing)} missing)" if self.verdict == "unknown" else self.verdict
+        lower = f", {points(self.missing)} missing" if self.missing and self.verdict == "unsafe" else ""
+        return (f"{verdict}, max {self.max_stress:.3g} MPa at {self.frequency[self.peak]:.3g} Hz"
+                f"{f' (limit {self.limit:.3g} MPa)' if limit else ''}{lower}")
+
+    def undamped(self, name):
+        return self.columns["undamped_" + name]
+
+
+class SpanSummary:
+    """The JSON summary of a span run (the object stockbridge span --json prints): the
+    dampers' positions and the lives, which the CSV does not hold; its endurance limit,
+    largest stress and verdict must be its CSV's."""
+
+    def __init__(self, path):
+        self.path = path
+        try:
+            with open(path, encoding="utf-8") as handle:
+                data = json.load(handle)
+        except OSError as error:
+            raise PlotError(f"{path}: cannot read ({error.strerror or error})") from error
+        except UnicodeDecodeError as error:
+            raise PlotError(f"{path}: not UTF-8 text: {SUMMARY_HINT}") from error
+        except json.JSONDecodeError as error:
+            raise PlotError(f"{path}:{error.lineno}: not JSON ({error.msg}): {SUMMARY_HINT}") from error
+        if not isinstance(data, dict):
+            raise PlotError(f"{path}: a JSON {type(data).__name__}, not an object: {SUMMARY_HINT}")
+        self.data = data
+        self.verdict = self._value("verdict", str)
+        if self.verdict not in VERDICTS:
+            raise PlotError(f"{path}: verdict = '{self.verdict}': expected safe, unsafe or unknown")
+        self.positions = self._value("positions_m", list)
+        for p in self.positions:
+            if not self._is_number(p):
+                raise PlotError(f"{path}: positions_m holds {json.dumps(p)}: expected positions in m")
+        self.optimized = data.get("position_optimized") is True
+        self.limit = self._number("endurance_limit_mpa")
+        self.max_stress = self._number("max_stress_fymax_mpa", null=True)
+        self.has_life = "life_years" in data  # the span file gives a climate
+        self.life = self._number("life_years", null=True) if self.has_life else None
+        self.damage = self._number("damage_per_year", null=True) if "damage_per_year" in data else None
+        self.life_missing = self._number("life_missing_points", null=True) if "life_missing_points" in data else None
+        self.undamped_life = (self._number("undamped_life_years", null=True) if "undamped_life_years" in data
+                              else None)
+
+    @staticmethod
+    def _is_number(value):
+        return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+
+    def _value(self, key, kind):
+        if key not in self.data:
+            raise PlotError(f"{self.path}: missing key '{key}': {SUMMARY_HINT}")
+        value = self.data[key]
+        if not isinstance(value, kind):
+            raise PlotError(f"{self.path}: {key} = {json.dumps(value)}: expected a "
+                            f"{'list' if kind is list else 'string' if kind is str else kind.__name__}")
+        return value
+
+    def _number(self, key, null=False):
+        if key not in self.data:
+            raise PlotError(f"{self.path}: missing key '{key}': {SUMMARY_HINT}")
+        value = self.data[key]
+        if value is None and null:
+            return None
+        if not self._is_number(value):
+            raise PlotError(f"{self.path}: {key} = {json.dumps(value)}: expected a number")
+        return value
+
+    def check(self, run):
+        """That this summary is of the run that wrote the CSV (the files given in the same order)."""
+        for key, mine, theirs in (("endurance_limit_mpa", self.limit, run.limit),
+                                  ("max_stress_fymax_mpa", self.max_stress, run.max_stress)):
+            if mine is None or not math.isclose(mine, theirs, rel_tol=1e-6):
+                raise PlotError(f"{self.path}: {key} = {json.dumps(mine)} but {run.path}'s is {theirs:.6g}: expected "
+                                "the summary of the run that wrote the CSV (one --summary per CSV, in their order)")
+        if self.verdict != run.verdict:
+            raise PlotError(f"{self.path}: verdict = '{self.verdict}' but {run.path}'s is '{run.verdict}': expected "
+                            "the summary of the run that wrote the CSV (one --summary per CSV, in their order)")
+
+    def dampers_text(self):
+        if not self.positions:
+            return "no dampers"
+        where = ", ".join(f"{p:.3g}" for p in self.positions)
+        return f"damper{'s' if len(self.positions) > 1 else ''} at {where} m{' (optimized)' if self.optimized else ''}"
+
+    def life_text(self, undamped=True):
+        """"life 29 years (0.0015 without dampers)" (without the undamped life unless
+        `undamped`); None without a climate in the span file."""
+        if not self.has_life:
+            return None
+        if self.life is not None:
+            text = f"life {years(self.life)} years"
+        elif self.damage == 0:
+            text = "no fatigue damage (no end of life)"
+        elif self.life_missing:
+            text = f"life unknown ({points(int(self.life_missing))} missing)"
+        else:
+            text = "life unknown"
+        if undamped and self.positions and self.undamped_life is not None:
+            text += f" ({years(self.undamped_life)} without dampers)"
+        return text
+
+    def text(self, undamped=True):
+        return ", ".join(part for part in (self.dampers_text(), self.life_text(undamped)) if part)
+
+
+def span_title(runs, summaries, shared_limit=True, shared_undamped=True):
+    """A line per file: its name, verdict, largest stress and the limit; with a summary,
+    the dampers' positions and the life (on a line of their own for one file). Of
+    several files, the limit and the undamped life only when they differ between the
+    files (else the legend and the undamped curve tell them). Lines longer than
+    TITLE_WIDTH wrap."""
+    several = len(runs) > 1
+    lines = []
+    for run, summary in zip(runs, summaries):
+        head = f"{run.name(several)}: {run.verdict_text(limit=not several or not shared_limit)}"
+        if summary is None:
+            lines.append(head)
+        elif several:
+            lines.append(f"{head}; {summary.text(undamped=not shared_undamped)}")
+        else:
+            lines += [head, summary.text()]
+    return "\n".join(textwrap.fill(line, TITLE_WIDTH, subsequent_indent="    ") for line in lines)
+
+
+def lives_note(figure):
+    """The note that lives are comparative, in small grey print under the axes."""
+    figure.get_layout_engine().set(rect=(0, 0.035, 1, 0.965))
+    figure.text(0.01, 0.008, LIVES_NOTE, fontsize="small", color="0.3", ha="left", va="bottom")
+
+
+def same_undamped(first, other, names):
+    """Whether two runs share their undamped curves: the same frequencies and, where
+    both converged, the same undamped values."""
+    if len(first.frequency) != len(other.frequency) or not all(
+            math.isclose(a, b, rel_tol=1e-9) for a, b in zip(first.frequency, other.frequency)):
+        return False
+    both = set(first.good) & set(other.good)
+    return all(math.isclose(first.undamped(name)[i], other.undamped(name)[i], rel_tol=1e-9, abs_tol=1e-15)
+               for name in names for i in both)
+
+
+def wind_axis(axis, runs):
+    """A second x axis on top of a frequency axis: the wind speed U = f D / St that
+    sheds vortices at f (m/s), when every run gives the same D / St; None otherwise."""
+    ratios = [run.wind_ratio for run in runs]
+    if any(r is None for r in ratios):
+        return None
+    if any(not math.isclose(r, ratios[0], rel_tol=1e-6) for r in ratios):
+        warnings.warn(f"{', '.join(run.path for run in runs)}: the wind speed at a frequency differs between the "
+                      "files (conductors or Strouhal numbers): no wind speed axis")
+        return None
+    ratio = ratios[0]
+    top = axis.secondary_xaxis("top", functions=(lambda f: f * ratio, lambda u: u / ratio))
+    low, high = sorted(axis.get_xlim())
+    decades = math.log10(high / low) if axis.get_xscale() == "log" and low > 0 else None
+    if decades is not None:
+        top.xaxis.set_major_locator(LogLocator(subs=range(1, 10) if decades < 1 else (1.0, 2.0, 5.0) if decades <= 2
+                                               else (1.0,)))
+        top.xaxis.set_minor_formatter(NullFormatter())
+    top.xaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
+    top.set_xlabel("wind speed U = f D / St (m/s)")
+    return top
+
+
+def span_figure(paths, labels=None, summaries=None):
+    """The balance of one or more spans (or arrangements of one): the antinode
+    amplitude, the fymax stress at the span clamp and, where every CSV has it, the
+    outer wires' bending strain there (microstrain peak-to-peak, what field practice
+    quotes), over frequency, with dampers and without, and the endurance limit (the
+    CSVs' endurance_limit_mpa column) as a horizontal line; with a damper from a
+    measured sheet, the band its interpolation leaves around the stress;
+    non-converged frequencies as red crosses. Several files: one colour each, the
+    undamped curve and the limit once when the files share them. The wind speed on
+    a second x axis on top. The title carries each file's verdict and largest stress,
+    and with a summary (stockbridge span --json) the dampers' positions and the life."""
+    paths = [paths] if isinstance(paths, str) else list(paths)
+    runs = [SpanRun(path, label) for path, label in zip(paths, labels or [None] * len(paths))]
+    summaries = [SpanSummary(path) for path in summaries] if summaries else [None] * len(runs)
+    for run, summary in zip(runs, summaries):
+        if summary is not None:
+            summary.check(run)
+    several = len(runs) > 1
+    strain = all(run.strain for run in runs)
     size = (FIGURE_SIZE[0], FIGURE_SIZE[1] * (1.4 if strain else 1.0))
     figure, axes = plt.subplots(3 if strain else 2, 1, figsize=size, sharex=True, layout="constrained")
     panels = [(axes[0], "amplitude_m", 1e3, "antinode amplitude Y (mm)"),
               (axes[1], "stress_fymax_mpa", 1.0, "fymax stress at the clamp (MPa)")]
     if strain:
         panels.append((axes[2], "bending_strain_pp_microstrain", 1.0, "strain at the clamp\n(microstrain p-p)"))
+    shared = all(same_undamped(runs[0], run, [name for _, name, _, _ in panels]) for run in runs[1:])
+    colours = ["C0"] if not several else [FILE_COLOURS[k % len(FILE_COLOURS)] for k in range(len(runs))]
     for axis, name, scale, ylabel in panels:
-        axis.plot(f, [scale * columns["undamped_" + name][i] for i in good], "--", color="0.4", label="undamped")
-        axis.plot(f, [scale * columns[name][i] for i in good], "-", color="C0",
-                  marker="." if len(good) < 30 else None, label="with dampers" if damped else "balance")
+        if shared:
+            first = max(runs, key=lambda run: len(run.good))
+            axis.plot([first.frequency[i] for i in first.good], [scale * first.undamped(name)[i] for i in first.good],
+                      "--", color="0.4", label="undamped")
+        for run, colour in zip(runs, colours):
+            f = [run.frequency[i] for i in run.good]
+            if not shared:
+                axis.plot(f, [scale * run.undamped(name)[i] for i in run.good], "--", color=colour, linewidth=1.0,
+                          label=f"{run.label}, undamped")
+            label = run.label if several else "with dampers" if run.damped else "balance"
+            axis.plot(f, [scale * run.columns[name][i] for i in run.good], "-", color=colour,
+                      marker="." if len(run.good) < 30 else None, label=label)
         axis.set_ylabel(ylabel)
         axis.grid(True, which="both", alpha=0.3)
-    if "stress_fymax_low_mpa" in table.header:
-        low, high = table.column("stress_fymax_low_mpa"), table.column("stress_fymax_high_mpa")
-        band = [i for i in good if not math.isnan(low[i]) and not math.isnan(high[i])]
-        if band:
-            axes[1].fill_between([frequency[i] for i in band], [low[i] for i in band], [high[i] for i in band],
-                                 color="C0", alpha=0.2, linewidth=0, label="measured sheet's band")
-    axes[1].axhline(limit[0], color="C3", linewidth=1.0, label=f"endurance limit {limit[0]:.3g} MPa")
+    for run, colour in zip(runs, colours):
+        if run.band is not None:
+            low, high = run.band
+            band = [i for i in run.good if not math.isnan(low[i]) and not math.isnan(high[i])]
+            if band:
+                axes[1].fill_between([run.frequency[i] for i in band], [low[i] for i in band], [high[i] for i in band],
+                                     color=colour, alpha=0.2, linewidth=0,
+                                     label=f"{run.label}: measured sheet's band" if several else "measured sheet's band")
+    limit_lines(axes[1], runs, colours, lambda run: run.limit, "{:.3g} MPa")
     if strain:
-        limit_strain = table.required("endurance_limit_pp_microstrain")[0]
-        axes[2].axhline(limit_strain, color="C3", linewidth=1.0, label=f"endurance limit {limit_strain:.4g} microstrain")
-    failed = [frequency[i] for i, ok in enumerate(converged) if not ok]
-    if failed:
-        axes[1].plot(failed, [0.0] * len(failed), "x", color="red", label="not converged")
-    for axis in axes:
+        limit_lines(axes[2], runs, colours, lambda run: run.limit_strain, "{:.4g} microstrain")
+    for run in runs:
+        failed = [run.frequency[i] for i, ok in enumerate(run.converged) if not ok]
+        if failed:
+            axes[1].plot(failed, [0.0] * len(failed), "x", color="red",
+                         label=f"{run.label}: not converged" if several else "not converged")
+    curves = {"undamped"} | {run.label for run in runs} | {f"{run.label}, undamped" for run in runs}
+    for number, axis in enumerate(axes):
         log_if_positive(axis)
-        axis.legend(fontsize="small")
+        handles, names = axis.get_legend_handles_labels()
+        if several and number > 0:  # the files' curves in the top panel's legend only
+            kept = [k for k, n in enumerate(names) if n not in curves]
+            handles, names = [handles[k] for k in kept], [names[k] for k in kept]
+        axis.legend(handles, names, fontsize="small")
     log_scale(axes[0], "x")  # shared; the limit lines are drawn across in axes units
-    axes[-1].set_xlabel("frequency (Hz)")
-    axes[0].set_title(f"Span energy balance ({path})", fontsize="medium")
+    wind_axis(axes[0], runs)
+    axes[-1].set_xlabel("frequency f (Hz)")
+    shared_limit = all(math.isclose(run.limit, runs[0].limit, rel_tol=1e-9) for run in runs)
+    axes[0].set_title(span_title(runs, summaries, shared_limit, shared), fontsize="medium")
+    if any(summary is not None and summary.life_text() for summary in summaries):
+        lives_note(figure)
     return figure
 
 
-def plot_span(path, output):
-    save(span_figure(path), output)
+def limit_lines(axis, runs, colours, limit, unit):
+    """The endurance limit as a red horizontal line, once when every run has the same,
+    else one per run in its colour, dotted."""
+    values = [limit(run) for run in runs]
+    if all(math.isclose(v, values[0], rel_tol=1e-9) for v in values):
+        axis.axhline(values[0], color="C3", linewidth=1.0, label="endurance limit " + unit.format(values[0]))
+        return
+    for run, colour, value in zip(runs, colours, values):
+        axis.axhline(value, color=colour, linestyle=":", linewidth=1.2,
+                     label=f"{run.label}: endurance limit " + unit.format(value))
+
+
+def plot_span(paths, output, labels=None, summaries=None):
+    save(span_figure(paths, labels, summaries), output)
 
 
 # ---------------------------------------------------------------- design
@@ -601,6 +873,8 @@ class Designs:
                                 "(converged = 1)")
         self.life = self._is_life(table, good)
         self.best = self._best()
+        self.ratio, self.stress, self.frequency, self.mass = (
+            table.column(name) for name in ("max_stress_ratio", "max_stress_mpa", "frequency_at_max_hz", "total_mass_kg"))
 
     @staticmethod
     def _flags(table, name):
@@ -632,7 +906,7 @@ class Designs:
         return self.stage[i] if self.stage[i] == "base" else f"{self.stage[i]} {self.run[i]:g}"
 
     def objective_label(self):
-        return "shortest life (years)" if self.life else "largest stress / endurance limit"
+        return "shortest life (years)" if self.life else "largest stress / endurance limit (-)"
 
 
 def design_groups(designs):
@@ -691,7 +965,7 @@ def design_figure(path):
         if failed:
             axis.plot([x[i] for i in failed], [0.03] * len(failed), "x", color="red",
                       transform=axis.get_xaxis_transform(), label="not converged")
-        axis.set_xlabel("position (m)" if name == "position" else name)
+        axis.set_xlabel(axis_label(name))
         axis.grid(True, alpha=0.3)
         few_ticks(axis)
     for axis in panels[::columns]:
@@ -712,13 +986,60 @@ def design_figure(path):
             axis.set_visible(False)
     else:
         panels[0].legend(fontsize="small")
-    b = designs.best
-    best = "no feasible candidate" if b is None else \
-        f"best {designs.candidate(b)}, {designs.objective_label().split(' (')[0]} = " + \
-        ("infinite" if designs.objective[b] == math.inf else f"{designs.objective[b]:.4g}")
-    note = ", infinite lives at the top" if infinite else ""
-    figure.suptitle(f"Design candidates ({path}): {best}{note}", fontsize="medium")
+    figure.suptitle(design_title(designs, infinite), fontsize="medium")
+    if designs.life:
+        lives_note(figure)
     return figure
+
+
+def design_title(designs, infinite):
+    """The best candidate, its verdict (safe: its largest stress within every span's
+    endurance limit), its objective, stress and mass; then the counts."""
+    b = designs.best
+    if b is None:
+        head = f"{designs.path}: no feasible candidate"
+    else:
+        ratio = designs.ratio[b]
+        verdict = "unknown" if math.isnan(ratio) else "safe" if ratio <= 1 else "unsafe"
+        stress = (f"max {designs.stress[b]:.3g} MPa at {designs.frequency[b]:.3g} Hz, {ratio:.3g} x the endurance "
+                  "limit")
+        if designs.life:
+            life = designs.objective[b]
+            stress = ("no fatigue damage" if life >= LIFE_CAP_YEARS else f"shortest life {years(life)} years") + \
+                f", {stress}"
+        mass = f"; mass {designs.mass[b]:.3g} kg" if math.isfinite(designs.mass[b]) else ""
+        head = f"{designs.path}: best {designs.candidate(b)}, {verdict}: {stress}{mass}"
+    n = len(designs.stage)
+    failed = sum(not ok for ok in designs.converged)
+    counts = f"{sum(designs.feasible)} of {n} candidates feasible" + (f", {failed} not converged" if failed else "") + \
+        (", infinite lives at the top" if infinite else "")
+    return textwrap.fill(head, TITLE_WIDTH, subsequent_indent="    ") + "\n" + counts
+
+
+UNITS_BY_KEY = {"mass": "kg", "inertia": "kg m²", "offset": "m", "length": "m", "mirror_length": "m",
+                "lever_arm_cap": "m", "position": "m", "ei": "N m²", "c": "N m²", "h": "N m", "k0": "N",
+                "position_loop_fraction": "of the shortest loop"}
+UNITS_BY_SUFFIX = [("_n_m2", "N m²"), ("_kg_m2", "kg m²"), ("_n_s_m", "N s/m"), ("_n_m", "N m"), ("_per_m", "1/m"),
+                   ("_m_s", "m/s"), ("_mpa", "MPa"), ("_pa", "Pa"), ("_hz", "Hz"), ("_kg", "kg"), ("_years", "years"),
+                   ("_deg", "deg"), ("_rad", "rad"), ("_w", "W"), ("_s", "s"), ("_n", "N"), ("_m", "m"),
+                   ("_percent", "%")]
+
+
+def unit_of(name):
+    """The unit of a design variable: by the damper file's key its path ends in
+    (arm.left.mass: kg, arm.left.cable.jenkin[0].c: N m², position: m, as
+    docs/damper.md and docs/file-formats.md give them), else by the name's suffix
+    (_kg, _m, _mpa, _hz, _n, _n_m2, _years, ...); None when neither tells."""
+    key = re.sub(r"\[\d+\]$", "", name.split(".")[-1]).lower()
+    if key in UNITS_BY_KEY:
+        return UNITS_BY_KEY[key]
+    return next((unit for suffix, unit in UNITS_BY_SUFFIX if name.lower().endswith(suffix)), None)
+
+
+def axis_label(name):
+    """"arm.left.mass (kg)": a name and its unit (the name alone when it has none)."""
+    unit = unit_of(name)
+    return f"{name} ({unit})" if unit else name
 
 
 def plot_design(path, output):
@@ -765,9 +1086,16 @@ class Schedule:
         if not any(math.isfinite(v) for v in self.stress + self.undamped):
             raise PlotError(f"{path}: no stress to plot (max_stress_mpa and undamped_max_stress_mpa are empty in "
                             "every row)")
+        self.life = table.column("life_years", infinite=True) if "life_years" in table else None
 
     def count(self, verdict):
         return sum(v == verdict for v in self.verdict)
+
+    def shortest_life(self):
+        """The row of the shortest life with the dampers (an infinite one when every life
+        is); None without a life_years column or a life in it."""
+        rows = [i for i, v in enumerate(self.life or []) if not math.isnan(v)]
+        return min(rows, key=lambda i: self.life[i]) if rows else None
 
 
 def span_ticks(axis, ids):
@@ -831,9 +1159,35 @@ def line_figure(path):
     dampers.legend([matplotlib.patches.Patch(color=VERDICT_COLOURS[v]) for v in VERDICTS],
                    [f"{v}: {schedule.count(v)}" for v in VERDICTS], fontsize="small", ncol=3, loc="upper left")
     span_ticks(dampers, schedule.id)
-    counts = ", ".join(f"{schedule.count(v)} {v}" for v in VERDICTS)
-    stress.set_title(f"Damper schedule ({path}): {n} spans, {counts}", fontsize="medium")
+    stress.set_title(line_title(schedule), fontsize="medium")
+    if schedule.shortest_life() is not None:
+        lives_note(figure)
     return figure
+
+
+LINE_TITLE_IDS = 6  # spans named in the title per verdict, at most
+
+
+def line_title(schedule):
+    """The line's verdict (unsafe if a span is, else unknown if a span is, else safe) and
+    counts; below, the unsafe and unknown spans by id and the shortest life."""
+    counts = ", ".join(f"{schedule.count(v)} {v}" for v in VERDICTS)
+    verdict = next((v for v in ("unsafe", "unknown") if schedule.count(v)), "safe")
+    details = []
+    for v in ("unsafe", "unknown"):
+        ids = [i for i, verdict_i in zip(schedule.id, schedule.verdict) if verdict_i == v]
+        if ids:
+            more = f" and {len(ids) - LINE_TITLE_IDS} more" if len(ids) > LINE_TITLE_IDS else ""
+            details.append(f"{v}: {', '.join(ids[:LINE_TITLE_IDS])}{more}")
+    shortest = schedule.shortest_life()
+    if shortest is not None:
+        i = shortest
+        details.append("no fatigue damage on any span" if schedule.life[i] == math.inf else
+                       f"shortest life {years(schedule.life[i])} years ({schedule.id[i]})")
+    title = f"{schedule.path}: {verdict}: {len(schedule.id)} spans, {counts}"
+    if details:
+        title += "\n" + textwrap.fill("; ".join(details), TITLE_WIDTH, subsequent_indent="    ")
+    return title
 
 
 def plot_line(path, output):
@@ -860,9 +1214,17 @@ def parser():
     impedance.add_argument("--re-im", action="store_true", help="plot Re Z and Im Z instead of |Z| and phase")
     impedance.add_argument("--linear", action="store_true", help="linear axes")
     impedance.add_argument("--power", action="store_true", help="add a panel: dissipated power Re Z V^2 / 2")
+    span = commands.add_parser("span", help="amplitude and fymax stress over frequency, damped and undamped, of "
+                               "one or more span CSVs, with their verdicts")
+    span.add_argument("csv", nargs="+", help="span CSV files (stockbridge span -o), drawn on one figure")
+    span.add_argument("-o", "--output", required=True)
+    span.add_argument("--label", action="append", help="a file's name in the legend and title (once per file, in "
+                      "order; default: the file's name without .csv)")
+    span.add_argument("--summary", action="append", metavar="FILE.json",
+                      help="the JSON summary stockbridge span --json printed for a file (once per file, in order): "
+                      "the dampers' positions and the life in the title")
     for name, text in (("loop", "hysteresis loops of a cycle, response or loop file"),
                        ("fit", "measured and fitted loops or impedance (identify ... --fitted)"),
-                       ("span", "amplitude and fymax stress over frequency, damped and undamped, of a span CSV"),
                        ("design", "objective over each variable of a design CSV: feasible, infeasible, polished, "
                         "best"),
                        ("line", "stresses with and without dampers and the dampers per end, span by span, of a "
@@ -881,7 +1243,11 @@ def run(args):
     elif args.command == "loop":
         plot_loop(args.csv, args.output)
     elif args.command == "span":
-        plot_span(args.csv, args.output)
+        for option, values in (("--label", args.label), ("--summary", args.summary)):
+            if values and len(values) != len(args.csv):
+                raise PlotError(f"{len(values)} {option} for {len(args.csv)} span CSV files: expected one per file, "
+                                "in their order")
+        plot_span(args.csv, args.output, args.label, args.summary)
     elif args.command == "design":
         plot_design(args.csv, args.output)
     elif args.command == "line":

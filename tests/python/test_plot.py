@@ -3,6 +3,7 @@ command writes a non-empty PNG of the expected size; bad files get one line and
 exit status 2."""
 
 import csv
+import json
 import math
 import os
 import re
@@ -475,7 +476,8 @@ def test_design_plot_draws_each_variable_and_marks_the_best(design_files):
     variables = ["arm.left.mass", "arm.left.cable.length", "position"]
     figure = module.design_figure(str(design_files / "designs.csv"))
     panels = [axis for axis in figure.axes if axis.get_visible() and axis.axison]
-    assert [axis.get_xlabel() for axis in panels] == ["arm.left.mass", "arm.left.cable.length", "position (m)"]
+    assert [axis.get_xlabel() for axis in panels] == ["arm.left.mass (kg)", "arm.left.cable.length (m)", "position (m)"]
+    assert panels[0].get_ylabel() == "largest stress / endurance limit (-)"
     feasible = [r for r in rows if r["feasible"] == "1"]
     best = min(feasible, key=lambda r: float(r["objective"]))
     label = f"best ({best['stage']} {best['run']})" if best["stage"] != "base" else "best (base)"
@@ -601,7 +603,9 @@ def test_line_plot_draws_the_stresses_the_limit_and_the_dampers_per_span(tmp_pat
     assert shaded == [(2.0, to_rgba("C3")[:3]), (3.0, to_rgba("0.6")[:3])]  # the unsafe and the unknown span
     legend = [text.get_text() for text in stress.get_legend().get_texts()]
     assert legend[-2:] == ["unsafe span", "unknown span"]
-    assert stress.get_title().endswith(": 5 spans, 3 safe, 1 unsafe, 1 unknown")
+    assert stress.get_title().split("\n") == [f"{tmp_path / 'schedule.csv'}: unsafe: 5 spans, 3 safe, 1 unsafe, 1 unknown",
+                                              "unsafe: T3-T4; unknown: T4-T5"]
+    assert notes(figure) == []  # no lives: no note on them
     module.plt.close(figure)
 
 
@@ -630,3 +634,290 @@ def test_line_bad_files_get_one_line_and_exit_two(tmp_path, contents, mention):
     (tmp_path / "bad.csv").write_text(contents)
     result = plot("line", "bad.csv", "-o", "bad.png", cwd=tmp_path)
     assert_bad(result, tmp_path, "bad.png", mention, "bad.csv")
+
+
+# ---------------------------------------------------------------- verdicts in the titles, overlays, units, wind speed
+
+def unwrapped(title):
+    """A title with its wrapped lines (continued with an indent) joined again."""
+    return title.replace("\n    ", " ")
+
+
+def load_json(path):
+    with open(path) as handle:
+        return json.load(handle)
+
+
+def notes(figure):
+    """The figure's texts other than its title: the note on lives."""
+    return [text.get_text() for text in figure.texts if text is not figure._suptitle]
+
+
+def span_rows(path):
+    with open(path, newline="") as handle:
+        return list(csv.DictReader(handle))
+
+
+def largest_stress(rows):
+    peak = max((r for r in rows if r["converged"] == "1"), key=lambda r: float(r["stress_fymax_mpa"]))
+    return float(peak["stress_fymax_mpa"]), float(peak["frequency_hz"])
+
+
+@pytest.fixture(scope="module")
+def runs(span_files):
+    """span.csv (one damper at 1 m) with its summary, the span without dampers, the
+    damper at the position the search finds, and Drake (another conductor, no climate)."""
+    d = span_files
+    aster = os.path.join(SOURCE, "examples", "aster570_400m.toml")
+    for name, extra in (("damped", []), ("bare", ["--no-dampers"]), ("best", ["--optimize-position", "0.5:3"])):
+        with open(d / f"{name}.json", "w") as out:
+            subprocess.run([CLI, "span", aster, "--points", "15", "--quiet", "-o", f"{name}.csv", "--json", *extra],
+                           cwd=d, check=True, stdout=out)
+    with open(d / "drake.json", "w") as out:
+        subprocess.run([CLI, "span", os.path.join(SOURCE, "examples", "drake_300m.toml"), "--points", "15", "--quiet",
+                        "-o", "drake.csv", "--json"], cwd=d, check=True, stdout=out)
+    return d
+
+
+def test_span_title_carries_the_verdict_and_the_largest_stress(runs, tmp_path):
+    module = plot_module()
+    rows = span_rows(runs / "damped.csv")
+    stress, frequency = largest_stress(rows)
+    limit = float(rows[0]["endurance_limit_mpa"])
+    assert stress > limit  # the premise: one damper at 1 m is not enough on ASTER570
+    figure = module.span_figure(str(runs / "damped.csv"))
+    assert unwrapped(figure.axes[0].get_title()) == (f"{runs / 'damped.csv'}: unsafe, max {stress:.3g} MPa at {frequency:.3g} Hz "
+                                          f"(limit {limit:.3g} MPa)")
+    module.plt.close(figure)
+
+    def scale(header, rows, fail=()):  # every stress a tenth: within the limit
+        for k, row in enumerate(rows):
+            row[header.index("stress_fymax_mpa")] = str(float(row[header.index("stress_fymax_mpa")]) / 10)
+            if k in fail:
+                row[header.index("converged")] = "0"
+                for name in ("amplitude_m", "stress_fymax_mpa", "undamped_amplitude_m", "undamped_stress_fymax_mpa"):
+                    row[header.index(name)] = ""
+    rewrite_csv(runs / "damped.csv", tmp_path / "safe.csv", scale)
+    rewrite_csv(runs / "damped.csv", tmp_path / "gaps.csv", lambda header, rows: scale(header, rows, fail=(3, 7)))
+    rewrite_csv(runs / "damped.csv", tmp_path / "lower.csv", lambda header, rows: [
+        fail_span_row(header, rows[k]) for k in (9,)])
+    expected = {"safe.csv": "safe, max {:.3g} MPa", "gaps.csv": "unknown (2 points missing), max {:.3g} MPa",
+                "lower.csv": "unsafe, max {:.3g} MPa"}
+    for name, start in expected.items():
+        rows = span_rows(tmp_path / name)
+        figure = module.span_figure(str(tmp_path / name), labels=["x"])
+        title = unwrapped(figure.axes[0].get_title())
+        assert title.startswith("x: " + start.format(largest_stress(rows)[0])), title
+        assert title.endswith("1 point missing") == (name == "lower.csv"), title
+        module.plt.close(figure)
+
+
+def fail_span_row(header, row):
+    row[header.index("converged")] = "0"
+    for name in ("amplitude_m", "stress_fymax_mpa", "undamped_amplitude_m", "undamped_stress_fymax_mpa"):
+        row[header.index(name)] = ""
+
+
+def test_span_summary_adds_the_positions_and_the_life(runs, tmp_path):
+    module = plot_module()
+    summary = load_json(runs / "damped.json")
+    assert summary["positions_m"] == [1] and summary["life_years"] > 0  # the premise: the span file has a climate
+    figure = module.span_figure(str(runs / "damped.csv"), summaries=[str(runs / "damped.json")])
+    lines = unwrapped(figure.axes[0].get_title()).split("\n")
+    assert len(lines) == 2 and lines[0].startswith(f"{runs / 'damped.csv'}: unsafe, max ")
+    assert lines[1] == (f"damper at 1 m, life {module.years(summary['life_years'])} years "
+                        f"({module.years(summary['undamped_life_years'])} without dampers)")
+    assert notes(figure) == [module.LIVES_NOTE]
+    assert "comparative" in module.LIVES_NOTE
+    module.plt.close(figure)
+    assert module.years(2.0748) == "2.1" and module.years(1.02) == "1.0" and module.years(29.42) == "29"
+    # No life: the span file has no climate (Drake), or the life is not known
+    figure = module.span_figure(str(runs / "drake.csv"), summaries=[str(runs / "drake.json")])
+    assert unwrapped(figure.axes[0].get_title()).split("\n")[1] == "damper at 1 m" and notes(figure) == []
+    module.plt.close(figure)
+    for change, text in (({"life_years": None, "damage_per_year": 0}, "no fatigue damage"),
+                         ({"life_years": None, "damage_per_year": None, "life_missing_points": 2},
+                          "life unknown (2 points missing)"),
+                         ({"positions_m": [1.2, 2.45], "position_optimized": True}, "dampers at 1.2, 2.45 m (optimized)")):
+        (tmp_path / "changed.json").write_text(json.dumps(dict(summary, **change)))
+        figure = module.span_figure(str(runs / "damped.csv"), summaries=[str(tmp_path / "changed.json")])
+        assert text in unwrapped(figure.axes[0].get_title()), figure.axes[0].get_title()
+        module.plt.close(figure)
+
+
+def test_span_plot_overlays_several_files(runs):
+    result = plot("span", "damped.csv", "best.csv", "bare.csv", "--summary", "damped.json", "--summary", "best.json",
+                  "--summary", "bare.json", "-o", "overlay.png", cwd=runs)
+    assert result.returncode == 0 and result.stderr == "", result.stderr
+    assert png_size(runs / "overlay.png") == (800, 839)
+    module = plot_module()
+    figure = module.span_figure([str(runs / name) for name in ("damped.csv", "best.csv", "bare.csv")],
+                                labels=["1 m", "best", "none"])
+    amplitude, stress, strain = figure.axes
+    for axis in figure.axes:  # the undamped curve once: the three runs share it
+        assert [line.get_label() for line in axis.get_lines()][:4] == ["undamped", "1 m", "best", "none"]
+    assert [text.get_text() for text in amplitude.get_legend().get_texts()] == ["undamped", "1 m", "best", "none"]
+    limit = float(span_rows(runs / "damped.csv")[0]["endurance_limit_mpa"])
+    assert [text.get_text() for text in stress.get_legend().get_texts()] == [f"endurance limit {limit:.3g} MPa"]
+    assert len([line for line in stress.get_lines() if line.get_label().startswith("endurance limit")]) == 1
+    title = amplitude.get_title().split("\n")
+    assert [line.split(":")[0] for line in title] == ["1 m", "best", "none"]
+    assert "limit" not in amplitude.get_title()  # shared: the legend gives it
+    best = load_json(runs / "best.json")
+    stress_best, frequency_best = largest_stress(span_rows(runs / "best.csv"))
+    assert title[1] == f"best: {best['verdict']}, max {stress_best:.3g} MPa at {frequency_best:.3g} Hz"
+    module.plt.close(figure)
+    # Another conductor: its own undamped curve, no common wind speed axis
+    result = plot("span", "damped.csv", "drake.csv", "-o", "two.png", cwd=runs)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr.count("\n") == 1 and "no wind speed axis" in result.stderr, result.stderr
+    figure = module.span_figure([str(runs / "damped.csv"), str(runs / "drake.csv")])
+    labels = [line.get_label() for line in figure.axes[1].get_lines()]
+    assert labels[:4] == ["damped, undamped", "damped", "drake, undamped", "drake"]
+    assert figure.axes[0].child_axes == []
+    module.plt.close(figure)
+
+
+def test_span_overlay_of_different_limits_draws_each(runs, tmp_path):
+    def limit(header, rows):
+        for row in rows:
+            row[header.index("endurance_limit_mpa")] = "30"
+    rewrite_csv(runs / "damped.csv", tmp_path / "lax.csv", limit)
+    module = plot_module()
+    figure = module.span_figure([str(runs / "damped.csv"), str(tmp_path / "lax.csv")])
+    limits = [line for line in figure.axes[1].get_lines() if "endurance limit" in line.get_label()]
+    assert [line.get_label() for line in limits] == ["damped: endurance limit 8.73 MPa", "lax: endurance limit 30 MPa"]
+    title = unwrapped(figure.axes[0].get_title()).split("\n")
+    assert title[0].endswith("(limit 8.73 MPa)") and title[1].startswith("lax: safe") and "(limit 30 MPa)" in title[1]
+    module.plt.close(figure)
+
+
+def test_span_wind_speed_axis_maps_the_frequencies_to_the_csvs_wind_speeds(runs):
+    module = plot_module()
+    rows = span_rows(runs / "damped.csv")
+    figure = module.span_figure(str(runs / "damped.csv"))
+    figure.canvas.draw()
+    bottom = figure.axes[0]
+    (top,) = bottom.child_axes
+    assert top.get_xlabel() == "wind speed U = f D / St (m/s)"
+    for row in (rows[0], rows[7], rows[-1]):
+        at_f = bottom.transData.transform((float(row["frequency_hz"]), 1.0))[0]
+        at_u = top.transData.transform((float(row["wind_speed_m_s"]), 1.0))[0]
+        assert abs(at_f - at_u) < 0.01, row["frequency_hz"]
+    low, high = float(rows[0]["wind_speed_m_s"]), float(rows[-1]["wind_speed_m_s"])
+    labels = [float(label.get_text()) for tick, label in zip(top.get_xticks(), top.get_xticklabels())
+              if low <= tick <= high and label.get_text()]
+    assert labels == [1, 2, 3, 4, 5, 6, 7]  # the example's band, 1 to 7 m/s, in plain numbers
+    module.plt.close(figure)
+
+
+def test_span_without_a_wind_speed_column_has_no_top_axis(tmp_path):
+    (tmp_path / "s.csv").write_text(SPAN_HEADER + "10,0.01,0.02,5,9,1,8.7\n20,0.01,0.02,6,9,1,8.7\n")
+    module = plot_module()
+    figure = module.span_figure(str(tmp_path / "s.csv"))
+    assert figure.axes[0].child_axes == []
+    assert unwrapped(figure.axes[0].get_title()) == f"{tmp_path / 's.csv'}: safe, max 6 MPa at 20 Hz (limit 8.7 MPa)"
+    module.plt.close(figure)
+
+
+@pytest.mark.parametrize("args,contents,mention", [
+    (["damped.csv", "bare.csv", "--summary", "damped.json"], None, "1 --summary for 2 span CSV files"),
+    (["damped.csv", "--label", "a", "--label", "b"], None, "2 --label for 1 span CSV files"),
+    (["damped.csv", "--summary", "bare.json"], None, "bare.json: max_stress_fymax_mpa = "),
+    (["damped.csv", "bare.csv", "--summary", "bare.json", "--summary", "damped.json"], None, "bare.json: max_stress"),
+    (["damped.csv", "--summary", "x.json"], "verdict: safe\n", "x.json:1: not JSON"),
+    (["damped.csv", "--summary", "x.json"], "[1, 2]", "x.json: a JSON list, not an object"),
+    (["damped.csv", "--summary", "x.json"], '{"verdict": "unsafe"}', "x.json: missing key 'positions_m'"),
+    (["damped.csv", "--summary", "x.json"], '{"verdict": "fine"}', "x.json: verdict = 'fine'"),
+    (["damped.csv", "--summary", "x.json"], '{"verdict": "unsafe", "positions_m": ["1"]}', 'positions_m holds "1"'),
+    (["damped.csv", "--summary", "nowhere.json"], None, "nowhere.json: cannot read")])
+def test_span_bad_summaries_get_one_line_and_exit_two(runs, args, contents, mention):
+    if contents is not None:
+        (runs / "x.json").write_text(contents)
+    result = plot("span", *args, "-o", "bad.png", cwd=runs)
+    assert_bad(result, runs, "bad.png", mention)
+
+
+@pytest.mark.parametrize("name,unit", [
+    ("arm.left.mass", "kg"), ("arm[0].inertia", "kg m²"), ("arm.right.offset", "m"), ("arm.left.cable.length", "m"),
+    ("arm.left.cable.ei", "N m²"), ("arm.left.cable.jenkin[0].c", "N m²"), ("arm.left.cable.jenkin[1].h", "N m"),
+    ("arm.left.cable.jenkin[0].k0", "N"), ("clamp.mass", "kg"), ("position", "m"), ("mass_kg", "kg"),
+    ("length_m", "m"), ("stress_mpa", "MPa"), ("frequency_hz", "Hz"), ("force_n", "N"), ("ei_n_m2", "N m²"),
+    ("life_years", "years"), ("curvature_per_m", "1/m"), ("speed_m_s", "m/s"), ("something", None)])
+def test_units_of_design_variables(name, unit):
+    assert plot_module().unit_of(name) == unit
+
+
+UNIT = re.compile(r"\((-|[^()]*[A-Za-z%°²][^()]*)\)")
+
+
+def test_every_axis_of_every_plot_has_its_unit(files, runs, design_files, tmp_path):
+    module = plot_module()
+    (tmp_path / "schedule.csv").write_text(SCHEDULE)
+    figures = {"impedance": module.impedance_figure([module.Sweep(str(files / "z.csv"))], power=True),
+               "impedance re im": module.impedance_figure([module.Sweep(str(files / "z.csv"))], re_im=True),
+               "loop c": module.loop_figure(str(files / "c.csv")), "loop t": module.loop_figure(str(files / "t.csv")),
+               "loop mk": module.loop_figure(str(files / "mk.csv")),
+               "span": module.span_figure(str(runs / "damped.csv")),
+               "design": module.design_figure(str(design_files / "designs.csv")),
+               "line": module.line_figure(str(tmp_path / "schedule.csv"))}
+    for name, figure in figures.items():
+        labelled = 0
+        for axis in figure.axes:
+            if not axis.get_visible() or not axis.axison:
+                continue
+            for label in (axis.get_xlabel(), axis.get_ylabel()) + tuple(child.get_xlabel() for child in axis.child_axes):
+                if label and not label.startswith(("span (id)", "dampers per end")):  # the line's ids and counts
+                    assert UNIT.search(label), (name, label)
+                    labelled += 1
+        assert labelled >= (1 if name == "line" else 2), name
+        module.plt.close(figure)
+
+
+def test_design_title_carries_the_best_candidates_verdict(design_files):
+    module = plot_module()
+    rows = span_rows(design_files / "designs.csv")
+    feasible = [r for r in rows if r["feasible"] == "1"]
+    best = min(feasible, key=lambda r: float(r["objective"]))
+    name = "base" if best["stage"] == "base" else f"{best['stage']} {best['run']}"
+    ratio = float(best["max_stress_ratio"])
+    figure = module.design_figure(str(design_files / "designs.csv"))
+    title = unwrapped(figure._suptitle.get_text()).split("\n")
+    assert title == [f"{design_files / 'designs.csv'}: best {name}, {'safe' if ratio <= 1 else 'unsafe'}: max "
+                     f"{float(best['max_stress_mpa']):.3g} MPa at {float(best['frequency_at_max_hz']):.3g} Hz, "
+                     f"{ratio:.3g} x the endurance limit; mass {float(best['total_mass_kg']):.3g} kg",
+                     f"{len(feasible)} of {len(rows)} candidates feasible"]
+    assert notes(figure) == []
+    module.plt.close(figure)
+
+
+def test_design_title_of_a_life_study(tmp_path):
+    (tmp_path / "life.csv").write_text(DESIGN_HEADER + "base,0,1.5,40,0.9,8,12,2.4,0.2,40,1,1\n"
+                                       "sample,0,0.7,3000,1.2,11,20,2.4,0.1,3000,1,1\n"
+                                       "sample,2,2.5,,,,,2.4,,,0,0\n")
+    module = plot_module()
+    figure = module.design_figure(str(tmp_path / "life.csv"))
+    assert unwrapped(figure._suptitle.get_text()) == (f"{tmp_path / 'life.csv'}: best sample 0, unsafe: shortest life 3,000 years, "
+                                           "max 11 MPa at 20 Hz, 1.2 x the endurance limit; mass 2.4 kg\n"
+                                           "2 of 3 candidates feasible, 1 not converged")
+    assert notes(figure) == [module.LIVES_NOTE]
+    module.plt.close(figure)
+
+
+def test_line_title_names_the_unsafe_spans_and_the_shortest_life(tmp_path):
+    lines = SCHEDULE.splitlines()
+    lives = ["", "120", "35.5", "2.25", "", "inf"]
+    (tmp_path / "lives.csv").write_text("\n".join(f"{line},{life}" if k else f"{line},life_years"
+                                                  for k, (line, life) in enumerate(zip(lines, lives))) + "\n")
+    module = plot_module()
+    figure = module.line_figure(str(tmp_path / "lives.csv"))
+    assert figure.axes[0].get_title().split("\n")[1] == "unsafe: T3-T4; unknown: T4-T5; shortest life 2.2 years (T3-T4)"
+    assert notes(figure) == [module.LIVES_NOTE]
+    module.plt.close(figure)
+    rows = "".join(f"T{k}-T{k + 1},300,2,9,40,8.73,0.8,20,unsafe,1\n" for k in range(1, 9))
+    (tmp_path / "bad_line.csv").write_text(SCHEDULE_HEADER + rows)
+    figure = module.line_figure(str(tmp_path / "bad_line.csv"))
+    assert figure.axes[0].get_title().split("\n") == [
+        f"{tmp_path / 'bad_line.csv'}: unsafe: 8 spans, 0 safe, 8 unsafe, 0 unknown",
+        "unsafe: T1-T2, T2-T3, T3-T4, T4-T5, T5-T6, T6-T7 and 2 more"]
+    module.plt.close(figure)
