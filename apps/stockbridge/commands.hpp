@@ -23,5 +23,6 @@ void add_modes_command(CLI::App& app, int& exit_code);
 void add_span_command(CLI::App& app, int& exit_code);
 void add_design_command(CLI::App& app, int& exit_code);
 void add_line_command(CLI::App& app, int& exit_code);
+void add_datasheet_command(CLI::App& app, int& exit_code);
 
 }  // namespace stockbridge::cli

@@ -20,6 +20,7 @@
 #include "commands.hpp"
 #include "input_files.hpp"
 #include "progress.hpp"
+#include "report_output.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/design_file.hpp"
@@ -43,6 +44,8 @@ struct DesignOptions {
   bool resume = false;
   std::string output;
   std::string best;
+  int round_digits = requests::DesignRequest{}.round_digits;
+  std::optional<std::string> report;
 };
 
 constexpr std::string_view kDesignJournalHead = "stockbridge design journal";
@@ -124,7 +127,8 @@ std::string design_text_of(const std::string& path) {
 
 std::string design_value(double value) { return fmt::format("{:.4g}", value); }
 
-void print_design_report(const design::DesignStudy& study, const design::DesignResult& result) {
+void print_design_report(const design::DesignStudy& study, const design::DesignResult& result,
+                         const std::optional<design::Evaluation>& rounded, int round_digits) {
   const auto line = [&](std::string_view label, const design::Evaluation& e) {
     std::string text = fmt::format("{}: ", label);
     if (!e.converged()) {
@@ -150,6 +154,12 @@ void print_design_report(const design::DesignStudy& study, const design::DesignR
   for (std::size_t d = 0; d < study.variables().size(); ++d) {
     fmt::print("  {} = {}\n", study.variables()[d].name, design_value(best.x[d]));
   }
+  if (rounded) {
+    fmt::print("{}\n", line(fmt::format("rounded to build ({} significant digits)", round_digits), *rounded));
+    for (std::size_t d = 0; d < study.variables().size(); ++d) {
+      fmt::print("  {} = {}\n", study.variables()[d].name, design_value(rounded->x[d]));
+    }
+  }
   for (std::size_t k = 0; k < best.spans.size(); ++k) {
     const design::SpanFigures& f = best.spans[k];
     const auto position = study.position_on(k, best.x);
@@ -164,6 +174,28 @@ void print_design_report(const design::DesignStudy& study, const design::DesignR
     fmt::print("polish {}: {} after {} candidates{}\n", j, p.converged() ? "converged" : "stopped", p.evaluations,
                p.converged() ? "" : fmt::format(" ({})", termination_name(p.termination)));
   }
+}
+
+/// The HTML report: the study, the optimum and the rounded design, the objective
+/// against each variable, and the design to build balanced on each span.
+std::string design_report(const DesignOptions& options, const design::DesignStudy& study,
+                          const design::DesignResult& result, const std::optional<design::Evaluation>& rounded) {
+  report::DesignReportInput input{std::filesystem::path(options.design_file).stem().string(), &study, &result,
+                                  rounded ? &*rounded : nullptr, options.round_digits, {}};
+  const design::Evaluation* build = rounded && rounded->feasible() ? &*rounded
+                                    : result.best                 ? &result.evaluations[*result.best].evaluation
+                                                                  : nullptr;
+  if (build) {
+    const damper::Damper damper(study.damper_of(build->x));
+    requests::SpanRequest request;
+    request.points = study.points();
+    request.threads = options.threads;
+    for (std::size_t k = 0; k < study.spans().size(); ++k) {
+      const span::Span s = study.span_with(k, damper, study.position_on(k, build->x));
+      input.best_spans.push_back(requests::run_span(s, study.spans()[k].balance, request));
+    }
+  }
+  return report::design_report(input, report_context());
 }
 
 /// On stderr, as the span command does for its points: which candidates did not
@@ -201,8 +233,11 @@ int run_design_command(const DesignOptions& options) {
   request.samples = options.samples;
   request.polish = options.polish;
   request.threads = options.threads;
+  request.round_digits = options.round_digits;
   requests::validate(request);
-  const io::DesignFile file = read_design_input(options.design_file, {{"-o", options.output}, {"--best", options.best}});
+  check_report_path(options.report);
+  const io::DesignFile file = read_design_input(
+      options.design_file, {{"-o", options.output}, {"--best", options.best}, {"--report", options.report.value_or("")}});
   const design::SearchOptions search = requests::search_options(file.search, request);
 
   const auto start = std::chrono::steady_clock::now();
@@ -231,16 +266,21 @@ int run_design_command(const DesignOptions& options) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (processes.rank() != 0) return result.best ? kSuccess : kNotConverged;
 
+  const std::optional<design::Evaluation> rounded = requests::rounded_best(file.study, result, options.round_digits);
+  const std::string report = options.report ? design_report(options, file.study, result, rounded) : std::string();
   io::write_file_atomically(options.output, requests::design_table(file.study).values(result.evaluations).csv());
-  const auto best = requests::best_damper_file(file.study, result, std::filesystem::path(options.design_file).filename().string());
+  const auto best = requests::best_damper_file(file.study, result, std::filesystem::path(options.design_file).filename().string(),
+                                               rounded ? &*rounded : nullptr);
   if (best) io::write_file_atomically(options.best, *best);
+  if (options.report) io::write_file_atomically(*options.report, report);
   if (options.json) {
     fmt::print("{}\n", requests::design_summary(file.study, result,
-                                                {search.samples, search.polish, processes.size(), options.threads})
+                                                {search.samples, search.polish, processes.size(), options.threads,
+                                                 options.round_digits, rounded ? &*rounded : nullptr})
                            .add("seconds", seconds)
                            .str());
   } else {
-    print_design_report(file.study, result);
+    print_design_report(file.study, result, rounded, options.round_digits);
   }
   fmt::print(stderr, "design: {} candidates in {:.1f} s on {} rank(s) x {} thread(s){}\n", result.evaluations.size(),
              seconds, processes.size(), options.threads,
@@ -267,7 +307,13 @@ void add_design_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
   sub->add_option("-o,--output", options->output, "Output CSV file: every candidate evaluated")->required();
-  sub->add_option("--best", options->best, "Output damper file: the best design")->required();
+  sub->add_option("--best", options->best, "Output damper file: the best design (rounded to --round-digits where that "
+                                           "stays feasible)")->required();
+  sub->add_option("--round-digits", options->round_digits,
+                  "Significant digits the best design is rounded to for building, and evaluated again")
+      ->capture_default_str();
+  add_report_option(*sub, options->report,
+                    "the study, the optimum and the design to build, the objective against each variable, its curves");
   sub->callback([options, &exit_code] { exit_code = run_design_command(*options); });
 }
 

@@ -23,6 +23,7 @@
 #include "commands.hpp"
 #include "input_files.hpp"
 #include "option_parsing.hpp"
+#include "report_output.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/line_file.hpp"
@@ -46,6 +47,7 @@ struct LineOptions {
   std::string details;
   bool json = false;
   bool quiet = false;
+  std::optional<std::string> report;
 };
 
 constexpr std::string_view kJournalHead = "stockbridge line journal";
@@ -108,18 +110,11 @@ std::string line_duration(double seconds) {
 }
 
 void print_line_report(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows) {
-  int safe = 0, unsafe = 0, unknown = 0;
-  std::map<int, int> per_end;
-  const line::ScheduleRow* governing = nullptr;
-  for (const line::ScheduleRow& r : rows) {
-    safe += r.verdict == span::Verdict::safe;
-    unsafe += r.verdict == span::Verdict::unsafe;
-    unknown += r.verdict == span::Verdict::unknown;
-    ++per_end[r.per_end];
-    if (r.converged == r.points && (!governing || r.stress_ratio() > governing->stress_ratio())) governing = &r;
-  }
-  fmt::print("line {}: {} spans, {} safe, {} unsafe, {} unknown\n", file.name, rows.size(), safe, unsafe, unknown);
-  for (const auto& [n, spans] : per_end) fmt::print("  {} damper(s) per end: {} spans\n", n, spans);
+  const line::ScheduleCounts counts = line::schedule_counts(rows);
+  const line::ScheduleRow* governing = counts.governing;
+  fmt::print("line {}: {} spans, {} safe, {} unsafe, {} unknown\n", file.name, rows.size(), counts.safe, counts.unsafe,
+             counts.unknown);
+  for (const auto& [n, spans] : counts.per_end) fmt::print("  {} damper(s) per end: {} spans\n", n, spans);
   for (const line::BillLine& b : line::bill_of_materials(file.line, rows)) {
     fmt::print("bill: {} x {}{}\n", b.dampers, b.damper_type,
                b.mass ? fmt::format(" ({:.4g} kg)", *b.mass) : std::string());
@@ -177,7 +172,9 @@ void prepare_line_details(const std::string& folder, const io::LineFile& file) {
 /// The schedule, the bill and the report (or JSON); the exit status.
 int write_line_outputs(const LineOptions& options, const io::LineFile& file, const std::vector<line::ScheduleRow>& schedule,
                        const Processes& processes, double seconds, std::size_t computed) {
+  const std::string report = options.report ? report::line_report(file, schedule, report_context()) : std::string();
   io::write_file_atomically(options.output, requests::schedule_table().values(schedule).csv());
+  if (options.report) io::write_file_atomically(*options.report, report);
   io::write_file_atomically(line_bill_path(options),
                             requests::bill_table().values(line::bill_of_materials(file.line, schedule)).csv());
   if (options.json) {
@@ -211,8 +208,11 @@ int run_line_command(const LineOptions& options) {
   }
   require_in_range("threads", options.threads, 1, 256);
   const std::string journal_path = options.output + ".journal";
-  const io::LineFile file = read_line_input(
-      options, {{"-o", options.output}, {"--bill", line_bill_path(options)}, {"the journal", journal_path}});
+  check_report_path(options.report);
+  const io::LineFile file = read_line_input(options, {{"-o", options.output},
+                                                      {"--bill", line_bill_path(options)},
+                                                      {"the journal", journal_path},
+                                                      {"--report", options.report.value_or("")}});
   const std::size_t spans = file.line.spans().size();
   if (!options.details.empty()) prepare_line_details(options.details, file);
   const std::string fingerprint = requests::line_fingerprint(file, line_text_of(options.line_file));
@@ -303,6 +303,7 @@ void add_line_command(CLI::App& app, int& exit_code) {
                   "Folder for each span's span file and balance CSV (<id>.toml, <id>.csv)");
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr");
+  add_report_option(*sub, options->report, "the rules, the verdicts, the margin per span, the schedule and the bill");
   sub->callback([options, &exit_code] { exit_code = run_line_command(*options); });
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -275,6 +276,25 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
   e.objective = study.objective() == Objective::life ? -std::min(life, 1e12) : ratio;
   e.infeasibility = broken_constraint(study.constraints(), e);
   return e;
+}
+
+std::vector<double> rounded_candidate(const DesignStudy& study, const std::vector<double>& x, int digits) {
+  if (digits < 1 || digits > 15) {
+    throw InvalidParameter(fmt::format("round_digits = {}: expected 1 to 15 significant digits", digits));
+  }
+  std::vector<double> out = x;
+  for (std::size_t d = 0; d < out.size() && d < study.variables().size(); ++d) {
+    const DesignVariable& v = study.variables()[d];
+    const double value = out[d];
+    if (value == 0.0 || !std::isfinite(value)) continue;
+    const double unit = std::pow(10.0, std::floor(std::log10(std::abs(value))) - (digits - 1));
+    double r = std::round(value / unit) * unit;
+    if (r > v.max) r = std::floor(v.max / unit) * unit;
+    if (r < v.min) r = std::ceil(v.min / unit) * unit;
+    // Printed to `digits` digits, the value reads back as itself.
+    out[d] = std::stod(fmt::format("{:.{}g}", r, digits + 1));
+  }
+  return out;
 }
 
 }  // namespace stockbridge::design

@@ -271,4 +271,19 @@ std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<Sche
   return bill;
 }
 
+ScheduleCounts schedule_counts(const std::vector<ScheduleRow>& rows) {
+  ScheduleCounts c;
+  for (const ScheduleRow& r : rows) {
+    c.safe += r.verdict == span::Verdict::safe;
+    c.unsafe += r.verdict == span::Verdict::unsafe;
+    c.unknown += r.verdict == span::Verdict::unknown;
+    const bool converged = r.converged == r.points;
+    c.not_converged += !converged;
+    c.worse_than_undamped += converged && r.per_end > 0 && r.max_stress > r.undamped_max_stress;
+    ++c.per_end[r.per_end];
+    if (converged && (!c.governing || r.stress_ratio() > c.governing->stress_ratio())) c.governing = &r;
+  }
+  return c;
+}
+
 }  // namespace stockbridge::line

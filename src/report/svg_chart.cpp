@@ -124,13 +124,31 @@ std::vector<std::string> wrap(std::string_view text, std::size_t width) {
   return lines;
 }
 
+bool marks(LineStyle style) {
+  return style == LineStyle::markers || style == LineStyle::ring || style == LineStyle::square;
+}
+
+std::string mark(LineStyle style, double px, double py, std::string_view colour) {
+  switch (style) {
+    case LineStyle::ring:
+      return fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"7\" fill=\"none\" stroke=\"{}\" stroke-width=\"2.2\"/>",
+                         px, py, colour);
+    case LineStyle::square:
+      return fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"11\" height=\"11\" fill=\"none\" stroke=\"{}\" "
+                         "stroke-width=\"2\"/>",
+                         px - 5.5, py - 5.5, colour);
+    default:
+      return fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.2\" fill=\"{}\"/>", px, py, colour);
+  }
+}
+
 /// The curve of a series as polylines, broken where a value is missing or off the axes.
 std::string curve(const Series& s, std::string_view colour, const Scale& x, const Scale& y) {
   std::string out;
-  if (s.style == LineStyle::markers) {
+  if (marks(s.style)) {
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       if (!x.shows(s.x[i]) || !y.shows(s.y[i])) continue;
-      out += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.2\" fill=\"{}\"/>", x(s.x[i]), y(s.y[i]), colour);
+      out += mark(s.style, x(s.x[i]), y(s.y[i]), colour);
     }
     return out;
   }
@@ -158,9 +176,7 @@ std::string curve(const Series& s, std::string_view colour, const Scale& x, cons
 }
 
 std::string legend_sample(const Series& s, std::string_view colour, double x, double y) {
-  if (s.style == LineStyle::markers) {
-    return fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.2\" fill=\"{}\"/>", x + 12, y, colour);
-  }
+  if (marks(s.style)) return mark(s.style, x + 12, y, colour);
   return fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"1.8\"{}/>",
                      x, y, x + 24, y, colour, dash_of(s.style));
 }
@@ -173,9 +189,9 @@ std::vector<double> ticks(double lo, double hi, bool log) {
   if (log && hi / lo >= 10.0) {
     const int first = static_cast<int>(std::floor(std::log10(lo) + 1e-9));
     const int last = static_cast<int>(std::ceil(std::log10(hi) - 1e-9));
-    const int decades = last - first;
+    const double decades = std::log10(hi / lo);
     const int every = decades > 8 ? 2 : 1;
-    const std::vector<double> mantissas = decades <= 2 ? std::vector<double>{1, 2, 5} : std::vector<double>{1};
+    const std::vector<double> mantissas = decades <= 2.5 ? std::vector<double>{1, 2, 5} : std::vector<double>{1};
     for (int d = first; d <= last; d += every) {
       for (const double m : mantissas) {
         const double v = m * std::pow(10.0, d);
@@ -280,6 +296,7 @@ std::string svg(const Chart& chart) {
     }
   }
   for (const double t : ticks(yr.lo, yr.hi, chart.y.log)) {
+    if (chart.y.integer && t != std::round(t)) continue;
     const double py = y(t);
     out += fmt::format("<line x1=\"{1:.1f}\" y1=\"{0:.1f}\" x2=\"{2:.1f}\" y2=\"{0:.1f}\"/>", py, kLeft, right);
     labels += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{}</text>", kLeft - 6, py + 4, tick_label(t));

@@ -18,6 +18,7 @@ void validate(const DesignRequest& request) {
   if (request.samples) require_in_range("samples", *request.samples, 1, 1000000);
   if (request.polish) require_in_range("polish", *request.polish, 0, 10000);
   require_in_range("threads", request.threads, 1, 256);
+  require_in_range("round_digits", request.round_digits, 1, 15);
 }
 
 design::SearchOptions search_options(const design::SearchOptions& file, const DesignRequest& request) {
@@ -214,20 +215,35 @@ io::JsonObject design_summary(const design::DesignStudy& study, const design::De
   } else {
     o.add_null("best").add("improved", false);
   }
+  if (run.rounded) {
+    o.add("rounded", design_figures(study, *run.rounded));
+  } else {
+    o.add_null("rounded");
+  }
   o.add("polishes", polishes)
       .add("samples", run.samples)
       .add("polish", run.polish)
       .add("ranks", run.ranks)
-      .add("threads", run.threads);
+      .add("threads", run.threads)
+      .add("round_digits", run.round_digits);
   return o;
 }
 
-std::optional<std::string> best_damper_file(const design::DesignStudy& study, const design::DesignResult& result,
-                                            std::string_view design_file) {
+std::optional<design::Evaluation> rounded_best(const design::DesignStudy& study, const design::DesignResult& result,
+                                               int digits) {
   if (!result.best) return std::nullopt;
-  const design::Evaluation& best = result.evaluations[*result.best].evaluation;
+  return design::evaluate(study, design::rounded_candidate(study, result.evaluations[*result.best].evaluation.x, digits));
+}
+
+std::optional<std::string> best_damper_file(const design::DesignStudy& study, const design::DesignResult& result,
+                                            std::string_view design_file, const design::Evaluation* rounded) {
+  if (!result.best) return std::nullopt;
+  const design::Evaluation& optimum = result.evaluations[*result.best].evaluation;
+  const bool built = rounded && rounded->feasible();
+  const design::Evaluation& best = built ? *rounded : optimum;
   const design::Evaluation& base = result.evaluations[result.base].evaluation;
-  std::string comment = fmt::format("The best design of {} (stockbridge design), {} {} (base {}).", design_file,
+  std::string comment = fmt::format("The best design of {} (stockbridge design){}, {} {} (base {}).", design_file,
+                                    built ? ", rounded to build" : "",
                                     design::objective_name(study.objective()), reported_objective(study.objective(), best),
                                     reported_objective(study.objective(), base));
   if (const auto position = study.position_of(best.x)) {
@@ -240,6 +256,16 @@ std::optional<std::string> best_damper_file(const design::DesignStudy& study, co
   }
   for (std::size_t d = 0; d < study.variables().size(); ++d) {
     comment += fmt::format("\n{} = {}", study.variables()[d].name, best.x[d]);
+  }
+  if (built) {
+    comment += fmt::format("\nThese are the optimum's values rounded to build; the optimum itself, {} {}:",
+                           design::objective_name(study.objective()), reported_objective(study.objective(), optimum));
+    for (std::size_t d = 0; d < study.variables().size(); ++d) {
+      comment += fmt::format("\n  {} = {}", study.variables()[d].name, optimum.x[d]);
+    }
+  } else if (rounded) {
+    comment += fmt::format("\nThe optimum rounded to build is not feasible ({}): these are the optimum's own values.",
+                           rounded->converged() ? rounded->infeasibility : rounded->failure);
   }
   return io::damper_file_toml(study.damper_of(best.x), comment);
 }

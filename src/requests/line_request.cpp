@@ -108,31 +108,21 @@ Table<line::BillLine> bill_table() {
 }
 
 io::JsonObject line_summary(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows) {
-  int safe = 0, unsafe = 0, unknown = 0, not_converged = 0, worse = 0;
-  std::map<int, int> per_end;
-  const Row* governing = nullptr;
-  for (const Row& r : rows) {
-    safe += r.verdict == span::Verdict::safe;
-    unsafe += r.verdict == span::Verdict::unsafe;
-    unknown += r.verdict == span::Verdict::unknown;
-    not_converged += r.converged < r.points;
-    worse += r.converged == r.points && r.per_end > 0 && r.max_stress > r.undamped_max_stress;
-    ++per_end[r.per_end];
-    if (r.converged == r.points && (!governing || r.stress_ratio() > governing->stress_ratio())) governing = &r;
-  }
+  const line::ScheduleCounts c = line::schedule_counts(rows);
+  const Row* governing = c.governing;
   std::vector<io::JsonObject> counts;
-  for (const auto& [n, spans] : per_end) counts.push_back(io::JsonObject().add("dampers_per_end", n).add("spans", spans));
+  for (const auto& [n, spans] : c.per_end) counts.push_back(io::JsonObject().add("dampers_per_end", n).add("spans", spans));
   std::vector<io::JsonObject> bill;
   const TableValues values = bill_table().values(line::bill_of_materials(file.line, rows));
   for (std::size_t r = 0; r < values.rows; ++r) bill.push_back(values.json_row(r));
   io::JsonObject json;
   json.add("line", file.name)
       .add("spans", static_cast<int>(rows.size()))
-      .add("spans_safe", safe)
-      .add("spans_unsafe", unsafe)
-      .add("spans_unknown", unknown)
-      .add("spans_not_converged", not_converged)
-      .add("spans_worse_than_undamped", worse)
+      .add("spans_safe", c.safe)
+      .add("spans_unsafe", c.unsafe)
+      .add("spans_unknown", c.unknown)
+      .add("spans_not_converged", c.not_converged)
+      .add("spans_worse_than_undamped", c.worse_than_undamped)
       .add("dampers_per_end", counts)
       .add("bill", bill);
   if (governing) {

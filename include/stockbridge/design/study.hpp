@@ -159,6 +159,12 @@ class TableCache {
   std::map<std::pair<std::size_t, std::vector<double>>, std::shared_ptr<const span::SpanTables>> tables_;
 };
 
+/// A candidate as it can be built: each value rounded to `digits` significant digits
+/// (masses, lengths and the rest alike), rounded toward the inside of its variable's
+/// range where the nearest value lies outside it. InvalidParameter naming
+/// "round_digits" unless 1 <= digits <= 15.
+std::vector<double> rounded_candidate(const DesignStudy& study, const std::vector<double>& x, int digits);
+
 /// Evaluates a candidate (one thread): the span analysis (span::analyse_span) of
 /// every span with its own balance options, tables from `cache` where given. A
 /// candidate whose damper is invalid (an arm mass below zero, a cable too short)

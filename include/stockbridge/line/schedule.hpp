@@ -101,4 +101,16 @@ struct BillLine {
 };
 std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<ScheduleRow>& rows);
 
+/// What a schedule comes to: spans by verdict, spans not converged throughout, spans
+/// whose dampers raise the stress above the undamped one, spans by dampers per end,
+/// and the governing span (the largest stress ratio among those converged throughout).
+struct ScheduleCounts {
+  int safe = 0, unsafe = 0, unknown = 0;
+  int not_converged = 0;
+  int worse_than_undamped = 0;
+  std::map<int, int> per_end;  ///< dampers per end -> spans
+  const ScheduleRow* governing = nullptr;  ///< into the rows counted; none where no span converged
+};
+ScheduleCounts schedule_counts(const std::vector<ScheduleRow>& rows);
+
 }  // namespace stockbridge::line

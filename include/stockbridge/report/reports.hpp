@@ -58,8 +58,9 @@ struct DesignReportInput {
   /// The best design rounded to a manufacturing precision and evaluated again (none
   /// where nothing is feasible), and its variables' values.
   const design::Evaluation* rounded = nullptr;
-  std::vector<double> rounded_variables;
-  /// The best design's balances on the study's spans (SpanResult per span; may be empty).
+  int round_digits = 3;
+  /// The design to build (rounded where feasible, else the optimum) balanced on each
+  /// of the study's spans, in order (empty where nothing is feasible).
   std::vector<requests::SpanResult> best_spans;
 };
 std::string design_report(const DesignReportInput& input, const ReportContext& context);

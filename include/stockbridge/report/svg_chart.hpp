@@ -13,7 +13,9 @@
 
 namespace stockbridge::report {
 
-enum class LineStyle { solid, dashed, dotted, markers };
+/// How a series is drawn: a line, or a mark per point (a dot; a ring and a hollow
+/// square, larger, to pick out a point among dots).
+enum class LineStyle { solid, dashed, dotted, markers, ring, square };
 
 struct Series {
   std::string label;  ///< in the legend; empty: not listed
@@ -33,6 +35,7 @@ struct Axis {
   std::string label;  ///< with its unit: "frequency (Hz)"
   bool log = false;
   std::optional<double> min, max;  ///< the data's range where not given
+  bool integer = false;            ///< ticks at whole numbers only (counts)
 };
 
 /// A second scale on the opposite side of an axis: value = scale * the axis's value.

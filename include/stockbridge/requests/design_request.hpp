@@ -20,9 +20,12 @@ struct DesignRequest {
   std::optional<int> samples;  ///< instead of the file's
   std::optional<int> polish;   ///< instead of the file's
   int threads = 1;             ///< candidates evaluated at once (per process)
+  /// The best design is also given rounded to this many significant digits (what is
+  /// built) and evaluated again there (design::rounded_candidate).
+  int round_digits = 3;
 };
 
-/// InvalidParameter naming "samples", "polish" or "threads" (the command's
+/// InvalidParameter naming "samples", "polish", "threads" or "round_digits" (the command's
 /// --samples, --polish and --threads, Python's keywords), as the other requests
 /// name their settings.
 void validate(const DesignRequest& request);
@@ -43,7 +46,15 @@ struct DesignRun {
   int polish = 0;
   int ranks = 1;    ///< processes
   int threads = 1;  ///< per process
+  int round_digits = 3;
+  /// The best design rounded to round_digits and evaluated again (none: not made).
+  const design::Evaluation* rounded = nullptr;
 };
+
+/// The best design rounded to `digits` significant digits and evaluated again (one
+/// thread); none when nothing is feasible.
+std::optional<design::Evaluation> rounded_best(const design::DesignStudy& study, const design::DesignResult& result,
+                                               int digits);
 
 /// The summary, as `stockbridge design --json` prints it and Python returns it:
 /// objective, evaluations, converged, feasible, base and best (each: objective,
@@ -51,12 +62,16 @@ struct DesignRun {
 /// messenger_curvature_max_per_m, shortest_life_years, position_m, variables
 /// {name: value}, and for a candidate that is not feasible its termination and a
 /// note; best null when nothing is feasible), improved, polishes (each local
-/// polish's termination, evaluations and reason), samples, polish, ranks, threads.
+/// polish's termination, evaluations and reason), samples, polish, ranks, threads,
+/// round_digits and rounded (the best design rounded and evaluated again, its
+/// figures as best's; null where not made).
 io::JsonObject design_summary(const design::DesignStudy& study, const design::DesignResult& result,
                               const DesignRun& run);
 
 /// The best design as a complete damper file (the `impedance` and `span` commands
 /// read it), its position and figures in comments; none when nothing is feasible.
+/// With `rounded` (rounded_best) and that design feasible, the file is the rounded
+/// design (what is built), the optimum's values and figures beside it in comments.
 /// A candidate's evaluation as one line of text (a design journal's record): tab
 /// separated, numbers in their shortest round-trip form; it reads back bit for bit.
 std::string evaluation_record(const design::Evaluation& evaluation);
@@ -68,6 +83,6 @@ design::Evaluation parse_evaluation_record(std::string_view record);
 std::string design_fingerprint(const std::vector<std::filesystem::path>& inputs, std::string_view design_text);
 
 std::optional<std::string> best_damper_file(const design::DesignStudy& study, const design::DesignResult& result,
-                                            std::string_view design_file);
+                                            std::string_view design_file, const design::Evaluation* rounded = nullptr);
 
 }  // namespace stockbridge::requests

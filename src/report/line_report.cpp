@@ -1,0 +1,157 @@
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "report_parts.hpp"
+#include "stockbridge/report/reports.hpp"
+
+namespace stockbridge::report {
+
+namespace {
+
+std::string arrangement(const line::ScheduleRow& r) {
+  return r.per_end == 0 ? std::string("none") : fmt::format("{} × {}", r.per_end, r.damper_type);
+}
+
+std::string positions(const line::ScheduleRow& r) {
+  std::string out;
+  for (const double x : r.positions) out += (out.empty() ? "" : "; ") + parts::number(x, 4);
+  return out.empty() ? "-" : out;
+}
+
+/// A stress of a balance that did not converge throughout is not shown.
+std::string stress_cell(double pascal, bool trusted) { return trusted ? parts::number(pascal / 1e6, 3) : "-"; }
+
+std::vector<Fact> line_rules(const io::LineFile& file) {
+  const line::ScheduleRules& r = file.line.rules();
+  std::vector<Fact> out;
+  for (const line::DamperType& t : file.line.types()) {
+    out.emplace_back("damper type " + t.name, fmt::format("{}{}", t.mass ? parts::number(*t.mass, 4) + " kg each" : "mass not given",
+                                                          t.damper.measured() ? ", from a measured impedance sheet" : ", from its model"));
+  }
+  out.emplace_back("dampers per end", fmt::format("{} to {}", r.min_per_end, r.max_per_end));
+  out.emplace_back("positions", fmt::format("{} to {} m from the clamp, at least {} m apart, on a {} mm step",
+                                            parts::number(r.positions.position_min), parts::number(r.positions.position_max),
+                                            parts::number(r.positions.spacing_min), parts::number(1e3 * r.position_step)));
+  out.emplace_back("objective", r.positions.objective == span::PositionObjective::life ? "the shortest life (damage per year)"
+                                                                                       : "the largest fymax stress");
+  out.emplace_back("safe", r.life_target ? fmt::format("every point converged and a life of at least {} years (comparative)",
+                                                       parts::number(*r.life_target))
+                                         : std::string("every point converged and every fymax stress within the endurance limit"));
+  out.emplace_back("frequencies", fmt::format("{} per balance over each span's wind band ({} in the position search)", r.points,
+                                              r.search_points));
+  return out;
+}
+
+Chart ratio_chart(const std::vector<line::ScheduleRow>& rows) {
+  Chart chart("Largest stress over the endurance limit, span by span", Axis("span"),
+              Axis("largest fymax stress / endurance limit", true));
+  Series damped{"with the scheduled dampers", {}, {}, LineStyle::markers, 0};
+  Series undamped{"without dampers", {}, {}, LineStyle::markers, 1};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const line::ScheduleRow& r = rows[i];
+    chart.x_categories.push_back(r.id);
+    const bool trusted = r.converged == r.points;
+    damped.x.push_back(static_cast<double>(i));
+    damped.y.push_back(trusted && r.per_end > 0 ? r.stress_ratio() : NAN);
+    undamped.x.push_back(static_cast<double>(i));
+    undamped.y.push_back(r.undamped_max_stress / r.endurance_limit);
+  }
+  chart.series = {undamped, damped};
+  chart.references.push_back({"endurance limit", 1.0});
+  return chart;
+}
+
+Chart dampers_chart(const std::vector<line::ScheduleRow>& rows) {
+  Chart chart("Dampers per end, span by span", Axis("span"), Axis("dampers per end"));
+  Series s{"", {}, {}, LineStyle::markers, 0};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    chart.x_categories.push_back(rows[i].id);
+    s.x.push_back(static_cast<double>(i));
+    s.y.push_back(rows[i].per_end);
+  }
+  chart.series = {s};
+  chart.y.min = 0.0;
+  chart.y.integer = true;
+  return chart;
+}
+
+}  // namespace
+
+std::string line_report(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows, const ReportContext& context) {
+  HtmlPage page({"Damper schedule: line " + file.name, context.generated_at, context.command});
+  const line::ScheduleCounts counts = line::schedule_counts(rows);
+  const std::vector<line::BillLine> bill = line::bill_of_materials(file.line, rows);
+  int dampers = 0;
+  double mass = 0.0;
+  bool mass_known = true;
+  for (const line::BillLine& b : bill) {
+    dampers += b.dampers;
+    mass += b.mass.value_or(0.0);
+    mass_known = mass_known && b.mass.has_value();
+  }
+  const Tone tone = counts.unsafe > 0 ? Tone::bad : counts.unknown > 0 ? Tone::unknown : Tone::good;
+  page.verdict(counts.unsafe > 0 ? "unsafe spans" : counts.unknown > 0 ? "incomplete" : "safe",
+               fmt::format(" {} spans: {} safe, {} unsafe even with the most dampers allowed, {} unknown (not converged "
+                           "throughout); {} dampers in all.",
+                           rows.size(), counts.safe, counts.unsafe, counts.unknown, dampers),
+               tone);
+  std::vector<Fact> key{{"spans", std::to_string(rows.size())},
+                        {"safe / unsafe / unknown", fmt::format("{} / {} / {}", counts.safe, counts.unsafe, counts.unknown)},
+                        {"dampers", std::to_string(dampers)},
+                        {"damper mass", mass_known ? parts::number(mass, 4) + " kg" : "not known for every type"}};
+  if (counts.governing) {
+    key.emplace_back("governing span", fmt::format("{}: {} % of the limit", counts.governing->id,
+                                                   parts::number(100.0 * counts.governing->stress_ratio(), 3)));
+  }
+  for (const auto& [n, spans] : counts.per_end) key.emplace_back(fmt::format("spans with {} per end", n), std::to_string(spans));
+  if (counts.worse_than_undamped > 0) key.emplace_back("spans worse than undamped", std::to_string(counts.worse_than_undamped));
+  page.key_figures(key);
+
+  page.section("Rules");
+  page.facts(line_rules(file));
+  page.section("Figures");
+  page.figure(svg(ratio_chart(rows)), "Each span's largest fymax stress over its endurance limit, without dampers and with "
+                                      "the scheduled ones; below 1 is within the limit (the margin is 1 minus it). A span "
+                                      "not converged throughout has no damped mark.");
+  page.figure(svg(dampers_chart(rows)), "The dampers each span gets at each end.");
+  page.section("Schedule");
+  std::vector<std::vector<std::string>> table;
+  std::vector<Tone> tones;
+  for (const line::ScheduleRow& r : rows) {
+    const bool trusted = r.converged == r.points;
+    table.push_back({r.id, parts::number(r.length), parts::number(100.0 * r.tension_fraction, 3), parts::number(r.catenary_parameter),
+                     arrangement(r), positions(r), parts::number(r.undamped_max_stress / 1e6, 3),
+                     r.per_end > 0 ? stress_cell(r.max_stress, trusted) : "-",
+                     trusted ? parts::number(100.0 * (1.0 - r.stress_ratio()), 3) : "-",
+                     std::isnan(r.life_years) ? "-" : std::isinf(r.life_years) ? "unlimited" : parts::number(r.life_years, 3),
+                     std::string(span::verdict_name(r.verdict))});
+    tones.push_back(parts::verdict_tone(r.verdict));
+  }
+  page.table({"span", "length (m)", "tension (% RTS)", "H/w (m)", "dampers per end", "positions (m)", "undamped max (MPa)",
+              "max (MPa)", "margin (%)", "life (years)", "verdict"},
+             table, tones);
+  page.section("Bill of materials");
+  std::vector<std::vector<std::string>> bill_rows;
+  for (const line::BillLine& b : bill) {
+    bill_rows.push_back({b.damper_type, std::to_string(b.dampers), std::to_string(b.spans),
+                         b.mass ? parts::number(*b.mass, 4) : "-"});
+  }
+  page.table({"damper type", "dampers", "spans", "mass (kg)"}, bill_rows);
+  page.section("Assumptions");
+  bool lives = false;
+  for (const line::ScheduleRow& r : rows) lives = lives || !std::isnan(r.life_years) || !std::isnan(r.undamped_life_years);
+  std::vector<std::string> caveats = parts::span_caveats(lives);
+  caveats.push_back("Each span is scheduled alone, its ends clamped (no suspension-point coupling with its neighbours); "
+                    "positions are the same at both ends, measured from the clamp.");
+  page.list(caveats);
+  page.section("Warnings");
+  std::vector<std::string> warnings = context.warnings;
+  for (const line::ScheduleRow& r : rows) {
+    for (const std::string& w : r.warnings) warnings.push_back(r.id + ": " + w);
+  }
+  page.list(warnings, true);
+  return page.html();
+}
+
+}  // namespace stockbridge::report
