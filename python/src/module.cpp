@@ -527,20 +527,24 @@ py::dict line_schedule(const std::optional<std::string>& path, const std::option
 /// order: the base, the samples, the polishes), its --json summary as JSON text (the
 /// package's design() parses it into a dict) and best.toml's text (None when no
 /// candidate is feasible).
-py::dict design_search(const std::string& path, std::optional<int> samples, std::optional<int> polish, int threads) {
+py::dict design_search(const std::string& path, std::optional<int> samples, std::optional<int> polish, int threads,
+                       int round_digits) {
   requests::DesignRequest request;
   request.samples = samples;
   request.polish = polish;
   request.threads = threads;
+  request.round_digits = round_digits;
   requests::validate(request);
   const io::DesignFile file = io::load_design_file(path);
   warn(file.warnings);
   const design::SearchOptions options = requests::search_options(file.search, request);
   std::optional<design::DesignResult> result;
+  std::optional<design::Evaluation> rounded;
   {
     py::gil_scoped_release release;
     design::ThreadRunner runner(threads);
     result.emplace(design::run_search(file.study, options, runner));
+    rounded = requests::rounded_best(file.study, *result, round_digits);
   }
   const requests::TableValues columns = requests::design_table(file.study).values(result->evaluations);
   py::dict out = table_arrays(columns, {result->evaluations.size()});
@@ -549,9 +553,11 @@ py::dict design_search(const std::string& path, std::optional<int> samples, std:
   for (const design::DesignVariable& v : file.study.variables()) variables.push_back(v.name);
   out["variables"] = variables;
   // The command's --json adds its wall time, which Python leaves out.
-  out["summary_json"] = requests::design_summary(file.study, *result, {options.samples, options.polish, 1, threads}).str();
+  const design::Evaluation* built = rounded ? &*rounded : nullptr;
+  out["summary_json"] =
+      requests::design_summary(file.study, *result, {options.samples, options.polish, 1, threads, round_digits, built}).str();
   out["best_damper"] =
-      requests::best_damper_file(file.study, *result, std::filesystem::path(path).filename().string());
+      requests::best_damper_file(file.study, *result, std::filesystem::path(path).filename().string(), built);
   return out;
 }
 
@@ -644,6 +650,7 @@ PYBIND11_MODULE(_core, m) {
   defaults["span_spacing_min"] = requests::SpanRequest{}.spacing_min;
   defaults["span_objective"] = requests::SpanRequest{}.objective;
   defaults["design_threads"] = requests::DesignRequest{}.threads;
+  defaults["design_round_digits"] = requests::DesignRequest{}.round_digits;
   defaults["fit_elements"] = requests::ImpedanceFitRequest{}.elements;
   defaults["fit_clamp_mass"] = requests::ImpedanceFitRequest{}.fit_clamp_mass;
   defaults["fit_threads"] = requests::ImpedanceFitRequest{}.threads;
@@ -682,6 +689,7 @@ PYBIND11_MODULE(_core, m) {
         "columns as arrays, the --json summary as 'summary_json' and the line file's 'warnings'.");
   m.def("_design", &design_search, py::arg("file"), py::arg("samples") = py::none(), py::arg("polish") = py::none(),
         py::arg("threads") = requests::DesignRequest{}.threads,
+        py::arg("round_digits") = requests::DesignRequest{}.round_digits,
         "A design study's search (stockbridge.design wraps it): the design CSV's columns as arrays, 'stage', "
         "'columns', 'variables', the --json summary as 'summary_json' and best.toml's text as 'best_damper'.");
   m.def("modes", &modes, py::arg("damper"),

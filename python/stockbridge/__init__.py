@@ -225,11 +225,13 @@ def line(file=None, text=None, base=None, threads=1):
     return out
 
 
-def design(file, samples=None, polish=None, threads=_defaults.get("design_threads")):
+def design(file, samples=None, polish=None, threads=_defaults.get("design_threads"),
+           round_digits=_defaults.get("design_round_digits")):
     """The search for the best damper of a design study, as ``stockbridge design``: a
     design file's path (`file`; its damper and span files relative to it);
     `samples` space-filling candidates and `polish` local polishes instead of the
-    file's; `threads` candidates evaluated at once.
+    file's; `threads` candidates evaluated at once; the best design is also rounded
+    to `round_digits` significant digits (what is built) and evaluated again.
 
     Returns a dict: one array per column of the design CSV, by the CSV's names (one
     value per candidate in the CSV's order: the base, the samples, the polishes;
@@ -238,9 +240,10 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
     sample or polish), 'governing_span' (array of str: the span of the largest
     stress ratio, empty unless converged), 'columns' (the CSV's
     order), 'variables' (the variables' names, their columns), 'summary' (the --json
-    summary's keys, None where the JSON has null) and 'best_damper': the text of the
-    --best damper file, None when no candidate is feasible."""
-    out = _design(file=str(file), samples=samples, polish=polish, threads=threads)
+    summary's keys, None where the JSON has null; 'rounded' the rounded design's
+    figures) and 'best_damper': the text of the --best damper file (the rounded
+    design where it stays feasible), None when no candidate is feasible."""
+    out = _design(file=str(file), samples=samples, polish=polish, threads=threads, round_digits=round_digits)
     for name in ("stage", "governing_span"):
         if name in out:
             out[name] = numpy.array(out[name], dtype=str)

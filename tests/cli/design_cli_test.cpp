@@ -49,6 +49,13 @@ std::filesystem::path study_folder(const std::string& name, const std::string& t
   return dir;
 }
 
+/// A number to 3 significant digits, as a damper file prints it.
+std::string fmt_3g(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
 /// A number as text that reads back exactly.
 std::string exact(double value) {
   char text[32];
@@ -91,17 +98,37 @@ TEST(DesignCli, ASmallStudyWritesEveryCandidateAndTheBestDamper) {
   EXPECT_LE(json_value(r.out, "best", "objective"), json_value(r.out, "base", "objective"));
   EXPECT_NE(r.err.find("design: " + std::to_string(rows) + " candidates in "), std::string::npos) << r.err;
 
-  // The best damper, placed where the study found it, through `stockbridge span`:
-  // the same largest stress over the endurance limit, to 1e-9.
+  // best.toml is the optimum rounded to build (3 significant digits), feasible here:
+  // placed where the rounded design puts it, through `stockbridge span`, the same
+  // largest stress over the endurance limit as the rounded design's, to 1e-9.
+  EXPECT_EQ(json_value(r.out, "", "round_digits"), 3.0);
+  for (const char* name : {"arm.left.mass", "position"}) {
+    const double optimum = json_value(r.out, "best", name), rounded = json_value(r.out, "rounded", name);
+    EXPECT_NEAR(rounded, optimum, 0.005 * optimum) << name;
+    EXPECT_EQ(std::stod(fmt_3g(rounded)), rounded) << name << " has at most 3 significant digits";
+  }
+  EXPECT_NE(best.find("mass = " + fmt_3g(json_value(r.out, "rounded", "arm.left.mass")) + "   # kg"), std::string::npos)
+      << best;
+  EXPECT_NE(best.find("the optimum itself"), std::string::npos) << best;
   std::string span = read_text(kDesignExamples + "aster570_400m.toml");
   span.replace(span.find("file = \"sauter2003.toml\""), 24, "file = \"best.toml\"");
-  const double position = json_value(r.out, "best", "position_m");
+  const double position = json_value(r.out, "rounded", "position_m");
   span.replace(span.find("position = 1.0"), 14, "position = " + exact(position));
   std::ofstream(dir / "best_span.toml") << span;
   const CliResult s = run_cli("span best_span.toml --points " + std::to_string(kPoints) + " --json -o span.csv", dir);
   ASSERT_EQ(s.exit_code, 0) << s.err;
   const double ratio = json_value(s.out, "", "max_stress_fymax_mpa") / json_value(s.out, "", "endurance_limit_mpa");
-  EXPECT_NEAR(ratio, json_value(r.out, "best", "objective"), 1e-9 * ratio);
+  EXPECT_NEAR(ratio, json_value(r.out, "rounded", "objective"), 1e-9 * ratio);
+}
+
+TEST(DesignCli, RoundDigitsOutsideOneToFifteenIsRefusedBeforeAnythingIsWritten) {
+  const auto dir = study_folder("design-round-digits", small_study());
+  const CliResult r = run_cli("design study.toml --round-digits 0 -o designs.csv --best best.toml", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("round_digits = 0"), std::string::npos) << r.err;
+  EXPECT_EQ(lines_of(r.err).size(), 1u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "designs.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "best.toml"));
 }
 
 TEST(DesignCli, ThreadsAndMpiRanksGiveTheSameDesigns) {

@@ -96,6 +96,25 @@ TEST(DesignStudy, TiesFollowTheirVariableAndTheInertiaKeepsTheRadiusOfGyration) 
   EXPECT_EQ(study.base_values(), (std::vector<double>{base.arms[0].mass, base.arms[0].cable.length}));
 }
 
+TEST(DesignStudy, ACandidateIsRoundedToBuildWithinItsVariablesRanges) {
+  const DesignStudy study = study_of({{"arm.left.mass", 0.5, 1.738}, {"arm.left.cable.length", 0.1004, 0.3},
+                                      {"arm.left.cable.jenkin[0].h", 0.2, 2.0}});
+  EXPECT_EQ(rounded_candidate(study, {1.2345678, 0.22426174413697125, 0.70049}, 3),
+            (std::vector<double>{1.23, 0.224, 0.7}));
+  EXPECT_EQ(rounded_candidate(study, {1.2345678, 0.22426174413697125, 0.70049}, 2),
+            (std::vector<double>{1.2, 0.22, 0.7}));
+  // The nearest 3-digit values 1.74 and 0.100 lie outside the ranges [.., 1.738] and
+  // [0.1004, ..]: rounded toward the inside instead.
+  EXPECT_EQ(rounded_candidate(study, {1.7379, 0.1004, 0.7}, 3)[0], 1.73);
+  EXPECT_EQ(rounded_candidate(study, {1.7379, 0.1004, 0.7}, 3)[1], 0.101);
+  // Many digits give the candidate back.
+  const std::vector<double> x{1.2345678, 0.22426174413697125, 0.70049};
+  const std::vector<double> r = rounded_candidate(study, x, 15);
+  for (std::size_t d = 0; d < x.size(); ++d) EXPECT_NEAR(r[d], x[d], 1e-14 * x[d]);
+  EXPECT_THROW(rounded_candidate(study, x, 0), InvalidParameter);
+  EXPECT_THROW(rounded_candidate(study, x, 16), InvalidParameter);
+}
+
 TEST(DesignStudy, IsCheckedWhereTheFileSpellsIt) {
   const auto field_of = [](auto&& make) {
     try {

@@ -1,0 +1,142 @@
+// The reports' charts and pages: nice ticks, curves broken where a value is missing
+// (a point that did not converge is never drawn), secondary axes placed by the
+// primary scale, user text escaped, and a page that references nothing outside itself.
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/report/html_page.hpp"
+#include "stockbridge/report/svg_chart.hpp"
+
+namespace stockbridge::report {
+namespace {
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(ChartTicks, LinearTicksAreOneTwoOrFiveTimesAPowerOfTenAndCoverTheRange) {
+  EXPECT_EQ(ticks(0.0, 10.0, false), (std::vector<double>{0, 2, 4, 6, 8, 10}));
+  EXPECT_EQ(ticks(0.0, 1.0, false), (std::vector<double>{0, 0.2, 0.4, 0.6000000000000001, 0.8, 1}));
+  const std::vector<double> t = ticks(-3.0, 47.0, false);
+  EXPECT_EQ(t.front(), 0.0);
+  EXPECT_EQ(t.back(), 40.0);
+  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_DOUBLE_EQ(t[i] - t[i - 1], 10.0);
+}
+
+TEST(ChartTicks, LogTicksAreDecadesWithTwoAndFiveBetweenWhenTheRangeIsShort) {
+  EXPECT_EQ(ticks(5.0, 100.0, true), (std::vector<double>{5, 10, 20, 50, 100}));
+  EXPECT_EQ(ticks(1e-4, 10.0, true), (std::vector<double>{1e-4, 1e-3, 1e-2, 1e-1, 1, 10}));
+  // Less than a decade: linear ticks, still positive.
+  const std::vector<double> t = ticks(6.0, 41.0, true);
+  EXPECT_GE(t.size(), 3u);
+  EXPECT_TRUE(std::all_of(t.begin(), t.end(), [](double v) { return v >= 6.0 && v <= 41.0; }));
+}
+
+Chart two_curves() {
+  Chart chart("A title", Axis("frequency (Hz)", true), Axis("stress (MPa)"));
+  chart.series.push_back({"with dampers", {1, 2, 3, 4, 5}, {1, 2, NAN, 4, 5}, LineStyle::solid, 0});
+  chart.series.push_back({"without dampers", {1, 2, 3, 4, 5}, {2, 3, 4, 5, 6}, LineStyle::dashed, 1});
+  return chart;
+}
+
+TEST(Chart, AMissingValueBreaksTheCurveAndIsNeverDrawn) {
+  const std::string s = svg(two_curves());
+  // The first series in two pieces (1-2 and 4-5), the second whole.
+  EXPECT_EQ(occurrences(s, "<polyline"), 3u);
+  EXPECT_EQ(occurrences(s, "nan"), 0u);
+  EXPECT_EQ(occurrences(s, "inf"), 0u);
+  EXPECT_NE(s.find(">with dampers<"), std::string::npos);
+  EXPECT_NE(s.find(">without dampers<"), std::string::npos);
+}
+
+TEST(Chart, ALonePointBetweenGapsIsADot) {
+  Chart chart("t", Axis("x"), Axis("y"));
+  chart.series.push_back({"", {1, 2, 3}, {NAN, 2, NAN}});
+  const std::string s = svg(chart);
+  EXPECT_EQ(occurrences(s, "<polyline"), 0u);
+  EXPECT_EQ(occurrences(s, "<circle"), 1u);
+}
+
+/// The x pixel of the tick labelled `label` on the top axis (`top`) or the bottom one.
+double label_x(const std::string& svg_text, const std::string& label, bool top) {
+  const std::regex text("<text x=\"([0-9.]+)\" y=\"([0-9.]+)\" text-anchor=\"middle\">" + label + "</text>");
+  double x = NAN, y = top ? INFINITY : -INFINITY;
+  for (auto it = std::sregex_iterator(svg_text.begin(), svg_text.end(), text); it != std::sregex_iterator(); ++it) {
+    const double yi = std::stod((*it)[2]);
+    if (top ? yi < y : yi > y) {
+      y = yi;
+      x = std::stod((*it)[1]);
+    }
+  }
+  EXPECT_FALSE(std::isnan(x)) << label;
+  return x;
+}
+
+TEST(Chart, TheTopAxisIsTheBottomAxisScaled) {
+  // Wind speed = 0.5 * frequency on a log axis: the 10 m/s tick sits over 20 Hz.
+  Chart chart("t", Axis("frequency (Hz)", true), Axis("y"));
+  chart.series.push_back({"", {5, 100}, {1, 2}});
+  chart.top = SecondaryAxis{"wind speed (m/s)", 0.5};
+  const std::string s = svg(chart);
+  const double hz20 = label_x(s, "20", false);
+  const double ms10 = label_x(s, "10", true);
+  EXPECT_GT(std::abs(label_x(s, "10", false) - ms10), 100.0);  // 10 Hz is elsewhere
+  EXPECT_NEAR(ms10, hz20, 0.11);
+  EXPECT_NE(s.find(">wind speed (m/s)<"), std::string::npos);
+}
+
+TEST(Chart, BadSeriesAndLogAxesWithoutPositiveValuesAreRefused) {
+  Chart chart("t", Axis("x"), Axis("y", true));
+  chart.series.push_back({"", {1, 2}, {0, -1}});
+  EXPECT_THROW(svg(chart), InvalidParameter);
+  chart.series = {{"", {1, 2}, {1}}};
+  EXPECT_THROW(svg(chart), InvalidParameter);
+}
+
+TEST(Chart, CategoriesLabelTheXAxisAndIntegerAxesHaveWholeTicks) {
+  Chart chart("t", Axis("span"), Axis("dampers per end"));
+  chart.x_categories = {"T1-T2", "T2-T3", "T3-T4"};
+  chart.series.push_back({"", {0, 1, 2}, {1, 2, 0}, LineStyle::markers});
+  chart.y.integer = true;
+  const std::string s = svg(chart);
+  for (const char* id : {">T1-T2<", ">T2-T3<", ">T3-T4<"}) EXPECT_NE(s.find(id), std::string::npos) << id;
+  EXPECT_EQ(s.find(">0.5<"), std::string::npos);
+  EXPECT_EQ(s.find(">1.5<"), std::string::npos);
+  EXPECT_EQ(occurrences(s, "r=\"3.2\""), 3u);
+}
+
+TEST(HtmlPage, UserTextIsEscapedAndThePageReferencesNothingOutsideItself) {
+  HtmlPage page({"Span <script>alert(1)</script>", "2026-11-26 12:00 UTC", "stockbridge span 'a b.toml' -o x.csv"});
+  page.verdict("safe", " because & <b>", Tone::good);
+  page.facts({{"conductor", "\"ACSR\" <Drake>"}});
+  page.table({"id"}, {{"<T1>"}}, {Tone::bad});
+  page.figure(svg(two_curves()), "a caption with <tags>");
+  page.list({"warning <1>"}, true);
+  const std::string html = page.html();
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("<b>"), std::string::npos);
+  EXPECT_NE(html.find("&lt;Drake&gt;"), std::string::npos);
+  EXPECT_NE(html.find("&#39;a b.toml&#39;"), std::string::npos);
+  // Self-contained: no source, link, import or url() to fetch; the only URL is SVG's namespace.
+  for (const char* fetch : {"src=", "href=", "@import", "url(", "<link", "<iframe", "<object", "<embed"}) {
+    EXPECT_EQ(html.find(fetch), std::string::npos) << fetch;
+  }
+  std::string rest = html;
+  std::erase(rest, '\n');
+  EXPECT_EQ(occurrences(rest, "http"), occurrences(rest, "xmlns=\"http://www.w3.org/2000/svg\""));
+  // Printable: A4 pages, and no figure split across two.
+  EXPECT_NE(html.find("@page { size: A4"), std::string::npos);
+  EXPECT_NE(html.find("figure { margin: 0.8em 0; break-inside: avoid"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace stockbridge::report
