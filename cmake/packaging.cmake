@@ -18,7 +18,7 @@ install(FILES ${PROJECT_BINARY_DIR}/stockbridgeConfig.cmake ${PROJECT_BINARY_DIR
 # which minimal systems do not strip as they may share/doc.
 # README.md beside docs/, as in the sources, so that its links to docs/*.md hold.
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR} FILES_MATCHING PATTERN "*.md")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR} FILES_MATCHING PATTERN "*.md" PATTERN "*.png")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples DESTINATION ${CMAKE_INSTALL_DATADIR}/stockbridge
         PATTERN __pycache__ EXCLUDE)
 # The conductor catalogue, compiled into the library as well (src/CMakeLists.txt): the

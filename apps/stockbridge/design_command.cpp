@@ -160,12 +160,14 @@ void print_design_report(const design::DesignStudy& study, const design::DesignR
       fmt::print("  {} = {}\n", study.variables()[d].name, design_value(rounded->x[d]));
     }
   }
-  for (std::size_t k = 0; k < best.spans.size(); ++k) {
-    const design::SpanFigures& f = best.spans[k];
-    const auto position = study.position_on(k, best.x);
+  // Span by span, the design best.toml gives: the rounded one where it stays feasible.
+  const design::Evaluation& built = rounded && rounded->feasible() ? *rounded : best;
+  for (std::size_t k = 0; k < built.spans.size(); ++k) {
+    const design::SpanFigures& f = built.spans[k];
+    const auto position = study.position_on(k, built.x);
     fmt::print("  span {}: {:.3g} MPa, {:.3g} of its endurance limit{}{}{}\n", study.spans()[k].name, f.max_stress / 1e6,
                f.max_stress_ratio, position ? fmt::format(", dampers from {:.3g} m", *position) : std::string(),
-               k == best.span_at_max ? " (governs)" : "",
+               k == built.span_at_max ? " (governs)" : "",
                f.worse_than_undamped() ? fmt::format(": WORSE than undamped ({:.3g} MPa)", f.undamped_max_stress / 1e6)
                                        : std::string());
   }

@@ -1,7 +1,5 @@
 #include "report_output.hpp"
 
-#include <chrono>
-#include <ctime>
 #include <filesystem>
 #include <mutex>
 
@@ -58,13 +56,8 @@ void remember_warning(const std::string& line) {
 }
 
 report::ReportContext report_context() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char when[32];
-  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", &utc);
   const std::lock_guard lock(run_record().mutex);
-  return {when, run_record().command, run_record().warnings};
+  return {report::utc_now(), run_record().command, run_record().warnings};
 }
 
 CLI::Option* add_report_option(CLI::App& command, std::optional<std::string>& path, const std::string& what) {

@@ -40,6 +40,7 @@
 #include "stockbridge/io/span_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
 #include "stockbridge/line/schedule.hpp"
+#include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/conductor_request.hpp"
 #include "stockbridge/requests/cycle_request.hpp"
 #include "stockbridge/requests/design_request.hpp"
@@ -378,7 +379,7 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
                       const std::optional<std::vector<double>>& frequencies, int points, bool no_dampers,
                       const std::optional<std::string>& damper_model,
                       const std::optional<std::pair<double, double>>& optimize_position, double spacing_min,
-                      const std::string& objective, int threads) {
+                      const std::string& objective, int threads, bool report) {
   if (path.has_value() == text.has_value()) {
     throw InvalidParameter("give either file (a span file's path) or text (a span file's contents), one of the two");
   }
@@ -416,6 +417,11 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   out["dampers"] = requests::span_damper_prefixes(a.span);  // the <damper> of the per-damper columns
   out["columns"] = columns.names();
   out["summary_json"] = requests::span_summary(*result).str();
+  if (report) {
+    std::vector<std::string> warnings = file.warnings;
+    for (const std::string& w : a.warnings) warnings.push_back(w);
+    out["report_html"] = report::span_report(*result, {report::utc_now(), "", warnings});
+  }
   return out;
 }
 
@@ -505,7 +511,7 @@ std::vector<line::ScheduleRow> schedule_line(const io::LineFile& file, int threa
 /// bill CSV's columns as arrays, the --json summary as JSON text and the line file's
 /// warnings (each also an UnusualValueWarning).
 py::dict line_schedule(const std::optional<std::string>& path, const std::optional<std::string>& text,
-                       const std::optional<std::string>& base, int threads) {
+                       const std::optional<std::string>& base, int threads, bool report) {
   if (path.has_value() == text.has_value()) {
     throw InvalidParameter("give either file (a line file's path) or text (a line file's contents), one of the two");
   }
@@ -520,6 +526,7 @@ py::dict line_schedule(const std::optional<std::string>& path, const std::option
   out["bill"] = table_arrays(requests::bill_table().values(bill), {bill.size()});
   out["summary_json"] = requests::line_summary(file, rows).str();
   out["warnings"] = file.warnings;
+  if (report) out["report_html"] = report::line_report(file, rows, {report::utc_now(), "", file.warnings});
   return out;
 }
 
@@ -681,12 +688,15 @@ PYBIND11_MODULE(_core, m) {
         py::arg("no_dampers") = false, py::arg("damper_model") = py::none(),
         py::arg("optimize_position") = py::none(), py::arg("spacing_min") = requests::SpanRequest{}.spacing_min,
         py::arg("objective") = requests::SpanRequest{}.objective, py::arg("threads") = requests::SpanRequest{}.threads,
+        py::arg("report") = false,
         "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
-        "'converged', 'termination', 'messages', 'dampers', 'columns' and the --json summary as 'summary_json'.");
+        "'converged', 'termination', 'messages', 'dampers', 'columns', the --json summary as 'summary_json' and "
+        "with report the HTML report's text as 'report_html'.");
   m.def("_line", &line_schedule, py::arg("file") = py::none(), py::arg("text") = py::none(),
-        py::arg("base") = py::none(), py::arg("threads") = 1,
+        py::arg("base") = py::none(), py::arg("threads") = 1, py::arg("report") = false,
         "A line's damper schedule (stockbridge.line wraps it): 'schedule' and 'bill', the schedule and bill CSVs' "
-        "columns as arrays, the --json summary as 'summary_json' and the line file's 'warnings'.");
+        "columns as arrays, the --json summary as 'summary_json', the line file's 'warnings' and with report the "
+        "HTML report's text as 'report_html'.");
   m.def("_design", &design_search, py::arg("file"), py::arg("samples") = py::none(), py::arg("polish") = py::none(),
         py::arg("threads") = requests::DesignRequest{}.threads,
         py::arg("round_digits") = requests::DesignRequest{}.round_digits,

@@ -152,7 +152,7 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
          optimize_position=None, threads=_defaults.get("span_threads"), text=None, spec=None, base=None,
          damper=None, positions=None, ends=None, tension=None, tension_fraction=None, catenary_parameter=None,
          length=None, conductor_type=None, spacing_min=_defaults.get("span_spacing_min"),
-         objective=_defaults.get("span_objective")):
+         objective=_defaults.get("span_objective"), report=None):
     """The energy balance of a span over the wind band, as ``stockbridge span``.
 
     The span: a span file's path (`file`; its relative paths start at its folder), its
@@ -170,7 +170,8 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
     amax) in m to search every damper's position first (each its own, at least
     `spacing_min` m apart, minimising `objective`: "max_stress" or "life"; the
     positions found in the summary's positions_m); `threads` for the dampers'
-    impedance tables.
+    impedance tables; `report` a path: also write the HTML report there (as ``span
+    --report``: self-contained, printable on A4).
 
     Returns a dict: one array per column of the span CSV, by the CSV's names (stresses
     in MPa; NaN where a point did not converge), 'converged' and 'several_states'
@@ -183,19 +184,28 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
         out = _span(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
                     frequencies=frequencies, points=points, no_dampers=no_dampers, damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
-                    spacing_min=spacing_min, objective=objective, threads=threads)
+                    spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None)
     else:
         described, folder = _span_spec(file, text, spec, None if base is None else str(base))
         described = _override(described, *overrides)
         out = _span(text=_toml.document(described), base=folder, frequencies=frequencies, points=points,
                     no_dampers=no_dampers, damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
-                    spacing_min=spacing_min, objective=objective, threads=threads)
+                    spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None)
     out["summary"] = json.loads(out.pop("summary_json"))
+    _write_report(report, out)
     return out
 
 
-def line(file=None, text=None, base=None, threads=1):
+def _write_report(path, out):
+    """Writes the HTML report a function made (`out`'s 'report_html') to `path`, if given."""
+    html = out.pop("report_html", None)
+    if path is not None:
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(html)
+
+
+def line(file=None, text=None, base=None, threads=1, report=None):
     """The damper schedule of a line, as ``stockbridge line``: for every span the
     fewest dampers per end, of which type and where, that make it safe.
 
@@ -203,7 +213,8 @@ def line(file=None, text=None, base=None, threads=1):
     its contents (`text`, whose relative paths start at `base`, default the working
     directory), one of the two. `threads` spans computed at once, sharing the
     dampers' impedance tables (the same schedule for any number). Minutes for a real
-    line; Ctrl-C stops it (KeyboardInterrupt), nothing returned.
+    line; Ctrl-C stops it (KeyboardInterrupt), nothing returned. `report` a path:
+    also write the HTML report there (as ``line --report``).
 
     Returns a dict: 'schedule', one array per column of the schedule CSV by its names,
     one value per span in the line's order (id, conductor, undamped_verdict,
@@ -220,8 +231,9 @@ def line(file=None, text=None, base=None, threads=1):
     (or ``line(text=...)``), line and key; a span whose scheduling fails is a row
     with verdict unknown and the reason in its warnings, as in the command's CSV."""
     out = _line(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
-                threads=threads)
+                threads=threads, report=report is not None)
     out["summary"] = json.loads(out.pop("summary_json"))
+    _write_report(report, out)
     return out
 
 

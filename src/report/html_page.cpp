@@ -1,6 +1,8 @@
 #include "stockbridge/report/html_page.hpp"
 
 #include <cctype>
+#include <chrono>
+#include <ctime>
 
 #include <fmt/format.h>
 
@@ -70,6 +72,15 @@ bool numeric_cell(std::string_view cell) {
 }
 
 }  // namespace
+
+std::string utc_now() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", &utc);
+  return text;
+}
 
 std::string escape(std::string_view text) {
   std::string out;

@@ -474,12 +474,32 @@ def line_runs(tmp_path_factory):
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # nothing unusual in the small line
         one = sb.line(folder / "line.toml")
-    two = sb.line(text=SMALL_LINE, base=folder, threads=2)
-    return one, two
+    two = sb.line(text=SMALL_LINE, base=folder, threads=2, report=folder / "line.html")
+    return one, two, folder / "line.html"
+
+
+def test_span_and_line_write_the_report_the_program_writes(line_runs, tmp_path):
+    """span(report=...) and line(report=...) write the command's HTML page: its title,
+    the run's verdict and figures, nothing fetched from outside the page."""
+    out = sb.span(SPAN, points=20, report=tmp_path / "span.html")
+    assert "report_html" not in out
+    html = (tmp_path / "span.html").read_text(encoding="utf-8")
+    assert "<h1>Span energy balance: ASTER570, 400 m span</h1>" in html
+    assert "<strong>%s</strong>" % out["summary"]["verdict"] in html
+    assert "%.3g MPa at" % out["summary"]["max_stress_fymax_mpa"] in html
+    assert html.count("<figure>") == 3 and "src=" not in html and "<script" not in html
+    assert "report_html" not in sb.span(SPAN, points=5)  # made only when asked for
+    _, two, line_html = line_runs
+    page = line_html.read_text(encoding="utf-8")
+    assert "<h1>Damper schedule: line " in page
+    for span_id in SMALL_LINE_IDS:
+        assert "<td>%s</td>" % span_id in page
+    counts = two["summary"]
+    assert "%d / %d / %d" % (counts["spans_safe"], counts["spans_unsafe"], counts["spans_unknown"]) in page
 
 
 def test_line_returns_the_schedule_bill_and_summary(line_runs):
-    out, _ = line_runs
+    out, _, _ = line_runs
     assert set(out) == {"schedule", "bill", "summary", "warnings"}
     assert set(out) <= documented_keys("line", ["-"])
     assert out["warnings"] == []
@@ -506,7 +526,7 @@ def test_line_returns_the_schedule_bill_and_summary(line_runs):
 
 
 def test_line_on_two_threads_equals_one(line_runs):
-    one, two = line_runs
+    one, two, _ = line_runs
     for table in ("schedule", "bill"):
         assert list(one[table]) == list(two[table])
         for column, values in one[table].items():
@@ -519,7 +539,7 @@ def test_line_on_two_threads_equals_one(line_runs):
 
 
 def test_line_summary_counts_the_schedule(line_runs):
-    out, _ = line_runs
+    out, _, _ = line_runs
     s, summary = out["schedule"], out["summary"]
     assert summary["line"] == "test line" and summary["spans"] == 4
     for verdict in ("safe", "unsafe", "unknown"):

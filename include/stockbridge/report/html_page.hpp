@@ -16,6 +16,9 @@ namespace stockbridge::report {
 /// Text made safe inside HTML and SVG (&, <, >, " and ' replaced by entities).
 std::string escape(std::string_view text);
 
+/// Now, as a report's header states it: "2026-11-26 12:30 UTC".
+std::string utc_now();
+
 /// What every report states at its top.
 struct ReportHeader {
   std::string title;         ///< "Span energy balance: ASTER570, 400 m"

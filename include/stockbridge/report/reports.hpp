@@ -14,6 +14,7 @@
 #include "stockbridge/design/search.hpp"
 #include "stockbridge/io/line_file.hpp"
 #include "stockbridge/line/schedule.hpp"
+#include "stockbridge/report/html_page.hpp"
 #include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
 
