@@ -146,7 +146,8 @@ void print_span_report(const requests::SpanResult& result) {
              span::bending_strain_pp_microstrain(s.conductor(), summary.endurance_limit),
              span::verdict_name(summary.verdict), span::verdict_name(summary.undamped_verdict));
   if (s.fatigue().life) {
-    fmt::print("life: {} (undamped {})\n", span_life(summary.life, summary.life_missing_points),
+    fmt::print("life: {} (undamped {}); lives are comparative: they rest on the assumed wind climate\n",
+               span_life(summary.life, summary.life_missing_points),
                span_life(summary.undamped_life, summary.undamped_life_missing_points));
   }
   if (summary.several_states > 0) {

@@ -133,6 +133,7 @@ TEST(SpanCli, RunsTheExampleAndWritesTheCsv) {
   }
   EXPECT_NE(r.out.find("endurance limit: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("life: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("lives are comparative: they rest on the assumed wind climate"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("span: " + std::to_string(points) + " points in "), std::string::npos) << r.err;
 }
 
