@@ -57,10 +57,7 @@ span::Span span_with_datasheet_damper(const io::SpanFile& file, const std::strin
 }
 
 int run_datasheet_command(const DatasheetOptions& options) {
-  if (std::filesystem::path(options.output).extension() != ".html") {
-    throw InvalidParameter(fmt::format("-o = '{}': expected an HTML file name ending in .html", printable(options.output)));
-  }
-  check_report_path(options.output);
+  check_report_path(options.output, "-o");
   requests::SweepRequest sweep;
   sweep.velocities = parse_number_list(options.velocity, "--velocity");
   sweep.grid = {options.fmin, options.fmax, options.points};

@@ -27,8 +27,8 @@ report::ReportContext report_context();
 /// Adds `--report FILE.html` to a command.
 CLI::Option* add_report_option(CLI::App& command, std::optional<std::string>& path, const std::string& what);
 
-/// Throws InvalidParameter naming --report where the path is not an .html file in
-/// an existing folder (checked before anything is computed or written).
-void check_report_path(const std::optional<std::string>& path);
+/// Throws InvalidParameter naming `option` (--report, -o) where the path is not an
+/// .html file in an existing folder (checked before anything is computed or written).
+void check_report_path(const std::optional<std::string>& path, const std::string& option = "--report");
 
 }  // namespace stockbridge::cli

@@ -139,7 +139,11 @@ TEST(ReportCli, AReportThatCannotBeWrittenIsRefusedBeforeAnythingIsComputed) {
   EXPECT_FALSE(std::filesystem::exists(dir / "sheet.html"));
   const CliResult csv = run_cli("datasheet '" + kDamperExample + "' -o sheet.csv", dir);
   EXPECT_EQ(csv.exit_code, 2);
-  EXPECT_NE(csv.err.find("expected an HTML file name"), std::string::npos) << csv.err;
+  EXPECT_NE(csv.err.find("-o = 'sheet.csv': expected an HTML file name"), std::string::npos) << csv.err;
+  const CliResult folder = run_cli("datasheet '" + kDamperExample + "' -o missing/sheet.html", dir);
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_NE(folder.err.find("-o = 'missing/sheet.html': the folder 'missing' does not exist"), std::string::npos)
+      << folder.err;
 }
 
 }  // namespace
