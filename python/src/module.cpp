@@ -258,15 +258,28 @@ py::dict cycle(const cable::Cable& cable, const std::string& experiment, double 
   return out;
 }
 
-py::dict loop(double ei, const std::vector<std::pair<double, double>>& jenkin, double amplitude, int cycles, int points,
-              const std::string& law, double exponent) {
-  section::MasingParameters parameters{ei, {}};
-  for (const auto& [c, h] : jenkin) parameters.jenkin.push_back({c, h});
+py::dict loop(std::optional<double> ei, const std::vector<std::pair<double, double>>& jenkin, double amplitude,
+              int cycles, int points, const std::string& law, double exponent, std::optional<double> ei_min,
+              std::optional<double> ei_max, std::optional<double> chi0) {
   const section::SinusoidalDrive drive{amplitude, cycles, points};
+  const bool bouc_wen = law == "bouc-wen";
+  if (bouc_wen && (ei || !jenkin.empty())) {
+    throw InvalidParameter("law = 'bouc-wen' takes ei_min, ei_max and chi0, not ei or jenkin");
+  }
+  if (bouc_wen && (!ei_min || !ei_max || !chi0)) {
+    throw InvalidParameter("law = 'bouc-wen' needs ei_min, ei_max (N m^2) and chi0 (1/m)");
+  }
+  if (!bouc_wen && (ei_min || ei_max || chi0)) {
+    throw InvalidParameter("ei_min, ei_max and chi0 are the Bouc-Wen law's: law = '" + law + "' takes ei and jenkin");
+  }
+  if (!bouc_wen && !ei) throw InvalidParameter("law = '" + law + "' needs ei (N m^2)");
+  section::MasingParameters parameters{ei.value_or(0.0), {}};
+  for (const auto& [c, h] : jenkin) parameters.jenkin.push_back({c, h});
   section::LoopRecord record;
   {
     py::gil_scoped_release release;
-    record = requests::section_loop(parameters, drive, law, exponent);
+    record = bouc_wen ? requests::bouc_wen_loop({*ei_min, *ei_max, *chi0}, drive)
+                      : requests::section_loop(parameters, drive, law, exponent);
   }
   py::dict out = table_arrays(requests::loop_table().values(requests::loop_samples(record)), {record.curvature.size()});
   out["last_cycle_dissipation_j_per_m"] = record.last_cycle_dissipation();
@@ -725,12 +738,14 @@ PYBIND11_MODULE(_core, m) {
   m.def("_measured_impedance_warnings", &measured_impedance_warnings, py::arg("path"),
         "A measured impedance CSV's warnings (values outside the typical ranges, phases in radians), as lines; "
         "InputError for a file identify impedance refuses.");
-  m.def("loop", &loop, py::arg("ei"), py::arg("jenkin") = std::vector<std::pair<double, double>>{},
+  m.def("loop", &loop, py::arg("ei") = py::none(), py::arg("jenkin") = std::vector<std::pair<double, double>>{},
         py::arg("amplitude"), py::arg("cycles") = section::SinusoidalDrive{}.cycles,
         py::arg("points") = section::SinusoidalDrive{}.points, py::arg("law") = std::string(requests::default_section_law),
-        py::arg("exponent") = requests::default_regularised_exponent,
-        "One section driven by kappa = amplitude sin(2 pi k / points), as the loop command: jenkin = [(c, h), ...] in "
-        "N m^2 and N m; law 'exact' or 'regularised' (with exponent).");
+        py::arg("exponent") = requests::default_regularised_exponent, py::arg("ei_min") = py::none(),
+        py::arg("ei_max") = py::none(), py::arg("chi0") = py::none(),
+        "One section driven by kappa = amplitude sin(2 pi k / points), as the loop command: ei and jenkin = [(c, h), "
+        "...] in N m^2 and N m for law 'exact' or 'regularised' (with exponent); ei_min, ei_max (N m^2) and chi0 "
+        "(1/m) for law 'bouc-wen'.");
   m.def(
       "load_strand",
       [](const std::string& path) {

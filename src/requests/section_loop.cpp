@@ -20,9 +20,16 @@ section::LoopRecord section_loop(const section::MasingParameters& parameters, co
     regularised.exponent = exponent;
     section = std::make_unique<section::RegularisedSection>(parameters, regularised);
   } else {
-    throw InvalidParameter("law", fmt::format(" = '{}': expected exact or regularised", law));
+    throw InvalidParameter("law", fmt::format(" = '{}': expected exact or regularised (bouc-wen takes ei_min, ei_max "
+                                              "and chi0 instead of ei and Jenkin elements)",
+                                              law));
   }
   return section::run_loop(*section, drive);
+}
+
+section::LoopRecord bouc_wen_loop(const section::BoucWenParameters& parameters, const section::SinusoidalDrive& drive) {
+  section::BoucWenSection section(parameters);
+  return section::run_loop(section, drive);
 }
 
 std::vector<LoopSample> loop_samples(const section::LoopRecord& record) {

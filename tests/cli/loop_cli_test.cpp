@@ -29,6 +29,19 @@ TEST(LoopCli, RegularisedLawRuns) {
   EXPECT_TRUE(std::filesystem::exists(dir / "l.csv"));
 }
 
+TEST(LoopCli, BoucWenLawDissipatesItsClosedFormPerSteadyCycle) {
+  const auto dir = scratch_directory("loop-bouc-wen");
+  const CliResult r =
+      run_cli("loop --law bouc-wen --ei-min 5 --ei-max 40 --chi0 0.15 --amplitude 0.5 --cycles 4 --points 400 -o bw.csv",
+              dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // 4 (EI_max - EI_min) chi0 (chi_a - chi0 tanh(chi_a / chi0)) = 7.35800740... J/m (MODEL.md 13)
+  EXPECT_NE(r.err.find("bouc-wen law, 4 cycles x 400 points: dissipated energy in the last cycle 7.3580074"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(read_text(dir / "bw.csv").rfind("step,curvature_per_m,moment_n_m,dissipated_energy_j_per_m\n", 0), 0u);
+}
+
 struct BadCase {
   const char* arguments;
   const char* must_mention;
@@ -60,7 +73,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"--ei 2.8 --jenkin 20:0.7 --amplitude 0.05 --law regularised --exponent 0.5",
                               "exponent = 0.5"},
                       BadCase{"--ei 2.8 --amplitude 0.05 --bogus 3", "bogus"},
-                      BadCase{"--amplitude 0.05", "--ei"}),
+                      BadCase{"--amplitude 0.05", "--ei"},
+                      BadCase{"--law bouc-wen --ei-min 5 --ei-max 40 --amplitude 0.05", "needs --ei-min, --ei-max"},
+                      BadCase{"--law bouc-wen --ei 2.8 --ei-min 5 --ei-max 40 --chi0 0.15 --amplitude 0.05",
+                              "not --ei or --jenkin"},
+                      BadCase{"--ei 2.8 --chi0 0.15 --amplitude 0.05", "are the Bouc-Wen law's"},
+                      BadCase{"--law bouc-wen --ei-min 5 --ei-max 4 --chi0 0.15 --amplitude 0.05", "ei_max = 4"},
+                      BadCase{"--law bouc-wen --ei-min 5 --ei-max 40 --chi0 0 --amplitude 0.05", "chi0 = 0"}),
     [](const ::testing::TestParamInfo<BadCase>& info) { return "case" + std::to_string(info.index); });
 
 TEST(LoopCli, FailureLeavesAnExistingOutputUntouched) {

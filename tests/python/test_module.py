@@ -221,6 +221,21 @@ def test_loop_and_the_strand_loader_equal_the_program(tmp_path):
         sb.loop(2.8, [(20.0, 0.7)], 0.05, law="smooth")
 
 
+def test_a_bouc_wen_loop_equals_the_program_and_its_closed_form(tmp_path):
+    subprocess.run([CLI, "loop", "--law", "bouc-wen", "--ei-min", "5", "--ei-max", "40", "--chi0", "0.15",
+                    "--amplitude", "0.5", "--cycles", "4", "-o", "bw.csv"], cwd=tmp_path, check=True, capture_output=True)
+    rows = read_csv(tmp_path / "bw.csv")
+    loop = sb.loop(law="bouc-wen", ei_min=5.0, ei_max=40.0, chi0=0.15, amplitude=0.5, cycles=4)
+    assert loop["moment_n_m"] == pytest.approx([float(r["moment_n_m"]) for r in rows], rel=1e-12, abs=1e-15)
+    # 4 (EI_max - EI_min) chi0 (chi_a - chi0 tanh(chi_a / chi0)) per steady cycle (MODEL.md 13)
+    assert loop["last_cycle_dissipation_j_per_m"] == pytest.approx(4 * 35 * 0.15 * (0.5 - 0.15 * np.tanh(0.5 / 0.15)),
+                                                                  rel=1e-9)
+    with pytest.raises(sb.InvalidParameter, match="not ei or jenkin"):
+        sb.loop(2.8, law="bouc-wen", ei_min=5.0, ei_max=40.0, chi0=0.15, amplitude=0.5)
+    with pytest.raises(sb.InvalidParameter, match="are the Bouc-Wen law's"):
+        sb.loop(2.8, chi0=0.15, amplitude=0.5)
+
+
 ARM = {"mass": 0.856, "inertia": 0.001814, "offset": 0.0325}
 
 

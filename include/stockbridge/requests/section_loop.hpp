@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "stockbridge/requests/output_table.hpp"
+#include "stockbridge/section/bouc_wen_section.hpp"
 #include "stockbridge/section/masing_law.hpp"
 #include "stockbridge/section/sinusoidal_drive.hpp"
 
@@ -18,9 +19,14 @@ inline constexpr double default_regularised_exponent = 10.0;
 
 /// The loop of a section with `parameters` under `drive`, with the exact Masing
 /// law ("exact") or the regularised rate law (3.15) with `exponent`
-/// ("regularised"); InvalidParameter naming `law` otherwise.
+/// ("regularised"); InvalidParameter naming `law` otherwise ("bouc-wen" has its own
+/// parameters: bouc_wen_loop).
 section::LoopRecord section_loop(const section::MasingParameters& parameters, const section::SinusoidalDrive& drive,
                                  std::string_view law, double exponent);
+
+/// The loop of a Bouc-Wen section (the law "bouc-wen", MODEL.md section 13) under
+/// `drive`; InvalidParameter naming "ei_min", "ei_max" or "chi0".
+section::LoopRecord bouc_wen_loop(const section::BoucWenParameters& parameters, const section::SinusoidalDrive& drive);
 
 /// One sample of the loop.
 struct LoopSample {

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "stockbridge/section/bouc_wen_section.hpp"
 #include "stockbridge/section/masing_section.hpp"
 #include "stockbridge/section/regularised_section.hpp"
 #include "stockbridge/section/sinusoidal_drive.hpp"
@@ -103,7 +104,9 @@ INSTANTIATE_TEST_SUITE_P(
         LawCase{"exact", [] { return std::make_unique<MasingSection>(two_elements()); }, 1e-7, 1e-12},
         LawCase{"regularised_n10",
                 [] { return std::make_unique<RegularisedSection>(two_elements(), RegularisedOptions{10.0}); },
-                1e-4, 1e-6}),
+                1e-4, 1e-6},
+        LawCase{"bouc_wen", [] { return std::make_unique<BoucWenSection>(BoucWenParameters{2.8, 24.8, 0.03}); }, 5e-4,
+                1e-9}),
     [](const ::testing::TestParamInfo<LawCase>& info) { return info.param.name; });
 
 }  // namespace
