@@ -83,6 +83,26 @@ TEST(ReportCli, ASpanReportRestatesTheInputsAndGivesTheVerdictAndFiguresOfTheRun
   EXPECT_NE(html.find(">endurance limit 8.73 MPa<"), std::string::npos);
 }
 
+// Points that did not converge (no balance below 0.2 D at 10 and 20 Hz) never enter
+// the page's figures, life or verdict: the page says how many are missing and why.
+TEST(ReportCli, PointsThatDidNotConvergeAreListedAndNeverShownAsNumbers) {
+  const auto dir = scratch_directory("report-failed");
+  std::ofstream(dir / "span.toml") << read_text(kReportExamples + "aster570_400m.toml")
+                                   << "\n[balance]\namplitude_max_over_diameter = 0.2\n";
+  std::filesystem::copy_file(kDamperExample, dir / "sauter2003.toml");
+  const CliResult r = run_cli("span span.toml --no-dampers --frequencies 10,20,30,40 -o span.csv --report span.html", dir);
+  ASSERT_EQ(r.exit_code, 3) << r.err;
+  const std::string html = read_text(dir / "span.html");
+  expect_self_contained(html);
+  EXPECT_NE(html.find("<strong>unsafe</strong> the fymax stress reaches"), std::string::npos)
+      << "unsafe: a converged point exceeds the limit";
+  EXPECT_NE(html.find("<span>life (comparative)</span><b>unknown: 2 points missing</b>"), std::string::npos);
+  EXPECT_NE(html.find("<span>points converged</span><b>2 of 4</b>"), std::string::npos);
+  EXPECT_NE(html.find("<li>f = 10 Hz did not converge: no root in the range searched"), std::string::npos);
+  EXPECT_NE(html.find("<li>f = 20 Hz did not converge: "), std::string::npos);
+  EXPECT_NE(html.find("largest fymax stress (of the converged points)"), std::string::npos);
+}
+
 TEST(ReportCli, AnImpedanceReportGivesEachAmplitudesCurvesAndTheModes) {
   const auto dir = scratch_directory("report-impedance");
   const CliResult r = run_cli("impedance '" + kDamperExample + "' --velocity 0.2,0.05 --fmin 5 --fmax 100 --points " +
