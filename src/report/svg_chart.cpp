@@ -45,10 +45,7 @@ struct Range {
 
 Range axis_range(const Axis& axis, std::vector<double> values, std::string_view which) {
   std::erase_if(values, [&](double v) { return !std::isfinite(v) || (axis.log && v <= 0.0); });
-  if (values.empty() && !(axis.min && axis.max)) {
-    if (axis.log) throw InvalidParameter(fmt::format("chart: the {} axis is logarithmic and has no positive value", which));
-    values = {0.0, 1.0};
-  }
+  if (values.empty() && !(axis.min && axis.max)) values = axis.log ? std::vector<double>{1.0, 10.0} : std::vector<double>{0.0, 1.0};
   const auto [lo_it, hi_it] = std::minmax_element(values.begin(), values.end());
   Range r{axis.min.value_or(values.empty() ? 0.0 : *lo_it), axis.max.value_or(values.empty() ? 1.0 : *hi_it)};
   if (axis.log) {
@@ -340,8 +337,16 @@ std::string svg(const Chart& chart) {
                        "stroke-dasharray=\"9 3 2 3\"/><text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\" font-size=\"11\">{}</text>",
                        kLeft, y(r.y), right, y(r.y), right - 4, y(r.y) - 4, escape(r.label));
   }
+  bool shown = false;
   for (std::size_t i = 0; i < chart.series.size(); ++i) {
     out += curve(chart.series[i], colour_of(chart.series[i], i), x, y);
+    const Series& s = chart.series[i];
+    for (std::size_t k = 0; k < s.x.size() && !shown; ++k) shown = x.shows(s.x[k]) && y.shows(s.y[k]);
+  }
+  if (!shown) {
+    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"14\" fill=\"#8a3b00\">"
+                       "no point to show: none converged</text>",
+                       0.5 * (kLeft + right), 0.5 * (top + bottom));
   }
   for (const Entry& e : entries) {
     const Series& s = chart.series[e.series];

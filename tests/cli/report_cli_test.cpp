@@ -101,6 +101,13 @@ TEST(ReportCli, PointsThatDidNotConvergeAreListedAndNeverShownAsNumbers) {
   EXPECT_NE(html.find("<li>f = 10 Hz did not converge: no root in the range searched"), std::string::npos);
   EXPECT_NE(html.find("<li>f = 20 Hz did not converge: "), std::string::npos);
   EXPECT_NE(html.find("largest fymax stress (of the converged points)"), std::string::npos);
+  // No point converged: the page is still written, its figures empty and saying so.
+  const CliResult none = run_cli("span span.toml --no-dampers --frequencies 10,20 -o none.csv --report none.html", dir);
+  ASSERT_EQ(none.exit_code, 3) << none.err;
+  const std::string empty = read_text(dir / "none.html");
+  expect_self_contained(empty);
+  EXPECT_NE(empty.find("<strong>unknown</strong> 2 of 2 points did not converge"), std::string::npos);
+  EXPECT_EQ(count_of(empty, "no point to show: none converged"), 3u) << "the stress, the amplitude and the powers";
 }
 
 TEST(ReportCli, AnImpedanceReportGivesEachAmplitudesCurvesAndTheModes) {

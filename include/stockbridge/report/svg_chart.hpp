@@ -57,8 +57,9 @@ struct Chart {
 };
 
 /// The chart as an <svg> element (a viewBox, so that it scales to its container;
-/// text in the page's font). Throws InvalidParameter where a series' x and y differ
-/// in length or a log axis has no positive value to show.
+/// text in the page's font). A chart with no point to show (every point missing, or
+/// none positive on a log axis) is drawn empty and says so. Throws InvalidParameter
+/// where a series' x and y differ in length.
 std::string svg(const Chart& chart);
 
 /// "Nice" tick values covering [lo, hi]: multiples of 1, 2 or 5 times a power of ten

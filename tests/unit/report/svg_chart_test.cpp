@@ -94,10 +94,19 @@ TEST(Chart, TheTopAxisIsTheBottomAxisScaled) {
   EXPECT_NE(s.find(">wind speed (m/s)<"), std::string::npos);
 }
 
-TEST(Chart, BadSeriesAndLogAxesWithoutPositiveValuesAreRefused) {
-  Chart chart("t", Axis("x"), Axis("y", true));
-  chart.series.push_back({"", {1, 2}, {0, -1}});
-  EXPECT_THROW(svg(chart), InvalidParameter);
+TEST(Chart, AChartWithNothingToShowSaysSoAndMismatchedSeriesAreRefused) {
+  // Nothing positive on a log axis, or every point missing (none converged): axes and a note, no curve.
+  for (const std::vector<double>& y : {std::vector<double>{0, -1}, std::vector<double>{NAN, NAN}}) {
+    Chart chart("t", Axis("x"), Axis("y", true));
+    chart.series.push_back({"", {1, 2}, y});
+    const std::string s = svg(chart);
+    EXPECT_NE(s.find("no point to show: none converged"), std::string::npos);
+    EXPECT_EQ(occurrences(s, "<polyline"), 0u);
+    EXPECT_EQ(occurrences(s, "<circle"), 0u);
+  }
+  Chart chart("t", Axis("x"), Axis("y"));
+  chart.series.push_back({"", {1, 2}, {1, 2}});
+  EXPECT_EQ(svg(chart).find("no point to show"), std::string::npos);
   chart.series = {{"", {1, 2}, {1}}};
   EXPECT_THROW(svg(chart), InvalidParameter);
 }
