@@ -234,37 +234,22 @@ std::vector<GivenSpan> given_from_csv(const std::filesystem::path& path) {
 /// A damper type of [dampers] types: a damper file or a measured sheet, its mass.
 line::DamperType read_damper_type(const TomlTable& t, const std::filesystem::path& base, SpanReading& reading) {
   t.accept_only({"name", "file", "impedance", "mass"});
-  const std::optional<std::string> model = t.optional_string("file");
-  const std::optional<std::string> measured = t.optional_string("impedance");
-  if (model.has_value() == measured.has_value()) {
-    if (model) t.fail("impedance", "given beside file: expected a damper file or a measured sheet, one of the two");
-    throw InputError(fmt::format("{}missing key 'file' in {}: expected a damper file, or impedance = a measured "
-                                 "impedance CSV file (relative to the line file)",
-                                 t.location("file"), t.key_path()));
-  }
+  span_reading::DamperSource source = span_reading::read_damper_source(
+      t, base, reading,
+      fmt::format("missing key 'file' in {}: expected a damper file, or impedance = a measured impedance CSV file "
+                  "(relative to the line file)",
+                  t.key_path()));
   line::DamperType type;
   type.mass = t.optional_number("mass");
-  if (measured) {
-    const std::filesystem::path path =
-        span_reading::span_input_file(t, "impedance", *measured, base, "measured impedance CSV file");
-    type.file = std::filesystem::absolute(path).lexically_normal().string();
-    type.damper.sheet = span_reading::read_sheet(t, *measured, base, reading);
-    type.name = t.optional_string("name").value_or(type.damper.sheet->name());
-  } else {
-    const std::filesystem::path path = span_reading::span_input_file(t, "file", *model, base, "damper file");
-    type.file = std::filesystem::absolute(path).lexically_normal().string();
-    DamperFile loaded = load_damper_file(path);
-    reading.inputs.push_back(path);
-    reading.inputs.insert(reading.inputs.end(), loaded.cable_files.begin(), loaded.cable_files.end());
-    span_reading::span_add_warnings(reading, std::move(loaded.warnings));
-    if (!type.mass) {
-      double mass = loaded.damper.clamp_mass();
-      for (const damper::Arm& arm : loaded.damper.arms()) mass += arm.description().mass;
-      type.mass = mass;
-    }
-    type.damper.damper = std::move(loaded.damper);
-    type.name = t.optional_string("name").value_or(path.stem().string());
+  if (source.damper && !type.mass) {
+    double mass = source.damper->clamp_mass();
+    for (const damper::Arm& arm : source.damper->arms()) mass += arm.description().mass;
+    type.mass = mass;
   }
+  type.file = std::filesystem::absolute(source.path).lexically_normal().string();
+  type.name = t.optional_string("name").value_or(source.name);
+  type.damper.damper = std::move(source.damper);
+  type.damper.sheet = std::move(source.sheet);
   type.damper.name = type.name;
   return type;
 }

@@ -222,18 +222,35 @@ std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, c
   }
 }
 
-/// A span damper's name in tables and messages: its damper file's (or sheet's) stem.
-span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem::path& base_directory,
-                                  SpanReading& reading) {
-  table.accept_only({"file", "impedance", "position", "ends"});
+DamperSource read_damper_source(const TomlTable& table, const std::filesystem::path& base_directory,
+                                SpanReading& reading, const std::string& missing) {
   const std::optional<std::string> model = table.optional_string("file");
   const std::optional<std::string> measured = table.optional_string("impedance");
   if (model.has_value() == measured.has_value()) {
     if (model) table.fail("impedance", "given beside file: expected a damper file or a measured sheet, one of the two");
-    throw InputError(fmt::format("{}missing key 'file' in [{}]: expected the damper file (relative to the span file), "
-                                 "or impedance = a measured impedance CSV file",
-                                 table.location("file"), table.key_path()));
+    throw InputError(table.location("file") + missing);
   }
+  DamperSource source;
+  if (measured) {
+    source.path = span_input_file(table, "impedance", *measured, base_directory, "measured impedance CSV file");
+    source.sheet = read_sheet(table, *measured, base_directory, reading);
+    source.name = source.sheet->name();
+    return source;
+  }
+  source.path = span_input_file(table, "file", *model, base_directory, "damper file");
+  DamperFile loaded = load_damper_file(source.path);
+  reading.inputs.push_back(source.path);
+  reading.inputs.insert(reading.inputs.end(), loaded.cable_files.begin(), loaded.cable_files.end());
+  span_add_warnings(reading, std::move(loaded.warnings));
+  source.damper = std::move(loaded.damper);
+  source.name = source.path.stem().string();
+  return source;
+}
+
+/// A span damper's name in tables and messages: its damper file's (or sheet's) stem.
+span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem::path& base_directory,
+                                  SpanReading& reading) {
+  table.accept_only({"file", "impedance", "position", "ends"});
   const double position = table.number("position");
   bool both_ends = true;
   if (const auto ends = table.optional_string("ends")) {
@@ -244,17 +261,12 @@ span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem:
     }
     both_ends = *ends == "both";
   }
-  if (measured) {
-    std::shared_ptr<const span::ImpedanceSheet> sheet = read_sheet(table, *measured, base_directory, reading);
-    std::string name = sheet->name();
-    return span::SpanDamper{std::nullopt, position, both_ends, std::move(name), std::move(sheet)};
-  }
-  const std::filesystem::path path = span_input_file(table, "file", *model, base_directory, "damper file");
-  DamperFile loaded = load_damper_file(path);
-  reading.inputs.push_back(path);
-  reading.inputs.insert(reading.inputs.end(), loaded.cable_files.begin(), loaded.cable_files.end());
-  span_add_warnings(reading, std::move(loaded.warnings));
-  return span::SpanDamper{std::move(loaded.damper), position, both_ends, path.stem().string(), nullptr};
+  DamperSource source = read_damper_source(
+      table, base_directory, reading,
+      fmt::format("missing key 'file' in [{}]: expected the damper file (relative to the span file), or impedance = a "
+                  "measured impedance CSV file",
+                  table.key_path()));
+  return span::SpanDamper{std::move(source.damper), position, both_ends, std::move(source.name), std::move(source.sheet)};
 }
 
 span::FatigueSpec read_fatigue(const TomlTable& table) {

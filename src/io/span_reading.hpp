@@ -54,6 +54,20 @@ span::BalanceOptions read_balance(const std::optional<TomlTable>& table);
 std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, const std::string& file,
                                                        const std::filesystem::path& base_directory,
                                                        SpanReading& reading);
+/// A damper a table gives as `file` (a damper file: its model) or `impedance` (a
+/// measured sheet), one of the two, read and its files listed among the inputs; its
+/// name the damper file's stem or the sheet's. InputError at the table otherwise:
+/// `missing` is the message when neither is given (the table's own words: where
+/// its paths start).
+struct DamperSource {
+  std::optional<damper::Damper> damper;              ///< the model (none: the sheet)
+  std::shared_ptr<const span::ImpedanceSheet> sheet;  ///< the measured sheet, where there is no model
+  std::filesystem::path path;                        ///< the file read
+  std::string name;
+};
+DamperSource read_damper_source(const TomlTable& table, const std::filesystem::path& base_directory,
+                                SpanReading& reading, const std::string& missing);
+
 /// A file's warnings added, each once.
 void span_add_warnings(SpanReading& reading, std::vector<std::string> warnings);
 /// The values outside their typical ranges, each at its line: the shared tables', and
