@@ -93,6 +93,12 @@ std::string Damper::arm_label(std::size_t k) const {
   return name.empty() ? arm_name(k) : "arm " + name;
 }
 
+double Damper::total_mass() const {
+  double total = clamp_mass();
+  for (const Arm& arm : arms_) total += arm.description().mass;
+  return total;
+}
+
 std::string Damper::arm_name(std::size_t k) const {
   const std::string& name = description_.arms[k].name;
   return name.empty() ? fmt::format("arm {}", k + 1) : name;

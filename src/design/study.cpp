@@ -222,8 +222,7 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
     e.infeasibility = fmt::format("the candidate damper is not valid: {}", error.what());
     return e;
   }
-  e.total_mass = damper->clamp_mass();
-  for (const damper::Arm& arm : damper->arms()) e.total_mass += arm.description().mass;
+  e.total_mass = damper->total_mass();
   std::vector<double> damper_key;  // the damper variables' values: what the tables depend on
   for (std::size_t i = 0; i < x.size(); ++i) {
     const std::string& name = study.variables()[i].name;

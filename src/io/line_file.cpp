@@ -241,11 +241,7 @@ line::DamperType read_damper_type(const TomlTable& t, const std::filesystem::pat
                   t.key_path()));
   line::DamperType type;
   type.mass = t.optional_number("mass");
-  if (source.damper && !type.mass) {
-    double mass = source.damper->clamp_mass();
-    for (const damper::Arm& arm : source.damper->arms()) mass += arm.description().mass;
-    type.mass = mass;
-  }
+  if (source.damper && !type.mass) type.mass = source.damper->total_mass();
   type.file = std::filesystem::absolute(source.path).lexically_normal().string();
   type.name = t.optional_string("name").value_or(source.name);
   type.damper.damper = std::move(source.damper);

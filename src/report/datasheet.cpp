@@ -38,20 +38,12 @@ std::string datasheet(const DatasheetInput& in, const ReportContext& context) {
   HtmlPage page({"Damper data sheet: " + in.damper_name, context.generated_at, context.command});
   int safe = 0;
   for (const requests::SpanResult& s : in.spans) safe += s.analysis.balance.summary.verdict == span::Verdict::safe;
-  page.verdict(parts::number(parts::damper_mass(*in.damper), 3) + " kg",
+  page.verdict(parts::number(in.damper->total_mass(), 3) + " kg",
                in.spans.empty() ? std::string(" impedance and power at the test velocities, and the linear modes.")
                                 : fmt::format(" safe on {} of the {} spans below.", safe, in.spans.size()),
                Tone::neutral);
-  ImpedanceReportInput sweep{in.damper_name, in.damper, in.runs, false, in.modes};
-  std::vector<Fact> key{{"total mass", number(parts::damper_mass(*in.damper), 4) + " kg"}};
-  for (const damper::SweepRun& run : *in.runs) {
-    const damper::ImpedancePoint* best = nullptr;
-    for (const damper::ImpedancePoint& p : run.points) {
-      if (p.converged() && (!best || p.power > best->power)) best = &p;
-    }
-    key.emplace_back(fmt::format("largest power at {} m/s", number(run.amplitude, 3)),
-                     best ? fmt::format("{} W at {} Hz", number(best->power, 3), number(best->frequency_hz, 3)) : "none converged");
-  }
+  std::vector<Fact> key{{"total mass", number(in.damper->total_mass(), 4) + " kg"}};
+  for (Fact& f : parts::largest_power_facts(*in.runs, false)) key.push_back(std::move(f));
   page.key_figures(key);
   page.section("The damper");
   page.facts(parts::damper_facts(*in.damper));

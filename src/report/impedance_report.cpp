@@ -10,24 +10,10 @@ namespace stockbridge::report {
 
 namespace {
 
-/// Per amplitude: the largest power and where, over the converged points.
-std::vector<Fact> sweep_key_figures(const ImpedanceReportInput& in) {
-  std::vector<Fact> out{{"total mass", parts::number(parts::damper_mass(*in.damper), 4) + " kg"}};
-  int points = 0, converged = 0;
-  for (const damper::SweepRun& run : *in.runs) {
-    const damper::ImpedancePoint* best = nullptr;
-    for (const damper::ImpedancePoint& p : run.points) {
-      ++points;
-      if (!p.converged()) continue;
-      ++converged;
-      if (!best || p.power > best->power) best = &p;
-    }
-    const std::string amplitude = in.constant_displacement ? "X = " + parts::number(1e3 * run.amplitude, 3) + " mm"
-                                                           : "V = " + parts::number(run.amplitude, 3) + " m/s";
-    out.emplace_back("largest power at " + amplitude,
-                     best ? fmt::format("{} W at {} Hz", parts::number(best->power, 3), parts::number(best->frequency_hz, 3))
-                          : std::string("none converged"));
-  }
+/// The mass, the largest power at each amplitude, the damper's modes, the points converged.
+std::vector<Fact> sweep_key_figures(const ImpedanceReportInput& in, const requests::SweepTally& tally) {
+  std::vector<Fact> out{{"total mass", parts::number(in.damper->total_mass(), 4) + " kg"}};
+  for (Fact& f : parts::largest_power_facts(*in.runs, in.constant_displacement)) out.push_back(std::move(f));
   if (in.modes) {
     std::string stick, slip;
     for (const requests::ModeRow& r : requests::mode_rows(*in.modes)) {
@@ -38,7 +24,7 @@ std::vector<Fact> sweep_key_figures(const ImpedanceReportInput& in) {
     out.emplace_back("damper modes, stick (Hz)", stick.empty() ? "-" : stick);
     out.emplace_back("damper modes, slip (Hz)", slip.empty() ? "-" : slip);
   }
-  out.emplace_back("points converged", fmt::format("{} of {}", converged, points));
+  out.emplace_back("points converged", fmt::format("{} of {}", tally.converged, tally.points));
   return out;
 }
 
@@ -46,19 +32,14 @@ std::vector<Fact> sweep_key_figures(const ImpedanceReportInput& in) {
 
 std::string impedance_report(const ImpedanceReportInput& in, const ReportContext& context) {
   HtmlPage page({"Damper impedance: " + in.damper_name, context.generated_at, context.command});
-  int points = 0, converged = 0;
-  for (const damper::SweepRun& run : *in.runs) {
-    for (const damper::ImpedancePoint& p : run.points) {
-      ++points;
-      converged += p.converged() ? 1 : 0;
-    }
-  }
+  const requests::SweepTally tally = requests::tally(*in.runs);
+  const int points = tally.points, converged = tally.converged;
   const double f0 = in.runs->front().points.front().frequency_hz, f1 = in.runs->front().points.back().frequency_hz;
   page.verdict(converged == points ? "computed" : "incomplete",
                fmt::format(" {} of {} points converged, {} amplitude{} from {} to {} Hz.", converged, points,
                            in.runs->size(), in.runs->size() == 1 ? "" : "s", parts::number(f0, 3), parts::number(f1, 3)),
                converged == points ? Tone::good : Tone::unknown);
-  page.key_figures(sweep_key_figures(in));
+  page.key_figures(sweep_key_figures(in, tally));
   page.section("The damper");
   page.facts(parts::damper_facts(*in.damper));
   page.section("Impedance");

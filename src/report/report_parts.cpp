@@ -80,12 +80,7 @@ std::vector<Fact> span_inputs(const span::Span& s, span::DamperModel model) {
     facts.emplace_back("dampers", "none");
   } else {
     for (const span::SpanDamper& d : s.dampers()) {
-      std::string mass;
-      if (d.damper) {
-        double total = d.damper->description().clamp_mass;
-        for (const damper::ArmDescription& arm : d.damper->description().arms) total += arm.mass;
-        mass = ", " + number(total, 3) + " kg";
-      }
+      const std::string mass = d.damper ? ", " + number(d.damper->total_mass(), 3) + " kg" : std::string();
       facts.emplace_back("damper " + d.name,
                          fmt::format("{} m from the clamp, {}{}; {} model{}", number(d.position, 4),
                                      d.both_ends ? "at both ends" : "at one end", mass, span::damper_model_name(model),
@@ -158,8 +153,10 @@ std::string span_verdict_reason(const span::SpanAnalysis& a) {
   }
 }
 
-Chart span_stress_chart(const span::SpanAnalysis& a, std::string_view title) {
-  const requests::TableValues v = requests::span_table(a.span).values(a.balance.points);
+namespace {
+
+/// The stress chart of the analysis's CSV values `v`.
+Chart stress_chart(const span::SpanAnalysis& a, const requests::TableValues& v, std::string_view title) {
   const std::vector<double> f = column(v, "frequency_hz");
   const span::Conductor& c = a.span.conductor();
   Chart chart(std::string(title), Axis("frequency (Hz)", true), Axis("fymax stress at the clamp (MPa)"));
@@ -171,6 +168,12 @@ Chart span_stress_chart(const span::SpanAnalysis& a, std::string_view title) {
   return chart;
 }
 
+}  // namespace
+
+Chart span_stress_chart(const span::SpanAnalysis& a, std::string_view title) {
+  return stress_chart(a, requests::span_table(a.span).values(a.balance.points), title);
+}
+
 void span_figures(HtmlPage& page, const span::SpanAnalysis& a, std::string_view name) {
   const requests::TableValues v = requests::span_table(a.span).values(a.balance.points);
   const std::vector<double> f = column(v, "frequency_hz");
@@ -180,7 +183,7 @@ void span_figures(HtmlPage& page, const span::SpanAnalysis& a, std::string_view 
   if (!a.span.dampers().empty()) title += ", dampers at " + positions_text(a.span);
   if (m.converged > 0) title += fmt::format(", max {} at {} Hz", megapascal(m.max_stress_fymax), number(m.max_stress_frequency_hz, 3));
   if (a.span.fatigue().life && m.life) title += ", life " + years(m.life->life_years);
-  page.figure(svg(span_stress_chart(a, title)),
+  page.figure(svg(stress_chart(a, v, title)),
               "The fymax bending stress at the span clamp over the wind band, with and without the dampers, against "
               "the endurance limit; the right axis gives the same as the outer wires' peak-to-peak strain. A gap is "
               "a point that did not converge.");
@@ -242,14 +245,8 @@ std::string amplitude_label(double amplitude, bool constant_displacement) {
 
 }  // namespace
 
-double damper_mass(const damper::Damper& d) {
-  double total = d.description().clamp_mass;
-  for (const damper::ArmDescription& arm : d.description().arms) total += arm.mass;
-  return total;
-}
-
 std::vector<Fact> damper_facts(const damper::Damper& d) {
-  std::vector<Fact> out{{"total mass", number(damper_mass(d), 4) + " kg"},
+  std::vector<Fact> out{{"total mass", number(d.total_mass(), 4) + " kg"},
                         {"clamp mass", number(d.description().clamp_mass, 4) + " kg"}};
   std::size_t k = 0;
   for (const damper::ArmDescription& arm : d.description().arms) {
@@ -262,6 +259,20 @@ std::vector<Fact> damper_facts(const damper::Damper& d) {
                                  "elements, EI at the clamp {} N m² slipping, {} N m² sticking",
                                  number(arm.mass, 4), number(arm.inertia, 3), number(1e3 * arm.offset, 3),
                                  number(1e3 * c.length, 4), c.jenkin.size(), number(c.ei.at(0.0), 3), number(stick, 3)));
+  }
+  return out;
+}
+
+std::vector<Fact> largest_power_facts(const std::vector<damper::SweepRun>& runs, bool constant_displacement) {
+  std::vector<Fact> out;
+  for (const damper::SweepRun& run : runs) {
+    const damper::ImpedancePoint* best = nullptr;
+    for (const damper::ImpedancePoint& p : run.points) {
+      if (p.converged() && (!best || p.power > best->power)) best = &p;
+    }
+    out.emplace_back("largest power at " + amplitude_label(run.amplitude, constant_displacement),
+                     best ? fmt::format("{} W at {} Hz", number(best->power, 3), number(best->frequency_hz, 3))
+                          : std::string("none converged"));
   }
   return out;
 }

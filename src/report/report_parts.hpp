@@ -49,7 +49,10 @@ std::vector<std::string> span_failures(const span::SpanAnalysis& analysis, std::
 /// The damper's numbers: its total mass, the clamp's, each arm's mass, inertia,
 /// offset and messenger.
 std::vector<Fact> damper_facts(const damper::Damper& damper);
-double damper_mass(const damper::Damper& damper);
+
+/// Per amplitude, the largest power the damper takes and its frequency, over the
+/// converged points ("none converged" where there is none).
+std::vector<Fact> largest_power_facts(const std::vector<damper::SweepRun>& runs, bool constant_displacement);
 
 /// |Z| and phase, and the power, over frequency, a curve per amplitude.
 void impedance_figures(HtmlPage& page, const damper::Damper& damper, const std::vector<damper::SweepRun>& runs,

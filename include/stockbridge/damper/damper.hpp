@@ -83,6 +83,8 @@ class Damper {
 
   const DamperDescription& description() const { return description_; }
   double clamp_mass() const { return description_.clamp_mass; }
+  /// The clamp's and every arm's mass, kg.
+  double total_mass() const;
   const std::vector<Arm>& arms() const { return arms_; }
   /// The arm's name from the description, or "arm <k+1>" where it has none.
   std::string arm_name(std::size_t k) const;
