@@ -52,7 +52,7 @@ BoucWenParameters validated_bouc_wen(BoucWenParameters parameters) {
 }  // namespace
 
 BoucWenSection::BoucWenSection(BoucWenParameters parameters)
-    : parameters_(validated_bouc_wen(std::move(parameters))), state_(BoucWenState::virgin(parameters_)) {}
+    : CommittedSectionLaw(BoucWenState::virgin(validated_bouc_wen(parameters))), parameters_(std::move(parameters)) {}
 
 void BoucWenSection::set_trial_curvature(double curvature) {
   require_finite("curvature", curvature, "1/m");

@@ -14,8 +14,7 @@ MasingParameters validated(MasingParameters parameters) {
 }  // namespace
 
 MasingSection::MasingSection(MasingParameters parameters)
-    : parameters_(validated(std::move(parameters))),
-      state_(SectionState::virgin(parameters_)) {}
+    : CommittedSectionLaw(SectionState::virgin(validated(parameters))), parameters_(std::move(parameters)) {}
 
 void MasingSection::set_trial_curvature(double curvature) {
   require_finite("curvature", curvature, "1/m");

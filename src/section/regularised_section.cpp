@@ -33,9 +33,9 @@ double rate_factor(double h_value, double slip, double direction, double exponen
 }  // namespace
 
 RegularisedSection::RegularisedSection(MasingParameters parameters, RegularisedOptions options)
-    : parameters_(validated(std::move(parameters), options)),
-      options_(options),
-      state_(SectionState::virgin(parameters_)) {}
+    : CommittedSectionLaw(SectionState::virgin(validated(parameters, options))),
+      parameters_(std::move(parameters)),
+      options_(options) {}
 
 void RegularisedSection::set_trial_curvature(double curvature) {
   require_finite("curvature", curvature, "1/m");

@@ -42,25 +42,17 @@ struct BoucWenState {
 /// The exact state at `curvature` reached monotonically from `from`.
 BoucWenState bouc_wen_update(const BoucWenParameters& parameters, const BoucWenState& from, double curvature);
 
-class BoucWenSection final : public SectionLaw {
+class BoucWenSection final : public CommittedSectionLaw<BoucWenState> {
  public:
   /// Validates the parameters (InvalidParameter) and starts from the virgin state.
   explicit BoucWenSection(BoucWenParameters parameters);
 
   void set_trial_curvature(double curvature) override;
-  double curvature() const override { return state_.trial().curvature; }
-  double moment() const override { return state_.trial().moment; }
-  double tangent() const override { return state_.trial().tangent; }
-  double dissipated_energy() const override { return state_.trial().dissipated; }
-  void commit() override { state_.commit(); }
-  void revert_to_last_commit() override { state_.revert_to_last_commit(); }
-
   const BoucWenParameters& parameters() const { return parameters_; }
   double eta() const { return state_.trial().eta; }
 
  private:
   BoucWenParameters parameters_;
-  Committable<BoucWenState> state_;
 };
 
 }  // namespace stockbridge::section

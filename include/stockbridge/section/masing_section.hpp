@@ -8,7 +8,7 @@
 
 namespace stockbridge::section {
 
-class MasingSection final : public SectionLaw {
+class MasingSection final : public CommittedSectionLaw<SectionState> {
  public:
   /// Validates the parameters (InvalidParameter) and starts from the virgin state.
   explicit MasingSection(MasingParameters parameters);
@@ -17,20 +17,12 @@ class MasingSection final : public SectionLaw {
   /// Moment-driven trial: the exact curvature at which the section carries `moment`.
   void set_trial_moment(double moment);
 
-  double curvature() const override { return state_.trial().curvature; }
-  double moment() const override { return state_.trial().moment; }
-  double tangent() const override { return state_.trial().tangent; }
-  double dissipated_energy() const override { return state_.trial().dissipated; }
-  void commit() override { state_.commit(); }
-  void revert_to_last_commit() override { state_.revert_to_last_commit(); }
-
   const MasingParameters& parameters() const { return parameters_; }
   const SectionState& committed_state() const { return state_.committed(); }
   const SectionState& trial_state() const { return state_.trial(); }
 
  private:
   MasingParameters parameters_;
-  Committable<SectionState> state_;
 };
 
 }  // namespace stockbridge::section

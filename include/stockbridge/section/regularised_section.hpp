@@ -21,25 +21,17 @@ struct RegularisedOptions {
   void validate() const;
 };
 
-class RegularisedSection final : public SectionLaw {
+class RegularisedSection final : public CommittedSectionLaw<SectionState> {
  public:
   RegularisedSection(MasingParameters parameters, RegularisedOptions options);
 
   void set_trial_curvature(double curvature) override;
-  double curvature() const override { return state_.trial().curvature; }
-  double moment() const override { return state_.trial().moment; }
-  double tangent() const override { return state_.trial().tangent; }
-  double dissipated_energy() const override { return state_.trial().dissipated; }
-  void commit() override { state_.commit(); }
-  void revert_to_last_commit() override { state_.revert_to_last_commit(); }
-
   const MasingParameters& parameters() const { return parameters_; }
   const RegularisedOptions& options() const { return options_; }
 
  private:
   MasingParameters parameters_;
   RegularisedOptions options_;
-  Committable<SectionState> state_;
 };
 
 }  // namespace stockbridge::section

@@ -3,6 +3,10 @@
 // law at run time (the `loop` command): trial curvature in, moment and tangent out,
 // then commit or revert. Hot loops (the cable) use the exact kernels directly.
 
+#include <utility>
+
+#include "stockbridge/section/committable.hpp"
+
 namespace stockbridge::section {
 
 class SectionLaw {
@@ -18,6 +22,24 @@ class SectionLaw {
   virtual double dissipated_energy() const = 0;
   virtual void commit() = 0;
   virtual void revert_to_last_commit() = 0;
+};
+
+/// The protocol over a committed and a trial state whose fields are named as
+/// SectionState's (curvature, moment, tangent, dissipated): a law writes only its
+/// constructor and its trial update.
+template <class State>
+class CommittedSectionLaw : public SectionLaw {
+ public:
+  double curvature() const override { return state_.trial().curvature; }
+  double moment() const override { return state_.trial().moment; }
+  double tangent() const override { return state_.trial().tangent; }
+  double dissipated_energy() const override { return state_.trial().dissipated; }
+  void commit() override { state_.commit(); }
+  void revert_to_last_commit() override { state_.revert_to_last_commit(); }
+
+ protected:
+  explicit CommittedSectionLaw(State initial) : state_(std::move(initial)) {}
+  Committable<State> state_;
 };
 
 }  // namespace stockbridge::section
