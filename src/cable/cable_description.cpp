@@ -6,10 +6,59 @@
 
 namespace stockbridge::cable {
 
+std::string_view section_law_name(SectionLawKind law) { return law == SectionLawKind::bouc_wen ? "bouc-wen" : "masing"; }
+
+namespace {
+
+/// A field of one law set on a cable of the other.
+[[noreturn]] void throw_other_law(std::string_view field, SectionLawKind law) {
+  throw InvalidParameter(std::string(field),
+                         fmt::format(": not a number of the {} law (law = \"{}\"): {}", section_law_name(law),
+                                     section_law_name(law),
+                                     law == SectionLawKind::masing ? "it takes ei and jenkin"
+                                                                   : "it takes ei_min, ei_max and chi0"));
+}
+
+bool is_unset(const Profile& p) { return p == Profile::constant(0.0); }
+
+/// ei_max >= ei_min everywhere: both piecewise linear and held beyond their ends, so
+/// their difference is too, with its corners at either table's points.
+void require_ei_max_at_least_ei_min(const BoucWenProfiles& p) {
+  std::vector<double> corners(p.ei_min.positions().begin(), p.ei_min.positions().end());
+  corners.insert(corners.end(), p.ei_max.positions().begin(), p.ei_max.positions().end());
+  for (double s : corners) {
+    if (p.ei_max.at(s) < p.ei_min.at(s)) {
+      throw InvalidParameter("ei_max", fmt::format(" = {} at s = {} m: below ei_min = {} N m^2 there (EI_max is the "
+                                                   "no-slip stiffness, EI_min the free wires')",
+                                                   p.ei_max.at(s), s, p.ei_min.at(s)));
+    }
+  }
+}
+
+void validate_bouc_wen(const CableDescription& d) {
+  if (!is_unset(d.ei)) throw_other_law("ei", d.law);
+  if (!d.jenkin.empty()) throw_other_law("jenkin", d.law);
+  if (d.lever_arm_cap) throw_other_law("lever_arm_cap", d.law);
+  const auto plausible = [](const char* unit) {
+    return [unit](std::string_view name, double v) { require_plausible(name, v, unit); };
+  };
+  d.bouc_wen.ei_min.check_values("ei_min", plausible("N m^2"));
+  d.bouc_wen.ei_max.check_values("ei_max", plausible("N m^2"));
+  d.bouc_wen.chi0.check_values("chi0", plausible("1/m"));
+  require_ei_max_at_least_ei_min(d.bouc_wen);
+}
+
+}  // namespace
+
 void CableDescription::validate() const {
   require_plausible("length", length, "m");
   require_in_range("sections", sections, min_sections, max_sections);
-  ei.check_values("ei", [](std::string_view name, double v) { require_plausible(name, v, "N m^2"); });
+  if (law == SectionLawKind::bouc_wen) {
+    validate_bouc_wen(*this);
+  } else {
+    if (!(bouc_wen == BoucWenProfiles{})) throw_other_law("ei_min", law);
+    ei.check_values("ei", [](std::string_view name, double v) { require_plausible(name, v, "N m^2"); });
+  }
   for (std::size_t j = 0; j < jenkin.size(); ++j) {
     const std::string name = fmt::format("jenkin[{}]", j);
     jenkin[j].c.check_values(name + ".c", [](std::string_view n, double v) { require_plausible(n, v, "N m^2"); });
@@ -32,7 +81,13 @@ std::vector<UnusualValue> CableDescription::unusual_values() const {
     return [&found, &range](std::string_view name, double v) { check_typical(found, std::string(name), v, range); };
   };
   check_typical(found, "length", length, typical::cable_length);
-  ei.check_values("ei", check(typical::ei));
+  if (law == SectionLawKind::bouc_wen) {
+    bouc_wen.ei_min.check_values("ei_min", check(typical::ei));
+    bouc_wen.ei_max.check_values("ei_max", check(typical::ei));
+    bouc_wen.chi0.check_values("chi0", check(typical::bouc_wen_chi0));
+  } else {
+    ei.check_values("ei", check(typical::ei));
+  }
   for (std::size_t j = 0; j < jenkin.size(); ++j) {
     const std::string name = fmt::format("jenkin[{}]", j);
     jenkin[j].c.check_values(name + ".c", check(typical::jenkin_c));
@@ -61,6 +116,16 @@ CableDescription CableDescription::uniform(double length, int sections, double e
   d.sections = sections;
   d.ei = Profile::constant(ei);
   for (const auto& [c, h] : jenkin_c_h) d.jenkin.push_back({Profile::constant(c), Profile::constant(h), 0.0});
+  return d;
+}
+
+CableDescription CableDescription::uniform_bouc_wen(double length, int sections, double ei_min, double ei_max,
+                                                    double chi0) {
+  CableDescription d;
+  d.length = length;
+  d.sections = sections;
+  d.law = SectionLawKind::bouc_wen;
+  d.bouc_wen = {Profile::constant(ei_min), Profile::constant(ei_max), Profile::constant(chi0)};
   return d;
 }
 

@@ -8,42 +8,11 @@
 
 #include <Eigen/LU>
 
+#include "cable_sums.hpp"
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::cable {
 
-namespace {
-
-/// The quadrature sums along the cable for one state: the tip kinematics
-/// phi = int kappa, x = int (l - s) kappa, the flexibility int [1; l-s] (1/k_t) [1, -s],
-/// and the dissipation.
-struct CableSums {
-  double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
-  Eigen::Matrix2d flexibility = Eigen::Matrix2d::Zero();
-
-  void add(double weight, double s, double length, double curvature, double compliance, double dissipated_per_length) {
-    const double arm = length - s;
-    rotation += weight * curvature;
-    deflection += weight * arm * curvature;
-    dissipated += weight * dissipated_per_length;
-    const double g = weight * compliance;
-    flexibility(0, 0) += g;
-    flexibility(0, 1) -= g * s;
-    flexibility(1, 0) += g * arm;
-    flexibility(1, 1) -= g * arm * s;
-  }
-
-  void store(double clamp_moment, double tip_force, const CableState& from, CableState& to) const {
-    to.clamp_moment = clamp_moment;
-    to.tip_force = tip_force;
-    to.rotation = rotation;
-    to.deflection = deflection;
-    to.flexibility = flexibility;
-    to.dissipated = from.dissipated + dissipated;
-  }
-};
-
-}  // namespace
 
 Eigen::Matrix2d tip_flexibility(const Cable& cable, std::span<const double> tangent) {
   CableSums sums;
@@ -57,13 +26,9 @@ CableState CableState::virgin(const Cable& cable) {
   const std::size_t n = cable.sections();
   CableState state;
   state.curvature.assign(n, 0.0);
-  state.hysteretic.assign(n * cable.elements(), 0.0);
+  state.hysteretic.assign(n * cable.law().internal_variables(), 0.0);
   state.tangent.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    double k = cable.ei(i);
-    for (const section::Jenkin& e : cable.jenkin(i)) k += e.c;
-    state.tangent[i] = k;
-  }
+  for (std::size_t i = 0; i < n; ++i) state.tangent[i] = cable.law().stick_stiffness(i);
   state.flexibility = tip_flexibility(cable, state.tangent);
   return state;
 }
@@ -99,140 +64,9 @@ Eigen::Matrix2d tip_stiffness(const Eigen::Matrix2d& flexibility, double length)
   return out;
 }
 
-namespace {
-
-// Branchless selection for the vectorised loop below: a comparison becomes an all-ones
-// or all-zero mask and picks the bits of one of two values (exactly that value). With
-// `?:` the compiler moves the loads and sums a choice needs into branches, and a loop
-// with branches does not run on vectors.
-inline std::uint64_t lane_mask(bool condition) { return -static_cast<std::uint64_t>(condition); }
-inline double lane_pick(std::uint64_t mask, double if_set, double otherwise) {
-  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(if_set) & mask) |
-                               (std::bit_cast<std::uint64_t>(otherwise) & ~mask));
-}
-
-// x86-64 builds carry an AVX2 copy of the loop chosen at load time where the processor
-// has it (4 sections a step); the baseline copy serves every other x86-64 processor.
-// Not under ThreadSanitizer: the loader runs the copy's resolver before the sanitizer's
-// runtime is up, and the program dies before main.
-#if defined(__has_feature)
-#if __has_feature(thread_sanitizer)
-#define STOCKBRIDGE_THREAD_SANITIZER 1
-#endif
-#endif
-#if defined(__SANITIZE_THREAD__)
-#define STOCKBRIDGE_THREAD_SANITIZER 1
-#endif
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(STOCKBRIDGE_THREAD_SANITIZER)
-#define STOCKBRIDGE_SECTION_LOOP_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define STOCKBRIDGE_SECTION_LOOP_CLONES
-#endif
-
-/// apply_loads for cables of one element per section and constant slip moments: each
-/// section in closed form (the elastic trial sticks if it stays inside the slip limit,
-/// the classification of section::jenkin_slips, else the element slips at +-h and only
-/// ei resists), without branches, so that the loop over the sections runs on vectors;
-/// the sums of CableSums with the weights multiplied out in the columns.
-STOCKBRIDGE_SECTION_LOOP_CLONES
-void apply_loads_one_element(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
-                             CableState& to) {
-  const OneElementColumns& col = cable.one_element_columns();
-  const std::size_t n = cable.sections();
-  const double d_clamp_moment = clamp_moment - from.clamp_moment;
-  const double d_tip_force = tip_force - from.tip_force;
-  // Raw pointers: the vectoriser must not reload a vector's data from `col` after a store.
-  const double *c = col.c.data(), *h = col.h.data(), *ei = col.ei.data(), *stick_stiffness = col.stick_stiffness.data();
-  const double *slip_compliance = col.slip_compliance.data(), *stick_compliance = col.stick_compliance.data();
-  const double *s = col.position.data(), *w = col.weight.data(), *w_s = col.weight_position.data();
-  const double *w_arm = col.weight_arm.data(), *w_arm_s = col.weight_arm_position.data();
-  const double* kappa_from = from.curvature.data();
-  const double* h_from = from.hysteretic.data();
-  double* kappa_to = to.curvature.data();
-  double* h_to = to.hysteretic.data();
-  double* tangent_to = to.tangent.data();
-  double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
-  double f00 = 0.0, f01 = 0.0, f10 = 0.0, f11 = 0.0;  // flexibility, f01 and f11 negated
-#pragma omp simd reduction(+ : rotation, deflection, dissipated, f00, f01, f10, f11)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double excess = d_clamp_moment - d_tip_force * s[i];
-    const double dk_stick = excess * stick_compliance[i];
-    const double elastic = h_from[i] + c[i] * dk_stick;
-    const std::uint64_t slips = (lane_mask(dk_stick > 0.0) & lane_mask(elastic >= h[i])) |
-                                (lane_mask(dk_stick < 0.0) & lane_mask(elastic <= -h[i]));
-    const double bound = std::copysign(h[i], dk_stick);  // +-h, the slip moment reached
-    const double dk_slip = (excess - (bound - h_from[i])) * slip_compliance[i];
-    const double slip_dissipation = bound * (h_from[i] + c[i] * dk_slip - bound) / c[i];
-    const double kappa = kappa_from[i] + lane_pick(slips, dk_slip, dk_stick);
-    const double compliance = lane_pick(slips, slip_compliance[i], stick_compliance[i]);
-    kappa_to[i] = kappa;
-    h_to[i] = lane_pick(slips, bound, elastic);
-    tangent_to[i] = lane_pick(slips, ei[i], stick_stiffness[i]);
-    rotation += w[i] * kappa;
-    deflection += w_arm[i] * kappa;
-    dissipated += w[i] * lane_pick(slips, slip_dissipation, 0.0);
-    f00 += w[i] * compliance;
-    f01 += w_s[i] * compliance;
-    f10 += w_arm[i] * compliance;
-    f11 += w_arm_s[i] * compliance;
-  }
-  to.clamp_moment = clamp_moment;
-  to.tip_force = tip_force;
-  to.rotation = rotation;
-  to.deflection = deflection;
-  to.flexibility << f00, -f01, f10, -f11;
-  to.dissipated = from.dissipated + dissipated;
-}
-
-}  // namespace
-
-void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
-                 CableState& to, CableWorkspace& workspace) {
-  if (cable.elements() == 1 && !cable.modified_masing()) {
-    apply_loads_one_element(cable, from, clamp_moment, tip_force, to);
-    return;
-  }
-  const std::size_t n = cable.sections();
-  const std::size_t m = cable.elements();
-  const double l = cable.length();
-  const auto s = cable.positions();
-  const auto w = cable.weights();
-  if (cable.modified_masing() && workspace.jenkin.size() < m) {
-    workspace.jenkin.resize(m);
-    workspace.hysteretic.resize(m);
-  }
-  const double lever_cap = cable.description().lever_arm_limit();
-  const double d_clamp_moment = clamp_moment - from.clamp_moment;
-  const double d_tip_force = tip_force - from.tip_force;
-  CableSums sums;
-  for (std::size_t i = 0; i < n; ++i) {
-    // Every state came from loads (T, F), so the committed moment is T - F s exactly.
-    double excess = d_clamp_moment - d_tip_force * s[i];
-    std::span<const section::Jenkin> jenkin = cable.jenkin(i);
-    std::span<const double> h_from = std::span<const double>(from.hysteretic).subspan(i * m, m);
-    if (cable.modified_masing()) {
-      const double moment = clamp_moment - tip_force * s[i];
-      const double lever = tip_force != 0.0 ? std::min(std::abs(moment / tip_force), lever_cap) : lever_cap;
-      for (std::size_t j = 0; j < m; ++j) {
-        const double h = jenkin[j].h + cable.k0()[j] * lever;
-        workspace.jenkin[j] = {jenkin[j].c, h};
-        workspace.hysteretic[j] = std::clamp(h_from[j], -h, h);
-      }
-      jenkin = std::span<const section::Jenkin>(workspace.jenkin).first(m);
-      h_from = std::span<const double>(workspace.hysteretic).first(m);
-      for (std::size_t j = 0; j < m; ++j) excess -= h_from[j] - from.hysteretic[i * m + j];  // moments set back
-    }
-    double dk = 0.0;
-    section::solve_curvature_increment(cable.ei(i), jenkin, h_from, excess, dk);  // ei > 0: always solvable
-    const section::JenkinStep step =
-        section::jenkin_step(jenkin, h_from, dk, std::span<double>(to.hysteretic).subspan(i * m, m));
-    const double kappa = from.curvature[i] + dk;
-    const double tangent = cable.ei(i) + step.stick_stiffness;
-    to.curvature[i] = kappa;
-    to.tangent[i] = tangent;
-    sums.add(w[i], s[i], l, kappa, 1.0 / tangent, step.dissipated);
-  }
-  sums.store(clamp_moment, tip_force, from, to);
+void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force, CableState& to,
+                 CableWorkspace& workspace) {
+  cable.law().apply_loads(cable, from, clamp_moment, tip_force, to, workspace);
 }
 
 void CantileverOptions::validate() const {

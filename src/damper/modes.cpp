@@ -20,11 +20,7 @@ namespace {
 std::vector<double> limit_tangents(const cable::Cable& cable, CableLimit limit) {
   std::vector<double> tangent(cable.sections());
   for (std::size_t i = 0; i < cable.sections(); ++i) {
-    double k = cable.ei(i);
-    if (limit == CableLimit::stick) {
-      for (const section::Jenkin& e : cable.jenkin(i)) k += e.c;
-    }
-    tangent[i] = k;
+    tangent[i] = limit == CableLimit::stick ? cable.law().stick_stiffness(i) : cable.law().slip_stiffness(i);
   }
   return tangent;
 }

@@ -10,7 +10,8 @@
 
 namespace stockbridge::damper {
 
-PeriodicCable::PeriodicCable(const cable::Cable& cable, cable::CantileverOptions options) : cantilever_(cable, options) {}
+PeriodicCable::PeriodicCable(const cable::Cable& cable, cable::CantileverOptions options)
+    : cantilever_(cable, options), sensitivity_(cantilever_.cable().law().load_sensitivity(cantilever_.cable())) {}
 
 PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, int passes,
                                             const cable::CableState* start, const Eigen::MatrixXd* basis,
@@ -18,18 +19,10 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
   require_in_range("passes", passes, 1, 100000);
   const int n_samples = static_cast<int>(kinematics.cols());
   const bool half_wave = symmetry == PathSymmetry::half_wave;
-  const std::size_t n_sections = cable().sections();
-  const std::size_t m = cable().elements();
   const bool with_sensitivity = basis && sensitivity;
   if (with_sensitivity) {
     const Eigen::Index p = 2 * basis->cols();
-    anchor_.setZero(p, static_cast<Eigen::Index>(n_sections * m));
-    pending_.assign(n_sections * m, 0);
-    pending_compliance_.assign(n_sections, 0.0);
-    contribution_.setZero(p, static_cast<Eigen::Index>(n_sections));
-    counted_sticking_.assign(n_sections * m, kNotCounted);
-    sticking_sum_phi_.setZero(p);
-    sticking_sum_x_.setZero(p);
+    sensitivity_->start(p);
     sensitivity->resize(2 * n_samples, p);
   }
   PeriodicCableResult result;
@@ -46,7 +39,7 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
     summary.periods = k;
     const double dissipated_before = cantilever_.committed().dissipated;
     if (k == passes) period_start_ = cantilever_.committed();
-    if (with_sensitivity) resum_sticking();  // no round-off carried from pass to pass
+    if (with_sensitivity) sensitivity_->begin_pass();
     std::size_t next_turn = 0;
     for (int j = 0; j < n_samples; ++j) {
       // The path's turning points before this sample, then the sample.
@@ -107,45 +100,19 @@ bool PeriodicCable::drive_to(const Eigen::Vector2d& tip, int sample, bool with_s
 
 void PeriodicCable::mirror(bool with_sensitivity) {
   cantilever_.mirror();
-  if (!with_sensitivity) return;
-  anchor_ = -anchor_;
-  contribution_ = -contribution_;
-  sticking_sum_phi_ = -sticking_sum_phi_;
-  sticking_sum_x_ = -sticking_sum_x_;
-  previous_d_clamp_moment_ = -previous_d_clamp_moment_;
-  previous_d_tip_force_ = -previous_d_tip_force_;
+  if (with_sensitivity) sensitivity_->mirror();
 }
 
 double PeriodicCable::state_change(const cable::CableState& start, const cable::CableState& end) const {
-  const std::size_t m = cable().elements();
-  double curvature_scale = 0.0, curvature_change = 0.0, moment_change = 0.0;
+  double curvature_scale = 0.0, curvature_change = 0.0;
   for (std::size_t i = 0; i < cable().sections(); ++i) {
     curvature_scale = std::max(curvature_scale, std::abs(end.curvature[i]));
     curvature_change = std::max(curvature_change, std::abs(end.curvature[i] - start.curvature[i]));
-    const auto jenkin = cable().jenkin(i);
-    for (std::size_t e = 0; e < m; ++e) {
-      moment_change = std::max(moment_change,
-                               std::abs(end.hysteretic[i * m + e] - start.hysteretic[i * m + e]) / jenkin[e].h);
-    }
   }
-  return std::max(curvature_scale > 0.0 ? curvature_change / curvature_scale : 0.0, moment_change);
+  return std::max(curvature_scale > 0.0 ? curvature_change / curvature_scale : 0.0,
+                  cable().law().internal_change(start, end));
 }
 
-// On the current piece of the piecewise-linear cable map (sticking sets fixed),
-// per section i with tangent k_i = ei + sum_{sticking e} c_e, the moment-driven
-// update gives kappa_new = a_i + M_i / k_i with M_i = T - F s_i, and the tip
-// kinematics u = sum_i w_i [1; l - s_i] kappa_new,i close it.
-//
-// Sensitivities are kept through "anchors": while element e sticks, its moment is
-// H = H_anchor + c_e (kappa - kappa_anchor), where the anchor is the end of its last
-// slip (where H = +-h does not depend on the path) or the start of the evaluation
-// (whose state is held fixed). Hence dH_e = c_e (d kappa - A_e) with A_e = d kappa at
-// the anchor, and the derivative of a_i reduces to
-//     da_i = sum_{sticking e} (c_e / k_i) A_e,
-// so that d(T, F) = J^-1 (du - sum_i w_i [1; l - s_i] da_i), J the flexibility.
-// When e slips, A_e becomes the new d kappa = da_i + dM_i / k_i. A section whose
-// elements all slip contributes nothing; its anchors are set lazily, from the
-// step's (dT, dF), only when an element sticks again.
 void PeriodicCable::set_sample_derivative(const Eigen::MatrixXd& basis, int sample) {
   // du/dq for this sample: q(2c + d) scaled by basis(sample, c).
   rhs_phi_.setZero(2 * basis.cols());
@@ -156,133 +123,12 @@ void PeriodicCable::set_sample_derivative(const Eigen::MatrixXd& basis, int samp
   }
 }
 
-// Which elements stick in the step `from` -> `to`; where a section's sticking set
-// changed or an element sticks again after a step in which its whole section slipped
-// (its anchor set from that step's load derivatives), the section is recounted.
-void PeriodicCable::update_sticking(const cable::CableState& from, const cable::CableState& to) {
-  const std::size_t n_sections = cable().sections();
-  const std::size_t m = cable().elements();
-  const auto s = cable().positions();
-  sticking_.resize(n_sections * m);
-  partial_.assign(n_sections, 0);
-  for (std::size_t i = 0; i < n_sections; ++i) {
-    const double dkappa = to.curvature[i] - from.curvature[i];
-    const auto jenkin = cable().jenkin(i);
-    bool any_stick = false, any_slip = false, changed = false;
-    for (std::size_t e = 0; e < m; ++e) {
-      const std::size_t ie = i * m + e;
-      const bool sticks = !section::jenkin_slips(jenkin[e], from.hysteretic[ie], dkappa);
-      sticking_[ie] = sticks;
-      any_stick |= sticks;
-      any_slip |= !sticks;
-      changed |= counted_sticking_[ie] != static_cast<unsigned char>(sticks);
-      if (sticks && pending_[ie]) {  // it slipped in the previous step, in a section where all slipped
-        anchor_.col(static_cast<Eigen::Index>(ie)) =
-            pending_compliance_[i] * (previous_d_clamp_moment_ - s[i] * previous_d_tip_force_);
-        pending_[ie] = 0;
-        changed = true;
-      }
-    }
-    partial_[i] = any_stick && any_slip;
-    if (changed) recount_section(i, to.tangent[i]);
-  }
-}
-
-// update_sticking for one element per section with constant slip moments: the step's
-// tangent says whether the element slipped (exactly ei then, apply_loads), no section is
-// partial, and a slipping section's anchor waits for the step in which it sticks again.
-void PeriodicCable::update_one_element_sticking(const cable::CableState& to) {
-  const std::size_t n_sections = cable().sections();
-  const cable::OneElementColumns& col = cable().one_element_columns();
-  sticking_.resize(n_sections);
-  for (std::size_t i = 0; i < n_sections; ++i) {
-    const bool sticks = to.tangent[i] != col.ei[i];
-    sticking_[i] = sticks;
-    bool changed = counted_sticking_[i] != static_cast<unsigned char>(sticks);
-    if (!sticks) {
-      pending_[i] = 1;
-      pending_compliance_[i] = col.slip_compliance[i];
-    } else if (pending_[i]) {
-      anchor_.col(static_cast<Eigen::Index>(i)) =
-          col.slip_compliance[i] * (previous_d_clamp_moment_ - col.position[i] * previous_d_tip_force_);
-      pending_[i] = 0;
-      changed = true;
-    }
-    if (changed) recount_section(i, to.tangent[i]);
-  }
-}
-
 void PeriodicCable::propagate_sensitivity(const cable::CableState& from, const cable::CableState& to, int sample,
                                           Eigen::MatrixXd* sensitivity) {
-  const std::size_t n_sections = cable().sections();
-  const std::size_t m = cable().elements();
-  const double l = cable().length();
-  const auto s = cable().positions();
-  const bool one_element = !cable().one_element_columns().ei.empty();
-  if (one_element) {
-    update_one_element_sticking(to);
-  } else {
-    update_sticking(from, to);
-  }
-  rhs_phi_ -= sticking_sum_phi_;
-  rhs_x_ -= sticking_sum_x_;
-  const Eigen::Matrix2d inverse = to.flexibility.inverse();
-  d_clamp_moment_ = inverse(0, 0) * rhs_phi_ + inverse(0, 1) * rhs_x_;
-  d_tip_force_ = inverse(1, 0) * rhs_phi_ + inverse(1, 1) * rhs_x_;
-  for (std::size_t i = 0; !one_element && i < n_sections; ++i) {  // one element: done in the sticking update
-    const double k = to.tangent[i];
-    if (partial_[i]) {
-      // d kappa_new = da_i + dM_i / k_i becomes the anchor of every slipping element.
-      a_ = (1.0 / k) * (d_clamp_moment_ - s[i] * d_tip_force_) + contribution_.col(static_cast<Eigen::Index>(i));
-      for (std::size_t e = 0; e < m; ++e) {
-        if (!sticking_[i * m + e]) anchor_.col(static_cast<Eigen::Index>(i * m + e)) = a_;
-      }
-    } else {
-      bool all_slip = true;
-      for (std::size_t e = 0; e < m; ++e) all_slip &= !sticking_[i * m + e];
-      if (all_slip && m > 0) {
-        for (std::size_t e = 0; e < m; ++e) pending_[i * m + e] = 1;
-        pending_compliance_[i] = 1.0 / k;
-      }
-    }
-  }
-  std::swap(previous_d_clamp_moment_, d_clamp_moment_);
-  std::swap(previous_d_tip_force_, d_tip_force_);
+  sensitivity_->step(from, to, rhs_phi_, rhs_x_, d_clamp_moment_, d_tip_force_);
   if (sample < 0) return;
-  sensitivity->row(2 * sample) = previous_d_tip_force_.transpose();
-  sensitivity->row(2 * sample + 1) = (previous_d_clamp_moment_ - l * previous_d_tip_force_).transpose();
-}
-
-// The sticking elements' part of the right-hand side, sum_i w_i [1; l - s_i] da_i
-// with da_i = sum_{sticking e} (c_e / k_i) A_e, changes only where a section's
-// sticking set changes or a sticking element's anchor is set: it is kept as a sum
-// and corrected section by section (O(changes) instead of O(sections) per step).
-void PeriodicCable::recount_section(std::size_t i, double k) {
-  const std::size_t m = cable().elements();
-  const auto jenkin = cable().jenkin(i);
-  const double w = cable().weights()[i], arm = cable().length() - cable().positions()[i];
-  auto contribution = contribution_.col(static_cast<Eigen::Index>(i));
-  a_ = -contribution;
-  contribution.setZero();
-  for (std::size_t e = 0; e < m; ++e) {
-    counted_sticking_[i * m + e] = sticking_[i * m + e];
-    if (sticking_[i * m + e]) contribution += (jenkin[e].c / k) * anchor_.col(static_cast<Eigen::Index>(i * m + e));
-  }
-  a_ += contribution;
-  sticking_sum_phi_ += w * a_;
-  sticking_sum_x_ += (w * arm) * a_;
-}
-
-void PeriodicCable::resum_sticking() {
-  const std::size_t n = cable().sections();
-  const double l = cable().length();
-  sticking_sum_phi_.setZero(contribution_.rows());
-  sticking_sum_x_.setZero(contribution_.rows());
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto c = contribution_.col(static_cast<Eigen::Index>(i));
-    sticking_sum_phi_ += cable().weights()[i] * c;
-    sticking_sum_x_ += (cable().weights()[i] * (l - cable().positions()[i])) * c;
-  }
+  sensitivity->row(2 * sample) = d_tip_force_.transpose();
+  sensitivity->row(2 * sample + 1) = (d_clamp_moment_ - cable().length() * d_tip_force_).transpose();
 }
 
 // The path between samples j and j + 1 is the cubic through u_{j-1} .. u_{j+2} with

@@ -5,6 +5,7 @@
 // modified Masing model's load-dependent slip moment.
 
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "stockbridge/cable/profile.hpp"
@@ -22,6 +23,23 @@ struct JenkinProfile {
   bool operator==(const JenkinProfile&) const = default;
 };
 
+/// The section law of the cable's cross-sections (section-law.md).
+enum class SectionLawKind {
+  masing,    ///< elastic beam ei plus Jenkin elements (MODEL.md sections 1-3)
+  bouc_wen,  ///< RTE's slenderpy: ei_min, ei_max, chi0 (MODEL.md section 13)
+};
+/// "masing" or "bouc-wen", as the files and options spell it.
+std::string_view section_law_name(SectionLawKind law);
+
+/// The Bouc-Wen law's numbers as profiles over s.
+struct BoucWenProfiles {
+  Profile ei_min = Profile::constant(0.0);  ///< the free wires' stiffness, N m^2, > 0
+  Profile ei_max = Profile::constant(0.0);  ///< the no-slip stiffness, N m^2, >= ei_min
+  Profile chi0 = Profile::constant(0.0);    ///< the curvature scale of the transition, 1/m, > 0
+
+  bool operator==(const BoucWenProfiles&) const = default;
+};
+
 /// Integration points along a cable: at least two, since with one Gauss point the
 /// tip's deflection is always l/2 times its rotation (the cable could not be
 /// clamped at one end and guided at the other, as in experiment (b) and the damper).
@@ -31,8 +49,12 @@ inline constexpr int max_sections = 5000;
 struct CableDescription {
   double length = 0.0;   ///< l, m
   int sections = 40;     ///< Gauss-Legendre integration points along the cable
-  Profile ei = Profile::constant(0.0);  ///< N m^2, > 0 everywhere
+  SectionLawKind law = SectionLawKind::masing;
+  /// The Masing law: the elastic part, N m^2, > 0 everywhere, and the Jenkin elements.
+  Profile ei = Profile::constant(0.0);
   std::vector<JenkinProfile> jenkin;
+  /// The Bouc-Wen law's numbers (law == bouc_wen).
+  BoucWenProfiles bouc_wen;
 
   /// Mirror method (3.6): the profiles were identified on a cable of this length
   /// l_id; the cable uses p(s) for s <= l/2 and p(l - s) beyond. Needs l <= 2 l_id.
@@ -41,7 +63,8 @@ struct CableDescription {
   /// Also used where F = 0.
   std::optional<double> lever_arm_cap;
 
-  /// Throws InvalidParameter naming the bad field ("length", "jenkin[0].h.value[2]", ...).
+  /// Throws InvalidParameter naming the bad field ("length", "jenkin[0].h.value[2]",
+  /// "ei_max.value[1]", ...).
   void validate() const;
   /// The position at which the profiles are read for the cable's point s (mirror method).
   double profile_position(double s) const;
@@ -56,6 +79,8 @@ struct CableDescription {
 
   /// The simplest cable: constant parameters.
   static CableDescription uniform(double length, int sections, double ei, std::vector<std::pair<double, double>> jenkin_c_h);
+  /// The simplest Bouc-Wen cable: constant ei_min, ei_max, chi0.
+  static CableDescription uniform_bouc_wen(double length, int sections, double ei_min, double ei_max, double chi0);
 };
 
 }  // namespace stockbridge::cable

@@ -16,6 +16,7 @@
 #include "stockbridge/cable/cable.hpp"
 #include "stockbridge/numerics/solver_summary.hpp"
 #include "stockbridge/section/committable.hpp"
+#include "stockbridge/section/jenkin.hpp"
 
 namespace stockbridge::cable {
 
@@ -30,16 +31,20 @@ struct CableState {
   double dissipated = 0.0;            ///< energy dissipated by all sliders since virgin, J
   std::vector<double> curvature;      ///< kappa at each section, 1/m
   std::vector<double> tangent;        ///< section tangent stiffness, N m^2
-  std::vector<double> hysteretic;     ///< H at each section and element (sections x elements), N m
+  /// The law's internal variables (sections x CableLaw::internal_variables()): the
+  /// Jenkin elements' moments H (N m) of the Masing law, eta of the Bouc-Wen law.
+  std::vector<double> hysteretic;
 
   static CableState virgin(const Cable& cable);
   /// The state under the opposite loads: the law is odd (a Jenkin element's moment
-  /// changes sign with its path, the modified Masing slip moments depend on |M| / |F|),
-  /// so loads, tip kinematics, curvatures and slider moments change sign; tangents,
-  /// flexibility and the energy dissipated stay.
+  /// changes sign with its path, the modified Masing slip moments depend on |M| / |F|,
+  /// Bouc-Wen's eta changes sign with its path), so loads, tip kinematics, curvatures
+  /// and internal variables change sign; tangents, flexibility and the energy
+  /// dissipated stay.
   void mirror();
   /// Halfway to `other` (a state of the same cable): loads, tip kinematics,
-  /// curvatures and slider moments become the means; tangents, flexibility and the
+  /// curvatures and internal variables become the means (a state again: every law's
+  /// moment is linear in them); tangents, flexibility and the
   /// energy dissipated stay this state's.
   void move_halfway_to(const CableState& other);
   /// Q = T - F l, N m.
@@ -48,14 +53,16 @@ struct CableState {
   Eigen::Matrix2d tip_stiffness(double length) const;
 };
 
-/// Scratch space of apply_loads for the modified Masing model (sized on first use).
+/// Scratch space of apply_loads for the modified Masing model (sized on first use;
+/// other laws need none).
 struct CableWorkspace {
   std::vector<section::Jenkin> jenkin;
   std::vector<double> hysteretic;
 };
 
 /// Loads in, state out: every section moves exactly, moment-driven, from `from`
-/// to the moment T - F s_i. Fills every field of `to` (sized like `from`).
+/// to the moment T - F s_i, by the cable's law (CableLaw::apply_loads). Fills every
+/// field of `to` (sized like `from`).
 ///
 /// Modified Masing model (3.7): the slip moments are h0 + k0 min(|M|/|F|, cap),
 /// the cap standing in for |M|/|F| where F = 0; an element whose stored moment

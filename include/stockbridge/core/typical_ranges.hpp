@@ -37,6 +37,7 @@ namespace typical {
 inline constexpr TypicalRange cable_length{"damper cable length", 0.03, 1.0, "m", {}};
 inline constexpr TypicalRange ei{"cable bending stiffness ei", 0.1, 1000.0, "N m^2", {}};
 inline constexpr TypicalRange jenkin_c{"Jenkin element stiffness c", 0.1, 10000.0, "N m^2", {}};
+inline constexpr TypicalRange bouc_wen_chi0{"Bouc-Wen curvature scale chi0", 0.001, 10.0, "1/m", {}};
 inline constexpr TypicalRange jenkin_h{"Jenkin element slip moment h", 0.001, 100.0, "N m", {}};
 inline constexpr TypicalRange clamp_mass{"clamp mass", 0.05, 20.0, "kg", {}};
 inline constexpr TypicalRange arm_mass{"arm mass", 0.05, 20.0, "kg", {}};

@@ -13,12 +13,13 @@
 // Each step is a monotone increment of the exact cable law.
 //
 // Optionally propagates exact forward sensitivities of the loads with respect to
-// parameters p of the path, du_j/dp = (basis row j) per degree of freedom: the
-// map from the path to the loads is piecewise linear, and on each piece its
-// derivative follows from the sticking sets of every section (the moment-driven
-// update solved for the curvature increment, differentiated, with the tip
-// kinematics constraint closing it through the exact flexibility).
+// parameters p of the path, du_j/dp = (basis row j) per degree of freedom, step by
+// step through the cable law's LoadSensitivity (cable_law.hpp): for the Masing law
+// the map from the path to the loads is piecewise linear and its derivative follows
+// from the sticking sets of every section; for a smooth law from each section's
+// state derivatives; the tip kinematics close both through the exact flexibility.
 
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -46,9 +47,9 @@ struct PeriodicCableResult {
   /// determination's report; newton_iterations: the most any state determination
   /// took; periods: periods run in all; periodicity_defect: how far the cable's state
   /// at the end of the last period is from its state at that period's start,
-  /// max |kappa_end - kappa_start| / max |kappa| over the sections, and
-  /// max |H_end - H_start| / h over the elements (zero: every further period repeats
-  /// the last one exactly).
+  /// max |kappa_end - kappa_start| / max |kappa| over the sections, and the law's
+  /// internal_change (Masing: max |H_end - H_start| / h over the elements; Bouc-Wen:
+  /// max |eta_end - eta_start|); zero: every further period repeats the last one exactly.
   SolverSummary summary;
   /// The final period: the tip loads (F, Q), the clamp moment and the clamp
   /// section's curvature and moment per sample, the sliders' dissipation.
@@ -93,13 +94,6 @@ class PeriodicCable {
   void set_sample_derivative(const Eigen::MatrixXd& basis, int sample);
   void propagate_sensitivity(const cable::CableState& from, const cable::CableState& to, int sample,
                              Eigen::MatrixXd* sensitivity);
-  /// The sticking sets of the step `from` -> `to`, sections recounted where they changed.
-  void update_sticking(const cable::CableState& from, const cable::CableState& to);
-  void update_one_element_sticking(const cable::CableState& to);
-  /// Section i's sticking elements' part of the sensitivities' right-hand side, anew.
-  void recount_section(std::size_t i, double k);
-  /// The right-hand side's sticking part summed anew over the sections.
-  void resum_sticking();
 
   double state_change(const cable::CableState& start, const cable::CableState& end) const;
   /// Mirrors the cable and, with it, the sensitivities carried to the next pass.
@@ -111,19 +105,8 @@ class PeriodicCable {
   cable::Cantilever cantilever_;
   cable::CableState period_start_;
   std::vector<TurningPoint> turning_points_;
-  // Sensitivity state (see propagate_sensitivity): the anchor d kappa / dq of every
-  // element (column i*m + e), and the elements whose anchor is still to be set from
-  // the previous step's load derivatives.
-  Eigen::MatrixXd anchor_;
-  std::vector<unsigned char> sticking_, partial_, pending_;
-  std::vector<double> pending_compliance_;
-  // Per section, da_i of its sticking elements (column i), the elements counted in
-  // it (kNotCounted: none yet), and the sums over the sections (recount_section).
-  static constexpr unsigned char kNotCounted = 2;
-  Eigen::MatrixXd contribution_;
-  std::vector<unsigned char> counted_sticking_;
-  Eigen::VectorXd sticking_sum_phi_, sticking_sum_x_;
-  Eigen::VectorXd a_, rhs_phi_, rhs_x_, d_clamp_moment_, d_tip_force_, previous_d_clamp_moment_, previous_d_tip_force_;
+  std::unique_ptr<cable::LoadSensitivity> sensitivity_;
+  Eigen::VectorXd rhs_phi_, rhs_x_, d_clamp_moment_, d_tip_force_;  // du/dq of the step's target, d(T, F)/dq
 };
 
 }  // namespace stockbridge::damper

@@ -1,0 +1,46 @@
+#pragma once
+// The Bouc-Wen law of the cable (RTE's slenderpy, MODEL.md section 13): at each
+// section M = EI_min chi + (EI_max - EI_min) chi0 eta with chi0 d eta = d chi -
+// |d chi| eta. Its internal variable is eta, one a section. A monotone step is
+// exact in closed form in the curvature (section::bouc_wen_update); driven by its
+// moment it solves EI_min u + (EI_max - EI_min) a (1 - e^-u) = s dM / chi0 for the
+// curvature travelled u = |d chi| / chi0 (a = 1 - s eta_from, s the step's sign):
+// the left side is increasing and concave, so Newton's method from below converges
+// monotonically, to round-off in a few steps.
+
+#include <span>
+#include <vector>
+
+#include "stockbridge/cable/cable_description.hpp"
+#include "stockbridge/cable/cable_law.hpp"
+
+namespace stockbridge::cable {
+
+class BoucWenCableLaw final : public CableLaw {
+ public:
+  BoucWenCableLaw(const CableDescription& description, std::span<const double> positions);
+
+  double ei_min(std::size_t i) const { return ei_min_[i]; }
+  double ei_max(std::size_t i) const { return ei_min_[i] + hysteretic_[i]; }
+  double chi0(std::size_t i) const { return chi0_[i]; }
+
+  std::size_t internal_variables() const override { return 1; }
+  double stick_stiffness(std::size_t section) const override { return ei_max(section); }
+  double slip_stiffness(std::size_t section) const override { return ei_min_[section]; }
+  void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force, CableState& to,
+                   CableWorkspace& workspace) const override;
+  double internal_change(const CableState& start, const CableState& end) const override;
+  std::unique_ptr<LoadSensitivity> load_sensitivity(const Cable& cable) const override;
+
+ private:
+  std::vector<double> ei_min_;
+  std::vector<double> hysteretic_;  // EI_max - EI_min, N m^2
+  std::vector<double> chi0_;
+};
+
+/// The curvature travelled, over chi0, by a monotone step that raises a Bouc-Wen
+/// section's moment by `excess` (any sign) from `eta_from`: u >= 0 with
+/// ei_min u + hysteretic a (1 - e^-u) = |excess| / chi0, a = 1 - sign(excess) eta_from.
+double bouc_wen_travel(double ei_min, double hysteretic, double chi0, double eta_from, double excess);
+
+}  // namespace stockbridge::cable
