@@ -1,5 +1,7 @@
 #include "stockbridge/cable/cable_description.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
@@ -100,6 +102,41 @@ std::vector<UnusualValue> CableDescription::unusual_values() const {
 double CableDescription::profile_position(double s) const {
   if (!mirror_length || s <= 0.5 * length) return s;
   return length - s;
+}
+
+std::vector<double> CableDescription::zone_boundaries() const {
+  std::vector<const Profile*> profiles;
+  if (law == SectionLawKind::bouc_wen) {
+    profiles = {&bouc_wen.ei_min, &bouc_wen.ei_max, &bouc_wen.chi0};
+  } else {
+    profiles.push_back(&ei);
+    for (const JenkinProfile& e : jenkin) profiles.insert(profiles.end(), {&e.c, &e.h});
+  }
+  const double ramp = zone_ramp_fraction * length;
+  std::vector<double> boundaries;
+  auto add = [&](double s) {
+    if (s > ramp && s < length - ramp) boundaries.push_back(s);
+  };
+  for (const Profile* p : profiles) {
+    const auto s = p->positions();
+    for (std::size_t k = 1; k < s.size(); ++k) {
+      if (s[k] - s[k - 1] >= ramp) continue;
+      const double middle = 0.5 * (s[k - 1] + s[k]);
+      if (!mirror_length) {
+        add(middle);
+        continue;
+      }
+      if (middle <= 0.5 * length) add(middle);  // read at s on the first half
+      if (middle < 0.5 * length) add(length - middle);  // and at l - s on the second
+    }
+  }
+  std::sort(boundaries.begin(), boundaries.end());
+  // Boundaries closer than a ramp are one (the same zone edge in several profiles).
+  std::vector<double> distinct;
+  for (double b : boundaries) {
+    if (distinct.empty() || b - distinct.back() >= ramp) distinct.push_back(b);
+  }
+  return distinct;
 }
 
 bool CableDescription::uses_modified_masing() const {

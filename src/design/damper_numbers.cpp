@@ -13,7 +13,8 @@ namespace {
 
 constexpr std::string_view kExpected =
     "clamp.mass, or arm.<name or [index]>. followed by mass, inertia, offset, cable.length, cable.ei, "
-    "cable.mirror_length, cable.lever_arm_cap or cable.jenkin[<k>].c, .h, .k0";
+    "cable.mirror_length, cable.lever_arm_cap, cable.jenkin[<k>].c, .h, .k0, or (Bouc-Wen) cable.ei_min, "
+    "cable.ei_max, cable.chi0";
 
 [[noreturn]] void fail(std::string_view path, std::string_view why) {
   throw InvalidParameter(std::string(path), fmt::format(": {}", why));
@@ -53,6 +54,9 @@ struct CableNumber {
 CableNumber cable_number(cable::CableDescription& c, std::string_view field, std::string_view path) {
   if (field == "length") return {&c.length};
   if (field == "ei") return {nullptr, &c.ei};
+  if (field == "ei_min") return {nullptr, &c.bouc_wen.ei_min};
+  if (field == "ei_max") return {nullptr, &c.bouc_wen.ei_max};
+  if (field == "chi0") return {nullptr, &c.bouc_wen.chi0};
   if (field == "mirror_length") return {nullptr, nullptr, &c.mirror_length};
   if (field == "lever_arm_cap") return {nullptr, nullptr, &c.lever_arm_cap};
   if (field.starts_with("jenkin")) {

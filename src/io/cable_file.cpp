@@ -1,5 +1,7 @@
 #include "stockbridge/io/cable_file.hpp"
 
+#include <array>
+
 #include <fmt/format.h>
 
 #include "cable_table.hpp"
@@ -50,12 +52,42 @@ cable::Profile read_profile(const TomlTable& table, std::string_view key) {
   return cable::Profile::constant(table.number(key));
 }
 
+cable::SectionLawKind read_law(const TomlTable& table) {
+  const std::optional<std::string> law = table.optional_string("law");
+  if (!law || *law == "masing") return cable::SectionLawKind::masing;
+  if (*law == "bouc-wen") return cable::SectionLawKind::bouc_wen;
+  table.fail("law", fmt::format("= \"{}\": expected \"masing\" or \"bouc-wen\"", *law));
+}
+
+/// A key of one law in the table of a cable of the other: named, with what the law takes.
+void reject_keys_of_other_law(const TomlTable& table, cable::SectionLawKind law) {
+  const bool bouc_wen = law == cable::SectionLawKind::bouc_wen;
+  static constexpr std::array<std::string_view, 3> masing_keys{"ei", "jenkin", "lever_arm_cap"};
+  static constexpr std::array<std::string_view, 3> bouc_wen_keys{"ei_min", "ei_max", "chi0"};
+  for (std::string_view key : bouc_wen ? masing_keys : bouc_wen_keys) {
+    if (!table.contains(key)) continue;
+    table.fail(key, bouc_wen ? "is a number of the Masing law: law = \"bouc-wen\" takes ei_min, ei_max and chi0"
+                             : fmt::format("is a number of the Bouc-Wen law: set law = \"bouc-wen\"{}",
+                                           table.contains("law") ? "" : " (the default law is \"masing\": ei and jenkin)"));
+  }
+}
+
 }  // namespace
 
 cable::CableDescription read_cable_table(const TomlTable& table) {
   cable::CableDescription d;
+  d.law = read_law(table);
+  reject_keys_of_other_law(table, d.law);
   d.length = table.number("length");
   d.sections = static_cast<int>(table.integer("sections", cable::min_sections, cable::max_sections));
+  if (d.law == cable::SectionLawKind::bouc_wen) {
+    d.bouc_wen.ei_min = read_profile(table, "ei_min");
+    d.bouc_wen.ei_max = read_profile(table, "ei_max");
+    d.bouc_wen.chi0 = read_profile(table, "chi0");
+    d.mirror_length = table.optional_number("mirror_length");
+    table.reject_unknown_keys();
+    return d;
+  }
   d.ei = read_profile(table, "ei");
   for (const TomlTable& element : table.table_array("jenkin", false)) {
     cable::JenkinProfile jenkin;
@@ -114,6 +146,15 @@ CableFile load_cable_text(std::string_view text, std::string_view source) {
 cable::Cable read_cable_text(std::string_view text, std::string_view source) { return load_cable_text(text, source).cable; }
 
 std::string cable_table_toml(const cable::CableDescription& c) {
+  if (c.law == cable::SectionLawKind::bouc_wen) {
+    std::string text = fmt::format(
+        "law = \"bouc-wen\"\nlength = {}   # m\nsections = {}\nei_min = {}   # N m^2\nei_max = {}   # N m^2\n"
+        "chi0 = {}   # 1/m\n",
+        format_value(c.length), c.sections, profile_toml(c.bouc_wen.ei_min), profile_toml(c.bouc_wen.ei_max),
+        profile_toml(c.bouc_wen.chi0));
+    if (c.mirror_length) text += fmt::format("mirror_length = {}   # m\n", format_value(*c.mirror_length));
+    return text;
+  }
   std::string text = fmt::format("length = {}   # m\nsections = {}\nei = {}   # N m^2\njenkin = [", format_value(c.length),
                                  c.sections, profile_toml(c.ei));
   for (std::size_t j = 0; j < c.jenkin.size(); ++j) {

@@ -243,6 +243,19 @@ std::string amplitude_label(double amplitude, bool constant_displacement) {
   return constant_displacement ? "X = " + number(1e3 * amplitude, 3) + " mm" : "V = " + number(amplitude, 3) + " m/s";
 }
 
+/// The messenger's law and its stiffness at the clamp, in words.
+std::string cable_law_summary(const cable::CableDescription& c) {
+  if (c.law == cable::SectionLawKind::bouc_wen) {
+    return fmt::format("Bouc-Wen law, EI at the clamp {} N m² slipping, {} N m² sticking, chi0 {} 1/m",
+                       number(c.bouc_wen.ei_min.at(0.0), 3), number(c.bouc_wen.ei_max.at(0.0), 3),
+                       number(c.bouc_wen.chi0.at(0.0), 3));
+  }
+  double stick = c.ei.at(0.0);
+  for (const cable::JenkinProfile& j : c.jenkin) stick += j.c.at(0.0);
+  return fmt::format("{} Jenkin elements, EI at the clamp {} N m² slipping, {} N m² sticking", c.jenkin.size(),
+                     number(c.ei.at(0.0), 3), number(stick, 3));
+}
+
 }  // namespace
 
 std::vector<Fact> damper_facts(const damper::Damper& d) {
@@ -252,13 +265,10 @@ std::vector<Fact> damper_facts(const damper::Damper& d) {
   for (const damper::ArmDescription& arm : d.description().arms) {
     ++k;
     const cable::CableDescription& c = arm.cable;
-    double stick = c.ei.at(0.0);
-    for (const cable::JenkinProfile& j : c.jenkin) stick += j.c.at(0.0);
     out.emplace_back(fmt::format("arm {}{}", k, arm.name.empty() ? "" : " (" + arm.name + ")"),
-                     fmt::format("mass {} kg, inertia {} kg m², offset {} mm; messenger {} mm long, {} Jenkin "
-                                 "elements, EI at the clamp {} N m² slipping, {} N m² sticking",
+                     fmt::format("mass {} kg, inertia {} kg m², offset {} mm; messenger {} mm long, {}",
                                  number(arm.mass, 4), number(arm.inertia, 3), number(1e3 * arm.offset, 3),
-                                 number(1e3 * c.length, 4), c.jenkin.size(), number(c.ei.at(0.0), 3), number(stick, 3)));
+                                 number(1e3 * c.length, 4), cable_law_summary(c)));
   }
   return out;
 }

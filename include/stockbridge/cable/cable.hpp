@@ -1,6 +1,8 @@
 #pragma once
 // The discretised cable: Gauss-Legendre points s_i with weights w_i along
-// [0, l], and its section law's numbers at each point (the model, constant; its
+// [0, l] (one rule a zone where the profiles jump, CableDescription::zone_boundaries;
+// the sections shared among the zones in proportion to their lengths, at least one
+// each), and its section law's numbers at each point (the model, constant; its
 // state lives in CableState).
 
 #include <memory>

@@ -45,6 +45,8 @@ struct BoucWenProfiles {
 /// clamped at one end and guided at the other, as in experiment (b) and the damper).
 inline constexpr int min_sections = 2;
 inline constexpr int max_sections = 5000;
+/// A profile segment shorter than this fraction of the cable's length is a jump.
+inline constexpr double zone_ramp_fraction = 1e-3;
 
 struct CableDescription {
   double length = 0.0;   ///< l, m
@@ -68,6 +70,12 @@ struct CableDescription {
   void validate() const;
   /// The position at which the profiles are read for the cable's point s (mirror method).
   double profile_position(double s) const;
+  /// Where a profile jumps: the middle of every table segment shorter than
+  /// zone_ramp_fraction of the length (a zone boundary, as slenderpy's messenger
+  /// has), in the cable's coordinate s (mirrored beyond l/2 under the mirror
+  /// method), ascending, strictly inside (0, l). The cable integrates each zone
+  /// with its own Gauss-Legendre rule, so that no quadrature cell straddles a jump.
+  std::vector<double> zone_boundaries() const;
   /// The lever-arm cap in force (m).
   double lever_arm_limit() const { return lever_arm_cap.value_or(length); }
   bool uses_modified_masing() const;
