@@ -615,10 +615,30 @@ PYBIND11_MODULE(_core, m) {
     }
   });
 
-  py::class_<cable::Cable>(m, "Cable", "A cable (length, sections, Masing parameters), validated and discretised")
+  const auto bouc_wen_number = [](cable::Profile cable::BoucWenProfiles::*number) {
+    return [number](const cable::Cable& c) -> std::optional<double> {
+      if (c.description().law != cable::SectionLawKind::bouc_wen) return std::nullopt;
+      return (c.description().bouc_wen.*number).at(0.0);
+    };
+  };
+  py::class_<cable::Cable>(m, "Cable", "A cable (length, sections, section law and its numbers), validated and discretised")
       .def_property_readonly("length", &cable::Cable::length, "m")
       .def_property_readonly("sections", [](const cable::Cable& c) { return c.description().sections; })
-      .def_property_readonly("ei", [](const cable::Cable& c) { return c.description().ei.at(0.0); }, "N m^2 (at the clamp)")
+      .def_property_readonly("law", [](const cable::Cable& c) { return std::string(cable::section_law_name(c.description().law)); },
+                             "'masing' or 'bouc-wen'")
+      .def_property_readonly(
+          "ei",
+          [](const cable::Cable& c) -> std::optional<double> {
+            if (c.description().law != cable::SectionLawKind::masing) return std::nullopt;
+            return c.description().ei.at(0.0);
+          },
+          "N m^2 (at the clamp; None under the Bouc-Wen law)")
+      .def_property_readonly("ei_min", bouc_wen_number(&cable::BoucWenProfiles::ei_min),
+                             "Bouc-Wen: N m^2 (at the clamp; None under the Masing law)")
+      .def_property_readonly("ei_max", bouc_wen_number(&cable::BoucWenProfiles::ei_max),
+                             "Bouc-Wen: N m^2 (at the clamp; None under the Masing law)")
+      .def_property_readonly("chi0", bouc_wen_number(&cable::BoucWenProfiles::chi0),
+                             "Bouc-Wen: 1/m (at the clamp; None under the Masing law)")
       .def_property_readonly(
           "jenkin",
           [](const cable::Cable& c) {

@@ -51,14 +51,20 @@ def _pair(element):
     return c, h
 
 
-def make_cable(length, sections=40, ei=None, jenkin=(), **keys):
-    """A cable with the keys of a cable file's [cable] table: length (m), ei (N m^2),
+def make_cable(length, sections=40, ei=None, jenkin=(), law=None, **keys):
+    """A cable with the keys of a cable file's [cable] table: length (m), sections,
+    and the section law's numbers. The Masing law (the default): ei (N m^2),
     jenkin = [(c, h), ...] or [{"c": ..., "h": ..., "k0": ...}, ...] (N m^2, N m),
-    sections, and optionally mirror_length, lever_arm_cap; any value may be a profile
+    optionally lever_arm_cap. The Bouc-Wen law (law="bouc-wen"): ei_min, ei_max
+    (N m^2) and chi0 (1/m). Optionally mirror_length; any value may be a profile
     {"s": [...], "value": [...]}. Checked exactly as a cable file is (a misspelt or
-    missing key, a bad value: InvalidParameter naming it)."""
+    missing key, a key of the other law, a bad value: InvalidParameter naming it)."""
     elements = [e if isinstance(e, dict) else dict(zip(("c", "h"), _pair(e))) for e in jenkin]
-    entries = {"length": length, "sections": sections, "jenkin": elements, **keys}
+    entries = {"length": length, "sections": sections, **keys}
+    if law is not None:
+        entries = {"law": law, **entries}
+    if elements or law in (None, "masing"):
+        entries["jenkin"] = elements
     if ei is not None:
         entries["ei"] = ei
     return _from_values(_cable_from_toml, _toml.table("cable", entries), "make_cable")

@@ -56,7 +56,7 @@ cable::SectionLawKind read_law(const TomlTable& table) {
   const std::optional<std::string> law = table.optional_string("law");
   if (!law || *law == "masing") return cable::SectionLawKind::masing;
   if (*law == "bouc-wen") return cable::SectionLawKind::bouc_wen;
-  table.fail("law", fmt::format("= \"{}\": expected \"masing\" or \"bouc-wen\"", *law));
+  table.fail("law", fmt::format("\"{}\" is not a section law: expected \"masing\" or \"bouc-wen\"", *law));
 }
 
 /// A key of one law in the table of a cable of the other: named, with what the law takes.

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/csv_table.hpp"
 #include "support/test_scale.hpp"
 
 namespace stockbridge::testing {
@@ -32,49 +33,6 @@ const std::string kHeader =
     "frequency_hz,wind_speed_m_s,wavelength_m,amplitude_m,amplitude_over_diameter,wind_power_w,self_damping_power_w,"
     "damper_power_w,clamp_loop_amplitude_m,damper_clamp_velocity_m_s,stress_fymax_mpa,stress_ps_mpa,"
     "damper_clamp_stress_mpa,undamped_amplitude_m,undamped_stress_fymax_mpa,converged";
-
-/// A CSV file as a header and rows of cells (empty cells as NaN).
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-
-  std::size_t index(const std::string& name) const {
-    for (std::size_t c = 0; c < header.size(); ++c) {
-      if (header[c] == name) return c;
-    }
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-  std::vector<double> column(const std::string& name) const {
-    const std::size_t c = index(name);
-    std::vector<double> values;
-    for (const auto& row : rows) values.push_back(row.at(c));
-    return values;
-  }
-};
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
-Csv read_csv(const std::filesystem::path& path) {
-  Csv csv;
-  std::istringstream in(read_text(path));
-  std::string line;
-  std::getline(in, line);
-  csv.header = split(line);
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    for (const std::string& cell : split(line)) row.push_back(cell.empty() ? std::nan("") : std::strtod(cell.c_str(), nullptr));
-    EXPECT_EQ(row.size(), csv.header.size()) << line;
-    csv.rows.push_back(row);
-  }
-  return csv;
-}
 
 /// The number after "key": in a JSON text (NaN for null or a missing key).
 double span_json_number(const std::string& json, const std::string& key) {
