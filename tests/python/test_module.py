@@ -768,3 +768,34 @@ def test_the_conductor_catalogue_equals_the_programs_json(tmp_path):
     assert sb.load_conductor(str(tmp_path / "drake.toml")) == drake
     with pytest.raises(sb.InvalidParameter, match=r'type = "ACSR Drak": expected a conductor of the catalogue: '):
         sb.conductor("ACSR Drak")
+
+
+def test_a_bouc_wen_cable_from_python_is_the_cable_files_law(tmp_path):
+    """make_cable(law="bouc-wen") reads as a cable file's table does: the Cable
+    names its law and numbers, a damper of it gives the program's impedance of the
+    same damper as a file to round-off, and a key of the other law is refused by name."""
+    cable = sb.make_cable(0.1875, law="bouc-wen", ei_min=2.5, ei_max=25.0, chi0=0.03)
+    assert (cable.law, cable.ei, cable.ei_min, cable.ei_max, cable.chi0) == ("bouc-wen", None, 2.5, 25.0, 0.03)
+    masing = sb.make_cable(0.1875, ei=2.8, jenkin=[(20.0, 0.7)])
+    assert (masing.law, masing.ei, masing.ei_min) == ("masing", 2.8, None)
+    arm = dict(name="left", mass=0.856, inertia=0.001814, offset=0.0325, cable=cable)
+    damper = sb.make_damper(0.7, [arm, dict(arm, name="right")])
+    z = sb.impedance(damper, frequencies=[15.0, 40.0], velocity=0.2)
+    assert z["converged"].all()
+    assert (z["re_z_n_s_m"] > 0).all()
+    arm_text = "mass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\n" + cable.toml()
+    (tmp_path / "damper.toml").write_text("[clamp]\nmass = 0.7\n[[arm]]\nname = \"left\"\n" + arm_text +
+                                          "[[arm]]\nname = \"right\"\n" + arm_text)
+    subprocess.run([CLI, "impedance", "damper.toml", "--velocity", "0.2", "--frequencies", "15,40", "-o", "z.csv"],
+                   cwd=tmp_path, check=True, capture_output=True)
+    with open(tmp_path / "z.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    for i, row in enumerate(rows):
+        assert z["re_z_n_s_m"][0, i] == pytest.approx(float(row["re_z_n_s_m"]), rel=1e-12)
+        assert z["im_z_n_s_m"][0, i] == pytest.approx(float(row["im_z_n_s_m"]), rel=1e-12)
+    with pytest.raises(sb.InvalidParameter, match=r"cable\.ei: is a number of the Masing law"):
+        sb.make_cable(0.1875, law="bouc-wen", ei=2.5, ei_min=2.5, ei_max=25.0, chi0=0.03)
+    with pytest.raises(sb.InvalidParameter, match=r"cable\.chi0: is a number of the Bouc-Wen law"):
+        sb.make_cable(0.1875, ei=2.8, jenkin=[(20.0, 0.7)], chi0=0.03)
+    with pytest.raises(sb.InvalidParameter, match=r"cable\.ei_max = 2 at s = 0 m: below ei_min"):
+        sb.make_cable(0.1875, law="bouc-wen", ei_min=2.5, ei_max=2.0, chi0=0.03)
