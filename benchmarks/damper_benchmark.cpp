@@ -1,7 +1,9 @@
 // The product's main job: the impedance sweep of examples/sauter2003.toml
 // (200 frequencies log-spaced over 1-100 Hz at 0.05 and 0.2 m/s, harmonic
 // balance at its defaults), on 1 and 2 threads, with and without continuation blocks,
-// and at one amplitude; and the cost of one point per method.
+// and at one amplitude; the same with slenderpy's Bouc-Wen damper
+// (examples/slenderpy_damper.toml, 0.2 m/s over 5-100 Hz); and the cost of one point
+// per method.
 
 #include <string>
 #include <vector>
@@ -55,6 +57,26 @@ BENCHMARK(BM_SauterSweep)
     ->MinTime(2.0);
 
 // One point from a cold start (no continuation), per method, at a slipping frequency.
+/// slenderpy's damper (the Bouc-Wen law): `points` frequencies log-spaced over
+/// 5-100 Hz at 0.2 m/s, harmonic balance at its defaults, one thread.
+void BM_SlenderpySweep(benchmark::State& state) {
+  const Damper damper =
+      stockbridge::io::read_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/slenderpy_damper.toml");
+  SweepSpec spec;
+  spec.frequencies = log_spaced(5.0, 100.0, static_cast<int>(state.range(0)));
+  spec.amplitudes = {0.2};
+  spec.threads = 1;
+  int converged = 0;
+  for (auto _ : state) {
+    converged = 0;
+    for (const SweepRun& run : run_sweep(damper, spec)) {
+      for (const ImpedancePoint& p : run.points) converged += p.converged();
+    }
+  }
+  state.counters["converged_points"] = converged;
+}
+BENCHMARK(BM_SlenderpySweep)->ArgNames({"points"})->Arg(40)->Unit(benchmark::kMillisecond)->Iterations(1);
+
 void BM_OnePoint(benchmark::State& state, Method method, double frequency_hz) {
   const Damper damper = example();
   SolverOptions options;

@@ -65,10 +65,10 @@ void reject_keys_of_other_law(const TomlTable& table, cable::SectionLawKind law)
   static constexpr std::array<std::string_view, 3> masing_keys{"ei", "jenkin", "lever_arm_cap"};
   static constexpr std::array<std::string_view, 3> bouc_wen_keys{"ei_min", "ei_max", "chi0"};
   for (std::string_view key : bouc_wen ? masing_keys : bouc_wen_keys) {
-    if (!table.contains(key)) continue;
+    if (!table.present(key)) continue;
     table.fail(key, bouc_wen ? "is a number of the Masing law: law = \"bouc-wen\" takes ei_min, ei_max and chi0"
                              : fmt::format("is a number of the Bouc-Wen law: set law = \"bouc-wen\"{}",
-                                           table.contains("law") ? "" : " (the default law is \"masing\": ei and jenkin)"));
+                                           table.present("law") ? "" : " (the default law is \"masing\": ei and jenkin)"));
   }
 }
 

@@ -70,6 +70,8 @@ bool TomlTable::contains(std::string_view key) const {
   return table_->contains(key);
 }
 
+bool TomlTable::present(std::string_view key) const { return table_->contains(key); }
+
 std::string TomlTable::qualified(std::string_view key) const {
   return key_path_.empty() ? std::string(key) : fmt::format("{}.{}", key_path_, key);
 }

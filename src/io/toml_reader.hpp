@@ -39,6 +39,9 @@ class TomlTable {
   TomlTable(const toml::table& table, TomlSource source, std::string key_path);
 
   bool contains(std::string_view key) const;
+  /// Whether the key is present, without making it a known key (for a key that
+  /// belongs to another kind of table, to be refused by name).
+  bool present(std::string_view key) const;
 
   /// A required number (integers are accepted). Ranges are the model's to check
   /// (build_from_file), except where `check` is given (values the model does not

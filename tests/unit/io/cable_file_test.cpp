@@ -80,7 +80,7 @@ TEST(CableFile, EachMistakeGetsOnePreciseLine) {
   EXPECT_EQ(cable_error_of("[cable]\nlength = -0.3\nsections = 40\nei = 2.8\n"),
             file + ":2: cable.length = -0.3: expected a finite value > 0 (m)");
   EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\nlenght = 3\n"),
-            file + ":5: unknown key 'cable.lenght': expected one of ei, jenkin, length, lever_arm_cap, mirror_length, sections");
+            file + ":5: unknown key 'cable.lenght': expected one of ei, jenkin, law, length, lever_arm_cap, mirror_length, sections");
   EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40.5\nei = 2.8\n"),
             file + ":3: cable.sections: the number 40.5: expected an integer from 2 to 5000");
   EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 0\nei = 2.8\n"),
