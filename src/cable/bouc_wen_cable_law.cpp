@@ -21,22 +21,36 @@ BoucWenCableLaw::BoucWenCableLaw(const CableDescription& description, std::span<
   }
 }
 
-double bouc_wen_travel(double ei_min, double hysteretic, double chi0, double eta_from, double excess) {
+BoucWenTravel bouc_wen_travel(double ei_min, double hysteretic, double chi0, double eta_from, double excess) {
   const double sign = excess > 0.0 ? 1.0 : -1.0;
-  const double a = 1.0 - sign * eta_from;  // in [0, 2]
-  const double b = hysteretic * a;
+  const double b = hysteretic * (1.0 - sign * eta_from);  // a (EI_max - EI_min), a in [0, 2]
   const double target = std::abs(excess) / chi0;
-  // Both starts lie below the root: g(u) = ei_min u + b (1 - e^-u) is concave, under
-  // its tangent at 0 and under its asymptote ei_min u + b.
-  double u = std::max(target / (ei_min + b), (target - b) / ei_min);
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    const double decay = std::exp(-u);
-    const double residual = ei_min * u - b * std::expm1(-u) - target;
-    const double step = -residual / (ei_min + b * decay);
+  const double k0 = ei_min + b;  // g'(0)
+  // g(u) = ei_min u + b (1 - e^-u) is increasing and concave. Starts: the root of its
+  // quadratic Taylor model k0 u - b u^2 / 2 (close for the small steps of a sampled
+  // path), else the larger of the roots of its tangent at 0 and of its asymptote
+  // ei_min u + b (both below the root).
+  const double below = std::max(target / k0, (target - b) / ei_min);
+  const double discriminant = k0 * k0 - 2.0 * b * target;
+  double u = discriminant > 0.0 ? std::max(below, 2.0 * target / (k0 + std::sqrt(discriminant))) : below;
+  // Halley's method, g'' = -b e^-u from the same exponential: cubic convergence, so
+  // a step below 1e-12 of u leaves an error far below round-off.
+  double decay_minus_one = std::expm1(-u);
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    const double decay = 1.0 + decay_minus_one;
+    const double g = ei_min * u - b * decay_minus_one - target;
+    const double g1 = ei_min + b * decay, g2 = -b * decay;
+    const double step = -g / (g1 - 0.5 * g * g2 / g1);
     u += step;
-    if (!(std::abs(step) > 4e-16 * u)) break;  // Newton from below: monotone, quadratic
+    if (!(std::abs(step) > 1e-12 * u)) {
+      // e^-(u + step) - 1 to second order in the (tiny) step.
+      decay_minus_one += decay * (-step + 0.5 * step * step);
+      break;
+    }
+    decay_minus_one = std::expm1(-u);
   }
-  return std::max(u, 0.0);
+  if (u < 0.0) return {0.0, 0.0};
+  return {u, decay_minus_one};
 }
 
 void BoucWenCableLaw::apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
@@ -55,14 +69,17 @@ void BoucWenCableLaw::apply_loads(const Cable& cable, const CableState& from, do
     if (excess != 0.0) {
       const double sign = excess > 0.0 ? 1.0 : -1.0;
       const double b = hysteretic_[i], chi0 = chi0_[i];
-      const double u = bouc_wen_travel(ei_min_[i], b, chi0, eta_from, excess);
+      const BoucWenTravel travel = bouc_wen_travel(ei_min_[i], b, chi0, eta_from, excess);
+      const double u = travel.u, decay_minus_one = travel.decay_minus_one;
       const double a = 1.0 - sign * eta_from;
-      const double decay = std::exp(-u);
+      const double decay = 1.0 + decay_minus_one;
       kappa += sign * chi0 * u;
       eta = sign * (1.0 - a * decay);
       tangent = ei_min_[i] + b * a * decay;
-      // (EI_max - EI_min) chi0 int eta^2 |d chi| along the stretch (section::bouc_wen_update).
-      dissipated = b * chi0 * chi0 * (u + 2.0 * a * std::expm1(-u) - 0.5 * a * a * std::expm1(-2.0 * u));
+      // (EI_max - EI_min) chi0 int eta^2 |d chi| along the stretch (section::bouc_wen_update),
+      // with e^-2u - 1 = (e^-u - 1)(e^-u + 1).
+      dissipated = b * chi0 * chi0 *
+                   (u + 2.0 * a * decay_minus_one - 0.5 * a * a * decay_minus_one * (2.0 + decay_minus_one));
     }
     to.curvature[i] = kappa;
     to.hysteretic[i] = eta;

@@ -5,8 +5,9 @@
 // exact in closed form in the curvature (section::bouc_wen_update); driven by its
 // moment it solves EI_min u + (EI_max - EI_min) a (1 - e^-u) = s dM / chi0 for the
 // curvature travelled u = |d chi| / chi0 (a = 1 - s eta_from, s the step's sign):
-// the left side is increasing and concave, so Newton's method from below converges
-// monotonically, to round-off in a few steps.
+// the left side is increasing and concave; Halley's method from a close start
+// (the quadratic Taylor model's root for small steps) reaches round-off in two or
+// three steps of one exponential each.
 
 #include <span>
 #include <vector>
@@ -40,7 +41,12 @@ class BoucWenCableLaw final : public CableLaw {
 
 /// The curvature travelled, over chi0, by a monotone step that raises a Bouc-Wen
 /// section's moment by `excess` (any sign) from `eta_from`: u >= 0 with
-/// ei_min u + hysteretic a (1 - e^-u) = |excess| / chi0, a = 1 - sign(excess) eta_from.
-double bouc_wen_travel(double ei_min, double hysteretic, double chi0, double eta_from, double excess);
+/// ei_min u + hysteretic a (1 - e^-u) = |excess| / chi0, a = 1 - sign(excess) eta_from;
+/// and e^-u - 1, which the step's eta, tangent and dissipation take.
+struct BoucWenTravel {
+  double u = 0.0;
+  double decay_minus_one = 0.0;
+};
+BoucWenTravel bouc_wen_travel(double ei_min, double hysteretic, double chi0, double eta_from, double excess);
 
 }  // namespace stockbridge::cable

@@ -184,7 +184,9 @@ TEST(BoucWenCable, TheLawsNumbersAreCheckedAndNamed) {
 TEST(BoucWenCable, TravelSolvesTheMomentEquationToRoundOff) {
   for (const double eta : {-0.999, -0.3, 0.0, 0.6, 1.0}) {
     for (const double excess : {1e-9, 1e-3, 0.05, 0.8, 30.0, -1e-6, -0.4, -5.0}) {
-      const double u = bouc_wen_travel(2.5, 22.5, 0.03, eta, excess);
+      const BoucWenTravel travel = bouc_wen_travel(2.5, 22.5, 0.03, eta, excess);
+      const double u = travel.u;
+      EXPECT_NEAR(travel.decay_minus_one, std::expm1(-u), 4e-16 * (1.0 + std::abs(std::expm1(-u))));
       const double a = 1.0 - (excess > 0 ? 1.0 : -1.0) * eta;
       const double carried = 0.03 * (2.5 * u - 22.5 * a * std::expm1(-u));
       EXPECT_NEAR(carried, std::abs(excess), 4e-15 * std::abs(excess) + 1e-300) << eta << " " << excess;
