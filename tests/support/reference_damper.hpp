@@ -116,6 +116,15 @@ class PathFollowingCable {
   double tip_moment() const { return clamp_moment_ - tip_force_ * length_; }      ///< Q = T - F l, N m
   double dissipated() const { return dissipated_; }                               ///< J, since virgin
   const std::vector<double>& element_moments() const { return moments_; }         ///< H_ij, N m
+  /// The cable's memory for the periodicity test, and its scales (h).
+  const std::vector<double>& internal_state() const { return moments_; }
+  std::vector<double> internal_scales() const {
+    std::vector<double> scales;
+    for (std::size_t i = 0; i < midpoints_.size(); ++i) {
+      for (const JenkinElement& e : jenkin_) scales.push_back(e.h);
+    }
+    return scales;
+  }
 
   double rotation() const {  ///< phi = int kappa ds
     double phi = 0.0;
@@ -261,17 +270,26 @@ class PathFollowingCable {
   double clamp_moment_ = 0.0, tip_force_ = 0.0, dissipated_ = 0.0;
 };
 
-/// One arm marched in time by velocity Verlet, its cable following the tip exactly.
+/// One arm marched in time by velocity Verlet, its cable (a model with move_tip_to,
+/// tip_force, tip_moment, dissipated, internal_state) following the tip.
+template <class Numbers, class CableModel>
 class MarchingArm {
  public:
-  explicit MarchingArm(const ArmNumbers& arm) : arm_(arm), cable_(arm) {}
+  explicit MarchingArm(const Numbers& arm) : arm_(arm), cable_(arm) {}
 
   double tip_force() const { return cable_.tip_force(); }
   double dissipated() const { return cable_.dissipated(); }
-  /// x, phi, x', phi' and every H, for the periodicity test.
+  /// x, phi, x', phi' and the cable's memory (every H; every eta), for the periodicity test.
   std::vector<double> state() const {
     std::vector<double> s{x_, phi_, vx_, vphi_};
-    s.insert(s.end(), cable_.element_moments().begin(), cable_.element_moments().end());
+    s.insert(s.end(), cable_.internal_state().begin(), cable_.internal_state().end());
+    return s;
+  }
+  /// Scales for state(): kinematics by the clamp's amplitudes, the memory by the cable's.
+  std::vector<double> state_scales(double amplitude, double w) const {
+    std::vector<double> s{amplitude, amplitude / arm_.length, amplitude * w, amplitude * w / arm_.length};
+    const std::vector<double> memory = cable_.internal_scales();
+    s.insert(s.end(), memory.begin(), memory.end());
     return s;
   }
 
@@ -296,8 +314,8 @@ class MarchingArm {
     vphi_ += h * aphi;
   }
 
-  ArmNumbers arm_;
-  PathFollowingCable cable_;
+  Numbers arm_;
+  CableModel cable_;
   double x_ = 0.0, phi_ = 0.0, vx_ = 0.0, vphi_ = 0.0;
 };
 
@@ -309,29 +327,23 @@ inline double relative_change(const std::vector<double>& a, const std::vector<do
   return d;
 }
 
-/// Scales for MarchingArm::state(): kinematics by the clamp's amplitudes, H by h.
-inline std::vector<double> state_scales(const ArmNumbers& arm, double amplitude, double w) {
-  std::vector<double> s{amplitude, amplitude / arm.length, amplitude * w, amplitude * w / arm.length};
-  for (int i = 0; i < arm.sections; ++i) {
-    for (const JenkinElement& e : arm.jenkin) s.push_back(e.h);
-  }
-  return s;
-}
-
-/// The damper's impedance at clamp velocity amplitude V and frequency f (Hz), by the
-/// explicit march until periodic. Throws std::runtime_error if not periodic in time.
-inline ReferenceResult reference_impedance(const DamperNumbers& damper, double frequency_hz, double velocity,
-                                           const MarchOptions& options = {}) {
+/// The impedance of a damper (clamp_mass, arms of Numbers, each with a CableModel) at
+/// clamp velocity amplitude V and frequency f (Hz), by the explicit march until
+/// periodic. Throws std::runtime_error if not periodic in time.
+template <class CableModel, class Damper>
+ReferenceResult march_impedance(const Damper& damper, double frequency_hz, double velocity, const MarchOptions& options) {
+  using Numbers = typename decltype(Damper::arms)::value_type;
+  using Arm = MarchingArm<Numbers, CableModel>;
   const double w = 2.0 * std::numbers::pi * frequency_hz, amplitude = velocity / w, period = 1.0 / frequency_hz;
   const int n = options.steps_per_period;
   const double dt = period / n;
-  std::vector<MarchingArm> arms(damper.arms.begin(), damper.arms.end());
+  std::vector<Arm> arms(damper.arms.begin(), damper.arms.end());
   std::vector<std::vector<double>> scales, previous_state(arms.size());
-  for (const ArmNumbers& a : damper.arms) scales.push_back(state_scales(a, amplitude, w));
+  for (const Arm& a : arms) scales.push_back(a.state_scales(amplitude, w));
   const auto clamp_acceleration = [&](long k) { return -w * w * amplitude * std::sin(w * dt * k); };
   const auto shaker_force = [&](long k) {
     double f = damper.clamp_mass * clamp_acceleration(k);
-    for (const MarchingArm& a : arms) f -= a.tip_force();
+    for (const Arm& a : arms) f -= a.tip_force();
     return f;
   };
 
@@ -340,17 +352,17 @@ inline ReferenceResult reference_impedance(const DamperNumbers& damper, double f
   long k = 0;
   for (int p = 1; p <= options.max_periods; ++p) {
     double energy_start = 0.0;
-    for (const MarchingArm& a : arms) energy_start += a.dissipated();
+    for (const Arm& a : arms) energy_start += a.dissipated();
     std::complex<double> f1;
     double work = 0.0;
     for (int j = 0; j < n; ++j, ++k) {
       const double f = shaker_force(k), t = dt * k;
       f1 += f * std::exp(std::complex<double>(0.0, -w * t));
       work += f * velocity * std::cos(w * t) * dt;
-      for (MarchingArm& a : arms) a.step(dt, clamp_acceleration(k), clamp_acceleration(k + 1));
+      for (Arm& a : arms) a.step(dt, clamp_acceleration(k), clamp_acceleration(k + 1));
     }
     double energy_end = 0.0;
-    for (const MarchingArm& a : arms) energy_end += a.dissipated();
+    for (const Arm& a : arms) energy_end += a.dissipated();
     result.impedance = 2.0 * f1 / static_cast<double>(n) / velocity;
     result.power = velocity * velocity * result.impedance.real() / 2.0;
     result.dissipated_power = (energy_end - energy_start) / period;
@@ -368,6 +380,12 @@ inline ReferenceResult reference_impedance(const DamperNumbers& damper, double f
   }
   throw std::runtime_error("reference damper: not periodic after " + std::to_string(options.max_periods) +
                            " periods (defect " + std::to_string(result.periodicity_defect) + ")");
+}
+
+/// The Masing damper's impedance by the march (PathFollowingCable).
+inline ReferenceResult reference_impedance(const DamperNumbers& damper, double frequency_hz, double velocity,
+                                           const MarchOptions& options = {}) {
+  return march_impedance<PathFollowingCable>(damper, frequency_hz, velocity, options);
 }
 
 }  // namespace stockbridge::testing::reference
