@@ -21,11 +21,11 @@
 namespace stockbridge::testing {
 namespace {
 
-const std::string kExamples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
-const std::string kSlenderpy = kExamples + "slenderpy_damper.toml";
+const std::string kBoucWenExamples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
+const std::string kSlenderpy = kBoucWenExamples + "slenderpy_damper.toml";
 
 /// The number after "key": in `json` after `anchor` ("" for the whole text).
-double json_number(const std::string& json, const std::string& anchor, const std::string& key) {
+double bouc_wen_json_number(const std::string& json, const std::string& anchor, const std::string& key) {
   const std::size_t from = anchor.empty() ? 0 : json.find("\"" + anchor + "\"");
   const std::size_t at = from == std::string::npos ? from : json.find("\"" + key + "\": ", from);
   if (at == std::string::npos) {
@@ -51,8 +51,8 @@ TEST(BoucWenCli, ImpedanceOfSlenderpysDamperConvergesWithItsEnergyBalance) {
   const auto dir = scratch_directory("bouc-wen-impedance");
   const CliResult r = run_cli("impedance '" + kSlenderpy + "' --velocity 0.2 --frequencies 10,25,60 --json -o z.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(json_number(r.out, "", "converged"), 3.0) << r.out;
-  EXPECT_LT(json_number(r.out, "", "max_energy_error"), 1e-4) << r.out;
+  EXPECT_EQ(bouc_wen_json_number(r.out, "", "converged"), 3.0) << r.out;
+  EXPECT_LT(bouc_wen_json_number(r.out, "", "max_energy_error"), 1e-4) << r.out;
   const Csv csv = read_csv(dir / "z.csv");
   for (const double re : csv.column("re_z_n_s_m")) EXPECT_GT(re, 0.0);  // the law dissipates
 }
@@ -76,7 +76,7 @@ TEST(BoucWenCli, ModesStickOnEiMaxAndSlipOnEiMin) {
 
 TEST(BoucWenCli, ASpanWithTheDamperAtBothEnds) {
   const auto dir = scratch_directory("bouc-wen-span");
-  std::string span = read_text(kExamples + "aster570_400m.toml");
+  std::string span = read_text(kBoucWenExamples + "aster570_400m.toml");
   span.replace(span.find("file = \"sauter2003.toml\""), 24, "file = \"" + kSlenderpy + "\"");
   std::ofstream(dir / "span.toml") << span;
   const int points = 3;
@@ -91,7 +91,7 @@ TEST(BoucWenCli, ASpanWithTheDamperAtBothEnds) {
     EXPECT_LE(amplitude[i], undamped[i] * (1 + 1e-9)) << "row " << i;
     EXPECT_LT(std::abs(identity[i]), 1e-6) << "row " << i;
   }
-  EXPECT_GT(json_number(r.out, "", "max_stress_fymax_mpa"), 0.0) << r.out;
+  EXPECT_GT(bouc_wen_json_number(r.out, "", "max_stress_fymax_mpa"), 0.0) << r.out;
 }
 
 // The law's numbers are design variables: a study of arm.left.cable.ei_max (the
@@ -101,7 +101,7 @@ TEST(BoucWenCli, ADesignStudyOfItsNumbers) {
   const auto dir = scratch_directory("bouc-wen-design");
   std::ofstream(dir / "damper.toml") << uniform_bouc_wen_damper(25.0);
   std::ofstream(dir / "study.toml")
-      << "damper = \"damper.toml\"\nspans = [\"" << kExamples
+      << "damper = \"damper.toml\"\nspans = [\"" << kBoucWenExamples
       << "aster570_400m.toml\"]\nsamples = 1\npolish = 0\npoints = 3\nseed = 2\n"
       << "[[variable]]\nname = \"arm.left.cable.ei_max\"\nmin = 15.0\nmax = 40.0\n"
       << "[[tie]]\nname = \"arm.right.cable.ei_max\"\nequals = \"arm.left.cable.ei_max\"\n"
@@ -118,7 +118,7 @@ TEST(BoucWenCli, ADesignStudyOfItsNumbers) {
   }
   const std::string best = read_text(dir / "best.toml");
   EXPECT_NE(best.find("law = \"bouc-wen\""), std::string::npos) << best;
-  const double chosen = json_number(r.out, "rounded", "arm.left.cable.ei_max");
+  const double chosen = bouc_wen_json_number(r.out, "rounded", "arm.left.cable.ei_max");
   char line[64];
   std::snprintf(line, sizeof line, "ei_max = %.3g   # N m^2", chosen);
   EXPECT_NE(best.find(line), std::string::npos) << line << "\n" << best;

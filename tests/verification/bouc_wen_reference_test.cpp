@@ -42,7 +42,7 @@ std::complex<double> library_impedance(double frequency_hz, double velocity) {
   return s.point.impedance;
 }
 
-reference::MarchOptions march(int steps) {
+reference::MarchOptions bouc_wen_march(int steps) {
   reference::MarchOptions options;
   options.steps_per_period = steps;
   options.periodicity_tolerance = 1e-6;
@@ -62,7 +62,7 @@ reference::MarchOptions march(int steps) {
 TEST(BoucWenReference, LibraryMatchesSlenderpysEquationsConverged) {
   for (const double f : {10.0, 15.0, 25.0, 40.0, 60.0, 100.0}) {
     const std::complex<double> z = library_impedance(f, 0.2);
-    const reference::ReferenceResult r = reference::reference_bouc_wen_impedance(slenderpy_damper(100), f, 0.2, march(2000));
+    const reference::ReferenceResult r = reference::reference_bouc_wen_impedance(slenderpy_damper(100), f, 0.2, bouc_wen_march(2000));
     EXPECT_LT(std::abs(z - r.impedance), 1e-3 * std::abs(r.impedance))
         << f << " Hz: library " << z << ", reference " << r.impedance;
     // The reference's energy balance: the shaker's work is what the sections dissipate.
@@ -76,7 +76,7 @@ TEST(BoucWenReference, LibraryMatchesSlenderpysEquationsConverged) {
 TEST(BoucWenReference, ReferenceConverges) {
   const double f = 25.0;
   const auto z = [&](int sections, int steps) {
-    return reference::reference_bouc_wen_impedance(slenderpy_damper(sections), f, 0.2, march(steps)).impedance;
+    return reference::reference_bouc_wen_impedance(slenderpy_damper(sections), f, 0.2, bouc_wen_march(steps)).impedance;
   };
   const std::complex<double> z50 = z(50, 2000), z100 = z(100, 2000), z200 = z(200, 2000);
   EXPECT_GT(std::abs(z50 - z200), 3.0 * std::abs(z100 - z200)) << z50 << " " << z100 << " " << z200;

@@ -16,17 +16,17 @@
 namespace stockbridge::cable {
 namespace {
 
-constexpr double kLength = 0.1875;
+constexpr double kMessengerLength = 0.1875;
 const section::BoucWenParameters kNumbers{2.5, 25.0, 0.03};  // slenderpy's middle zone
 
 CableDescription uniform_cable(int sections = 40) {
-  return CableDescription::uniform_bouc_wen(kLength, sections, kNumbers.ei_min, kNumbers.ei_max, kNumbers.chi0);
+  return CableDescription::uniform_bouc_wen(kMessengerLength, sections, kNumbers.ei_min, kNumbers.ei_max, kNumbers.chi0);
 }
 
 /// slenderpy's messenger: three zones with ramps of 1e-7 m between them.
 CableDescription slenderpy_cable(int sections) {
-  CableDescription d = CableDescription::uniform_bouc_wen(kLength, sections, 1.0, 1.0, 1.0);
-  const double a = 0.2 * kLength, b = 0.92 * kLength, r = 1e-7;
+  CableDescription d = CableDescription::uniform_bouc_wen(kMessengerLength, sections, 1.0, 1.0, 1.0);
+  const double a = 0.2 * kMessengerLength, b = 0.92 * kMessengerLength, r = 1e-7;
   const std::vector<double> s{a, a + r, b - r, b};
   d.bouc_wen.ei_max = Profile::table(s, {40.0, 25.0, 25.0, 40.0}, "ei_max");
   d.bouc_wen.ei_min = Profile::table(s, {5.0, 2.5, 2.5, 5.0}, "ei_min");
@@ -52,8 +52,8 @@ TEST(BoucWenCable, UnderAPureMomentEverySectionIsTheClosedFormLaw) {
     EXPECT_NEAR(section.moment, moment, 1e-13 * std::abs(moment)) << "T = " << moment;
     EXPECT_NEAR(state.hysteretic[3], section.eta, 1e-13);
     EXPECT_NEAR(state.tangent[3], section.tangent, 1e-12 * section.tangent);
-    EXPECT_NEAR(state.rotation, kLength * kappa, 1e-13 * std::abs(state.rotation));
-    EXPECT_NEAR(state.dissipated, kLength * section.dissipated, 1e-12 * kLength * section.dissipated);
+    EXPECT_NEAR(state.rotation, kMessengerLength * kappa, 1e-13 * std::abs(state.rotation));
+    EXPECT_NEAR(state.dissipated, kMessengerLength * section.dissipated, 1e-12 * kMessengerLength * section.dissipated);
   }
 }
 
@@ -104,7 +104,7 @@ TEST(BoucWenCable, DissipationOverASteadyCycleIsTheWorkDoneAtTheTip) {
       ASSERT_TRUE(cantilever.set_trial_tip(x_amplitude * std::sin(t), phi_amplitude * std::sin(t + 0.4)).converged());
       const CableState& to = cantilever.trial();
       const double f = 0.5 * (from.tip_force + to.tip_force);
-      const double q = 0.5 * (from.tip_moment(kLength) + to.tip_moment(kLength));
+      const double q = 0.5 * (from.tip_moment(kMessengerLength) + to.tip_moment(kMessengerLength));
       work += f * (to.deflection - from.deflection) + q * (to.rotation - from.rotation);
       cantilever.commit();
     }
