@@ -1,9 +1,7 @@
 #include "stockbridge/cable/cantilever.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <utility>
 
 #include <Eigen/LU>
@@ -12,7 +10,6 @@
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::cable {
-
 
 Eigen::Matrix2d tip_flexibility(const Cable& cable, std::span<const double> tangent) {
   CableSums sums;
