@@ -58,8 +58,14 @@ int run_local(const LocalOptions& options) {
     io::write_file_atomically(options.fitted, requests::local_fitted_table().values(rows).csv());
   }
   if (options.json) fmt::print("{}\n", requests::local_summary(result).str());
-  std::string summary = fmt::format("identify local: ei = {:.6g} N m^2", fit.parameters.ei);
-  for (const section::Jenkin& e : fit.parameters.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c, e.h);
+  std::string summary;
+  if (fit.bouc_wen) {
+    summary = fmt::format("identify local (Bouc-Wen): ei_min = {:.6g} N m^2, ei_max = {:.6g} N m^2, chi0 = {:.6g} 1/m",
+                          fit.bouc_wen->ei_min, fit.bouc_wen->ei_max, fit.bouc_wen->chi0);
+  } else {
+    summary = fmt::format("identify local: ei = {:.6g} N m^2", fit.parameters.ei);
+    for (const section::Jenkin& e : fit.parameters.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c, e.h);
+  }
   fmt::print(stderr, "{}; relative L1 error {:.3g} ({} cycles, worst {:.3g}), {} model runs{}\n", summary, fit.error,
              fit.cycle_errors.size(), *std::max_element(fit.cycle_errors.begin(), fit.cycle_errors.end()),
              fit.evaluations, optimiser_note(fit.termination));
@@ -110,15 +116,22 @@ void add_identify_command(CLI::App& app, int& exit_code) {
   identify->require_subcommand(1);
   auto local = std::make_shared<LocalOptions>();
   CLI::App* sub = identify->add_subcommand(
-      "local", "Masing parameters of a cross-section from a moment-curvature record (curvature_per_m, moment_n_m)");
+      "local",
+      "Masing (or Bouc-Wen) parameters of a cross-section from a moment-curvature record (curvature_per_m, moment_n_m)");
   sub->add_option("--input", local->input, "Measured record (CSV with curvature_per_m and moment_n_m, time order)")->required();
-  sub->add_option("--elements", local->request.elements, "Jenkin elements to fit")->capture_default_str();
+  sub->add_option("--law", local->request.law, "Section law to fit: masing (ei and Jenkin elements) or bouc-wen (ei_min, "
+                                               "ei_max, chi0)")
+      ->check(CLI::IsMember({"masing", "bouc-wen"}))
+      ->capture_default_str();
+  sub->add_option("--elements", local->request.elements, "Jenkin elements to fit (the Masing law)")->capture_default_str();
   sub->add_option("--optimizer", local->request.optimizer, "NLopt algorithm: subplex or nelder-mead (the dissertation's)")
       ->check(CLI::IsMember({"subplex", "nelder-mead"}))
       ->capture_default_str();
   sub->add_option("-o,--output", local->output, "Write the parameters as [cable] keys (TOML)");
   sub->add_option("--fitted", local->fitted, "Write measured and model moment along the record (CSV, for plotting)");
-  sub->add_flag("--json", local->json, "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout");
+  sub->add_flag("--json", local->json,
+                "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout (Bouc-Wen: "
+                "{\"law\": \"bouc-wen\", \"ei_min\": ..., \"ei_max\": ..., \"chi0\": ..., \"error\": ...})");
   sub->callback([local, &exit_code] { exit_code = run_local(*local); });
 
   auto global = std::make_shared<GlobalOptions>();

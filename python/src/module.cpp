@@ -303,8 +303,8 @@ py::dict from_json(const io::JsonObject& json) {
 }
 
 py::dict identify_local(const std::vector<double>& curvature, const std::vector<double>& moment, int elements,
-                        const std::string& optimizer) {
-  const requests::LocalRequest request{elements, optimizer};
+                        const std::string& optimizer, const std::string& law) {
+  const requests::LocalRequest request{law, elements, optimizer};
   std::optional<requests::LocalResult> result;
   {
     py::gil_scoped_release release;
@@ -745,7 +745,9 @@ PYBIND11_MODULE(_core, m) {
   const requests::LocalRequest local;
   const requests::GlobalRequest global;
   m.def("identify_local", &identify_local, py::arg("curvature"), py::arg("moment"), py::arg("elements") = local.elements,
-        py::arg("optimizer") = local.optimizer, "Masing parameters of a section from a moment-curvature record.");
+        py::arg("optimizer") = local.optimizer, py::arg("law") = local.law,
+        "Masing parameters (law='masing': ei, jenkin) or Bouc-Wen ones (law='bouc-wen': ei_min, ei_max, chi0) of a "
+        "section from a moment-curvature record.");
   m.def("identify_global", &identify_global, py::arg("experiment"), py::arg("length"), py::arg("prescribed"),
         py::arg("measured"), py::arg("method") = global.method, py::arg("sections") = global.sections,
         py::arg("elements") = global.elements, py::arg("optimizer") = global.optimizer,

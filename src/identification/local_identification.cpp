@@ -20,6 +20,11 @@ Optimizer parse_optimizer(std::string_view name) {
 
 void LocalIdentificationOptions::validate() const {
   require_in_range("elements", elements, 1, 6);
+  if (law == cable::SectionLawKind::bouc_wen && elements != 1) {
+    throw InvalidParameter("elements", fmt::format(" = {}: Jenkin elements belong to the Masing law; the Bouc-Wen law "
+                                                   "fits ei_min, ei_max and chi0",
+                                                   elements));
+  }
   require_in_range("max_evaluations", max_evaluations, 10, 100000000);
   require_positive("tolerance", tolerance, "");
 }
@@ -105,7 +110,52 @@ std::vector<double> cycle_errors(const MomentCurvatureRecord& record, const std:
   return errors;
 }
 
+/// The Bouc-Wen law's numbers in logarithms (ei_min, ei_max - ei_min, chi0) and the
+/// moment offset over the loop's half-height.
+struct BoucWenPacking {
+  double moment_scale = 1.0;
+  std::vector<double> pack(const section::BoucWenParameters& p, double offset) const {
+    return {std::log(p.ei_min), std::log(p.ei_max - p.ei_min), std::log(p.chi0), offset / moment_scale};
+  }
+  section::BoucWenParameters parameters(const std::vector<double>& x) const {
+    const double ei_min = std::exp(x[0]);
+    return {ei_min, ei_min + std::exp(x[1]), std::exp(x[2])};
+  }
+  double offset(const std::vector<double>& x) const { return x[3] * moment_scale; }
+};
+
+/// Starts from the record: EI_min from the slope at the extremes, EI_max from the
+/// slope after the reversals, chi0 from the half-height of the loop about the
+/// EI_min line over EI_max - EI_min; the hysteretic stiffness and chi0 scaled.
+std::vector<std::vector<double>> bouc_wen_starts(const RecordEstimates& e, const BoucWenPacking& packing) {
+  std::vector<std::vector<double>> x;
+  const double ei_min = e.ei, hysteretic = e.c_total;
+  for (const auto& [b_factor, chi0_factor] :
+       {std::pair{1.0, 1.0}, std::pair{0.5, 1.0}, std::pair{2.0, 1.0}, std::pair{1.0, 0.5}, std::pair{1.0, 2.0}}) {
+    const double b = b_factor * hysteretic;
+    x.push_back(packing.pack({ei_min, ei_min + b, chi0_factor * e.h_total / hysteretic}, e.offset));
+  }
+  return x;
+}
+
 }  // namespace
+
+std::vector<double> model_moments(const section::BoucWenParameters& parameters, double moment_offset,
+                                  const MomentCurvatureRecord& record) {
+  section::BoucWenState state = section::BoucWenState::virgin(parameters);
+  std::vector<double> moments;
+  moments.reserve(record.curvature.size());
+  for (const double kappa : record.curvature) {
+    state = section::bouc_wen_update(parameters, state, kappa);
+    moments.push_back(state.moment + moment_offset);
+  }
+  return moments;
+}
+
+std::vector<double> model_moments(const LocalIdentification& fit, const MomentCurvatureRecord& record) {
+  return fit.bouc_wen ? model_moments(*fit.bouc_wen, fit.moment_offset, record)
+                      : model_moments(fit.parameters, fit.moment_offset, record);
+}
 
 std::vector<double> model_moments(const section::MasingParameters& parameters, double moment_offset,
                                   const MomentCurvatureRecord& record) {
@@ -127,10 +177,35 @@ double relative_l1_error(const section::MasingParameters& parameters, double mom
                                       turns.front());
 }
 
+namespace {
+
+LocalIdentification identify_local_bouc_wen(const MomentCurvatureRecord& record, const LocalIdentificationOptions& options,
+                                            const std::vector<std::size_t>& turns, const RecordEstimates& estimates) {
+  const BoucWenPacking packing{estimates.h_total};
+  fit_core::Search search([&](const std::vector<double>& x) {
+    const std::vector<double> model = model_moments(packing.parameters(x), packing.offset(x), record);
+    return fit_core::relative_l1_misfit(record.curvature, record.moment, model, turns.front());
+  });
+  const fit_core::SearchSettings settings{options.optimizer, options.tolerance, options.max_evaluations, 0.2};
+  const fit_core::Minimum best = search.restarted(search.from_each(bouc_wen_starts(estimates, packing), settings), 1, settings);
+  LocalIdentification fit;
+  fit.bouc_wen = packing.parameters(best.x);
+  fit.moment_offset = packing.offset(best.x);
+  fit.error = best.value;
+  fit.cycle_errors = cycle_errors(record, model_moments(fit, record), turns);
+  fit.evaluations = search.evaluations();
+  fit.starts = search.runs();
+  fit.termination = best.termination;
+  return fit;
+}
+
+}  // namespace
+
 LocalIdentification identify_local(const MomentCurvatureRecord& record, const LocalIdentificationOptions& options) {
   options.validate();
   const std::vector<std::size_t> turns = fit_core::checked_reversals(record.curvature, record.moment, moment_curvature_names);
   const RecordEstimates estimates = record_estimates(record, turns);
+  if (options.law == cable::SectionLawKind::bouc_wen) return identify_local_bouc_wen(record, options, turns, estimates);
   const fit_core::LogParameters packing(options.elements, estimates.h_total);
   fit_core::Search search([&](const std::vector<double>& x) {
     const std::vector<double> model = model_moments(packing.parameters(x), packing.offset(x), record);

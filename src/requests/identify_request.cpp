@@ -13,6 +13,11 @@ namespace stockbridge::requests {
 
 identification::LocalIdentificationOptions local_options(const LocalRequest& request) {
   identification::LocalIdentificationOptions options;
+  if (request.law == "bouc-wen") {
+    options.law = cable::SectionLawKind::bouc_wen;
+  } else if (request.law != "masing") {
+    throw InvalidParameter("law", fmt::format(" = '{}': expected masing or bouc-wen", request.law));
+  }
   options.elements = request.elements;
   options.optimizer = identification::parse_optimizer(request.optimizer);
   options.validate();
@@ -23,7 +28,7 @@ LocalResult run_local(identification::MomentCurvatureRecord record, const LocalR
   LocalResult out;
   out.record = std::move(record);
   out.fit = identification::identify_local(out.record, local_options(request));
-  out.model = identification::model_moments(out.fit.parameters, out.fit.moment_offset, out.record);
+  out.model = identification::model_moments(out.fit, out.record);
   return out;
 }
 
@@ -62,12 +67,15 @@ Table<FittedSample> local_fitted_table() {
 
 io::JsonObject local_summary(const LocalResult& result) {
   const identification::LocalIdentification& fit = result.fit;
-  std::vector<std::pair<double, double>> c_h;
-  for (const section::Jenkin& e : fit.parameters.jenkin) c_h.emplace_back(e.c, e.h);
-  return io::JsonObject()
-      .add("ei", fit.parameters.ei)
-      .add("jenkin", jenkin_json(c_h))
-      .add("error", fit.error)
+  io::JsonObject json;
+  if (fit.bouc_wen) {
+    json.add("law", "bouc-wen").add("ei_min", fit.bouc_wen->ei_min).add("ei_max", fit.bouc_wen->ei_max).add("chi0", fit.bouc_wen->chi0);
+  } else {
+    std::vector<std::pair<double, double>> c_h;
+    for (const section::Jenkin& e : fit.parameters.jenkin) c_h.emplace_back(e.c, e.h);
+    json.add("ei", fit.parameters.ei).add("jenkin", jenkin_json(c_h));
+  }
+  return json.add("error", fit.error)
       .add("moment_offset_n_m", fit.moment_offset)
       .add("cycle_errors", fit.cycle_errors)
       .add("evaluations", fit.evaluations)
@@ -80,6 +88,10 @@ std::string local_parameters_toml(const LocalResult& result, std::string_view so
       "# Identified by stockbridge identify local from {}: relative L1 error {:.4g}, moment offset {} N m.\n"
       "# The keys of a [cable] table: paste them into a cable or damper file.\n",
       source, fit.error, fit.moment_offset);
+  if (fit.bouc_wen) {
+    return text + fmt::format("law = \"bouc-wen\"\nei_min = {}   # N m^2\nei_max = {}   # N m^2\nchi0 = {}   # 1/m\n",
+                              fit.bouc_wen->ei_min, fit.bouc_wen->ei_max, fit.bouc_wen->chi0);
+  }
   text += fmt::format("ei = {}                 # N m^2\njenkin = [", fit.parameters.ei);
   for (std::size_t j = 0; j < fit.parameters.jenkin.size(); ++j) {
     text += fmt::format("{} {{ c = {}, h = {} }}", j ? "," : "", fit.parameters.jenkin[j].c, fit.parameters.jenkin[j].h);

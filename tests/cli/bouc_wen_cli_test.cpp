@@ -147,5 +147,26 @@ TEST(BoucWenCli, AKeyOfTheOtherLawIsNamedWithItsLine) {
   EXPECT_FALSE(std::filesystem::exists(dir / "z.csv"));
 }
 
+// identify local --law bouc-wen on the loop of the loop command gives the law's
+// numbers back as the keys of a cable table, which the cycle command then runs.
+TEST(BoucWenCli, IdentifyLocalGivesTheLoopsNumbersAsCableKeys) {
+  const auto dir = scratch_directory("bouc-wen-identify");
+  ASSERT_EQ(run_cli("loop --law bouc-wen --ei-min 2.5 --ei-max 25 --chi0 0.03 --amplitude 0.1 --cycles 3 -o loop.csv", dir)
+                .exit_code,
+            0);
+  const CliResult r = run_cli("identify local --law bouc-wen --input loop.csv --json -o keys.toml", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("{\"law\": \"bouc-wen\", \"ei_min\": ", 0), 0u) << r.out;
+  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_min"), 2.5, 1e-6);
+  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_max"), 25.0, 1e-5);
+  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "chi0"), 0.03, 1e-8);
+  std::ofstream(dir / "cable.toml") << "[cable]\nlength = 0.1875\nsections = 40\n" << read_text(dir / "keys.toml");
+  const CliResult cycle = run_cli("cycle cable.toml --experiment a --amplitude 0.005 -o cycle.csv", dir);
+  EXPECT_EQ(cycle.exit_code, 0) << cycle.err;
+  const CliResult two = run_cli("identify local --law bouc-wen --elements 2 --input loop.csv", dir);
+  EXPECT_EQ(two.exit_code, 2);
+  EXPECT_NE(two.err.find("elements = 2: Jenkin elements belong to the Masing law"), std::string::npos) << two.err;
+}
+
 }  // namespace
 }  // namespace stockbridge::testing

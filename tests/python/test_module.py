@@ -799,3 +799,14 @@ def test_a_bouc_wen_cable_from_python_is_the_cable_files_law(tmp_path):
         sb.make_cable(0.1875, ei=2.8, jenkin=[(20.0, 0.7)], chi0=0.03)
     with pytest.raises(sb.InvalidParameter, match=r"cable\.ei_max = 2 at s = 0 m: below ei_min"):
         sb.make_cable(0.1875, law="bouc-wen", ei_min=2.5, ei_max=2.0, chi0=0.03)
+
+
+def test_identify_local_fits_the_bouc_wen_law_of_its_own_loop():
+    loop = sb.loop(law="bouc-wen", ei_min=2.5, ei_max=25.0, chi0=0.03, amplitude=0.1, cycles=3)
+    fit = sb.identify_local(loop["curvature_per_m"], loop["moment_n_m"], law="bouc-wen")
+    assert fit["law"] == "bouc-wen"
+    assert fit["ei_min"] == pytest.approx(2.5, rel=1e-6)
+    assert fit["ei_max"] == pytest.approx(25.0, rel=1e-6)
+    assert fit["chi0"] == pytest.approx(0.03, rel=1e-6)
+    with pytest.raises(sb.InvalidParameter, match="elements = 2: Jenkin elements belong to the Masing law"):
+        sb.identify_local(loop["curvature_per_m"], loop["moment_n_m"], law="bouc-wen", elements=2)

@@ -14,11 +14,19 @@
 // logarithms (so they stay positive) with NLopt, from several starts derived from
 // the record: the stiffness just after the reversals (ei + sum c), at the extremes
 // (ei), and the loop's half-height at the extremes (sum h).
+// The Bouc-Wen law (MODEL.md section 13) is fitted the same way: ei_min, ei_max - ei_min
+// and chi0 in logarithms, from the slopes at the extremes (EI_min) and after the
+// reversals (EI_max) and the half-height over EI_max - EI_min (chi0: the hysteretic
+// moment swings by (EI_max - EI_min) chi0 tanh(chi_a / chi0)).
 
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "stockbridge/cable/cable_description.hpp"
 #include "stockbridge/numerics/solver_summary.hpp"
+#include "stockbridge/section/bouc_wen_section.hpp"
 #include "stockbridge/section/masing_law.hpp"
 
 namespace stockbridge::identification {
@@ -34,7 +42,8 @@ enum class Optimizer { subplex, nelder_mead };
 Optimizer parse_optimizer(std::string_view name);
 
 struct LocalIdentificationOptions {
-  int elements = 1;                  ///< Jenkin elements to fit, 1..6
+  cable::SectionLawKind law = cable::SectionLawKind::masing;  ///< the law to fit
+  int elements = 1;                  ///< Jenkin elements to fit, 1..6 (the Masing law; 1 under Bouc-Wen)
   Optimizer optimizer = Optimizer::subplex;  ///< NLopt's Subplex (default) or Nelder-Mead (the dissertation's)
   int max_evaluations = 40000;       ///< per start
   double tolerance = 1e-12;          ///< relative change of the parameters at which a start stops
@@ -42,7 +51,8 @@ struct LocalIdentificationOptions {
 };
 
 struct LocalIdentification {
-  section::MasingParameters parameters;  ///< elements sorted by slip curvature h / c
+  section::MasingParameters parameters;  ///< elements sorted by slip curvature h / c (the Masing law)
+  std::optional<section::BoucWenParameters> bouc_wen;  ///< the Bouc-Wen law's numbers, when it was fitted
   double moment_offset = 0.0;        ///< m0, N m
   double error = 0.0;                ///< relative L1 error from the first extreme on
   std::vector<double> cycle_errors;  ///< the same, per cycle (between every second reversal)
@@ -60,6 +70,10 @@ double relative_l1_error(const section::MasingParameters& parameters, double mom
 /// The model's moment (plus the offset) along the record's curvature, from the virgin state.
 std::vector<double> model_moments(const section::MasingParameters& parameters, double moment_offset,
                                   const MomentCurvatureRecord& record);
+std::vector<double> model_moments(const section::BoucWenParameters& parameters, double moment_offset,
+                                  const MomentCurvatureRecord& record);
+/// The fit's model along the record, whichever law it fitted.
+std::vector<double> model_moments(const LocalIdentification& fit, const MomentCurvatureRecord& record);
 
 /// Throws InvalidParameter for a record that cannot be identified (fewer than one
 /// full cycle after the first extreme: two reversals; sizes that differ).

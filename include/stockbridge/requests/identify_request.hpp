@@ -21,11 +21,12 @@ namespace stockbridge::requests {
 inline constexpr double large_fit_error = 0.1;
 
 struct LocalRequest {
-  int elements = 1;                 ///< Jenkin elements to fit
+  std::string law = "masing";       ///< masing | bouc-wen
+  int elements = 1;                 ///< Jenkin elements to fit (the Masing law)
   std::string optimizer = "subplex";  ///< subplex | nelder-mead
 };
 
-/// The validated options (InvalidParameter naming "elements" or "optimizer").
+/// The validated options (InvalidParameter naming "law", "elements" or "optimizer").
 identification::LocalIdentificationOptions local_options(const LocalRequest& request);
 
 struct LocalResult {
@@ -49,7 +50,8 @@ std::vector<FittedSample> fitted_samples(const std::vector<double>& prescribed, 
 
 /// The --fitted CSV of identify local: curvature_per_m, moment_n_m, model_moment_n_m.
 Table<FittedSample> local_fitted_table();
-/// The --json summary: ei, jenkin, error, moment_offset_n_m, cycle_errors, evaluations, termination.
+/// The --json summary: ei, jenkin (the Masing law) or law = "bouc-wen", ei_min, ei_max,
+/// chi0; then error, moment_offset_n_m, cycle_errors, evaluations, termination.
 io::JsonObject local_summary(const LocalResult& result);
 /// The -o file: the keys of a [cable] table with the fit's figures in comments.
 std::string local_parameters_toml(const LocalResult& result, std::string_view source);
