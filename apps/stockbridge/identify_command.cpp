@@ -101,8 +101,14 @@ int run_global(const GlobalOptions& options) {
   }
   if (options.json) fmt::print("{}\n", requests::global_summary(request, result).str());
   const cable::CableDescription& c = result.fit.cable;
-  std::string summary = fmt::format("identify global ({}): ei = {:.6g} N m^2", request.method, c.ei.at(0.0));
-  for (const cable::JenkinProfile& e : c.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c.at(0.0), e.h.at(0.0));
+  std::string summary;
+  if (c.law == cable::SectionLawKind::bouc_wen) {
+    summary = fmt::format("identify global ({}, Bouc-Wen): ei_min = {:.6g} N m^2, ei_max = {:.6g} N m^2, chi0 = {:.6g} 1/m",
+                          request.method, c.bouc_wen.ei_min.at(0.0), c.bouc_wen.ei_max.at(0.0), c.bouc_wen.chi0.at(0.0));
+  } else {
+    summary = fmt::format("identify global ({}): ei = {:.6g} N m^2", request.method, c.ei.at(0.0));
+    for (const cable::JenkinProfile& e : c.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c.at(0.0), e.h.at(0.0));
+  }
   fmt::print(stderr, "{}; relative L1 error {:.3g}{}{}\n", summary, result.fit.error,
              result.fit.evaluations ? fmt::format(", {} cable simulations", result.fit.evaluations) : "",
              optimiser_note(result.fit.termination));
@@ -141,6 +147,9 @@ void add_identify_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"a", "b"}))
       ->required();
   g->add_option("--length", global->request.length, "Length of the measured cable, m")->required();
+  g->add_option("--law", global->request.law, "Section law to fit: masing or bouc-wen (with --method fit)")
+      ->check(CLI::IsMember({"masing", "bouc-wen"}))
+      ->capture_default_str();
   g->add_option("--input", global->input, "Measured cycle (CSV)")->required();
   g->add_option("--method", global->request.method, "four-step (the dissertation's formulas) or fit (model-based, from four-step)")
       ->check(CLI::IsMember({"four-step", "fit"}))
@@ -152,7 +161,9 @@ void add_identify_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   g->add_option("-o,--output", global->output, "Write a cable file (TOML) that cycle and damper files accept");
   g->add_option("--fitted", global->fitted, "Write measured and model output along the record (CSV, for plotting)");
-  g->add_flag("--json", global->json, "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout");
+  g->add_flag("--json", global->json,
+              "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout (Bouc-Wen: "
+              "{\"law\": \"bouc-wen\", \"ei_min\": ..., \"ei_max\": ..., \"chi0\": ..., \"error\": ...})");
   g->callback([global, &exit_code] { exit_code = run_global(*global); });
 
   add_identify_impedance_command(*identify, exit_code);

@@ -317,8 +317,8 @@ py::dict identify_local(const std::vector<double>& curvature, const std::vector<
 
 py::dict identify_global(const std::string& experiment, double length, const std::vector<double>& prescribed,
                          const std::vector<double>& measured, const std::string& method, int sections, int elements,
-                         const std::string& optimizer) {
-  const requests::GlobalRequest request{experiment, length, method, sections, elements, optimizer};
+                         const std::string& optimizer, const std::string& law) {
+  const requests::GlobalRequest request{law, experiment, length, method, sections, elements, optimizer};
   std::optional<requests::GlobalResult> result;
   {
     py::gil_scoped_release release;
@@ -750,8 +750,9 @@ PYBIND11_MODULE(_core, m) {
         "section from a moment-curvature record.");
   m.def("identify_global", &identify_global, py::arg("experiment"), py::arg("length"), py::arg("prescribed"),
         py::arg("measured"), py::arg("method") = global.method, py::arg("sections") = global.sections,
-        py::arg("elements") = global.elements, py::arg("optimizer") = global.optimizer,
-        "Constant cable parameters from a cycle of experiment (a) or (b); 'cable' is a Cable ready for make_damper.");
+        py::arg("elements") = global.elements, py::arg("optimizer") = global.optimizer, py::arg("law") = global.law,
+        "Constant cable parameters from a cycle of experiment (a) or (b), by the Masing law or (law='bouc-wen', "
+        "method='fit') the Bouc-Wen law; 'cable' is a Cable ready for make_damper.");
   m.def("_identify_impedance", &identify_impedance, py::arg("damper"), py::arg("input") = py::none(),
         py::arg("frequency") = py::none(), py::arg("velocity") = py::none(), py::arg("displacement") = py::none(),
         py::arg("z") = py::none(), py::arg("elements") = fit.elements, py::arg("fit_clamp_mass") = fit.fit_clamp_mass,

@@ -11,12 +11,14 @@
 
 #include <cstddef>
 #include <functional>
+#include <cmath>
 #include <limits>
 #include <string_view>
 #include <vector>
 
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/numerics/solver_summary.hpp"
+#include "stockbridge/section/bouc_wen_section.hpp"
 #include "stockbridge/section/masing_law.hpp"
 
 namespace stockbridge::identification::fit_core {
@@ -73,6 +75,21 @@ class LogParameters {
  private:
   int elements_;
   double offset_scale_;
+};
+
+/// The Bouc-Wen law's numbers as the optimiser's variables: log EI_min,
+/// log (EI_max - EI_min) (so that EI_max >= EI_min), log chi0, then the offset in
+/// units of offset_scale.
+struct BoucWenLogParameters {
+  double offset_scale = 1.0;
+  std::vector<double> pack(const section::BoucWenParameters& p, double offset) const {
+    return {std::log(p.ei_min), std::log(p.ei_max - p.ei_min), std::log(p.chi0), offset / offset_scale};
+  }
+  section::BoucWenParameters parameters(const std::vector<double>& x) const {
+    const double ei_min = std::exp(x[0]);
+    return {ei_min, ei_min + std::exp(x[1]), std::exp(x[2])};
+  }
+  double offset(const std::vector<double>& x) const { return x[3] * offset_scale; }
 };
 
 /// One optimisation's settings (NLopt's derivative-free Subplex or Nelder-Mead).

@@ -110,24 +110,10 @@ std::vector<double> cycle_errors(const MomentCurvatureRecord& record, const std:
   return errors;
 }
 
-/// The Bouc-Wen law's numbers in logarithms (ei_min, ei_max - ei_min, chi0) and the
-/// moment offset over the loop's half-height.
-struct BoucWenPacking {
-  double moment_scale = 1.0;
-  std::vector<double> pack(const section::BoucWenParameters& p, double offset) const {
-    return {std::log(p.ei_min), std::log(p.ei_max - p.ei_min), std::log(p.chi0), offset / moment_scale};
-  }
-  section::BoucWenParameters parameters(const std::vector<double>& x) const {
-    const double ei_min = std::exp(x[0]);
-    return {ei_min, ei_min + std::exp(x[1]), std::exp(x[2])};
-  }
-  double offset(const std::vector<double>& x) const { return x[3] * moment_scale; }
-};
-
 /// Starts from the record: EI_min from the slope at the extremes, EI_max from the
 /// slope after the reversals, chi0 from the half-height of the loop about the
 /// EI_min line over EI_max - EI_min; the hysteretic stiffness and chi0 scaled.
-std::vector<std::vector<double>> bouc_wen_starts(const RecordEstimates& e, const BoucWenPacking& packing) {
+std::vector<std::vector<double>> bouc_wen_starts(const RecordEstimates& e, const fit_core::BoucWenLogParameters& packing) {
   std::vector<std::vector<double>> x;
   const double ei_min = e.ei, hysteretic = e.c_total;
   for (const auto& [b_factor, chi0_factor] :
@@ -181,7 +167,7 @@ namespace {
 
 LocalIdentification identify_local_bouc_wen(const MomentCurvatureRecord& record, const LocalIdentificationOptions& options,
                                             const std::vector<std::size_t>& turns, const RecordEstimates& estimates) {
-  const BoucWenPacking packing{estimates.h_total};
+  const fit_core::BoucWenLogParameters packing{estimates.h_total};
   fit_core::Search search([&](const std::vector<double>& x) {
     const std::vector<double> model = model_moments(packing.parameters(x), packing.offset(x), record);
     return fit_core::relative_l1_misfit(record.curvature, record.moment, model, turns.front());

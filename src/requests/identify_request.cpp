@@ -11,13 +11,19 @@
 
 namespace stockbridge::requests {
 
+namespace {
+
+cable::SectionLawKind parse_law(const std::string& law) {
+  if (law == "bouc-wen") return cable::SectionLawKind::bouc_wen;
+  if (law != "masing") throw InvalidParameter("law", fmt::format(" = '{}': expected masing or bouc-wen", law));
+  return cable::SectionLawKind::masing;
+}
+
+}  // namespace
+
 identification::LocalIdentificationOptions local_options(const LocalRequest& request) {
   identification::LocalIdentificationOptions options;
-  if (request.law == "bouc-wen") {
-    options.law = cable::SectionLawKind::bouc_wen;
-  } else if (request.law != "masing") {
-    throw InvalidParameter("law", fmt::format(" = '{}': expected masing or bouc-wen", request.law));
-  }
+  options.law = parse_law(request.law);
   options.elements = request.elements;
   options.optimizer = identification::parse_optimizer(request.optimizer);
   options.validate();
@@ -101,6 +107,11 @@ std::string local_parameters_toml(const LocalResult& result, std::string_view so
 
 identification::GlobalIdentificationOptions global_options(const GlobalRequest& request) {
   identification::GlobalIdentificationOptions options;
+  options.law = parse_law(request.law);
+  if (options.law == cable::SectionLawKind::bouc_wen && request.method == "four-step") {
+    throw InvalidParameter("method", " = 'four-step': the four steps identify the Masing law; the Bouc-Wen law is "
+                                     "fitted (--method fit)");
+  }
   options.length = request.length;
   options.sections = request.sections;
   options.elements = request.elements;
@@ -177,12 +188,18 @@ Table<FittedSample> global_fitted_table(const GlobalRequest& request) {
 
 io::JsonObject global_summary(const GlobalRequest& request, const GlobalResult& result) {
   const cable::CableDescription& c = result.fit.cable;
-  std::vector<std::pair<double, double>> c_h;
-  for (const cable::JenkinProfile& e : c.jenkin) c_h.emplace_back(e.c.at(0.0), e.h.at(0.0));
-  return io::JsonObject()
-      .add("ei", c.ei.at(0.0))
-      .add("jenkin", jenkin_json(c_h))
-      .add("error", result.fit.error)
+  io::JsonObject json;
+  if (c.law == cable::SectionLawKind::bouc_wen) {
+    json.add("law", "bouc-wen")
+        .add("ei_min", c.bouc_wen.ei_min.at(0.0))
+        .add("ei_max", c.bouc_wen.ei_max.at(0.0))
+        .add("chi0", c.bouc_wen.chi0.at(0.0));
+  } else {
+    std::vector<std::pair<double, double>> c_h;
+    for (const cable::JenkinProfile& e : c.jenkin) c_h.emplace_back(e.c.at(0.0), e.h.at(0.0));
+    json.add("ei", c.ei.at(0.0)).add("jenkin", jenkin_json(c_h));
+  }
+  return json.add("error", result.fit.error)
       .add("method", request.method)
       .add("output_offset", result.fit.output_offset)
       .add("evaluations", result.fit.evaluations)

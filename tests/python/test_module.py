@@ -810,3 +810,8 @@ def test_identify_local_fits_the_bouc_wen_law_of_its_own_loop():
     assert fit["chi0"] == pytest.approx(0.03, rel=1e-6)
     with pytest.raises(sb.InvalidParameter, match="elements = 2: Jenkin elements belong to the Masing law"):
         sb.identify_local(loop["curvature_per_m"], loop["moment_n_m"], law="bouc-wen", elements=2)
+
+
+def test_identify_global_takes_the_bouc_wen_law_with_the_fit_only():
+    with pytest.raises(sb.InvalidParameter, match="the four steps identify the Masing law"):
+        sb.identify_global("a", 0.3, [0.0, 0.01, -0.01, 0.01], [0.0, 1.0, -1.0, 1.0], method="four-step", law="bouc-wen")

@@ -30,9 +30,10 @@ struct ExperimentMeasurement {
 };
 
 struct GlobalIdentificationOptions {
+  cable::SectionLawKind law = cable::SectionLawKind::masing;  ///< the law to fit (Bouc-Wen: the fit only)
   double length = 0.0;    ///< l of the measured cable, m
   int sections = 40;      ///< of the model cable
-  int elements = 1;       ///< Jenkin elements (fit; four-step has one)
+  int elements = 1;       ///< Jenkin elements (fit; four-step has one; 1 under Bouc-Wen)
   Optimizer optimizer = Optimizer::subplex;
   int max_evaluations = 4000;
   double tolerance = 1e-10;

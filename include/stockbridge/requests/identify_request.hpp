@@ -57,6 +57,7 @@ io::JsonObject local_summary(const LocalResult& result);
 std::string local_parameters_toml(const LocalResult& result, std::string_view source);
 
 struct GlobalRequest {
+  std::string law = "masing";    ///< masing | bouc-wen (the fit only)
   std::string experiment = "a";  ///< a: columns x_m, force_n; b: phi_rad, clamp_moment_n_m
   double length = 0.0;           ///< of the measured cable, m
   std::string method = "fit";    ///< fit | four-step
