@@ -12,13 +12,12 @@ std::string_view section_law_name(SectionLawKind law) { return law == SectionLaw
 
 namespace {
 
-/// A field of one law set on a cable of the other.
+/// A field of the other law set on a cable of this one (the words of the cable file's reader).
 [[noreturn]] void throw_other_law(std::string_view field, SectionLawKind law) {
-  throw InvalidParameter(std::string(field),
-                         fmt::format(": not a number of the {} law (law = \"{}\"): {}", section_law_name(law),
-                                     section_law_name(law),
-                                     law == SectionLawKind::masing ? "it takes ei and jenkin"
-                                                                   : "it takes ei_min, ei_max and chi0"));
+  throw InvalidParameter(std::string(field), law == SectionLawKind::bouc_wen
+                                                 ? ": is a number of the Masing law: law = \"bouc-wen\" takes ei_min, "
+                                                   "ei_max and chi0"
+                                                 : ": is a number of the Bouc-Wen law: set law = \"bouc-wen\"");
 }
 
 bool is_unset(const Profile& p) { return p == Profile::constant(0.0); }
