@@ -18,6 +18,15 @@ namespace {
 
 using namespace stockbridge::damper;
 
+/// The points of a sweep that converged.
+int converged_points(const std::vector<SweepRun>& runs) {
+  int converged = 0;
+  for (const SweepRun& run : runs) {
+    for (const ImpedancePoint& p : run.points) converged += p.converged();
+  }
+  return converged;
+}
+
 Damper example() {
   return stockbridge::io::read_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml");
 }
@@ -32,12 +41,7 @@ void BM_SauterSweep(benchmark::State& state) {
   spec.threads = static_cast<int>(state.range(0));
   spec.block_points = static_cast<int>(state.range(2));
   int converged = 0;
-  for (auto _ : state) {
-    converged = 0;
-    for (const SweepRun& run : run_sweep(damper, spec)) {
-      for (const ImpedancePoint& p : run.points) converged += p.converged();
-    }
-  }
+  for (auto _ : state) converged = converged_points(run_sweep(damper, spec));
   state.counters["converged_points"] = converged;
 }
 BENCHMARK(BM_SauterSweep)
@@ -67,12 +71,7 @@ void BM_SlenderpySweep(benchmark::State& state) {
   spec.amplitudes = {0.2};
   spec.threads = 1;
   int converged = 0;
-  for (auto _ : state) {
-    converged = 0;
-    for (const SweepRun& run : run_sweep(damper, spec)) {
-      for (const ImpedancePoint& p : run.points) converged += p.converged();
-    }
-  }
+  for (auto _ : state) converged = converged_points(run_sweep(damper, spec));
   state.counters["converged_points"] = converged;
 }
 BENCHMARK(BM_SlenderpySweep)->ArgNames({"points"})->Arg(40)->Unit(benchmark::kMillisecond)->Iterations(1);
