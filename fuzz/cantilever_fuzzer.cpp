@@ -1,10 +1,12 @@
 // libFuzzer target: the cable's state determination (quasi-static cantilever) under
-// random cables (2-12 sections, 0-2 Jenkin elements, optionally the modified
-// Masing model) and random sequences of prescribed loads, tip deflections,
-// rotations and both, committed or reverted. Invariants after every trial:
+// random cables (2-12 sections; the Masing law with 0-2 Jenkin elements, optionally
+// the modified Masing model, or the Bouc-Wen law) and random sequences of prescribed
+// loads, tip deflections, rotations and both, committed or reverted. Invariants
+// after every trial:
 //   * finite kinematics and loads, and a reported residual that is finite;
-//   * every section in equilibrium, ei kappa_i + sum H = T - F s_i, and each
-//     element within its slip bound (h, or h0 + k0 cap in the modified model);
+//   * every section in equilibrium, ei kappa_i + sum H = T - F s_i (Bouc-Wen:
+//     ei_min kappa_i + (ei_max - ei_min) chi0 eta_i), and each element within its
+//     slip bound (h, or h0 + k0 cap in the modified model; Bouc-Wen: |eta| <= 1);
 //   * dissipation never decreases from the committed state;
 //   * the flexibility, in the work-conjugate pairs (Q, phi) and (F, x), symmetric
 //     positive definite;
@@ -17,7 +19,9 @@
 #include <cmath>
 
 #include "fuzz_support.hpp"
+#include "stockbridge/cable/bouc_wen_cable_law.hpp"
 #include "stockbridge/cable/cantilever.hpp"
+#include "stockbridge/cable/masing_cable_law.hpp"
 
 namespace {
 
@@ -27,6 +31,11 @@ cable::CableDescription random_cable(FuzzedDataProvider& in) {
   const double length = in.ConsumeFloatingPointInRange(0.02, 1.0);
   const int sections = in.ConsumeIntegralInRange(cable::min_sections, 12);
   const double ei = in.ConsumeFloatingPointInRange(0.05, 50.0);
+  if (in.ConsumeBool()) {
+    const double ei_max = ei * (1.0 + in.ConsumeFloatingPointInRange(0.0, 20.0));
+    return cable::CableDescription::uniform_bouc_wen(length, sections, ei, ei_max,
+                                                     in.ConsumeFloatingPointInRange(1e-3, 1.0));
+  }
   std::vector<std::pair<double, double>> elements;
   const int count = in.ConsumeIntegralInRange(0, 2);
   for (int j = 0; j < count; ++j) {
@@ -37,29 +46,57 @@ cable::CableDescription random_cable(FuzzedDataProvider& in) {
   return d;
 }
 
-double slip_bound(const cable::Cable& cable, std::size_t i, std::size_t j) {
-  return cable.jenkin(i)[j].h + cable.k0()[j] * cable.description().lever_arm_limit();
-}
+/// What the invariants need of either law: each section's moment from its state, the
+/// bound of each internal variable, and the largest moment the hysteresis carries.
+struct LawView {
+  const cable::MasingCableLaw* masing = nullptr;
+  const cable::BoucWenCableLaw* bouc_wen = nullptr;
+  double lever_arm_limit = 0.0;
+
+  explicit LawView(const cable::Cable& cable)
+      : masing(dynamic_cast<const cable::MasingCableLaw*>(&cable.law())),
+        bouc_wen(dynamic_cast<const cable::BoucWenCableLaw*>(&cable.law())),
+        lever_arm_limit(cable.description().lever_arm_limit()) {}
+
+  std::size_t variables() const { return masing ? masing->elements() : 1; }
+  double bound(std::size_t i, std::size_t j) const {
+    return masing ? masing->jenkin(i)[j].h + masing->k0()[j] * lever_arm_limit : 1.0;
+  }
+  /// The moment the hysteresis can carry at section i: sum of slip bounds, or (EI_max - EI_min) chi0.
+  double hysteretic_capacity(std::size_t i) const {
+    if (bouc_wen) return (bouc_wen->ei_max(i) - bouc_wen->ei_min(i)) * bouc_wen->chi0(i);
+    double total = 0.0;
+    for (std::size_t j = 0; j < variables(); ++j) total += bound(i, j);
+    return total;
+  }
+  double moment(std::size_t i, const cable::CableState& s) const {
+    if (bouc_wen) {
+      return bouc_wen->ei_min(i) * s.curvature[i] +
+             (bouc_wen->ei_max(i) - bouc_wen->ei_min(i)) * bouc_wen->chi0(i) * s.hysteretic[i];
+    }
+    double m = masing->ei(i) * s.curvature[i];
+    for (std::size_t j = 0; j < variables(); ++j) m += s.hysteretic[i * variables() + j];
+    return m;
+  }
+};
 
 void check_state(const cable::Cable& cable, const cable::CableState& from, const cable::CableState& s) {
   const double l = cable.length();
   fuzz::require(std::isfinite(s.clamp_moment) && std::isfinite(s.tip_force) && std::isfinite(s.rotation) &&
                     std::isfinite(s.deflection) && std::isfinite(s.dissipated) && s.flexibility.allFinite(),
                 "finite state");
-  const std::size_t n = cable.elements();
-  double slip_total = 0.0;
-  for (std::size_t j = 0; j < n; ++j) slip_total += slip_bound(cable, 0, j);
+  const LawView law(cable);
+  const std::size_t n = law.variables();
+  const double slip_total = law.hysteretic_capacity(0);
   // Round-off: the curvatures move by increments from the committed state, so the
   // sections balance to eps times the larger of the two states' moments.
   const double scale = std::abs(s.clamp_moment) + std::abs(s.tip_force) * l + std::abs(from.clamp_moment) +
                        std::abs(from.tip_force) * l + slip_total;
   for (std::size_t i = 0; i < cable.sections(); ++i) {
-    double moment = cable.ei(i) * s.curvature[i];
     for (std::size_t j = 0; j < n; ++j) {
-      const double h = s.hysteretic[i * n + j];
-      fuzz::require(std::abs(h) <= slip_bound(cable, i, j) * (1.0 + 1e-12), "|H| within the slip bound");
-      moment += h;
+      fuzz::require(std::abs(s.hysteretic[i * n + j]) <= law.bound(i, j) * (1.0 + 1e-12), "within the slip bound");
     }
+    const double moment = law.moment(i, s);
     const double expected = s.clamp_moment - s.tip_force * cable.positions()[i];
     fuzz::require(std::abs(moment - expected) <= 1e-9 * scale, "every section in equilibrium");
   }
@@ -81,11 +118,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   cable::Cantilever cantilever{cable::Cable(description)};
   const cable::Cable& c = cantilever.cable();
   const double l = c.length();
-  double slip_total = 0.0;
-  for (std::size_t j = 0; j < c.elements(); ++j) slip_total += slip_bound(c, 0, j);
+  const double slip_total = LawView(c).hysteretic_capacity(0);
   const double moment_max = 3.0 * (slip_total + 0.1);
-  // Tip motions up to those of an elastic cable (ei alone) under moment_max.
-  const double phi_max = moment_max * l / description.ei.at(0.0);
+  // Tip motions up to those of an elastic cable (its slip stiffness alone) under moment_max.
+  const double phi_max = moment_max * l / c.law().slip_stiffness(0);
   const double x_max = phi_max * l;
   while (in.remaining_bytes() > 0) {
     const cable::CableState from = cantilever.committed();
