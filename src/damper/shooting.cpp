@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -28,12 +29,17 @@ void ShootingOptions::validate() const {
 Shooting::Shooting(Arm arm, ShootingOptions options)
     : arm_(std::move(arm)), options_(validated(std::move(options))) {}
 
-void Shooting::shoot(NewmarkStepper& stepper, const Eigen::Vector4d& z0, int pre_periods, Shot& shot) const {
+void Shooting::shoot(NewmarkStepper& stepper, const Eigen::Vector4d& z0, int pre_periods, Shot& shot,
+                     const cable::CableState* memory) const {
   auto failed = [&shot](SolverSummary failure, std::string_view stage) {
     failure.where = fmt::format("{} ({})", failure.where, stage);
     shot.summary = std::move(failure);
   };
-  stepper.reset_cable();
+  if (memory) {
+    stepper.restore_cable(*memory);
+  } else {
+    stepper.reset_cable();
+  }
   if (SolverSummary placed = stepper.place(z0); !placed.converged()) return failed(std::move(placed), "placing the arm at z0");
   ArmPeriod pre;
   for (int k = 1; k <= pre_periods; ++k) {
@@ -48,6 +54,7 @@ void Shooting::shoot(NewmarkStepper& stepper, const Eigen::Vector4d& z0, int pre
     return failed(std::move(period), "final period");
   }
   shot.end = stepper.state();
+  shot.memory = stepper.cantilever().committed();
   shot.summary = summary_of(Termination::converged);
 }
 
@@ -92,6 +99,8 @@ class ShootingNewton {
   SolverSummary& summary_;
   int pre_periods_;
   Shooting::Shot shot_, trial_;
+  std::optional<cable::CableState> memory_;  // where every shot's cable starts (virgin until P first grows)
+  int memory_periods_ = 0;                   // periods the memory had before the shots start from it
   Eigen::Matrix4d jacobian_ = Eigen::Matrix4d::Zero();
   bool have_jacobian_ = false, jacobian_fresh_ = false;
 };
@@ -104,7 +113,7 @@ bool ShootingNewton::fail(Termination termination, std::string where) {
 
 bool ShootingNewton::fire(const Eigen::Vector4d& z, Shooting::Shot& into) {
   summary_.periods += pre_periods_ + 1;
-  shooting_.shoot(stepper_, z, pre_periods_, into);
+  shooting_.shoot(stepper_, z, pre_periods_, into, memory_ ? &*memory_ : nullptr);
   if (into.summary.converged()) return true;
   summary_.termination = into.summary.termination;
   summary_.where = brief_report(into.summary);
@@ -115,12 +124,14 @@ bool ShootingNewton::more_pre_periods(const Eigen::Vector4d& z, double measure, 
   if (pre_periods_ == options_.max_pre_periods) {
     summary_.periodicity_defect = defect;
     return fail(Termination::not_periodic,
-                fmt::format("(the cable's memory is not settled after {} pre-periods: the loads of the final period "
+                fmt::format("(the cable's memory is not settled after {} pre-periods ({} periods in all): the loads of the final period "
                             "differ from the last pre-period by {:.3g} of the largest, tolerance {:.3g}; z(T) - z0 is "
                             "{:.3g} of the amplitude)",
-                            pre_periods_, defect, options_.periodicity_tolerance, measure));
+                            pre_periods_, memory_periods_ + pre_periods_, defect, options_.periodicity_tolerance, measure));
   }
+  memory_periods_ += pre_periods_ + 1;
   pre_periods_ = std::min(2 * pre_periods_, options_.max_pre_periods);
+  memory_ = shot_.memory;  // the memory settles on from where the last accepted shot left it
   jacobian_fresh_ = false;  // its differences were taken with fewer pre-periods: a failure retakes them
   return fire(z, shot_);
 }
@@ -212,7 +223,12 @@ bool ShootingNewton::run(Eigen::Vector4d& z) {
                               measure, options_.tolerance, defect, options_.periodicity_tolerance, pre_periods_));
     }
     ++summary_.newton_iterations;
-    if (step(z) == Outcome::failed) return false;
+    if (step(z) == Outcome::failed) {
+      // A line search that fails while the memory has not settled: S is not yet
+      // defined precisely enough to go further; more pre-periods first.
+      if (summary_.termination != Termination::line_search_failed || defect <= options_.periodicity_tolerance) return false;
+      if (!more_pre_periods(z, measure, defect)) return false;
+    }
   }
 }
 

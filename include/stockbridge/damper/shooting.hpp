@@ -8,8 +8,9 @@
 //     z0 = (x, phi, x', phi')(0),   m, rad, m/s, rad/s.
 // The cable's hysteretic state is not an unknown: it follows from pre-periods.
 // The shooting function S(z0) is defined by
-//   1. the cable starts virgin; the arm is placed at z0 (the cable moves to
-//      (x0, phi0) in one monotone step, the acceleration follows from equilibrium);
+//   1. the cable starts from its memory M (virgin at first; see below); the arm is
+//      placed at z0 (the cable moves to (x0, phi0) in one monotone step, the
+//      acceleration follows from equilibrium);
 //   2. P = pre_periods periods are integrated from there;
 //   3. the mechanical state is set back to z0 keeping the cable's hysteretic state
 //      (the cable moves from where the pre-periods left it to (x0, phi0) in one
@@ -36,11 +37,15 @@
 //   * the loads of the final period differ from those of the last pre-period by at
 //     most periodicity_tolerance (max_j max(|dF_j|, |dQ_j| / l) / max_j max(|F_j|, |Q_j| / l)):
 //     the cable's memory settles only geometrically over the periods (see
-//     periodic_cable.hpp), so when it has not, P is doubled (up to max_pre_periods)
-//     and Newton continues from the current z0 as soon as the state measure is
+//     periodic_cable.hpp), so when it has not, P is doubled (up to max_pre_periods),
+//     M becomes the cable's state at the end of the last accepted shot (so that
+//     the memory goes on settling from where it got to: after k doublings it has
+//     had about 2^(k+1) P periods, not 2^k P; the Bouc-Wen law's memory, which
+//     settles more slowly than the Masing law's, needs that), and Newton
+//     continues from the current z0 as soon as the state measure is
 //     below max(tolerance, 0.01 x the loads defect) (solving S = 0 more precisely
-//     than the memory has settled is wasted); at max_pre_periods the defect is
-//     reported (converged == false).
+//     than the memory has settled is wasted) or a line search fails while it has
+//     not settled; at max_pre_periods the defect is reported (converged == false).
 // Near a linear resonance steady states may be non-unique; shooting returns the one
 // Newton reaches from its start.
 //
@@ -63,7 +68,9 @@ namespace stockbridge::damper {
 struct ShootingOptions : TimeDomainOptions {
   int pre_periods = 2;          ///< P at the start, >= 1
   int max_pre_periods = 256;    ///< P is doubled up to this, >= pre_periods
-  int max_iterations = 30;      ///< Newton iterations (in all, over the values of P), >= 1
+  /// Newton iterations in all, over the values of P, >= 1 (a few per value of P:
+  /// the Bouc-Wen law's memory needs up to 7 values)
+  int max_iterations = 60;
   double tolerance = 1e-9;      ///< on the state measure of S (see above)
   double periodicity_tolerance = 1e-7;  ///< on the loads, final period vs last pre-period
   double finite_difference_step = 1e-6;  ///< in the scaled unknowns D z0 (relative to the amplitude)
@@ -104,9 +111,12 @@ class Shooting {
     Eigen::Vector4d end = Eigen::Vector4d::Zero();  // z(T)
     ArmPeriod period;                               // the final period
     Eigen::Matrix2Xd pre_loads;                     // loads of the last pre-period
+    cable::CableState memory;                       // the cable's state at the end of the final period
   };
-  /// Fires a shot on `stepper` (its excitation set) into `shot`.
-  void shoot(NewmarkStepper& stepper, const Eigen::Vector4d& z0, int pre_periods, Shot& shot) const;
+  /// Fires a shot on `stepper` (its excitation set) into `shot`, the cable starting
+  /// from `memory` (virgin where null).
+  void shoot(NewmarkStepper& stepper, const Eigen::Vector4d& z0, int pre_periods, Shot& shot,
+             const cable::CableState* memory = nullptr) const;
 
  private:
   Arm arm_;

@@ -80,6 +80,8 @@ class NewmarkStepper {
   void set_excitation(const Excitation& excitation);
   /// The cable back to its virgin state (the mechanical state is unchanged).
   void reset_cable();
+  /// The cable to a committed state it had (the mechanical state is unchanged).
+  void restore_cable(const cable::CableState& memory) { cantilever_.restore(memory); }
   /// Puts the arm at phase W t = 0 in the mechanical state z = (x, phi, x', phi'):
   /// the cable moves from its committed state to (x, phi) in one monotone step and
   /// is committed; a = M^-1 (L x_c''(0) - f). Converged, or inner_failure where the
