@@ -60,8 +60,7 @@ int run_local(const LocalOptions& options) {
   if (options.json) fmt::print("{}\n", requests::local_summary(result).str());
   std::string summary;
   if (fit.bouc_wen) {
-    summary = fmt::format("identify local (Bouc-Wen): ei_min = {:.6g} N m^2, ei_max = {:.6g} N m^2, chi0 = {:.6g} 1/m",
-                          fit.bouc_wen->ei_min, fit.bouc_wen->ei_max, fit.bouc_wen->chi0);
+    summary = "identify local (Bouc-Wen): " + requests::bouc_wen_text(*fit.bouc_wen);
   } else {
     summary = fmt::format("identify local: ei = {:.6g} N m^2", fit.parameters.ei);
     for (const section::Jenkin& e : fit.parameters.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c, e.h);
@@ -103,8 +102,8 @@ int run_global(const GlobalOptions& options) {
   const cable::CableDescription& c = result.fit.cable;
   std::string summary;
   if (c.law == cable::SectionLawKind::bouc_wen) {
-    summary = fmt::format("identify global ({}, Bouc-Wen): ei_min = {:.6g} N m^2, ei_max = {:.6g} N m^2, chi0 = {:.6g} 1/m",
-                          request.method, c.bouc_wen.ei_min.at(0.0), c.bouc_wen.ei_max.at(0.0), c.bouc_wen.chi0.at(0.0));
+    summary = fmt::format("identify global ({}, Bouc-Wen): {}", request.method,
+                          requests::bouc_wen_text(requests::bouc_wen_numbers(c)));
   } else {
     summary = fmt::format("identify global ({}): ei = {:.6g} N m^2", request.method, c.ei.at(0.0));
     for (const cable::JenkinProfile& e : c.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c.at(0.0), e.h.at(0.0));

@@ -36,7 +36,7 @@ std::vector<std::string> cable_outputs(const std::string& output, const identifi
   std::vector<std::string> paths;
   if (output.empty()) return paths;
   const std::filesystem::path path(output);
-  for (std::size_t t = 0; t < fit.cables.size(); ++t) {
+  for (std::size_t t = 0; t < fit.types(); ++t) {
     if (t == 0) {
       paths.push_back(output);
       continue;
@@ -66,6 +66,7 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
     // The library names the measurement "measurement" and --free "free", anything else is the damper's.
     const std::string_view what = e.what(), measurement_prefix = "measurement: ";
     if (e.field() == "free") throw InputError("--free" + e.detail());
+    if (e.field() == "elements") throw InputError(fmt::format("--elements{} (in {})", e.detail(), options.damper_file));
     throw InputError(what.starts_with(measurement_prefix)
                          ? fmt::format("{}: {}", options.input, what.substr(measurement_prefix.size()))
                          : fmt::format("{}: {}", options.damper_file, what));
@@ -108,7 +109,7 @@ void add_identify_impedance_command(CLI::App& identify, int& exit_code) {
                   "Measured impedance (CSV: frequency_hz, velocity_m_s or displacement_m, re_z_n_s_m and im_z_n_s_m "
                   "or abs_z_n_s_m and phase_deg; several amplitudes)")
       ->required();
-  sub->add_option("--elements", options->request.elements, "Jenkin elements per cable")->capture_default_str();
+  sub->add_option("--elements", options->request.elements, "Jenkin elements per cable (a Masing cable; a Bouc-Wen one fits ei_min, ei_max and chi0)")->capture_default_str();
   sub->add_flag("--fit-clamp-mass", options->request.fit_clamp_mass, "Also fit the clamp mass (Im Z only; as --free clamp.mass)");
   sub->add_option("--free", options->request.free,
                   "Numbers of the damper fitted too, by path: clamp.mass, arm.<name>.mass, .inertia, .offset, "

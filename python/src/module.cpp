@@ -366,7 +366,7 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
   warn(warning_messages(requests::fit_warnings(fit, source)));
   const py::dict fitted = table_arrays(requests::fitted_table().values(requests::fitted_points(m, fit)), {m.points.size()});
   py::list cable_files;
-  for (std::size_t t = 0; t < fit.cables.size(); ++t) {
+  for (std::size_t t = 0; t < fit.types(); ++t) {
     cable_files.append(requests::fitted_cable_file(fit, t, input ? *input : std::string("arrays")));
   }
   py::dict out;

@@ -278,12 +278,14 @@ def identify_impedance(damper, input=None, *, frequency=None, velocity=None, dis
     lengths are known, its cables' values the starting values; the measurement a
     CSV's path (`input`, the command's columns) or arrays of one value per point:
     `frequency` (Hz), `velocity` (m/s) or `displacement` (m), and complex `z` (N s/m).
-    `elements` Jenkin elements per cable; `free` numbers of the damper fitted too, by
+    `elements` Jenkin elements per cable (a cable of law "bouc-wen" fits ei_min,
+    ei_max and chi0 instead); `free` numbers of the damper fitted too, by
     path ("arm.long.mass", "arm.short.cable.length", "clamp.mass", as --free);
     `rms_limit` the RMS relative error of Z above which the fit is poor (warned of,
     'poor_fit' True); `threads` model runs at once.
 
-    Returns a dict: the --json summary's keys (ei, jenkin, misfit, rms_relative_error,
+    Returns a dict: the --json summary's keys (ei, jenkin or law, ei_min, ei_max,
+    chi0; misfit, rms_relative_error,
     poor_fit, parameters with standard errors, geometry, correlation, undetermined,
     notes, ...), 'fitted' (the --fitted CSV's columns as arrays: the measured and the
     model's Z at each point), 'cable' (a Cable: the identified cable at the first arm's

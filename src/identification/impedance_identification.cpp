@@ -50,6 +50,10 @@ constexpr int kExploreSections = 12;
 constexpr double kReproducedError = 1e-6;
 /// The starts: (ei, every h) scaled from the starting values.
 constexpr std::pair<double, double> kStartFactors[] = {{1.0, 1.0}, {1.0, 0.5}, {1.0, 2.0}, {1.0, 0.25}, {0.7, 1.0}, {1.4, 1.0}};
+/// The Bouc-Wen law's variables per cable type: log ei_min, log ei_max, log chi0
+/// (a step to ei_max < ei_min is refused by the cable, as any parameters it does
+/// not accept).
+constexpr int kBoucWenVariables = 3;
 
 double held_amplitude(const damper::Excitation& e, damper::HeldAmplitude held) {
   return held == damper::HeldAmplitude::velocity ? e.velocity_amplitude() : e.displacement_amplitude;
@@ -136,13 +140,15 @@ std::vector<DamperNumber> damper_numbers(const damper::DamperDescription& start,
 }
 
 /// The optimiser's variables and the damper they stand for. Per cable type: the
-/// logarithms of ei, c_0, h_0, c_1, h_1, ... relative to the starting values; then
+/// logarithms, relative to the starting values, of its law's numbers (Masing: ei,
+/// c_0, h_0, c_1, h_1, ...; Bouc-Wen: ei_min, ei_max, chi0); then
 /// the numbers of options.free (DamperNumber); then, when fitted, the clamp mass's
 /// change in units of the damper's mass.
 class FitVariables {
  public:
   FitVariables(const damper::DamperDescription& start, const ImpedanceIdentificationOptions& options)
-      : start_(start), type_of_arm_(cable_types(start)), numbers_(damper_numbers(start, options.free)) {
+      : start_(start), type_of_arm_(cable_types(start)), numbers_(damper_numbers(start, options.free)),
+        law_(common_law(start, options.elements)) {
     fit_clamp_mass_ = options.fit_clamp_mass ||
                       std::find(options.free.begin(), options.free.end(), "clamp.mass") != options.free.end();
     const int elements = options.elements;
@@ -150,6 +156,10 @@ class FitVariables {
     for (std::size_t t = 0; t < types; ++t) {
       const std::size_t arm = first_arm(t);
       prefixes_.push_back(types > 1 ? arm_key(arm) : "");
+      if (law_ == cable::SectionLawKind::bouc_wen) {
+        bouc_wen_reference_.push_back(starting_bouc_wen(start.arms[arm].cable, arm_key(arm)));
+        continue;
+      }
       reference_.push_back(starting_parameters(start.arms[arm].cable, elements, arm_key(arm)));
       k0_.push_back(starting_k0(start.arms[arm].cable, elements, arm_key(arm)));
     }
@@ -157,11 +167,14 @@ class FitVariables {
     for (const damper::ArmDescription& a : start.arms) mass_scale_ += a.mass;
   }
 
-  int elements() const { return static_cast<int>(reference_.front().jenkin.size()); }
-  int per_type() const { return 1 + 2 * elements(); }
-  int cable_variables() const { return per_type() * static_cast<int>(reference_.size()); }
+  cable::SectionLawKind law() const { return law_; }
+  bool bouc_wen() const { return law_ == cable::SectionLawKind::bouc_wen; }
+  /// Jenkin elements per type (none under the Bouc-Wen law).
+  int elements() const { return bouc_wen() ? 0 : static_cast<int>(reference_.front().jenkin.size()); }
+  int per_type() const { return bouc_wen() ? kBoucWenVariables : 1 + 2 * elements(); }
+  int cable_variables() const { return per_type() * static_cast<int>(types()); }
   int size() const { return cable_variables() + static_cast<int>(numbers_.size()) + (fit_clamp_mass_ ? 1 : 0); }
-  std::size_t types() const { return reference_.size(); }
+  std::size_t types() const { return prefixes_.size(); }
   const std::vector<std::size_t>& type_of_arm() const { return type_of_arm_; }
   bool fits_clamp_mass() const { return fit_clamp_mass_; }
   int clamp_mass_index() const { return size() - 1; }
@@ -172,10 +185,10 @@ class FitVariables {
     return k >= 0 && k < static_cast<int>(numbers_.size()) ? &numbers_[static_cast<std::size_t>(k)] : nullptr;
   }
 
-  /// Each type's parameters at x, in the packed order.
+  /// Each type's parameters at x, in the packed order (none under the Bouc-Wen law).
   std::vector<section::MasingParameters> cables(const Eigen::VectorXd& x) const {
     std::vector<section::MasingParameters> out;
-    for (std::size_t t = 0; t < types(); ++t) {
+    for (std::size_t t = 0; t < reference_.size(); ++t) {
       const section::MasingParameters& r = reference_[t];
       const int o = per_type() * static_cast<int>(t);
       section::MasingParameters p{r.ei * std::exp(x(o)), {}};
@@ -187,6 +200,29 @@ class FitVariables {
     return out;
   }
 
+  /// Each type's Bouc-Wen numbers at x (none under the Masing law).
+  std::vector<section::BoucWenParameters> bouc_wen_cables(const Eigen::VectorXd& x) const {
+    std::vector<section::BoucWenParameters> out;
+    for (std::size_t t = 0; t < bouc_wen_reference_.size(); ++t) {
+      const section::BoucWenParameters& r = bouc_wen_reference_[t];
+      const int o = per_type() * static_cast<int>(t);
+      out.push_back({r.ei_min * std::exp(x(o)), r.ei_max * std::exp(x(o + 1)), r.chi0 * std::exp(x(o + 2))});
+    }
+    return out;
+  }
+
+  /// The value of cable variable i (< cable_variables()) at x.
+  double cable_value(const Eigen::VectorXd& x, int i) const {
+    const std::size_t t = static_cast<std::size_t>(i / per_type());
+    const int k = i % per_type();
+    if (bouc_wen()) {
+      const section::BoucWenParameters p = bouc_wen_cables(x)[t];
+      return k == 0 ? p.ei_min : k == 1 ? p.ei_max : p.chi0;
+    }
+    const section::MasingParameters p = cables(x)[t];
+    return k == 0 ? p.ei : (k - 1) % 2 == 0 ? p.jenkin[(k - 1) / 2].c : p.jenkin[(k - 1) / 2].h;
+  }
+
   double clamp_mass(const Eigen::VectorXd& x) const {
     return start_.clamp_mass + (fit_clamp_mass_ ? mass_scale_ * x(clamp_mass_index()) : 0.0);
   }
@@ -195,6 +231,7 @@ class FitVariables {
   /// its sections (at most `max_sections`), mirror length and lever-arm cap).
   damper::DamperDescription damper(const Eigen::VectorXd& x, double clamp_mass, int max_sections = cable::max_sections) const {
     const std::vector<section::MasingParameters> fitted = cables(x);
+    const std::vector<section::BoucWenParameters> fitted_bouc_wen = bouc_wen_cables(x);
     damper::DamperDescription d = start_;
     d.clamp_mass = clamp_mass;
     for (std::size_t k = 0; k < numbers_.size(); ++k) {
@@ -204,6 +241,12 @@ class FitVariables {
       const std::size_t t = type_of_arm_[k];
       cable::CableDescription& c = d.arms[k].cable;
       c.sections = std::min(c.sections, max_sections);
+      if (bouc_wen()) {
+        const section::BoucWenParameters& p = fitted_bouc_wen[t];
+        c.bouc_wen = {cable::Profile::constant(p.ei_min), cable::Profile::constant(p.ei_max),
+                      cable::Profile::constant(p.chi0)};
+        continue;
+      }
       c.ei = cable::Profile::constant(fitted[t].ei);
       c.jenkin.clear();
       for (std::size_t j = 0; j < fitted[t].jenkin.size(); ++j) {
@@ -220,12 +263,14 @@ class FitVariables {
     if (const DamperNumber* n = number(i)) return n->path;
     const std::string& prefix = prefixes_[static_cast<std::size_t>(i / per_type())];
     const int k = i % per_type();
+    if (bouc_wen()) return prefix + (k == 0 ? "ei_min" : k == 1 ? "ei_max" : "chi0");
     if (k == 0) return prefix + "ei";
     return fmt::format("{}jenkin[{}].{}", prefix, (k - 1) / 2, (k - 1) % 2 == 0 ? "c" : "h");
   }
   std::string unit(int i) const {
     if (fit_clamp_mass_ && i == clamp_mass_index()) return "kg";
     if (const DamperNumber* n = number(i)) return n->unit;
+    if (bouc_wen()) return i % per_type() == 2 ? "1/m" : "N m^2";
     return i % per_type() == 0 || (i % per_type() - 1) % 2 == 0 ? "N m^2" : "N m";
   }
   std::string type_prefix(std::size_t t) const { return prefixes_[t]; }
@@ -235,7 +280,7 @@ class FitVariables {
   Eigen::VectorXd sorted(const Eigen::VectorXd& x) const {
     Eigen::VectorXd out = x;
     const std::vector<section::MasingParameters> unsorted = cables(x);
-    for (std::size_t t = 0; t < types(); ++t) {
+    for (std::size_t t = 0; t < unsorted.size(); ++t) {
       const section::MasingParameters p = fit_core::sorted_by_slip_curvature(unsorted[t]);
       const int o = per_type() * static_cast<int>(t);
       for (int j = 0; j < elements(); ++j) {
@@ -250,7 +295,8 @@ class FitVariables {
   /// damper's scalings. With the quasi-static cable, lengths and offsets times s,
   /// inertias times s^2, ei and c times s^3 and h times s (the arm masses kept) give
   /// the same clamp force for the same clamp motion: each arm's tip rotates 1/s times
-  /// as much, its moments are s times as large, its forces the same. One direction per
+  /// as much, its moments are s times as large, its forces the same (under the
+  /// Bouc-Wen law: ei_min and ei_max times s^3, chi0, a curvature, times s^-2). One direction per
   /// cable type whose every arm has its cable length and inertia free and its offset
   /// free or 0, and no element with the modified Masing model's k0 (whose lever-arm
   /// cap does not scale). Each direction has unit length.
@@ -260,6 +306,10 @@ class FitVariables {
       Eigen::VectorXd g = Eigen::VectorXd::Zero(size());
       const int o = per_type() * static_cast<int>(t);
       g(o) = 3.0;
+      if (bouc_wen()) {
+        g(o + 1) = 3.0;
+        g(o + 2) = -2.0;
+      }
       for (int j = 0; j < elements(); ++j) {
         g(o + 1 + 2 * j) = 3.0;
         g(o + 2 + 2 * j) = 1.0;
@@ -291,7 +341,8 @@ class FitVariables {
   }
 
   /// The starting points: the starting values with ei and every h scaled (the
-  /// numbers of the damper at the start's).
+  /// Bouc-Wen law: ei_min and ei_max, and chi0 for h; the numbers of the damper at
+  /// the start's).
   std::vector<Eigen::VectorXd> starts() const {
     std::vector<Eigen::VectorXd> out;
     for (const auto& [ei_factor, h_factor] : kStartFactors) {
@@ -299,6 +350,10 @@ class FitVariables {
       for (std::size_t t = 0; t < types(); ++t) {
         const int o = per_type() * static_cast<int>(t);
         x(o) = std::log(ei_factor);
+        if (bouc_wen()) {
+          x(o + 1) = std::log(ei_factor);
+          x(o + 2) = std::log(h_factor);
+        }
         for (int j = 0; j < elements(); ++j) x(o + 2 + 2 * j) = std::log(h_factor);
       }
       out.push_back(x);
@@ -309,6 +364,39 @@ class FitVariables {
  private:
   std::size_t first_arm(std::size_t type) const {
     return static_cast<std::size_t>(std::find(type_of_arm_.begin(), type_of_arm_.end(), type) - type_of_arm_.begin());
+  }
+
+  /// The law of every arm's cable (one law per fit); `elements` must be 1 (the
+  /// option's default) under the Bouc-Wen law.
+  static cable::SectionLawKind common_law(const damper::DamperDescription& start, int elements) {
+    const cable::SectionLawKind law = start.arms.front().cable.law;
+    for (std::size_t k = 1; k < start.arms.size(); ++k) {
+      if (start.arms[k].cable.law != law) {
+        throw InvalidParameter(arm_key(k) + "law",
+                               fmt::format(" = \"{}\" but arm[0]'s is \"{}\": expected one section law for every "
+                                           "arm (identify impedance fits one law)",
+                                           cable::section_law_name(start.arms[k].cable.law), cable::section_law_name(law)));
+      }
+    }
+    if (law == cable::SectionLawKind::bouc_wen && elements != 1) {
+      throw InvalidParameter("elements", fmt::format(" = {}: Jenkin elements belong to the Masing law; the start's "
+                                                     "cables are law = \"bouc-wen\" (ei_min, ei_max and chi0 are fitted)",
+                                                     elements));
+    }
+    return law;
+  }
+
+  /// The start's Bouc-Wen numbers, constants with ei_max > ei_min (fitted in logarithms each).
+  static section::BoucWenParameters starting_bouc_wen(const cable::CableDescription& c, const std::string& key) {
+    const section::BoucWenParameters p{constant_value(c.bouc_wen.ei_min, key + "ei_min"),
+                                       constant_value(c.bouc_wen.ei_max, key + "ei_max"),
+                                       constant_value(c.bouc_wen.chi0, key + "chi0")};
+    if (!(p.ei_max > p.ei_min)) {
+      throw InvalidParameter(key + "ei_max", fmt::format(" = {} N m^2: expected a starting value above ei_min = {} N m^2 "
+                                                         "(a cable without hysteresis leaves chi0 undetermined)",
+                                                         format_value(p.ei_max), format_value(p.ei_min)));
+    }
+    return p;
   }
 
   /// The start's elements where it has `elements` of them, otherwise their sums
@@ -354,8 +442,10 @@ class FitVariables {
   std::vector<DamperNumber> numbers_;
   bool fit_clamp_mass_ = false;
   std::vector<std::string> prefixes_;
-  std::vector<section::MasingParameters> reference_;
+  cable::SectionLawKind law_;
+  std::vector<section::MasingParameters> reference_;        ///< per type, under the Masing law
   std::vector<std::vector<double>> k0_;
+  std::vector<section::BoucWenParameters> bouc_wen_reference_;  ///< per type, under the Bouc-Wen law
   double mass_scale_ = 0.0;
 };
 
@@ -575,7 +665,6 @@ int tied_partner(const std::vector<ParameterEstimate>& parameters, const least_s
 /// Each variable's estimate (value, standard error, resolution, sensitivity), in the variables' order.
 std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Eigen::VectorXd& x,
                                          const least_squares::Statistics& s) {
-  const std::vector<section::MasingParameters> cables = variables.cables(x);
   std::vector<ParameterEstimate> out;
   for (int i = 0; i < variables.size(); ++i) {
     ParameterEstimate e;
@@ -596,9 +685,7 @@ std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Ei
       e.resolution_at_1_percent = s.resolution(i);
       e.sensitivity = n->logarithmic ? s.sensitivity(i) : s.sensitivity(i) / n->scale;
     } else {
-      const section::MasingParameters& p = cables[static_cast<std::size_t>(i / variables.per_type())];
-      const int k = i % variables.per_type();
-      e.value = k == 0 ? p.ei : (k - 1) % 2 == 0 ? p.jenkin[(k - 1) / 2].c : p.jenkin[(k - 1) / 2].h;
+      e.value = variables.cable_value(x, i);
       e.standard_error = e.value * s.standard_error(i);  // a log variable: relative errors
       e.resolution_at_1_percent = s.resolution(i);
       e.sensitivity = s.sensitivity(i);
@@ -613,7 +700,8 @@ std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Ei
   return out;
 }
 
-/// Each type's ei + sum c, a combination the data determine even where nothing slips.
+/// Each type's ei + sum c, a combination the data determine even where nothing slips
+/// (none under the Bouc-Wen law, whose stick stiffness ei_max is a parameter).
 std::vector<ParameterEstimate> stick_stiffnesses(const FitVariables& variables, const Eigen::VectorXd& x,
                                                  const least_squares::Statistics& s) {
   std::vector<ParameterEstimate> out;
@@ -723,7 +811,10 @@ std::vector<std::size_t> cable_types(const damper::DamperDescription& d) {
   std::vector<std::size_t> first_of_type;
   for (std::size_t k = 0; k < d.arms.size(); ++k) {
     const cable::CableDescription& c = d.arms[k].cable;
-    auto same = [&](std::size_t f) { return d.arms[f].cable.ei == c.ei && d.arms[f].cable.jenkin == c.jenkin; };
+    auto same = [&](std::size_t f) {
+      const cable::CableDescription& first = d.arms[f].cable;
+      return first.law == c.law && first.ei == c.ei && first.jenkin == c.jenkin && first.bouc_wen == c.bouc_wen;
+    };
     const auto found = std::find_if(first_of_type.begin(), first_of_type.end(), same);
     type[k] = static_cast<std::size_t>(found - first_of_type.begin());
     if (found == first_of_type.end()) first_of_type.push_back(k);
@@ -788,7 +879,9 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
 
   ImpedanceIdentification result;
   result.cable_type = variables.type_of_arm();
+  result.law = variables.law();
   result.cables = variables.cables(x);
+  result.bouc_wen_cables = variables.bouc_wen_cables(x);
   result.clamp_mass = variables.clamp_mass(x);
   result.damper = variables.damper(x, std::max(0.0, result.clamp_mass));
   result.misfit = sum_of_squares;

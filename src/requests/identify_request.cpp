@@ -67,6 +67,23 @@ std::vector<io::JsonObject> jenkin_json(const std::vector<std::pair<double, doub
 
 }  // namespace
 
+io::JsonObject& add_bouc_wen(io::JsonObject& json, const section::BoucWenParameters& p) {
+  return json.add("law", "bouc-wen").add("ei_min", p.ei_min).add("ei_max", p.ei_max).add("chi0", p.chi0);
+}
+
+std::string bouc_wen_text(const section::BoucWenParameters& p) {
+  return fmt::format("ei_min = {:.6g} N m^2, ei_max = {:.6g} N m^2, chi0 = {:.6g} 1/m", p.ei_min, p.ei_max, p.chi0);
+}
+
+std::string bouc_wen_cable_keys(const section::BoucWenParameters& p) {
+  return fmt::format("law = \"bouc-wen\"\nei_min = {}   # N m^2\nei_max = {}   # N m^2\nchi0 = {}   # 1/m\n", p.ei_min,
+                     p.ei_max, p.chi0);
+}
+
+section::BoucWenParameters bouc_wen_numbers(const cable::CableDescription& cable) {
+  return {cable.bouc_wen.ei_min.at(0.0), cable.bouc_wen.ei_max.at(0.0), cable.bouc_wen.chi0.at(0.0)};
+}
+
 Table<FittedSample> local_fitted_table() {
   return fitted_table("curvature_per_m", "1/m", "moment_n_m", "N m", "moment");
 }
@@ -75,7 +92,7 @@ io::JsonObject local_summary(const LocalResult& result) {
   const identification::LocalIdentification& fit = result.fit;
   io::JsonObject json;
   if (fit.bouc_wen) {
-    json.add("law", "bouc-wen").add("ei_min", fit.bouc_wen->ei_min).add("ei_max", fit.bouc_wen->ei_max).add("chi0", fit.bouc_wen->chi0);
+    add_bouc_wen(json, *fit.bouc_wen);
   } else {
     std::vector<std::pair<double, double>> c_h;
     for (const section::Jenkin& e : fit.parameters.jenkin) c_h.emplace_back(e.c, e.h);
@@ -94,10 +111,7 @@ std::string local_parameters_toml(const LocalResult& result, std::string_view so
       "# Identified by stockbridge identify local from {}: relative L1 error {:.4g}, moment offset {} N m.\n"
       "# The keys of a [cable] table: paste them into a cable or damper file.\n",
       source, fit.error, fit.moment_offset);
-  if (fit.bouc_wen) {
-    return text + fmt::format("law = \"bouc-wen\"\nei_min = {}   # N m^2\nei_max = {}   # N m^2\nchi0 = {}   # 1/m\n",
-                              fit.bouc_wen->ei_min, fit.bouc_wen->ei_max, fit.bouc_wen->chi0);
-  }
+  if (fit.bouc_wen) return text + bouc_wen_cable_keys(*fit.bouc_wen);
   text += fmt::format("ei = {}                 # N m^2\njenkin = [", fit.parameters.ei);
   for (std::size_t j = 0; j < fit.parameters.jenkin.size(); ++j) {
     text += fmt::format("{} {{ c = {}, h = {} }}", j ? "," : "", fit.parameters.jenkin[j].c, fit.parameters.jenkin[j].h);
@@ -190,10 +204,7 @@ io::JsonObject global_summary(const GlobalRequest& request, const GlobalResult& 
   const cable::CableDescription& c = result.fit.cable;
   io::JsonObject json;
   if (c.law == cable::SectionLawKind::bouc_wen) {
-    json.add("law", "bouc-wen")
-        .add("ei_min", c.bouc_wen.ei_min.at(0.0))
-        .add("ei_max", c.bouc_wen.ei_max.at(0.0))
-        .add("chi0", c.bouc_wen.chi0.at(0.0));
+    add_bouc_wen(json, bouc_wen_numbers(c));
   } else {
     std::vector<std::pair<double, double>> c_h;
     for (const cable::JenkinProfile& e : c.jenkin) c_h.emplace_back(e.c.at(0.0), e.h.at(0.0));

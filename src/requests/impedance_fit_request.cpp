@@ -10,6 +10,7 @@
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/csv_writer.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/requests/identify_request.hpp"
 
 namespace stockbridge::requests {
 
@@ -143,20 +144,25 @@ io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measureme
     if (e.geometry) geometry.add(e.name, e.value);
   }
   for (const identification::ParameterEstimate& e : fit.stick_stiffness) stick.push_back(estimate_json(e));
-  for (std::size_t t = 0; t < fit.cables.size(); ++t) {
+  // A cable type's law and numbers.
+  auto add_cable = [&](io::JsonObject& json, std::size_t t) -> io::JsonObject& {
+    if (fit.law == cable::SectionLawKind::bouc_wen) return add_bouc_wen(json, fit.bouc_wen_cables[t]);
+    return json.add("ei", fit.cables[t].ei).add("jenkin", jenkin_json(fit.cables[t]));
+  };
+  for (std::size_t t = 0; t < fit.types(); ++t) {
     std::vector<std::string> arms;
     for (std::size_t k = 0; k < fit.cable_type.size(); ++k) {
       if (fit.cable_type[k] == t) arms.push_back(start.arm_name(k));
     }
-    cables.push_back(io::JsonObject().add("arms", arms).add("ei", fit.cables[t].ei).add("jenkin", jenkin_json(fit.cables[t])));
+    io::JsonObject type;
+    cables.push_back(add_cable(type.add("arms", arms), t));
   }
   std::vector<std::vector<double>> correlation(static_cast<std::size_t>(fit.correlation.rows()));
   for (Eigen::Index i = 0; i < fit.correlation.rows(); ++i) {
     for (Eigen::Index j = 0; j < fit.correlation.cols(); ++j) correlation[static_cast<std::size_t>(i)].push_back(fit.correlation(i, j));
   }
-  return io::JsonObject()
-      .add("ei", fit.cables.front().ei)
-      .add("jenkin", jenkin_json(fit.cables.front()))
+  io::JsonObject summary;
+  return add_cable(summary, 0)
       .add("clamp_mass_kg", fit.clamp_mass)
       .add("misfit", fit.misfit)
       .add("rms_relative_error", fit.rms_relative_error)
@@ -203,7 +209,7 @@ std::string fitted_cable_file(const identification::ImpedanceIdentification& fit
       "Identified by stockbridge identify impedance from {}:\n"
       "RMS relative error of Z {:.4g} % at {} points; the length is arm[{}]'s (damper files cut it to theirs).",
       source, 100.0 * fit.rms_relative_error, fit.fitted.size(), arm);
-  const std::string prefix = fit.cables.size() > 1 ? fmt::format("arm[{}].cable.", arm) : "";
+  const std::string prefix = fit.types() > 1 ? fmt::format("arm[{}].cable.", arm) : "";
   for (const identification::ParameterEstimate& e : fit.parameters) {
     if (!e.determined && e.name.starts_with(prefix) && !e.geometry) comment += fmt::format("\n{} = {:.6g} {} is NOT determined by the data.", e.name, e.value, e.unit);
   }

@@ -1,6 +1,7 @@
 // A damper whose messengers follow the Bouc-Wen law (slenderpy's, MODEL.md section
 // 13) through the program as users run it: impedance, modes (stick: EI_max, slip:
-// EI_min), a span with it at both ends, a design study of its numbers, and a cable
+// EI_min), a span with it at both ends, a design study of its numbers, the
+// identifications (local from a loop, impedance from curves), and a cable
 // table with a key of the other law (exit 2, one line naming file and line, nothing
 // written).
 
@@ -36,12 +37,12 @@ double bouc_wen_json_number(const std::string& json, const std::string& anchor, 
 }
 
 /// A damper file of two identical arms with constant Bouc-Wen numbers.
-std::string uniform_bouc_wen_damper(double ei_max) {
+std::string uniform_bouc_wen_damper(double ei_max, int sections = 30) {
   std::ostringstream text;
   text << "[clamp]\nmass = 0.7\n";
   for (const char* name : {"left", "right"}) {
     text << "[[arm]]\nname = \"" << name << "\"\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n"
-         << "[arm.cable]\nlaw = \"bouc-wen\"\nlength = 0.1875\nsections = 30\nei_min = 2.5\nei_max = " << ei_max
+         << "[arm.cable]\nlaw = \"bouc-wen\"\nlength = 0.1875\nsections = " << sections << "\nei_min = 2.5\nei_max = " << ei_max
          << "\nchi0 = 0.03\n";
   }
   return text.str();
@@ -166,6 +167,45 @@ TEST(BoucWenCli, IdentifyLocalGivesTheLoopsNumbersAsCableKeys) {
   const CliResult two = run_cli("identify local --law bouc-wen --elements 2 --input loop.csv", dir);
   EXPECT_EQ(two.exit_code, 2);
   EXPECT_NE(two.err.find("elements = 2: Jenkin elements belong to the Masing law"), std::string::npos) << two.err;
+}
+
+// identify impedance from a Bouc-Wen start fits ei_min, ei_max and chi0 to the
+// curves `impedance` writes of a Bouc-Wen damper; the cable file it writes has the
+// law and reproduces the curves.
+TEST(BoucWenCli, IdentifyImpedanceFitsTheLawToCurvesAndItsCableFileReproducesThem) {
+  const auto dir = scratch_directory("bouc-wen-identify-impedance");
+  std::ofstream(dir / "truth.toml") << uniform_bouc_wen_damper(25.0, 12);
+  std::ofstream(dir / "start.toml") << uniform_bouc_wen_damper(24.0, 12);
+  const std::string curves = " --velocity 0.05,0.2 --fmin 4 --fmax 60 --points 4";
+  ASSERT_EQ(run_cli("impedance truth.toml" + curves + " -o measured.csv", dir).exit_code, 0);
+  const CliResult r = run_cli("identify impedance --damper start.toml --input measured.csv --json -o cable.toml", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("{\"law\": \"bouc-wen\", \"ei_min\": ", 0), 0u) << r.out;
+  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_min"), 2.5, 1e-4) << r.out;
+  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_max"), 25.0, 1e-3) << r.out;
+  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "chi0"), 0.03, 1e-6) << r.out;
+  EXPECT_NE(r.err.find("identify impedance: ei_min = 2.5"), std::string::npos) << r.err;
+  EXPECT_NE(read_text(dir / "cable.toml").find("law = \"bouc-wen\""), std::string::npos);
+
+  std::string reused = uniform_bouc_wen_damper(24.0, 12);
+  for (std::size_t at = reused.find("law = "); at != std::string::npos; at = reused.find("law = ", at)) {
+    const std::size_t end = reused.find("chi0 = 0.03\n", at) + 12;
+    reused.replace(at, end - at, "file = \"cable.toml\"\n");
+  }
+  std::ofstream(dir / "reused.toml") << reused;
+  ASSERT_EQ(run_cli("impedance reused.toml" + curves + " -o again.csv", dir).exit_code, 0);
+  const Csv measured = read_csv(dir / "measured.csv"), again = read_csv(dir / "again.csv");
+  for (const char* column : {"re_z_n_s_m", "im_z_n_s_m"}) {
+    for (std::size_t i = 0; i < measured.column(column).size(); ++i) {
+      EXPECT_NEAR(again.column(column)[i], measured.column(column)[i], 1e-4 * std::abs(measured.column(column)[i]) + 1e-6)
+          << column << " " << i;
+    }
+  }
+
+  const CliResult two = run_cli("identify impedance --damper start.toml --input measured.csv --elements 2 -o two.toml", dir);
+  EXPECT_EQ(two.exit_code, 2);
+  EXPECT_NE(two.err.find("--elements = 2: Jenkin elements belong to the Masing law"), std::string::npos) << two.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "two.toml"));
 }
 
 }  // namespace

@@ -754,6 +754,28 @@ def test_identify_impedance_from_arrays_equals_the_file(impedance_fit):
         sb.identify_impedance(again["damper"], frequency=[10.0, 20.0], velocity=[0.1, 0.1], z=[1j, 2j], elements=0)
 
 
+def test_identify_impedance_of_a_bouc_wen_damper_gives_its_numbers_back():
+    """A start of law "bouc-wen" fits ei_min, ei_max and chi0 (the summary names the
+    law); the fitted cable is a Bouc-Wen Cable."""
+    def damper(ei_min, ei_max, chi0):
+        cable = sb.make_cable(0.1875, sections=12, law="bouc-wen", ei_min=ei_min, ei_max=ei_max, chi0=chi0)
+        arm = dict(name="left", mass=0.856, inertia=0.001814, offset=0.0325, cable=cable)
+        return sb.make_damper(0.7, [arm, dict(arm, name="right")])
+    frequencies = [4.0, 7.0, 10.0, 15.0, 25.0, 40.0]
+    z = sb.impedance(damper(2.5, 25.0, 0.03), frequencies=frequencies, velocity=0.2)
+    fit = sb.identify_impedance(damper(2.0, 30.0, 0.04), frequency=frequencies, velocity=[0.2] * len(frequencies),
+                                z=z["re_z_n_s_m"][0] + 1j * z["im_z_n_s_m"][0])
+    assert fit["law"] == "bouc-wen" and "ei" not in fit and fit["stick_stiffness"] == []
+    for key, truth in (("ei_min", 2.5), ("ei_max", 25.0), ("chi0", 0.03)):
+        assert fit[key] == pytest.approx(truth, rel=1e-5), key
+    assert [p["name"] for p in fit["parameters"]] == ["ei_min", "ei_max", "chi0"]
+    assert fit["cable"].law == "bouc-wen" and fit["cable"].chi0 == fit["chi0"]
+    assert 'law = "bouc-wen"' in fit["cable_files"][0]
+    with pytest.raises(sb.InvalidParameter, match="elements = 2: Jenkin elements belong to the Masing law"):
+        sb.identify_impedance(fit["damper"], frequency=frequencies, velocity=[0.2] * len(frequencies),
+                              z=z["re_z_n_s_m"][0] + 1j * z["im_z_n_s_m"][0], elements=2)
+
+
 def test_the_conductor_catalogue_equals_the_programs_json(tmp_path):
     out = subprocess.run([CLI, "conductors", "ACSR Drake", "--json"], check=True, capture_output=True, text=True).stdout
     drake = sb.conductor("acsr-drake")  # case, spaces and hyphens aside

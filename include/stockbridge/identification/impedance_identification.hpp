@@ -1,7 +1,8 @@
 #pragma once
 // Identification from a measured damper impedance (dissertation 4.3.1; the damper
-// characteristic test of IEC 61897): the cable parameters (ei and the Jenkin
-// elements' c_j, h_j, constant along the cable) and optionally numbers of the damper
+// characteristic test of IEC 61897): the cable parameters (constant along the cable:
+// under the Masing law ei and the Jenkin elements' c_j, h_j; under the Bouc-Wen law,
+// when the start's cables have law = "bouc-wen", ei_min, ei_max and chi0) and optionally numbers of the damper
 // itself (the clamp mass, arm masses, inertias, offsets, cable lengths: a vendor's
 // sheet of a damper whose geometry is not known exactly, MODEL.md 11) that make the
 // model's impedance match a measured Z(f, V), the damper's other numbers being known.
@@ -29,6 +30,8 @@
 
 #include "stockbridge/damper/impedance.hpp"
 #include "stockbridge/damper/tracker.hpp"
+#include "stockbridge/cable/cable_description.hpp"
+#include "stockbridge/section/bouc_wen_section.hpp"
 #include "stockbridge/section/masing_law.hpp"
 
 namespace stockbridge::identification {
@@ -53,7 +56,8 @@ struct ImpedanceMeasurement {
 std::vector<std::vector<std::size_t>> measured_curves(const ImpedanceMeasurement& measurement);
 
 /// Arms that share one cable type (the fit gives them the same parameters): those
-/// whose cables have the same ei and Jenkin elements in the damper description
+/// whose cables have the same law and numbers (ei and Jenkin elements, or ei_min,
+/// ei_max and chi0) in the damper description
 /// (lengths and sections may differ). Per arm, the index of its type; types are
 /// numbered in the order of their first arm.
 std::vector<std::size_t> cable_types(const damper::DamperDescription& damper);
@@ -64,7 +68,7 @@ inline constexpr const char* free_damper_numbers =
     "clamp.mass, or arm.<name or [index]>. followed by mass, inertia, offset or cable.length";
 
 struct ImpedanceIdentificationOptions {
-  int elements = 1;              ///< Jenkin elements per cable type, 1..6
+  int elements = 1;              ///< Jenkin elements per cable type, 1..6 (1 under the Bouc-Wen law, which has none)
   bool fit_clamp_mass = false;   ///< also fit m_c (otherwise the description's); the same as "clamp.mass" in `free`
   /// Numbers of the damper fitted with the cables, by the paths design::damper_number
   /// reads ("arm.left.mass", "arm[1].cable.length", "clamp.mass"; free_damper_numbers),
@@ -112,7 +116,11 @@ struct ParameterEstimate {
 struct ImpedanceIdentification {
   damper::DamperDescription damper;                ///< the start's damper with the fitted parameters (and numbers)
   std::vector<std::size_t> cable_type;             ///< per arm (cable_types())
-  std::vector<section::MasingParameters> cables;   ///< per type, elements sorted by slip curvature h / c
+  cable::SectionLawKind law = cable::SectionLawKind::masing;  ///< the start's cables' law (one for every arm)
+  std::vector<section::MasingParameters> cables;   ///< per type under the Masing law, elements sorted by slip curvature h / c
+  std::vector<section::BoucWenParameters> bouc_wen_cables;  ///< per type under the Bouc-Wen law
+  /// Cable types fitted (of either law).
+  std::size_t types() const { return cables.size() + bouc_wen_cables.size(); }
   double clamp_mass = 0.0;                         ///< kg (fitted, or the description's)
   double misfit = 0.0;             ///< S at the optimum
   double rms_relative_error = 0.0; ///< sqrt(S / N)
@@ -123,8 +131,9 @@ struct ImpedanceIdentification {
   std::vector<ParameterEstimate> parameters;
   /// Correlations of the parameters' estimates (NaN for a parameter not determined).
   Eigen::MatrixXd correlation;
-  /// The stick stiffness ei + sum c of each type, which data that never reach slip
-  /// still determine (named "ei_plus_c", "arm[1].cable.ei_plus_c").
+  /// The stick stiffness ei + sum c of each Masing type, which data that never reach slip
+  /// still determine (named "ei_plus_c", "arm[1].cable.ei_plus_c"; none under the
+  /// Bouc-Wen law, whose stick stiffness is the parameter ei_max).
   std::vector<ParameterEstimate> stick_stiffness;
   /// What the data do not determine, one sentence each.
   std::vector<std::string> notes;
@@ -140,8 +149,9 @@ struct ImpedanceIdentification {
 
 /// Fits the cable parameters (and the numbers of options.free) of `start` (its values
 /// the starting values) to the measurement. Throws InvalidParameter for a start
-/// whose cables are profiles or use the modified Masing model with another element
-/// count, for bad options (a path of `free` named: field "free") or measurements.
+/// whose cables are profiles, use the modified Masing model with another element
+/// count, differ in law ("arm[1].cable.law"), or have law = "bouc-wen" with
+/// ei_max <= ei_min or elements != 1 (field "elements"), for bad options (a path of `free` named: field "free") or measurements.
 ImpedanceIdentification identify_impedance(const damper::DamperDescription& start, const ImpedanceMeasurement& measurement,
                                            const ImpedanceIdentificationOptions& options);
 

@@ -13,12 +13,24 @@
 #include "stockbridge/core/warning.hpp"
 #include "stockbridge/identification/global_identification.hpp"
 #include "stockbridge/identification/local_identification.hpp"
+#include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/section/bouc_wen_section.hpp"
 #include "stockbridge/requests/output_table.hpp"
 
 namespace stockbridge::requests {
 
 /// A fit whose relative L1 error exceeds this does not model its record: a warning.
 inline constexpr double large_fit_error = 0.1;
+
+/// A fitted Bouc-Wen law as every identification's summaries give it: the JSON keys
+/// law = "bouc-wen", ei_min, ei_max, chi0 (added to `json`, which is returned) ...
+io::JsonObject& add_bouc_wen(io::JsonObject& json, const section::BoucWenParameters& p);
+/// ... the summary line's "ei_min = ... N m^2, ei_max = ... N m^2, chi0 = ... 1/m" ...
+std::string bouc_wen_text(const section::BoucWenParameters& p);
+/// ... and the keys of a [cable] table, one a line with its unit in a comment.
+std::string bouc_wen_cable_keys(const section::BoucWenParameters& p);
+/// The constant Bouc-Wen numbers of a cable (its profiles' values at s = 0).
+section::BoucWenParameters bouc_wen_numbers(const cable::CableDescription& cable);
 
 struct LocalRequest {
   std::string law = "masing";       ///< masing | bouc-wen

@@ -58,13 +58,15 @@ Table<FittedPoint> fitted_table();
 std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification& fit, std::string_view source);
 
 /// The summary, as `identify impedance --json` prints it and Python returns it:
-/// ei and jenkin [{c, h}] (the first cable type's, as identify global prints them),
+/// ei and jenkin [{c, h}] (the first cable type's, as identify global prints them;
+/// under the Bouc-Wen law law = "bouc-wen", ei_min, ei_max, chi0),
 /// clamp_mass_kg, misfit, rms_relative_error, rms_limit, poor_fit, points, curves,
 /// not_converged, parameters [{name, unit, value, standard_error,
 /// resolution_at_1_percent, sensitivity, determined, geometry}], geometry {path:
 /// value} (the fitted numbers of the damper), correlation (rows in the parameters' order, null for
 /// a parameter not determined), stick_stiffness [the same for each type's
-/// ei_plus_c], undetermined [names], notes, cables [{arms, ei, jenkin}] (every
+/// ei_plus_c; none under the Bouc-Wen law], undetermined [names], notes, cables
+/// [{arms, ei, jenkin} or {arms, law, ei_min, ei_max, chi0}] (every
 /// type), model_runs, starts, termination, iterations, warnings (`input_warnings`,
 /// the measured file's, then fit_warnings).
 io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measurement,

@@ -4,6 +4,7 @@
 // determine, the clamp mass, the curves' grouping, and the least-squares core's
 // statistics against closed forms.
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -219,6 +220,105 @@ TEST(ImpedanceIdentification, RefusesProfilesAndTooFewPointsNamingThem) {
   EXPECT_THROW(identify_impedance(impedance_test_damper(2.8, {{20.0, 0.7}}), one, {}), InvalidParameter);
   one.points[0].impedance = 0.0;
   EXPECT_THROW(one.validate(), InvalidParameter);
+}
+
+/// The test damper with Bouc-Wen cables (12 sections) of ei_min, ei_max, chi0.
+DamperDescription bouc_wen_test_damper(double ei_min, double ei_max, double chi0) {
+  DamperDescription d = impedance_test_damper(2.8, {{20.0, 0.7}});
+  for (damper::ArmDescription& a : d.arms) a.cable = cable::CableDescription::uniform_bouc_wen(0.1875, 12, ei_min, ei_max, chi0);
+  return d;
+}
+
+TEST(ImpedanceIdentificationBoucWen, RecoversTheLawsNumbersExactlyFromNoiseFreeCurves) {
+  // The Masing test cable's equivalent (stick 22.8, slip 2.8 N m^2, hysteretic moment
+  // 20 x 0.035 = 0.7 N m), from a start 5-10 % off.
+  const ImpedanceMeasurement m = measured(bouc_wen_test_damper(2.8, 22.8, 0.035), {0.05, 0.2}, 6);
+  const ImpedanceIdentification fit = identify_impedance(bouc_wen_test_damper(2.95, 21.0, 0.038), m, {});
+  EXPECT_EQ(fit.law, cable::SectionLawKind::bouc_wen);
+  EXPECT_TRUE(fit.cables.empty());
+  ASSERT_EQ(fit.bouc_wen_cables.size(), 1u);
+  EXPECT_LT(relative_error(fit.bouc_wen_cables[0].ei_min, 2.8), 1e-5);
+  EXPECT_LT(relative_error(fit.bouc_wen_cables[0].ei_max, 22.8), 1e-5);
+  EXPECT_LT(relative_error(fit.bouc_wen_cables[0].chi0, 0.035), 1e-5);
+  EXPECT_LT(fit.rms_relative_error, 1e-6);
+  EXPECT_EQ(fit.fit.termination, Termination::converged) << brief_report(fit.fit);
+  ASSERT_EQ(fit.parameters.size(), 3u);
+  EXPECT_EQ(fit.parameters[0].name, "ei_min");
+  EXPECT_EQ(fit.parameters[1].name, "ei_max");
+  EXPECT_EQ(fit.parameters[2].name, "chi0");
+  EXPECT_EQ(fit.parameters[2].unit, "1/m");
+  for (const ParameterEstimate& p : fit.parameters) EXPECT_TRUE(p.determined) << p.name;
+  EXPECT_TRUE(fit.stick_stiffness.empty());
+  // Every arm's cable is the fitted Bouc-Wen law.
+  for (const damper::ArmDescription& a : fit.damper.arms) {
+    EXPECT_EQ(a.cable.law, cable::SectionLawKind::bouc_wen);
+    EXPECT_EQ(a.cable.bouc_wen.chi0.at(0.0), fit.bouc_wen_cables[0].chi0);
+  }
+}
+
+TEST(ImpedanceIdentificationBoucWen, TheDampersScalingIsANullDirection) {
+  // Cable lengths and offsets times s, inertias times s^2, ei_min and ei_max times
+  // s^3 and chi0 (a curvature) times s^-2: the same Z ...
+  const double s = 1.3;
+  const DamperDescription truth = bouc_wen_test_damper(2.8, 22.8, 0.035);
+  DamperDescription scaled = bouc_wen_test_damper(2.8 * s * s * s, 22.8 * s * s * s, 0.035 / (s * s));
+  for (std::size_t k = 0; k < scaled.arms.size(); ++k) {
+    scaled.arms[k].cable.length = s * truth.arms[k].cable.length;
+    scaled.arms[k].offset = s * truth.arms[k].offset;
+    scaled.arms[k].inertia = s * s * truth.arms[k].inertia;
+  }
+  const ImpedanceMeasurement m = measured(truth, {0.2}, points_per_curve(6));
+  const std::vector<damper::ImpedancePoint> z = model_impedance(damper::Damper(scaled), m, {});
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    EXPECT_LT(std::abs(z[i].impedance - m.points[i].impedance), 1e-6 * std::abs(m.points[i].impedance)) << i;
+  }
+  // ... which the fit, with both arms' lengths, offsets and inertias free, reports.
+  if (testing::short_tests()) GTEST_SKIP() << "nine parameters: the Release build runs the fit";
+  ImpedanceIdentificationOptions options;
+  options.free = {"arm.left.cable.length",  "arm.left.inertia",  "arm.left.offset",
+                  "arm.right.cable.length", "arm.right.inertia", "arm.right.offset"};
+  options.max_jacobians = 2;
+  const ImpedanceIdentification fit = identify_impedance(truth, m, options);
+  EXPECT_LT(fit.rms_relative_error, 1e-6);
+  EXPECT_TRUE(std::any_of(fit.notes.begin(), fit.notes.end(),
+                          [](const std::string& n) { return n.starts_with("a damper scaled by any s"); }));
+  for (const ParameterEstimate& p : fit.parameters) {
+    EXPECT_FALSE(p.determined) << p.name;
+    EXPECT_TRUE(std::isinf(p.standard_error)) << p.name;
+  }
+}
+
+TEST(ImpedanceIdentificationBoucWen, RefusesElementsMixedLawsAndAStartWithoutHysteresis) {
+  const ImpedanceMeasurement m = measured(bouc_wen_test_damper(2.8, 22.8, 0.035), {0.2}, 4);
+  auto message = [&](const DamperDescription& start, const ImpedanceIdentificationOptions& options) -> std::string {
+    try {
+      identify_impedance(start, m, options);
+    } catch (const InvalidParameter& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  ImpedanceIdentificationOptions two;
+  two.elements = 2;
+  EXPECT_EQ(message(bouc_wen_test_damper(2.8, 22.8, 0.035), two).rfind("elements = 2: Jenkin elements belong to the "
+                                                                         "Masing law", 0),
+            0u);
+  DamperDescription mixed = bouc_wen_test_damper(2.8, 22.8, 0.035);
+  mixed.arms[1].cable = impedance_test_damper(2.8, {{20.0, 0.7}}).arms[1].cable;
+  EXPECT_EQ(message(mixed, {}).rfind("arm[1].cable.law = \"masing\" but arm[0]'s is \"bouc-wen\"", 0), 0u)
+      << message(mixed, {});
+  EXPECT_EQ(message(bouc_wen_test_damper(2.8, 2.8, 0.035), {}).rfind("arm[0].cable.ei_max = 2.8 N m^2: expected a "
+                                                                     "starting value above ei_min",
+                                                                     0),
+            0u)
+      << message(bouc_wen_test_damper(2.8, 2.8, 0.035), {});
+}
+
+TEST(ImpedanceIdentificationBoucWen, ArmsOfOneLawWithOtherNumbersAreOtherTypes) {
+  DamperDescription d = bouc_wen_test_damper(2.8, 22.8, 0.035);
+  EXPECT_EQ(cable_types(d), (std::vector<std::size_t>{0, 0}));
+  d.arms[1].cable.bouc_wen.chi0 = cable::Profile::constant(0.04);
+  EXPECT_EQ(cable_types(d), (std::vector<std::size_t>{0, 1}));
 }
 
 // The least-squares core on problems with closed-form answers.
