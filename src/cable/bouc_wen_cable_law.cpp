@@ -33,8 +33,10 @@ BoucWenTravel bouc_wen_travel(double ei_min, double hysteretic, double chi0, dou
   const double below = std::max(target / k0, (target - b) / ei_min);
   const double discriminant = k0 * k0 - 2.0 * b * target;
   double u = discriminant > 0.0 ? std::max(below, 2.0 * target / (k0 + std::sqrt(discriminant))) : below;
-  // Halley's method, g'' = -b e^-u from the same exponential: cubic convergence, so
-  // a step below 1e-12 of u leaves an error far below round-off.
+  // Halley's method, g'' = -b e^-u from the same exponential: cubic convergence (the
+  // error after a step of order step^3, the derivatives' ratios being at most 1 in
+  // u), so a step below 1e-6 of u leaves an error of order 1e-18 u^3, below
+  // round-off, and needs no further exponential.
   double decay_minus_one = std::expm1(-u);
   for (int iteration = 0; iteration < 50; ++iteration) {
     const double decay = 1.0 + decay_minus_one;
@@ -42,9 +44,9 @@ BoucWenTravel bouc_wen_travel(double ei_min, double hysteretic, double chi0, dou
     const double g1 = ei_min + b * decay, g2 = -b * decay;
     const double step = -g / (g1 - 0.5 * g * g2 / g1);
     u += step;
-    if (!(std::abs(step) > 1e-12 * u)) {
-      // e^-(u + step) - 1 to second order in the (tiny) step.
-      decay_minus_one += decay * (-step + 0.5 * step * step);
+    if (!(std::abs(step) > 1e-6 * u)) {
+      // e^-(u + step) - 1 to third order in the (small) step.
+      decay_minus_one += decay * (-step * (1.0 - step * (0.5 - step / 6.0)));
       break;
     }
     decay_minus_one = std::expm1(-u);
