@@ -127,7 +127,8 @@ bool ShootingNewton::more_pre_periods(const Eigen::Vector4d& z, double measure, 
                 fmt::format("(the cable's memory is not settled after {} pre-periods ({} periods in all): the loads of the final period "
                             "differ from the last pre-period by {:.3g} of the largest, tolerance {:.3g}; z(T) - z0 is "
                             "{:.3g} of the amplitude)",
-                            pre_periods_, memory_periods_ + pre_periods_, defect, options_.periodicity_tolerance, measure));
+                            pre_periods_, memory_periods_ + pre_periods_ + 1, defect, options_.periodicity_tolerance,
+                            measure));
   }
   memory_periods_ += pre_periods_ + 1;
   pre_periods_ = std::min(2 * pre_periods_, options_.max_pre_periods);
@@ -224,10 +225,13 @@ bool ShootingNewton::run(Eigen::Vector4d& z) {
     }
     ++summary_.newton_iterations;
     if (step(z) == Outcome::failed) {
-      // A line search that fails while the memory has not settled: S is not yet
-      // defined precisely enough to go further; more pre-periods first.
-      if (summary_.termination != Termination::line_search_failed || defect <= options_.periodicity_tolerance) return false;
-      if (!more_pre_periods(z, measure, defect)) return false;
+      // A line search that fails where S is already as small as the memory's
+      // defect: S is not defined more precisely than the memory has settled; more
+      // pre-periods first (while there may be more: else the failure stands).
+      const bool memory_limited = summary_.termination == Termination::line_search_failed &&
+                                  defect > options_.periodicity_tolerance && measure <= defect &&
+                                  pre_periods_ < options_.max_pre_periods;
+      if (!memory_limited || !more_pre_periods(z, measure, defect)) return false;
     }
   }
 }

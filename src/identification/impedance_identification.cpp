@@ -111,7 +111,7 @@ std::vector<DamperNumber> damper_numbers(const damper::DamperDescription& start,
     const auto field = std::find_if(std::begin(kFields), std::end(kFields),
                                     [&](const auto& f) { return arm.field == f.first; });
     if (field == std::end(kFields)) {
-      refuse_free(path, fmt::format("{}: expected {} (every cable type's ei, c and h are fitted anyway)",
+      refuse_free(path, fmt::format("{}: expected {} (every cable type's own numbers, ei, c and h or ei_min, ei_max and chi0, are fitted anyway)",
                                     arm.field.starts_with("cable.") ? "a cable parameter or setting, not fitted as a "
                                                                       "number of the damper"
                                                                     : "not a number the fit can free",
@@ -896,9 +896,11 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
       std::count_if(result.fitted.begin(), result.fitted.end(), [](const damper::ImpedancePoint& p) { return !p.converged(); }));
   result.notes = determination_notes(result.parameters, statistics, result.stick_stiffness, result.fitted);
   if (!scalings.empty()) {
-    result.notes.push_back("a damper scaled by any s (cable lengths and offsets times s, inertias times s^2, ei and c "
-                           "times s^3, h times s) has the same impedance: the data do not determine its size; fix one arm's "
-                           "inertia, cable length or (nonzero) offset at the drawing's value (leave it out of free)");
+    result.notes.push_back(fmt::format(
+        "a damper scaled by any s (cable lengths and offsets times s, inertias times s^2, {}) has the same impedance: "
+        "the data do not determine its size; fix one arm's inertia, cable length or (nonzero) offset at the drawing's "
+        "value (leave it out of free)",
+        variables.bouc_wen() ? "ei_min and ei_max times s^3, chi0 times s^-2" : "ei and c times s^3, h times s"));
   }
   result.fit = best.summary;
   if (!best.summary.converged()) {

@@ -124,9 +124,9 @@ std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification&
   std::vector<Warning> out = plain_warnings(fit.notes);
   if (fit.poor_fit) {
     out.push_back({fmt::format("the fit's RMS relative error of Z {:.3g} % is large (above {:g} %): the model does not "
-                               "follow {} (check its units, the damper's masses and lengths or fit them with --free, "
-                               "--elements)",
-                               100.0 * fit.rms_relative_error, 100.0 * fit.rms_limit, source),
+                               "follow {} (check its units, the damper's masses and lengths or fit them with --free{})",
+                               100.0 * fit.rms_relative_error, 100.0 * fit.rms_limit, source,
+                               fit.law == cable::SectionLawKind::masing ? ", --elements" : ""),
                    false});
   }
   return out;

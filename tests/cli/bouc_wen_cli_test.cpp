@@ -184,7 +184,7 @@ TEST(BoucWenCli, IdentifyImpedanceFitsTheLawToCurvesAndItsCableFileReproducesThe
   EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_min"), 2.5, 1e-4) << r.out;
   EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_max"), 25.0, 1e-3) << r.out;
   EXPECT_NEAR(bouc_wen_json_number(r.out, "", "chi0"), 0.03, 1e-6) << r.out;
-  EXPECT_NE(r.err.find("identify impedance: ei_min = 2.5"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("identify impedance: ei_min = "), std::string::npos) << r.err;
   EXPECT_NE(read_text(dir / "cable.toml").find("law = \"bouc-wen\""), std::string::npos);
 
   std::string reused = uniform_bouc_wen_damper(24.0, 12);

@@ -88,7 +88,7 @@ INSTANTIATE_TEST_SUITE_P(SlenderpyDamper, BoucWenMethodAgreement,
 // Shooting on the Bouc-Wen damper: the law's memory settles only geometrically, by
 // exp(-2 chi_a / chi0) a cycle in a section swinging by chi_a, so the shots' memory
 // goes on from where the last stage left it (shooting.hpp) through 800-2200
-// periods; 10-25 s an arm, so at one point.
+// periods; 11-26 s an arm, so at one point.
 TEST(BoucWenShooting, AgreesWithHarmonicBalanceBetweenTheModes) {
   expect_agreement(example("slenderpy_damper.toml"), {40.0, 0.2}, {Method::shooting});
 }

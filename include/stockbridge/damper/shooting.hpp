@@ -44,8 +44,10 @@
 //     settles more slowly than the Masing law's, needs that), and Newton
 //     continues from the current z0 as soon as the state measure is
 //     below max(tolerance, 0.01 x the loads defect) (solving S = 0 more precisely
-//     than the memory has settled is wasted) or a line search fails while it has
-//     not settled; at max_pre_periods the defect is reported (converged == false).
+//     than the memory has settled is wasted) or a line search fails where the
+//     state measure is already below the loads defect (S is not defined more
+//     precisely than the memory has settled); at max_pre_periods the defect is
+//     reported (converged == false).
 // Near a linear resonance steady states may be non-unique; shooting returns the one
 // Newton reaches from its start.
 //
