@@ -65,6 +65,12 @@ std::vector<io::JsonObject> jenkin_json(const std::vector<std::pair<double, doub
   return out;
 }
 
+/// The keys of a Bouc-Wen [cable] table, one a line with its unit in a comment.
+std::string bouc_wen_cable_keys(const section::BoucWenParameters& p) {
+  return fmt::format("law = \"bouc-wen\"\nei_min = {}   # N m^2\nei_max = {}   # N m^2\nchi0 = {}   # 1/m\n", p.ei_min,
+                     p.ei_max, p.chi0);
+}
+
 }  // namespace
 
 io::JsonObject& add_bouc_wen(io::JsonObject& json, const section::BoucWenParameters& p) {
@@ -73,11 +79,6 @@ io::JsonObject& add_bouc_wen(io::JsonObject& json, const section::BoucWenParamet
 
 std::string bouc_wen_text(const section::BoucWenParameters& p) {
   return fmt::format("ei_min = {:.6g} N m^2, ei_max = {:.6g} N m^2, chi0 = {:.6g} 1/m", p.ei_min, p.ei_max, p.chi0);
-}
-
-std::string bouc_wen_cable_keys(const section::BoucWenParameters& p) {
-  return fmt::format("law = \"bouc-wen\"\nei_min = {}   # N m^2\nei_max = {}   # N m^2\nchi0 = {}   # 1/m\n", p.ei_min,
-                     p.ei_max, p.chi0);
 }
 
 section::BoucWenParameters bouc_wen_numbers(const cable::CableDescription& cable) {

@@ -25,10 +25,8 @@ inline constexpr double large_fit_error = 0.1;
 /// A fitted Bouc-Wen law as every identification's summaries give it: the JSON keys
 /// law = "bouc-wen", ei_min, ei_max, chi0 (added to `json`, which is returned) ...
 io::JsonObject& add_bouc_wen(io::JsonObject& json, const section::BoucWenParameters& p);
-/// ... the summary line's "ei_min = ... N m^2, ei_max = ... N m^2, chi0 = ... 1/m" ...
+/// ... and the summary line's "ei_min = ... N m^2, ei_max = ... N m^2, chi0 = ... 1/m".
 std::string bouc_wen_text(const section::BoucWenParameters& p);
-/// ... and the keys of a [cable] table, one a line with its unit in a comment.
-std::string bouc_wen_cable_keys(const section::BoucWenParameters& p);
 /// The constant Bouc-Wen numbers of a cable (its profiles' values at s = 0).
 section::BoucWenParameters bouc_wen_numbers(const cable::CableDescription& cable);
 
