@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <Eigen/LU>
 
-#include "cable_sums.hpp"
+#include "exp_minus_one.hpp"
 #include "stockbridge/cable/cable.hpp"
 #include "stockbridge/cable/cantilever.hpp"
 
@@ -18,86 +19,276 @@ BoucWenCableLaw::BoucWenCableLaw(const CableDescription& description, std::span<
     ei_min_.push_back(ei_min);
     hysteretic_.push_back(description.bouc_wen.ei_max.at(s) - ei_min);
     chi0_.push_back(description.bouc_wen.chi0.at(s));
+    inverse_chi0_.push_back(1.0 / chi0_.back());
   }
+  // Padded to whole groups of four sections with empty steps (apply_loads).
+  const std::size_t padded = lanes_padded(ei_min_.size());
+  ei_min_.resize(padded, 1.0);
+  hysteretic_.resize(padded, 0.0);
+  chi0_.resize(padded, 1.0);
+  inverse_chi0_.resize(padded, 1.0);
 }
+
+namespace {
+
+// g(u) = ei_min u + ba (1 - e^-u) - target (ba = (EI_max - EI_min) a, a in [0, 2]) is
+// increasing and concave in u >= 0. The sections are solved four at a time, on lanes:
+// a start, then Halley steps until every lane's step is below 1e-6 of its u.
+
+[[gnu::always_inline]] inline Lanes load_lanes(const double* p) {
+  Lanes v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+[[gnu::always_inline]] inline void store_lanes(double* p, Lanes v) { std::memcpy(p, &v, sizeof v); }
+[[gnu::always_inline]] inline Lanes max_lanes(Lanes a, Lanes b) { return a < b ? b : a; }
+[[gnu::always_inline]] inline Lanes abs_lanes(Lanes a) { return a < 0.0 ? -a : a; }
+
+/// The travels of four sections: u >= 0 with g(u) = 0, and e^-u - 1 there. The start
+/// is the root of the quadratic Taylor model ei_min u + ba (u - u^2 / 2) (close for the
+/// small steps of a sampled path), else the larger of the roots of g's tangent at 0 and
+/// of its asymptote ei_min u + ba (both below the root). Then Halley's method, g'' =
+/// -ba e^-u from the same exponential: cubic (the error after a step of order step^3,
+/// the derivatives' ratios being at most 1 in u), so a step below 1e-6 of u leaves an
+/// error of order 1e-18 u^3, and e^-u - 1 follows it to third order in the step instead
+/// of from a further exponential.
+[[gnu::always_inline]] inline void solve_four_travels(Lanes ei_min, Lanes ba, Lanes target, Lanes& u_out,
+                                                      Lanes& decay_minus_one_out) {
+  const Lanes k0 = ei_min + ba;  // g'(0)
+  const Lanes below = max_lanes(target / k0, (target - ba) / ei_min);
+  const Lanes discriminant = k0 * k0 - 2.0 * ba * target;
+  Lanes root = max_lanes(discriminant, Lanes{});
+  for (int k = 0; k < 4; ++k) root[k] = std::sqrt(root[k]);
+  Lanes u = discriminant > 0.0 ? max_lanes(below, 2.0 * target / (k0 + root)) : below;
+  Lanes decay_minus_one = exp_minus_one_of_nonpositive(-u);
+  LaneMask open = u == u;  // every lane
+  for (int iteration = 0; iteration < 50 && any_lane(open); ++iteration) {
+    const Lanes decay = 1.0 + decay_minus_one;
+    const Lanes g = ei_min * u - ba * decay_minus_one - target;
+    const Lanes g1 = ei_min + ba * decay, g2 = -ba * decay;
+    const Lanes step = -g * g1 / (g1 * g1 - 0.5 * g * g2);
+    const Lanes next = u + step;
+    const LaneMask small = !(abs_lanes(step) > 1e-6 * next);
+    const Lanes followed = decay_minus_one + decay * (-step * (1.0 - step * (0.5 - step * (1.0 / 6.0))));
+    // The exponential only where an open lane needs it.
+    const Lanes next_decay_minus_one =
+        any_lane(open & ~small) ? (small ? followed : exp_minus_one_of_nonpositive(-next)) : followed;
+    u = open ? next : u;
+    decay_minus_one = open ? next_decay_minus_one : decay_minus_one;
+    open &= ~small;
+  }
+  const LaneMask negative = u < 0.0;
+  u_out = negative ? Lanes{} : u;
+  decay_minus_one_out = negative ? Lanes{} : decay_minus_one;
+}
+
+/// A cable's sections for one evaluation: the law's numbers (each padded to whole
+/// groups of four), the positions and weights, the state moved from and the one moved
+/// to (n entries each).
+struct SectionArrays {
+  std::size_t n;
+  const double *s, *w, *ei_min, *hysteretic, *chi0, *inverse_chi0;
+  const double *curvature_from, *eta_from, *tangent_from;
+  double *curvature, *eta, *tangent;
+};
+
+/// The sums over the sections (CableSums), lane by lane.
+struct LaneSums {
+  Lanes rotation{}, deflection{}, dissipated{}, f00{}, f01{}, f10{}, f11{};
+};
+
+/// The sums of the whole cable.
+struct SectionSums {
+  double rotation = 0.0, deflection = 0.0, dissipated = 0.0, flexibility[4] = {};
+};
+
+/// Four sections' steps: the positions, weights and states at `at` (the cable's from
+/// section i on, or a padded copy of its last group), the law's numbers at i.
+struct GroupArrays {
+  const double *s, *w, *curvature_from, *eta_from, *tangent_from;
+  double *curvature, *eta, *tangent;
+};
+
+[[gnu::always_inline]] inline void step_group(const SectionArrays& a, std::size_t i, const GroupArrays& at,
+                                              double d_clamp_moment, double d_tip_force, double length,
+                                              LaneSums& sums) {
+  const Lanes s = load_lanes(at.s), w = load_lanes(at.w), eta_from = load_lanes(at.eta_from);
+  const Lanes hysteretic = load_lanes(a.hysteretic + i), chi0 = load_lanes(a.chi0 + i);
+  const Lanes ei_min = load_lanes(a.ei_min + i);
+  const Lanes excess = d_clamp_moment - d_tip_force * s;
+  const Lanes sign = excess > 0.0 ? Lanes{} + 1.0 : Lanes{} - 1.0;
+  const Lanes slack = 1.0 - sign * eta_from;  // a = 1 - sign(excess) eta_from, in [0, 2]
+  const Lanes ba = hysteretic * slack;
+  const Lanes target = abs_lanes(excess) * load_lanes(a.inverse_chi0 + i);
+  Lanes u, decay_minus_one;
+  solve_four_travels(ei_min, ba, target, u, decay_minus_one);
+  // The new state (a section without excess keeps its own, tangent included).
+  const LaneMask moves = excess != 0.0;
+  const Lanes decay = 1.0 + decay_minus_one;
+  const Lanes curvature = load_lanes(at.curvature_from) + sign * chi0 * u;
+  const Lanes tangent = moves ? ei_min + ba * decay : load_lanes(at.tangent_from);
+  store_lanes(at.curvature, curvature);
+  store_lanes(at.eta, moves ? sign * (1.0 - slack * decay) : eta_from);
+  store_lanes(at.tangent, tangent);
+  // (EI_max - EI_min) chi0 int eta^2 |d chi| along the stretch (section::bouc_wen_update),
+  // with e^-2u - 1 = (e^-u - 1)(e^-u + 1).
+  sums.dissipated += w * hysteretic * chi0 * chi0 *
+                     (u + decay_minus_one * (2.0 * slack - 0.5 * slack * slack * (2.0 + decay_minus_one)));
+  const Lanes arm = length - s;
+  const Lanes g = w / tangent;
+  sums.rotation += w * curvature;
+  sums.deflection += w * arm * curvature;
+  sums.f00 += g;
+  sums.f01 -= g * s;
+  sums.f10 += g * arm;
+  sums.f11 -= g * arm * s;
+}
+
+/// Every section's monotone step from its state under the moment excess
+/// d_clamp_moment - d_tip_force s, four sections at a time, and the sums the tip
+/// kinematics and flexibility take. Built twice, for the x86-64 baseline and for
+/// processors with AVX2 and FMA (four lanes in one register), the one the processor
+/// runs chosen at load time.
+__attribute__((target_clones("arch=x86-64-v3", "default"))) SectionSums
+step_sections(const SectionArrays& a, double d_clamp_moment, double d_tip_force, double length) {
+  LaneSums sums;
+  std::size_t i = 0;
+  for (; i + 4 <= a.n; i += 4) {
+    const GroupArrays at{a.s + i,         a.w + i,         a.curvature_from + i, a.eta_from + i, a.tangent_from + i,
+                         a.curvature + i, a.eta + i,       a.tangent + i};
+    step_group(a, i, at, d_clamp_moment, d_tip_force, length, sums);
+  }
+  if (i < a.n) {
+    // The last group, padded with empty steps of weight 0.
+    const std::size_t count = a.n - i;
+    double s[4] = {}, w[4] = {}, curvature_from[4] = {}, eta_from[4] = {}, tangent_from[4] = {1.0, 1.0, 1.0, 1.0};
+    double curvature[4], eta[4], tangent[4];
+    auto copy_in = [&](const double* from, double* to) { std::copy(from + i, from + a.n, to); };
+    copy_in(a.s, s);
+    copy_in(a.w, w);
+    copy_in(a.curvature_from, curvature_from);
+    copy_in(a.eta_from, eta_from);
+    copy_in(a.tangent_from, tangent_from);
+    step_group(a, i, {s, w, curvature_from, eta_from, tangent_from, curvature, eta, tangent}, d_clamp_moment,
+               d_tip_force, length, sums);
+    std::copy(curvature, curvature + count, a.curvature + i);
+    std::copy(eta, eta + count, a.eta + i);
+    std::copy(tangent, tangent + count, a.tangent + i);
+  }
+  auto total = [](Lanes v) { return (v[0] + v[1]) + (v[2] + v[3]); };
+  return {total(sums.rotation),
+          total(sums.deflection),
+          total(sums.dissipated),
+          {total(sums.f00), total(sums.f01), total(sums.f10), total(sums.f11)}};
+}
+
+}  // namespace
 
 BoucWenTravel bouc_wen_travel(double ei_min, double hysteretic, double chi0, double eta_from, double excess) {
   const double sign = excess > 0.0 ? 1.0 : -1.0;
-  const double b = hysteretic * (1.0 - sign * eta_from);  // a (EI_max - EI_min), a in [0, 2]
+  const double ba = hysteretic * (1.0 - sign * eta_from);
   const double target = std::abs(excess) / chi0;
-  const double k0 = ei_min + b;  // g'(0)
-  // g(u) = ei_min u + b (1 - e^-u) is increasing and concave. Starts: the root of its
-  // quadratic Taylor model k0 u - b u^2 / 2 (close for the small steps of a sampled
-  // path), else the larger of the roots of its tangent at 0 and of its asymptote
-  // ei_min u + b (both below the root).
-  const double below = std::max(target / k0, (target - b) / ei_min);
-  const double discriminant = k0 * k0 - 2.0 * b * target;
-  double u = discriminant > 0.0 ? std::max(below, 2.0 * target / (k0 + std::sqrt(discriminant))) : below;
-  // Halley's method, g'' = -b e^-u from the same exponential: cubic convergence (the
-  // error after a step of order step^3, the derivatives' ratios being at most 1 in
-  // u), so a step below 1e-6 of u leaves an error of order 1e-18 u^3, below
-  // round-off, and needs no further exponential.
-  double decay_minus_one = std::expm1(-u);
-  for (int iteration = 0; iteration < 50; ++iteration) {
-    const double decay = 1.0 + decay_minus_one;
-    const double g = ei_min * u - b * decay_minus_one - target;
-    const double g1 = ei_min + b * decay, g2 = -b * decay;
-    const double step = -g / (g1 - 0.5 * g * g2 / g1);
-    u += step;
-    if (!(std::abs(step) > 1e-6 * u)) {
-      // e^-(u + step) - 1 to third order in the (small) step.
-      decay_minus_one += decay * (-step * (1.0 - step * (0.5 - step / 6.0)));
-      break;
-    }
-    decay_minus_one = std::expm1(-u);
-  }
-  if (u < 0.0) return {0.0, 0.0};
-  return {u, decay_minus_one};
+  // One lane of a group; the others solve the empty step (u = 0).
+  Lanes u, decay_minus_one;
+  solve_four_travels(Lanes{} + ei_min, Lanes{ba}, Lanes{target}, u, decay_minus_one);
+  return {u[0], decay_minus_one[0]};
 }
 
 void BoucWenCableLaw::apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
                                   CableState& to, CableWorkspace&) const {
-  const std::size_t n = cable.sections();
-  const double l = cable.length();
-  const auto s = cable.positions();
-  const auto w = cable.weights();
-  const double d_clamp_moment = clamp_moment - from.clamp_moment;
-  const double d_tip_force = tip_force - from.tip_force;
-  CableSums sums;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double excess = d_clamp_moment - d_tip_force * s[i];
-    const double eta_from = from.hysteretic[i];
-    double kappa = from.curvature[i], eta = eta_from, tangent = from.tangent[i], dissipated = 0.0;
-    if (excess != 0.0) {
-      const double sign = excess > 0.0 ? 1.0 : -1.0;
-      const double b = hysteretic_[i], chi0 = chi0_[i];
-      const BoucWenTravel travel = bouc_wen_travel(ei_min_[i], b, chi0, eta_from, excess);
-      const double u = travel.u, decay_minus_one = travel.decay_minus_one;
-      const double a = 1.0 - sign * eta_from;
-      const double decay = 1.0 + decay_minus_one;
-      kappa += sign * chi0 * u;
-      eta = sign * (1.0 - a * decay);
-      tangent = ei_min_[i] + b * a * decay;
-      // (EI_max - EI_min) chi0 int eta^2 |d chi| along the stretch (section::bouc_wen_update),
-      // with e^-2u - 1 = (e^-u - 1)(e^-u + 1).
-      dissipated = b * chi0 * chi0 *
-                   (u + 2.0 * a * decay_minus_one - 0.5 * a * a * decay_minus_one * (2.0 + decay_minus_one));
-    }
-    to.curvature[i] = kappa;
-    to.hysteretic[i] = eta;
-    to.tangent[i] = tangent;
-    sums.add(w[i], s[i], l, kappa, 1.0 / tangent, dissipated);
-  }
-  sums.store(clamp_moment, tip_force, from, to);
+  const SectionArrays arrays{cable.sections(),      cable.positions().data(), cable.weights().data(),
+                             ei_min_.data(),        hysteretic_.data(),       chi0_.data(),
+                             inverse_chi0_.data(),  from.curvature.data(),    from.hysteretic.data(),
+                             from.tangent.data(),   to.curvature.data(),      to.hysteretic.data(),
+                             to.tangent.data()};
+  const SectionSums sums = step_sections(arrays, clamp_moment - from.clamp_moment, tip_force - from.tip_force,
+                                         cable.length());
+  to.clamp_moment = clamp_moment;
+  to.tip_force = tip_force;
+  to.rotation = sums.rotation;
+  to.deflection = sums.deflection;
+  to.flexibility << sums.flexibility[0], sums.flexibility[1], sums.flexibility[2], sums.flexibility[3];
+  to.dissipated = from.dissipated + sums.dissipated;
 }
 
 double BoucWenCableLaw::internal_change(const CableState& start, const CableState& end) const {
   double change = 0.0;
-  for (std::size_t i = 0; i < chi0_.size(); ++i) change = std::max(change, std::abs(end.hysteretic[i] - start.hysteretic[i]));
+  for (std::size_t i = 0; i < start.hysteretic.size(); ++i) change = std::max(change, std::abs(end.hysteretic[i] - start.hysteretic[i]));
   return change;
 }
 
 namespace {
+
+// The law is smooth along each monotone step, so the loads' derivatives follow the
+// derivatives of every section's (kappa, eta) forward. A step from (kappa_f, eta_f)
+// with E = exp(-|kappa - kappa_f| / chi0) and a E = (k_t - EI_min) / B (k_t the step's
+// tangent, B = EI_max - EI_min) has
+//     d eta = E d eta_f + (a E / chi0) (d kappa - d kappa_f),
+//     dM = k_t d kappa + B (chi0 E d eta_f - a E d kappa_f),
+// so d kappa = dM / k_t + alpha with alpha = (B / k_t) (a E d kappa_f - chi0 E d eta_f),
+// and the tip kinematics close it: d(T, F) = J^-1 (du - sum_i w_i [1; l - s_i] alpha_i).
+/// One step's sensitivities (BoucWenLoadSensitivity::step) on raw columns: `p`
+/// parameters, the sections' derivatives column by column (p x n, column-major).
+struct StepSensitivity {
+  std::size_t n;
+  std::size_t p;
+  const double *s, *w, *ei_min, *hysteretic, *chi0;
+  const double *curvature_from, *curvature_to, *tangent_to;
+  double length;
+  double inverse[4];  // the step's flexibility inverted, row-major
+  double *d_curvature, *d_eta, *alpha, *decay, *a_decay;
+  double *d_rotation, *d_deflection, *d_clamp_moment, *d_tip_force;
+};
+
+/// Built twice, for the x86-64 baseline and for processors with AVX2 and FMA, the one
+/// the processor runs chosen at load time (the loops over the parameters run on vector
+/// registers either way).
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void propagate_step(const StepSensitivity& t) {
+  const std::size_t p = t.p;
+  // E = exp(-|kappa - kappa_f| / chi0), four sections at a time (the padding's lanes unused).
+  for (std::size_t i = 0; i < t.n; i += 4) {
+    Lanes travel{};
+    for (std::size_t k = 0; k < 4 && i + k < t.n; ++k) {
+      travel[k] = std::abs(t.curvature_to[i + k] - t.curvature_from[i + k]) / t.chi0[i + k];
+    }
+    store_lanes(t.decay + i, 1.0 + exp_minus_one_of_nonpositive(-travel));
+  }
+  double* __restrict d_rotation = t.d_rotation;
+  double* __restrict d_deflection = t.d_deflection;
+  for (std::size_t i = 0; i < t.n; ++i) {
+    const double b = t.hysteretic[i], chi0 = t.chi0[i], k = t.tangent_to[i];
+    t.a_decay[i] = b > 0.0 ? (k - t.ei_min[i]) / b : 0.0;
+    const double on_curvature = (b / k) * t.a_decay[i], on_eta = -(b / k) * (chi0 * t.decay[i]);
+    const double weight = t.w[i], weight_arm = t.w[i] * (t.length - t.s[i]);
+    const double* __restrict d_curvature = t.d_curvature + i * p;
+    const double* __restrict d_eta = t.d_eta + i * p;
+    double* __restrict alpha = t.alpha + i * p;
+    for (std::size_t j = 0; j < p; ++j) {
+      alpha[j] = on_curvature * d_curvature[j] + on_eta * d_eta[j];
+      d_rotation[j] -= weight * alpha[j];
+      d_deflection[j] -= weight_arm * alpha[j];
+    }
+  }
+  double* __restrict d_clamp_moment = t.d_clamp_moment;
+  double* __restrict d_tip_force = t.d_tip_force;
+  for (std::size_t j = 0; j < p; ++j) {
+    d_clamp_moment[j] = t.inverse[0] * d_rotation[j] + t.inverse[1] * d_deflection[j];
+    d_tip_force[j] = t.inverse[2] * d_rotation[j] + t.inverse[3] * d_deflection[j];
+  }
+  for (std::size_t i = 0; i < t.n; ++i) {
+    const double inverse_k = 1.0 / t.tangent_to[i], s = t.s[i];
+    const double on_alpha = t.a_decay[i] / t.chi0[i], decay = t.decay[i];
+    double* __restrict d_curvature = t.d_curvature + i * p;
+    double* __restrict d_eta = t.d_eta + i * p;
+    double* __restrict alpha = t.alpha + i * p;
+    for (std::size_t j = 0; j < p; ++j) {
+      // d kappa_new - d kappa_f, then the new derivatives.
+      alpha[j] += inverse_k * (d_clamp_moment[j] - s * d_tip_force[j]) - d_curvature[j];
+      d_eta[j] = decay * d_eta[j] + on_alpha * alpha[j];
+      d_curvature[j] += alpha[j];
+    }
+  }
+}
 
 // The law is smooth along each monotone step, so the loads' derivatives follow the
 // derivatives of every section's (kappa, eta) forward. A step from (kappa_f, eta_f)
@@ -121,34 +312,36 @@ class BoucWenLoadSensitivity final : public LoadSensitivity {
     d_curvature_.setZero(parameters, n);
     d_eta_.setZero(parameters, n);
     alpha_.setZero(parameters, n);
+    decay_.resize(lanes_padded(positions_.size()));
+    a_decay_.resize(positions_.size());
   }
 
   void step(const CableState& from, const CableState& to, Eigen::VectorXd& d_rotation, Eigen::VectorXd& d_deflection,
             Eigen::VectorXd& d_clamp_moment, Eigen::VectorXd& d_tip_force) override {
-    const std::size_t n = positions_.size();
-    decay_.resize(n);
-    a_decay_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto c = static_cast<Eigen::Index>(i);
-      const double b = law_.ei_max(i) - law_.ei_min(i), chi0 = law_.chi0(i), k = to.tangent[i];
-      decay_[i] = std::exp(-std::abs(to.curvature[i] - from.curvature[i]) / chi0);
-      a_decay_[i] = b > 0.0 ? (k - law_.ei_min(i)) / b : 0.0;
-      alpha_.col(c) = (b / k) * (a_decay_[i] * d_curvature_.col(c) - (chi0 * decay_[i]) * d_eta_.col(c));
-      const double arm = length_ - positions_[i];
-      d_rotation -= weights_[i] * alpha_.col(c);
-      d_deflection -= (weights_[i] * arm) * alpha_.col(c);
-    }
     const Eigen::Matrix2d inverse = to.flexibility.inverse();
-    d_clamp_moment = inverse(0, 0) * d_rotation + inverse(0, 1) * d_deflection;
-    d_tip_force = inverse(1, 0) * d_rotation + inverse(1, 1) * d_deflection;
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto c = static_cast<Eigen::Index>(i);
-      const double k = to.tangent[i], chi0 = law_.chi0(i);
-      // d kappa_new - d kappa_f, then the new derivatives.
-      alpha_.col(c) += (1.0 / k) * (d_clamp_moment - positions_[i] * d_tip_force) - d_curvature_.col(c);
-      d_eta_.col(c) = decay_[i] * d_eta_.col(c) + (a_decay_[i] / chi0) * alpha_.col(c);
-      d_curvature_.col(c) += alpha_.col(c);
-    }
+    d_clamp_moment.resize(d_rotation.size());
+    d_tip_force.resize(d_rotation.size());
+    propagate_step({positions_.size(),
+                    static_cast<std::size_t>(d_curvature_.rows()),
+                    positions_.data(),
+                    weights_.data(),
+                    law_.ei_min_data(),
+                    law_.hysteretic_data(),
+                    law_.chi0_data(),
+                    from.curvature.data(),
+                    to.curvature.data(),
+                    to.tangent.data(),
+                    length_,
+                    {inverse(0, 0), inverse(0, 1), inverse(1, 0), inverse(1, 1)},
+                    d_curvature_.data(),
+                    d_eta_.data(),
+                    alpha_.data(),
+                    decay_.data(),
+                    a_decay_.data(),
+                    d_rotation.data(),
+                    d_deflection.data(),
+                    d_clamp_moment.data(),
+                    d_tip_force.data()});
   }
 
   void mirror() override {

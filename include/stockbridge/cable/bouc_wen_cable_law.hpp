@@ -24,6 +24,10 @@ class BoucWenCableLaw final : public CableLaw {
   double ei_min(std::size_t i) const { return ei_min_[i]; }
   double ei_max(std::size_t i) const { return ei_min_[i] + hysteretic_[i]; }
   double chi0(std::size_t i) const { return chi0_[i]; }
+  /// The sections' numbers in order (padded beyond the cable's sections).
+  const double* ei_min_data() const { return ei_min_.data(); }
+  const double* hysteretic_data() const { return hysteretic_.data(); }
+  const double* chi0_data() const { return chi0_.data(); }
 
   std::size_t internal_variables() const override { return 1; }
   double stick_stiffness(std::size_t section) const override { return ei_max(section); }
@@ -34,9 +38,11 @@ class BoucWenCableLaw final : public CableLaw {
   std::unique_ptr<LoadSensitivity> load_sensitivity(const Cable& cable) const override;
 
  private:
+  // One a section, padded to whole groups of four (apply_loads solves four at a time).
   std::vector<double> ei_min_;
   std::vector<double> hysteretic_;  // EI_max - EI_min, N m^2
   std::vector<double> chi0_;
+  std::vector<double> inverse_chi0_;
 };
 
 /// The curvature travelled, over chi0, by a monotone step that raises a Bouc-Wen

@@ -12,6 +12,7 @@
 #include "stockbridge/cable/cantilever.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/section/bouc_wen_section.hpp"
+#include "cable/exp_minus_one.hpp"
 
 namespace stockbridge::cable {
 namespace {
@@ -190,6 +191,54 @@ TEST(BoucWenCable, TravelSolvesTheMomentEquationToRoundOff) {
       const double a = 1.0 - (excess > 0 ? 1.0 : -1.0) * eta;
       const double carried = 0.03 * (2.5 * u - 22.5 * a * std::expm1(-u));
       EXPECT_NEAR(carried, std::abs(excess), 4e-15 * std::abs(excess) + 1e-300) << eta << " " << excess;
+    }
+  }
+}
+
+// The sections are solved four at a time: whatever the count (a group short of four
+// at the end; each zone takes at least a section), every section carries the moment
+// T - F s_i by the law, M = EI_min kappa + (EI_max - EI_min) chi0 eta, and the tip
+// kinematics are the sums of its curvatures.
+TEST(BoucWenCable, EverySectionCarriesItsMomentWhateverTheGroupsOfFour) {
+  for (const int sections : {2, 3, 5, 7, 13}) {
+    const CableDescription d = slenderpy_cable(sections);
+    const Cable cable(d);
+    Cantilever cantilever{Cable(d)};
+    for (const auto& [x, phi] : std::vector<std::pair<double, double>>{{0.006, 0.05}, {-0.002, 0.01}, {0.003, -0.04}}) {
+      ASSERT_TRUE(cantilever.set_trial_tip(x, phi).converged()) << sections;
+      cantilever.commit();
+      const CableState& state = cantilever.committed();
+      double rotation = 0.0, deflection = 0.0;
+      for (std::size_t i = 0; i < cable.sections(); ++i) {
+        const double s = cable.positions()[i], w = cable.weights()[i];
+        const double at = d.profile_position(s);
+        const double ei_min = d.bouc_wen.ei_min.at(at), ei_max = d.bouc_wen.ei_max.at(at);
+        const double moment =
+            ei_min * state.curvature[i] + (ei_max - ei_min) * d.bouc_wen.chi0.at(at) * state.hysteretic[i];
+        const double expected = state.clamp_moment - state.tip_force * s;
+        EXPECT_NEAR(moment, expected, 1e-12 * std::abs(state.clamp_moment)) << sections << " sections, section " << i;
+        rotation += w * state.curvature[i];
+        deflection += w * (kMessengerLength - s) * state.curvature[i];
+      }
+      EXPECT_NEAR(state.rotation, rotation, 1e-14 * std::abs(phi)) << sections;
+      EXPECT_NEAR(state.deflection, deflection, 1e-14 * std::abs(x)) << sections;
+    }
+  }
+}
+
+// e^x - 1 on four lanes, against the library's, relative, from round-off-small
+// arguments to the range where it is -1.
+TEST(BoucWenCable, TheLanesExponentialIsTheLibrarysToAnUlpOrTwo) {
+  std::vector<double> xs{0.0, -1e-300, -1e-17, -3e-9, -1e-4, -0.1, -0.3465, -0.3466, -0.5, -1.0,
+                         -2.5, -10.0, -37.0, -40.0, -100.0, -699.0, -700.0, -745.0, -1e6};
+  for (double x = -1e-6; x > -60.0; x *= 1.37) xs.push_back(x);
+  for (std::size_t i = 0; i < xs.size(); i += 4) {
+    Lanes x{};
+    for (std::size_t k = 0; k < 4 && i + k < xs.size(); ++k) x[k] = xs[i + k];
+    const Lanes y = exp_minus_one_of_nonpositive(x);
+    for (std::size_t k = 0; k < 4 && i + k < xs.size(); ++k) {
+      const double expected = std::expm1(x[k]);
+      EXPECT_NEAR(y[k], expected, 3e-16 * std::abs(expected)) << "x = " << x[k];
     }
   }
 }
