@@ -175,7 +175,7 @@ step_sections(const SectionArrays& a, double d_clamp_moment, double d_tip_force,
     std::copy(eta, eta + count, a.eta + i);
     std::copy(tangent, tangent + count, a.tangent + i);
   }
-  auto total = [](Lanes v) { return (v[0] + v[1]) + (v[2] + v[3]); };
+  auto total = [](const Lanes& v) { return (v[0] + v[1]) + (v[2] + v[3]); };
   return {total(sums.rotation),
           total(sums.deflection),
           total(sums.dissipated),
@@ -240,12 +240,9 @@ struct StepSensitivity {
   double *d_rotation, *d_deflection, *d_clamp_moment, *d_tip_force;
 };
 
-/// Built twice, for the x86-64 baseline and for processors with AVX2 and FMA, the one
-/// the processor runs chosen at load time (the loops over the parameters run on vector
-/// registers either way).
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void propagate_step(const StepSensitivity& t) {
-  const std::size_t p = t.p;
-  // E = exp(-|kappa - kappa_f| / chi0), four sections at a time (the padding's lanes unused).
+/// E = exp(-|kappa - kappa_f| / chi0) of every section, four at a time (the padding's
+/// lanes unused).
+[[gnu::always_inline]] inline void step_decays(const StepSensitivity& t) {
   for (std::size_t i = 0; i < t.n; i += 4) {
     Lanes travel{};
     for (std::size_t k = 0; k < 4 && i + k < t.n; ++k) {
@@ -253,6 +250,14 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void propagate_step(
     }
     store_lanes(t.decay + i, 1.0 + exp_minus_one_of_nonpositive(-travel));
   }
+}
+
+/// Built twice, for the x86-64 baseline and for processors with AVX2 and FMA, the one
+/// the processor runs chosen at load time (the loops over the parameters run on vector
+/// registers either way).
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void propagate_step(const StepSensitivity& t) {
+  const std::size_t p = t.p;
+  step_decays(t);
   double* __restrict d_rotation = t.d_rotation;
   double* __restrict d_deflection = t.d_deflection;
   for (std::size_t i = 0; i < t.n; ++i) {
