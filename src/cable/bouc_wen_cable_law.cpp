@@ -45,22 +45,32 @@ namespace {
 [[gnu::always_inline]] inline Lanes abs_lanes(Lanes a) { return a < 0.0 ? -a : a; }
 
 /// The travels of four sections: u >= 0 with g(u) = 0, and e^-u - 1 there. The start
-/// is the root of the quadratic Taylor model ei_min u + ba (u - u^2 / 2) (close for the
-/// small steps of a sampled path), else the larger of the roots of g's tangent at 0 and
-/// of its asymptote ei_min u + ba (both below the root). Then Halley's method, g'' =
-/// -ba e^-u from the same exponential: cubic (the error after a step of order step^3,
-/// the derivatives' ratios being at most 1 in u), so a step below 1e-6 of u leaves an
-/// error of order 1e-18 u^3, and e^-u - 1 follows it to third order in the step instead
-/// of from a further exponential.
-[[gnu::always_inline]] inline void solve_four_travels(Lanes ei_min, Lanes ba, Lanes target, Lanes& u_out,
+/// is the last evaluation's travel where g there (from its own exponential, exact) is
+/// within 1e-3 of the target: the cantilever's Newton corrections move the loads a
+/// little from the same state, and this saves the start's exponential. Else the root of
+/// the quadratic Taylor model ei_min u + ba (u - u^2 / 2) (close for the small steps of a
+/// sampled path), else the larger of the roots of g's tangent at 0 and of its asymptote
+/// ei_min u + ba (both below the root). Then Halley's method, g'' = -ba e^-u from the
+/// same exponential: cubic (the error after a step of order step^3, the derivatives'
+/// ratios being at most 1 in u), so a step below 1e-6 of u leaves an error of order
+/// 1e-18 u^3, and e^-u - 1 follows it to third order in the step instead of from a
+/// further exponential. Any start converges to the same root: the result does not
+/// depend on it beyond round-off.
+[[gnu::always_inline]] inline void solve_four_travels(Lanes ei_min, Lanes ba, Lanes target, Lanes last_u,
+                                                      Lanes last_decay_minus_one, Lanes& u_out,
                                                       Lanes& decay_minus_one_out) {
   const Lanes k0 = ei_min + ba;  // g'(0)
   const Lanes below = max_lanes(target / k0, (target - ba) / ei_min);
   const Lanes discriminant = k0 * k0 - 2.0 * ba * target;
   Lanes root = max_lanes(discriminant, Lanes{});
   for (int k = 0; k < 4; ++k) root[k] = std::sqrt(root[k]);
-  Lanes u = discriminant > 0.0 ? max_lanes(below, 2.0 * target / (k0 + root)) : below;
-  Lanes decay_minus_one = exp_minus_one_of_nonpositive(-u);
+  const Lanes modelled = discriminant > 0.0 ? max_lanes(below, 2.0 * target / (k0 + root)) : below;
+  const LaneMask near_last =
+      abs_lanes(ei_min * last_u - ba * last_decay_minus_one - target) <= 1e-3 * target;
+  Lanes u = near_last ? last_u : modelled;
+  Lanes decay_minus_one =
+      any_lane(~near_last) ? (near_last ? last_decay_minus_one : exp_minus_one_of_nonpositive(-modelled))
+                           : last_decay_minus_one;
   LaneMask open = u == u;  // every lane
   for (int iteration = 0; iteration < 50 && any_lane(open); ++iteration) {
     const Lanes decay = 1.0 + decay_minus_one;
@@ -84,12 +94,13 @@ namespace {
 
 /// A cable's sections for one evaluation: the law's numbers (each padded to whole
 /// groups of four), the positions and weights, the state moved from and the one moved
-/// to (n entries each).
+/// to (n entries each), and the last evaluation's travels (padded; starts, updated).
 struct SectionArrays {
   std::size_t n;
   const double *s, *w, *ei_min, *hysteretic, *chi0, *inverse_chi0;
   const double *curvature_from, *eta_from, *tangent_from;
   double *curvature, *eta, *tangent;
+  double *last_u, *last_decay_minus_one;
 };
 
 /// The sums over the sections (CableSums), lane by lane.
@@ -121,7 +132,10 @@ struct GroupArrays {
   const Lanes ba = hysteretic * slack;
   const Lanes target = abs_lanes(excess) * load_lanes(a.inverse_chi0 + i);
   Lanes u, decay_minus_one;
-  solve_four_travels(ei_min, ba, target, u, decay_minus_one);
+  solve_four_travels(ei_min, ba, target, load_lanes(a.last_u + i), load_lanes(a.last_decay_minus_one + i), u,
+                     decay_minus_one);
+  store_lanes(a.last_u + i, u);
+  store_lanes(a.last_decay_minus_one + i, decay_minus_one);
   // The new state (a section without excess keeps its own, tangent included).
   const LaneMask moves = excess != 0.0;
   const Lanes decay = 1.0 + decay_minus_one;
@@ -190,17 +204,29 @@ BoucWenTravel bouc_wen_travel(double ei_min, double hysteretic, double chi0, dou
   const double target = std::abs(excess) / chi0;
   // One lane of a group; the others solve the empty step (u = 0).
   Lanes u, decay_minus_one;
-  solve_four_travels(Lanes{} + ei_min, Lanes{ba}, Lanes{target}, u, decay_minus_one);
+  solve_four_travels(Lanes{} + ei_min, Lanes{ba}, Lanes{target}, Lanes{}, Lanes{}, u, decay_minus_one);
   return {u[0], decay_minus_one[0]};
 }
 
 void BoucWenCableLaw::apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
-                                  CableState& to, CableWorkspace&) const {
-  const SectionArrays arrays{cable.sections(),      cable.positions().data(), cable.weights().data(),
-                             ei_min_.data(),        hysteretic_.data(),       chi0_.data(),
-                             inverse_chi0_.data(),  from.curvature.data(),    from.hysteretic.data(),
-                             from.tangent.data(),   to.curvature.data(),      to.hysteretic.data(),
-                             to.tangent.data()};
+                                  CableState& to, CableWorkspace& workspace) const {
+  const std::size_t padded = ei_min_.size();
+  if (workspace.travel.size() != 2 * padded) workspace.travel.assign(2 * padded, 0.0);
+  const SectionArrays arrays{cable.sections(),
+                             cable.positions().data(),
+                             cable.weights().data(),
+                             ei_min_.data(),
+                             hysteretic_.data(),
+                             chi0_.data(),
+                             inverse_chi0_.data(),
+                             from.curvature.data(),
+                             from.hysteretic.data(),
+                             from.tangent.data(),
+                             to.curvature.data(),
+                             to.hysteretic.data(),
+                             to.tangent.data(),
+                             workspace.travel.data(),
+                             workspace.travel.data() + padded};
   const SectionSums sums = step_sections(arrays, clamp_moment - from.clamp_moment, tip_force - from.tip_force,
                                          cable.length());
   to.clamp_moment = clamp_moment;

@@ -15,6 +15,13 @@
 #include <cstddef>
 #include <cstdint>
 
+// GCC notes that a function returning these types would be called differently with and
+// without AVX: these are inline, never called across files.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace stockbridge::cable {
 
 using Lanes = double __attribute__((vector_size(32)));            // four doubles
@@ -53,3 +60,7 @@ inline std::size_t lanes_padded(std::size_t n) { return (n + 3) / 4 * 4; }
 }
 
 }  // namespace stockbridge::cable
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif

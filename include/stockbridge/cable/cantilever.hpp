@@ -53,11 +53,13 @@ struct CableState {
   Eigen::Matrix2d tip_stiffness(double length) const;
 };
 
-/// Scratch space of apply_loads for the modified Masing model (sized on first use;
-/// other laws need none).
+/// Scratch space of apply_loads, sized on first use: the modified Masing model's
+/// elements; the Bouc-Wen law's last travels, each section's u and e^-u - 1 (where the
+/// next evaluation's solves start).
 struct CableWorkspace {
   std::vector<section::Jenkin> jenkin;
   std::vector<double> hysteretic;
+  std::vector<double> travel;
 };
 
 /// Loads in, state out: every section moves exactly, moment-driven, from `from`
