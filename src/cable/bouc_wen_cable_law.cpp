@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <string_view>
 
 #include <Eigen/LU>
 
@@ -11,6 +13,22 @@
 #include "stockbridge/cable/cantilever.hpp"
 
 namespace stockbridge::cable {
+
+namespace {
+
+/// AVX2 with FMA on this processor, and not declined by STOCKBRIDGE_BASELINE_KERNELS
+/// (set, other than "0").
+bool avx2_available() {
+#if defined(__x86_64__)
+  const char* declined = std::getenv("STOCKBRIDGE_BASELINE_KERNELS");
+  if (declined && *declined && std::string_view(declined) != "0") return false;
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+  return false;
+#endif
+}
+
+}  // namespace
 
 BoucWenCableLaw::BoucWenCableLaw(const CableDescription& description, std::span<const double> positions) {
   for (double position : positions) {
@@ -27,6 +45,7 @@ BoucWenCableLaw::BoucWenCableLaw(const CableDescription& description, std::span<
   hysteretic_.resize(padded, 0.0);
   chi0_.resize(padded, 1.0);
   inverse_chi0_.resize(padded, 1.0);
+  avx2_ = avx2_available();
 }
 
 namespace {
@@ -160,11 +179,9 @@ struct GroupArrays {
 
 /// Every section's monotone step from its state under the moment excess
 /// d_clamp_moment - d_tip_force s, four sections at a time, and the sums the tip
-/// kinematics and flexibility take. Built twice, for the x86-64 baseline and for
-/// processors with AVX2 and FMA (four lanes in one register), the one the processor
-/// runs chosen at load time.
-__attribute__((target_clones("arch=x86-64-v3", "default"))) SectionSums
-step_sections(const SectionArrays& a, double d_clamp_moment, double d_tip_force, double length) {
+/// kinematics and flexibility take.
+[[gnu::always_inline]] inline SectionSums step_sections(const SectionArrays& a, double d_clamp_moment,
+                                                        double d_tip_force, double length) {
   LaneSums sums;
   std::size_t i = 0;
   for (; i + 4 <= a.n; i += 4) {
@@ -195,6 +212,19 @@ step_sections(const SectionArrays& a, double d_clamp_moment, double d_tip_force,
           total(sums.dissipated),
           {total(sums.f00), total(sums.f01), total(sums.f10), total(sums.f11)}};
 }
+
+// The two builds of the section loop: for the x86-64 baseline (two lanes a register),
+// and for processors with AVX2 and FMA (four).
+SectionSums step_sections_baseline(const SectionArrays& a, double d_clamp_moment, double d_tip_force, double length) {
+  return step_sections(a, d_clamp_moment, d_tip_force, length);
+}
+#if defined(__x86_64__)
+__attribute__((target("arch=x86-64-v3"))) SectionSums step_sections_avx2(const SectionArrays& a,
+                                                                         double d_clamp_moment,
+                                                                         double d_tip_force, double length) {
+  return step_sections(a, d_clamp_moment, d_tip_force, length);
+}
+#endif
 
 }  // namespace
 
@@ -227,8 +257,13 @@ void BoucWenCableLaw::apply_loads(const Cable& cable, const CableState& from, do
                              to.tangent.data(),
                              workspace.travel.data(),
                              workspace.travel.data() + padded};
-  const SectionSums sums = step_sections(arrays, clamp_moment - from.clamp_moment, tip_force - from.tip_force,
-                                         cable.length());
+  const double d_clamp_moment = clamp_moment - from.clamp_moment, d_tip_force = tip_force - from.tip_force;
+#if defined(__x86_64__)
+  const SectionSums sums = avx2_ ? step_sections_avx2(arrays, d_clamp_moment, d_tip_force, cable.length())
+                                 : step_sections_baseline(arrays, d_clamp_moment, d_tip_force, cable.length());
+#else
+  const SectionSums sums = step_sections_baseline(arrays, d_clamp_moment, d_tip_force, cable.length());
+#endif
   to.clamp_moment = clamp_moment;
   to.tip_force = tip_force;
   to.rotation = sums.rotation;
@@ -245,14 +280,7 @@ double BoucWenCableLaw::internal_change(const CableState& start, const CableStat
 
 namespace {
 
-// The law is smooth along each monotone step, so the loads' derivatives follow the
-// derivatives of every section's (kappa, eta) forward. A step from (kappa_f, eta_f)
-// with E = exp(-|kappa - kappa_f| / chi0) and a E = (k_t - EI_min) / B (k_t the step's
-// tangent, B = EI_max - EI_min) has
-//     d eta = E d eta_f + (a E / chi0) (d kappa - d kappa_f),
-//     dM = k_t d kappa + B (chi0 E d eta_f - a E d kappa_f),
-// so d kappa = dM / k_t + alpha with alpha = (B / k_t) (a E d kappa_f - chi0 E d eta_f),
-// and the tip kinematics close it: d(T, F) = J^-1 (du - sum_i w_i [1; l - s_i] alpha_i).
+
 /// One step's sensitivities (BoucWenLoadSensitivity::step) on raw columns: `p`
 /// parameters, the sections' derivatives column by column (p x n, column-major).
 struct StepSensitivity {
@@ -278,10 +306,8 @@ struct StepSensitivity {
   }
 }
 
-/// Built twice, for the x86-64 baseline and for processors with AVX2 and FMA, the one
-/// the processor runs chosen at load time (the loops over the parameters run on vector
-/// registers either way).
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void propagate_step(const StepSensitivity& t) {
+/// The loops over the parameters run on vector registers (two or four lanes).
+[[gnu::always_inline]] inline void propagate_step(const StepSensitivity& t) {
   const std::size_t p = t.p;
   step_decays(t);
   double* __restrict d_rotation = t.d_rotation;
@@ -321,6 +347,12 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void propagate_step(
   }
 }
 
+// The two builds of the sensitivities' loops, as of the section loop.
+void propagate_step_baseline(const StepSensitivity& t) { propagate_step(t); }
+#if defined(__x86_64__)
+__attribute__((target("arch=x86-64-v3"))) void propagate_step_avx2(const StepSensitivity& t) { propagate_step(t); }
+#endif
+
 // The law is smooth along each monotone step, so the loads' derivatives follow the
 // derivatives of every section's (kappa, eta) forward. A step from (kappa_f, eta_f)
 // with E = exp(-|kappa - kappa_f| / chi0) and a E = (k_t - EI_min) / B (k_t the step's
@@ -352,7 +384,7 @@ class BoucWenLoadSensitivity final : public LoadSensitivity {
     const Eigen::Matrix2d inverse = to.flexibility.inverse();
     d_clamp_moment.resize(d_rotation.size());
     d_tip_force.resize(d_rotation.size());
-    propagate_step({positions_.size(),
+    const StepSensitivity arrays{positions_.size(),
                     static_cast<std::size_t>(d_curvature_.rows()),
                     positions_.data(),
                     weights_.data(),
@@ -372,7 +404,14 @@ class BoucWenLoadSensitivity final : public LoadSensitivity {
                     d_rotation.data(),
                     d_deflection.data(),
                     d_clamp_moment.data(),
-                    d_tip_force.data()});
+                    d_tip_force.data()};
+#if defined(__x86_64__)
+    if (law_.uses_avx2()) {
+      propagate_step_avx2(arrays);
+      return;
+    }
+#endif
+    propagate_step_baseline(arrays);
   }
 
   void mirror() override {

@@ -24,6 +24,11 @@ class BoucWenCableLaw final : public CableLaw {
   double ei_min(std::size_t i) const { return ei_min_[i]; }
   double ei_max(std::size_t i) const { return ei_min_[i] + hysteretic_[i]; }
   double chi0(std::size_t i) const { return chi0_[i]; }
+  /// Whether the section loops run their AVX2-with-FMA build: where the processor has
+  /// both, unless the environment variable STOCKBRIDGE_BASELINE_KERNELS was set (other
+  /// than "0") when the law was made; else the x86-64 baseline's. The two agree to
+  /// round-off.
+  bool uses_avx2() const { return avx2_; }
   /// The sections' numbers in order (padded beyond the cable's sections).
   const double* ei_min_data() const { return ei_min_.data(); }
   const double* hysteretic_data() const { return hysteretic_.data(); }
@@ -43,6 +48,7 @@ class BoucWenCableLaw final : public CableLaw {
   std::vector<double> hysteretic_;  // EI_max - EI_min, N m^2
   std::vector<double> chi0_;
   std::vector<double> inverse_chi0_;
+  bool avx2_ = false;
 };
 
 /// The curvature travelled, over chi0, by a monotone step that raises a Bouc-Wen

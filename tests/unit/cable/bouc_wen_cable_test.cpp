@@ -4,6 +4,8 @@
 // sections across slenderpy's zone boundaries.
 
 #include <cmath>
+#include <cstdlib>
+#include <numbers>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -13,6 +15,7 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/section/bouc_wen_section.hpp"
 #include "cable/exp_minus_one.hpp"
+#include "stockbridge/damper/periodic_cable.hpp"
 
 namespace stockbridge::cable {
 namespace {
@@ -223,6 +226,53 @@ TEST(BoucWenCable, EverySectionCarriesItsMomentWhateverTheGroupsOfFour) {
       EXPECT_NEAR(state.rotation, rotation, 1e-14 * std::abs(phi)) << sections;
       EXPECT_NEAR(state.deflection, deflection, 1e-14 * std::abs(x)) << sections;
     }
+  }
+}
+
+// The section loops are built for the x86-64 baseline and for AVX2 with FMA; the
+// environment variable STOCKBRIDGE_BASELINE_KERNELS makes a law built while it is set
+// run the baseline's. Both builds give the same loads along a path and the same exact
+// sensitivities of a period, to round-off (the AVX2 build fuses multiplies and adds).
+TEST(BoucWenCable, TheBaselineAndAvx2BuildsAgree) {
+  const CableDescription d = slenderpy_cable(41);  // a group short of four at the end
+  setenv("STOCKBRIDGE_BASELINE_KERNELS", "1", 1);
+  const Cable baseline_cable(d);
+  unsetenv("STOCKBRIDGE_BASELINE_KERNELS");
+  const Cable own_cable(d);
+  const auto& baseline_law = dynamic_cast<const BoucWenCableLaw&>(baseline_cable.law());
+  const auto& own_law = dynamic_cast<const BoucWenCableLaw&>(own_cable.law());
+  EXPECT_FALSE(baseline_law.uses_avx2());
+#if defined(__x86_64__)
+  EXPECT_EQ(own_law.uses_avx2(), __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"));
+#endif
+  if (!own_law.uses_avx2()) GTEST_SKIP() << "this processor has no AVX2 with FMA: one build only";
+
+  // A period of tip motion, its derivatives with respect to the coefficients of
+  // (sin, cos) in x and phi, after a settling pass.
+  const int samples = 64;
+  Eigen::Matrix2Xd path(2, samples);
+  Eigen::MatrixXd basis(samples, 2);
+  for (int j = 0; j < samples; ++j) {
+    const double t = 2.0 * std::numbers::pi * j / samples;
+    basis(j, 0) = std::sin(t);
+    basis(j, 1) = std::cos(t);
+    path(0, j) = 0.006 * basis(j, 0) + 0.001 * basis(j, 1);
+    path(1, j) = 0.04 * basis(j, 0) - 0.01 * basis(j, 1);
+  }
+  damper::PeriodicCable baseline(baseline_cable, CantileverOptions{});
+  damper::PeriodicCable own(own_cable, CantileverOptions{});
+  Eigen::MatrixXd baseline_sensitivity, own_sensitivity;
+  const damper::PeriodicCableResult a = baseline.evaluate(path, 3, nullptr, &basis, &baseline_sensitivity);
+  const damper::PeriodicCableResult b = own.evaluate(path, 3, nullptr, &basis, &own_sensitivity);
+  ASSERT_TRUE(a.summary.converged());
+  ASSERT_TRUE(b.summary.converged());
+  const double load_scale = a.period.loads.cwiseAbs().maxCoeff();
+  EXPECT_LT((a.period.loads - b.period.loads).cwiseAbs().maxCoeff(), 1e-11 * load_scale);
+  EXPECT_NEAR(a.period.dissipated, b.period.dissipated, 1e-11 * a.period.dissipated);
+  const double sensitivity_scale = baseline_sensitivity.cwiseAbs().maxCoeff();
+  EXPECT_LT((baseline_sensitivity - own_sensitivity).cwiseAbs().maxCoeff(), 1e-9 * sensitivity_scale);
+  for (std::size_t i = 0; i < own_cable.sections(); ++i) {
+    EXPECT_NEAR(baseline.final_state().hysteretic[i], own.final_state().hysteretic[i], 1e-11) << i;
   }
 }
 
