@@ -274,12 +274,13 @@ void BoucWenCableLaw::apply_loads(const Cable& cable, const CableState& from, do
 
 double BoucWenCableLaw::internal_change(const CableState& start, const CableState& end) const {
   double change = 0.0;
-  for (std::size_t i = 0; i < start.hysteretic.size(); ++i) change = std::max(change, std::abs(end.hysteretic[i] - start.hysteretic[i]));
+  for (std::size_t i = 0; i < start.hysteretic.size(); ++i) {
+    change = std::max(change, std::abs(end.hysteretic[i] - start.hysteretic[i]));
+  }
   return change;
 }
 
 namespace {
-
 
 /// One step's sensitivities (BoucWenLoadSensitivity::step) on raw columns: `p`
 /// parameters, the sections' derivatives column by column (p x n, column-major).

@@ -6,8 +6,9 @@
 // moment it solves EI_min u + (EI_max - EI_min) a (1 - e^-u) = s dM / chi0 for the
 // curvature travelled u = |d chi| / chi0 (a = 1 - s eta_from, s the step's sign):
 // the left side is increasing and concave; Halley's method from a close start
-// (the quadratic Taylor model's root for small steps) reaches round-off in two or
-// three steps of one exponential each.
+// (the last evaluation's travel, or the quadratic Taylor model's root for small
+// steps) reaches round-off in one to three steps of at most one exponential each.
+// The sections are solved four at a time on vector lanes (src/cable/exp_minus_one.hpp).
 
 #include <span>
 #include <vector>
