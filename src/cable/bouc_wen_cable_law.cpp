@@ -8,6 +8,7 @@
 
 #include <Eigen/LU>
 
+#include "cable_sums.hpp"
 #include "exp_minus_one.hpp"
 #include "stockbridge/cable/cable.hpp"
 #include "stockbridge/cable/cantilever.hpp"
@@ -122,14 +123,9 @@ struct SectionArrays {
   double *last_u, *last_decay_minus_one;
 };
 
-/// The sums over the sections (CableSums), lane by lane.
+/// The sums over the sections (CableSums), lane by lane, added at the end.
 struct LaneSums {
   Lanes rotation{}, deflection{}, dissipated{}, f00{}, f01{}, f10{}, f11{};
-};
-
-/// The sums of the whole cable.
-struct SectionSums {
-  double rotation = 0.0, deflection = 0.0, dissipated = 0.0, flexibility[4] = {};
 };
 
 /// Four sections' steps: the positions, weights and states at `at` (the cable's from
@@ -180,8 +176,8 @@ struct GroupArrays {
 /// Every section's monotone step from its state under the moment excess
 /// d_clamp_moment - d_tip_force s, four sections at a time, and the sums the tip
 /// kinematics and flexibility take.
-[[gnu::always_inline]] inline SectionSums step_sections(const SectionArrays& a, double d_clamp_moment,
-                                                        double d_tip_force, double length) {
+[[gnu::always_inline]] inline CableSums step_sections(const SectionArrays& a, double d_clamp_moment,
+                                                      double d_tip_force, double length) {
   LaneSums sums;
   std::size_t i = 0;
   for (; i + 4 <= a.n; i += 4) {
@@ -207,21 +203,22 @@ struct GroupArrays {
     std::copy(tangent, tangent + count, a.tangent + i);
   }
   auto total = [](const Lanes& v) { return (v[0] + v[1]) + (v[2] + v[3]); };
-  return {total(sums.rotation),
-          total(sums.deflection),
-          total(sums.dissipated),
-          {total(sums.f00), total(sums.f01), total(sums.f10), total(sums.f11)}};
+  CableSums cable_sums;
+  cable_sums.rotation = total(sums.rotation);
+  cable_sums.deflection = total(sums.deflection);
+  cable_sums.dissipated = total(sums.dissipated);
+  cable_sums.flexibility << total(sums.f00), total(sums.f01), total(sums.f10), total(sums.f11);
+  return cable_sums;
 }
 
 // The two builds of the section loop: for the x86-64 baseline (two lanes a register),
 // and for processors with AVX2 and FMA (four).
-SectionSums step_sections_baseline(const SectionArrays& a, double d_clamp_moment, double d_tip_force, double length) {
+CableSums step_sections_baseline(const SectionArrays& a, double d_clamp_moment, double d_tip_force, double length) {
   return step_sections(a, d_clamp_moment, d_tip_force, length);
 }
 #if defined(__x86_64__)
-__attribute__((target("arch=x86-64-v3"))) SectionSums step_sections_avx2(const SectionArrays& a,
-                                                                         double d_clamp_moment,
-                                                                         double d_tip_force, double length) {
+__attribute__((target("arch=x86-64-v3"))) CableSums step_sections_avx2(const SectionArrays& a, double d_clamp_moment,
+                                                                       double d_tip_force, double length) {
   return step_sections(a, d_clamp_moment, d_tip_force, length);
 }
 #endif
@@ -259,17 +256,12 @@ void BoucWenCableLaw::apply_loads(const Cable& cable, const CableState& from, do
                              workspace.travel.data() + padded};
   const double d_clamp_moment = clamp_moment - from.clamp_moment, d_tip_force = tip_force - from.tip_force;
 #if defined(__x86_64__)
-  const SectionSums sums = avx2_ ? step_sections_avx2(arrays, d_clamp_moment, d_tip_force, cable.length())
-                                 : step_sections_baseline(arrays, d_clamp_moment, d_tip_force, cable.length());
+  const CableSums sums = avx2_ ? step_sections_avx2(arrays, d_clamp_moment, d_tip_force, cable.length())
+                               : step_sections_baseline(arrays, d_clamp_moment, d_tip_force, cable.length());
 #else
-  const SectionSums sums = step_sections_baseline(arrays, d_clamp_moment, d_tip_force, cable.length());
+  const CableSums sums = step_sections_baseline(arrays, d_clamp_moment, d_tip_force, cable.length());
 #endif
-  to.clamp_moment = clamp_moment;
-  to.tip_force = tip_force;
-  to.rotation = sums.rotation;
-  to.deflection = sums.deflection;
-  to.flexibility << sums.flexibility[0], sums.flexibility[1], sums.flexibility[2], sums.flexibility[3];
-  to.dissipated = from.dissipated + sums.dissipated;
+  sums.store(clamp_moment, tip_force, from, to);
 }
 
 double BoucWenCableLaw::internal_change(const CableState& start, const CableState& end) const {
@@ -386,26 +378,26 @@ class BoucWenLoadSensitivity final : public LoadSensitivity {
     d_clamp_moment.resize(d_rotation.size());
     d_tip_force.resize(d_rotation.size());
     const StepSensitivity arrays{positions_.size(),
-                    static_cast<std::size_t>(d_curvature_.rows()),
-                    positions_.data(),
-                    weights_.data(),
-                    law_.ei_min_data(),
-                    law_.hysteretic_data(),
-                    law_.chi0_data(),
-                    from.curvature.data(),
-                    to.curvature.data(),
-                    to.tangent.data(),
-                    length_,
-                    {inverse(0, 0), inverse(0, 1), inverse(1, 0), inverse(1, 1)},
-                    d_curvature_.data(),
-                    d_eta_.data(),
-                    alpha_.data(),
-                    decay_.data(),
-                    a_decay_.data(),
-                    d_rotation.data(),
-                    d_deflection.data(),
-                    d_clamp_moment.data(),
-                    d_tip_force.data()};
+                                 static_cast<std::size_t>(d_curvature_.rows()),
+                                 positions_.data(),
+                                 weights_.data(),
+                                 law_.ei_min_data(),
+                                 law_.hysteretic_data(),
+                                 law_.chi0_data(),
+                                 from.curvature.data(),
+                                 to.curvature.data(),
+                                 to.tangent.data(),
+                                 length_,
+                                 {inverse(0, 0), inverse(0, 1), inverse(1, 0), inverse(1, 1)},
+                                 d_curvature_.data(),
+                                 d_eta_.data(),
+                                 alpha_.data(),
+                                 decay_.data(),
+                                 a_decay_.data(),
+                                 d_rotation.data(),
+                                 d_deflection.data(),
+                                 d_clamp_moment.data(),
+                                 d_tip_force.data()};
 #if defined(__x86_64__)
     if (law_.uses_avx2()) {
       propagate_step_avx2(arrays);
