@@ -126,6 +126,7 @@ struct SectionArrays {
 /// The sums over the sections (CableSums), lane by lane, added at the end.
 struct LaneSums {
   Lanes rotation{}, deflection{}, dissipated{}, f00{}, f01{}, f10{}, f11{};
+  Lanes change[2][3]{};  // CableState::flexibility_change's
 };
 
 /// Four sections' steps: the positions, weights and states at `at` (the cable's from
@@ -164,13 +165,24 @@ struct GroupArrays {
   sums.dissipated += w * hysteretic * chi0 * chi0 *
                      (u + decay_minus_one * (2.0 * slack - 0.5 * slack * slack * (2.0 + decay_minus_one)));
   const Lanes arm = length - s;
-  const Lanes g = w / tangent;
+  const Lanes compliance = 1.0 / tangent;
+  const Lanes g = w * compliance;
   sums.rotation += w * curvature;
   sums.deflection += w * arm * curvature;
   sums.f00 += g;
   sums.f01 -= g * s;
   sums.f10 += g * arm;
   sums.f11 -= g * arm * s;
+  // w d^2 kappa / dM^2 = w sign (k - EI_min) / (chi0 k^3): dk/dchi = -sign (k - EI_min) / chi0.
+  const Lanes c0 = moves ? sign * (tangent - ei_min) * load_lanes(a.inverse_chi0 + i) * g * compliance * compliance
+                         : Lanes{};
+  const Lanes c1 = c0 * s, c2 = c1 * s;
+  sums.change[0][0] += c0;
+  sums.change[0][1] += c1;
+  sums.change[0][2] += c2;
+  sums.change[1][0] += arm * c0;
+  sums.change[1][1] += arm * c1;
+  sums.change[1][2] += arm * c2;
 }
 
 /// Every section's monotone step from its state under the moment excess
@@ -208,6 +220,9 @@ struct GroupArrays {
   cable_sums.deflection = total(sums.deflection);
   cable_sums.dissipated = total(sums.dissipated);
   cable_sums.flexibility << total(sums.f00), total(sums.f01), total(sums.f10), total(sums.f11);
+  for (int r = 0; r < 2; ++r) {
+    for (int p = 0; p < 3; ++p) cable_sums.flexibility_change(r, p) = total(sums.change[r][p]);
+  }
   return cable_sums;
 }
 

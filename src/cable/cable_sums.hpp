@@ -8,10 +8,12 @@
 namespace stockbridge::cable {
 
 /// The tip kinematics phi = int kappa, x = int (l - s) kappa, the flexibility
-/// int [1; l-s] (1/k_t) [1, -s], and the dissipation, summed section by section.
+/// int [1; l-s] (1/k_t) [1, -s], and the dissipation, summed section by section
+/// (and the flexibility's change, where the law has one: CableState::flexibility_change).
 struct CableSums {
   double rotation = 0.0, deflection = 0.0, dissipated = 0.0;
   Eigen::Matrix2d flexibility = Eigen::Matrix2d::Zero();
+  Eigen::Matrix<double, 2, 3> flexibility_change = Eigen::Matrix<double, 2, 3>::Zero();
 
   void add(double weight, double s, double length, double curvature, double compliance, double dissipated_per_length) {
     const double arm = length - s;
@@ -31,6 +33,7 @@ struct CableSums {
     to.rotation = rotation;
     to.deflection = deflection;
     to.flexibility = flexibility;
+    to.flexibility_change = flexibility_change;
     to.dissipated = from.dissipated + dissipated;
   }
 };

@@ -35,6 +35,7 @@ void CableState::mirror() {
   tip_force = -tip_force;
   rotation = -rotation;
   deflection = -deflection;
+  flexibility_change = -flexibility_change;
   for (double& k : curvature) k = -k;
   for (double& h : hysteretic) h = -h;
 }
@@ -77,6 +78,7 @@ Cantilever::Cantilever(Cable cable, CantileverOptions options)
       options_(validated(options)),
       state_(CableState::virgin(cable_)),
       inverse_length_(1.0 / cable_.length()),
+      second_order_(cable_.law().has_flexibility_change()),
       elastic_flexibility_(state_.committed().flexibility),
       candidate_(state_.committed()) {}
 
@@ -168,8 +170,24 @@ inline Eigen::Vector2d inverse_times(const Eigen::Matrix2d& a, const Eigen::Vect
   return {i00 * v(0) + i01 * v(1), i10 * v(0) + i11 * v(1)};
 }
 
+/// The second-order term of the scaled kinematics (phi, x / l) under a change d of
+/// the scaled loads (T, F l), from CableState::flexibility_change:
+/// sum w c dM^2 [1; (l - s) / l] with dM = dT - dF s.
+inline Eigen::Vector2d second_order_term(const Eigen::Matrix<double, 2, 3>& change, const Eigen::Vector2d& d,
+                                         double inverse_l) {
+  const double t = d(0), f = d(1) * inverse_l;
+  const double tt = t * t, tf = 2.0 * t * f, ff = f * f;
+  return {change(0, 0) * tt - change(0, 1) * tf + change(0, 2) * ff,
+          (change(1, 0) * tt - change(1, 1) * tf + change(1, 2) * ff) * inverse_l};
+}
+
 // Newton's method in the scaled variables. Norms are compared squared (no square
-// root a step: this runs for every sample of every pass).
+// root a step: this runs for every sample of every pass). Where the law's tangents
+// vary smoothly (CableLaw::has_flexibility_change) the predictor and each step take
+// the second order too: for the kinematics k(q) = k0 + G d + H(d) / 2 the step
+// d = d1 - G^-1 H(d1) / 2 from the first-order d1 = G^-1 (target - k0) (Chebyshev's
+// method: cubic), which lands a Bouc-Wen cable's sample in one correction where the
+// first-order steps took two.
 template <class Prescribed>
 StateDetermination Cantilever::solve(const typename Prescribed::Vector& target) {
   using Vector = typename Prescribed::Vector;
@@ -198,7 +216,19 @@ StateDetermination Cantilever::solve(const typename Prescribed::Vector& target) 
   const Vector committed_kinematics = Prescribed::prescribed(scaled_kinematics(from));
   const Vector increment = target - committed_kinematics;
   const bool continuing = Prescribed::prescribed(last_increment_).dot(increment) > 0.0;
-  const Vector predicted = q + inverse_times(jacobian(continuing ? from.flexibility : elastic_flexibility_), increment);
+  // The second order's correction of a first-order change d1 of the unknowns,
+  // -G^-1 H(d1) / 2, taken where it is at most a quarter of d1 (a quadratic model of a
+  // step that crosses a turn of the law, or is large, can be far off: there the
+  // first-order step and the line search go on alone).
+  auto add_second_order = [inverse_l](const CableState& at, const auto& g, Vector& d1) {
+    const Vector correction = -inverse_times(
+        g, 0.5 * Prescribed::prescribed(second_order_term(at.flexibility_change, Prescribed::loads(d1), inverse_l)));
+    if (correction.squaredNorm() <= 0.0625 * d1.squaredNorm()) d1 += correction;
+  };
+  const auto predictor_jacobian = jacobian(continuing ? from.flexibility : elastic_flexibility_);
+  Vector change = inverse_times(predictor_jacobian, increment);
+  if (continuing && second_order_) add_second_order(from, predictor_jacobian, change);
+  const Vector predicted = q + change;
   if (predicted.allFinite()) q = predicted;  // else start from the committed loads
 
   const double scale = std::max({target.template lpNorm<Eigen::Infinity>(),
@@ -221,7 +251,9 @@ StateDetermination Cantilever::solve(const typename Prescribed::Vector& target) 
       break;
     }
     ++result.newton_iterations;
-    const Vector step = -inverse_times(jacobian(trial.flexibility), residual);
+    const auto newton_jacobian = jacobian(trial.flexibility);
+    Vector step = -inverse_times(newton_jacobian, residual);
+    if (second_order_) add_second_order(trial, newton_jacobian, step);
     if (!step.allFinite()) {  // a singular flexibility
       result.termination = Termination::singular_jacobian;
       result.reciprocal_condition = 0.0;

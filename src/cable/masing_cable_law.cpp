@@ -153,6 +153,7 @@ void apply_loads_one_element(const OneElementColumns& col, const CableState& fro
   to.rotation = rotation;
   to.deflection = deflection;
   to.flexibility << f00, -f01, f10, -f11;
+  to.flexibility_change.setZero();  // piecewise linear: no second order
   to.dissipated = from.dissipated + dissipated;
 }
 

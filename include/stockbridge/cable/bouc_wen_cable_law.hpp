@@ -38,6 +38,7 @@ class BoucWenCableLaw final : public CableLaw {
   std::size_t internal_variables() const override { return 1; }
   double stick_stiffness(std::size_t section) const override { return ei_max(section); }
   double slip_stiffness(std::size_t section) const override { return ei_min_[section]; }
+  bool has_flexibility_change() const override { return true; }
   void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force, CableState& to,
                    CableWorkspace& workspace) const override;
   double internal_change(const CableState& start, const CableState& end) const override;

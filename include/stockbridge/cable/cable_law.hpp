@@ -61,6 +61,10 @@ class CableLaw {
   virtual double stick_stiffness(std::size_t section) const = 0;
   /// Section i's tangent stiffness when its friction has fully developed, N m^2.
   virtual double slip_stiffness(std::size_t section) const = 0;
+  /// Whether apply_loads fills CableState::flexibility_change (a law whose tangents
+  /// vary smoothly with the moment); the cantilever's predictor and Newton steps then
+  /// take the second order. Else it is zero, and they are the first-order ones.
+  virtual bool has_flexibility_change() const { return false; }
   /// Loads in, state out (cable::apply_loads): fills every field of `to`.
   virtual void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force,
                            CableState& to, CableWorkspace& workspace) const = 0;

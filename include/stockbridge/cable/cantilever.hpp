@@ -5,8 +5,9 @@
 //     phi = int_0^l kappa ds,  x = int_0^l (l - s) kappa ds.
 // Given loads (T, F) the state follows exactly (moment-driven section updates);
 // given tip kinematics it follows from Newton's method on (T, F) with the exact
-// flexibility d(phi, x)/d(T, F) and a backtracking line search. This replaces the
-// dissertation's fixed-point iteration (4.45)-(4.49).
+// flexibility d(phi, x)/d(T, F) and a backtracking line search (with the
+// flexibility's change too where the law's tangents vary smoothly: Chebyshev's
+// method). This replaces the dissertation's fixed-point iteration (4.45)-(4.49).
 
 #include <span>
 #include <vector>
@@ -28,6 +29,13 @@ struct CableState {
   double deflection = 0.0;    ///< x = w(l), m
   /// d(phi, x)/d(T, F) for continued loading: [[rad/(N m), rad/N], [m/(N m), m/N]].
   Eigen::Matrix2d flexibility = Eigen::Matrix2d::Zero();
+  /// How the flexibility changes with the loads, for a law whose tangents vary
+  /// smoothly along a monotone stretch (CableLaw::has_flexibility_change; zero
+  /// otherwise): with c_i = d^2 kappa / dM^2 at section i in the direction it last
+  /// moved, row 0 holds sum w_i c_i s_i^p and row 1 sum w_i (l - s_i) c_i s_i^p for
+  /// p = 0, 1, 2, so that a change (dT, dF) of the loads moves (phi, x) by the
+  /// flexibility's term plus half of sum w c (dT - dF s)^2 [1; l - s].
+  Eigen::Matrix<double, 2, 3> flexibility_change = Eigen::Matrix<double, 2, 3>::Zero();
   double dissipated = 0.0;            ///< energy dissipated by all sliders since virgin, J
   std::vector<double> curvature;      ///< kappa at each section, 1/m
   std::vector<double> tangent;        ///< section tangent stiffness, N m^2
@@ -39,12 +47,12 @@ struct CableState {
   /// The state under the opposite loads: the law is odd (a Jenkin element's moment
   /// changes sign with its path, the modified Masing slip moments depend on |M| / |F|,
   /// Bouc-Wen's eta changes sign with its path), so loads, tip kinematics, curvatures
-  /// and internal variables change sign; tangents, flexibility and the energy
-  /// dissipated stay.
+  /// and internal variables change sign, and so does the flexibility's change (each
+  /// section's direction turns); tangents, flexibility and the energy dissipated stay.
   void mirror();
   /// Halfway to `other` (a state of the same cable): loads, tip kinematics,
   /// curvatures and internal variables become the means (a state again: every law's
-  /// moment is linear in them); tangents, flexibility and the
+  /// moment is linear in them); tangents, flexibility (and its change) and the
   /// energy dissipated stay this state's.
   void move_halfway_to(const CableState& other);
   /// Q = T - F l, N m.
@@ -135,6 +143,7 @@ class Cantilever {
   CantileverOptions options_;
   SwappingCommittable<CableState> state_;
   double inverse_length_;                // 1 / l
+  bool second_order_;                    // the law fills CableState::flexibility_change
   Eigen::Matrix2d elastic_flexibility_;  // every element sticking: the predictor after a reversal
   Eigen::Vector2d last_increment_ = Eigen::Vector2d::Zero();  // of (phi, x / l) in the last committed step
   CableWorkspace workspace_;
