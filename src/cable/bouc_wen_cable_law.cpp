@@ -62,6 +62,7 @@ namespace {
 }
 [[gnu::always_inline]] inline void store_lanes(double* p, Lanes v) { std::memcpy(p, &v, sizeof v); }
 [[gnu::always_inline]] inline Lanes max_lanes(Lanes a, Lanes b) { return a < b ? b : a; }
+[[gnu::always_inline]] inline Lanes min_lanes(Lanes a, Lanes b) { return a < b ? a : b; }
 [[gnu::always_inline]] inline Lanes abs_lanes(Lanes a) { return a < 0.0 ? -a : a; }
 
 /// The travels of four sections: u >= 0 with g(u) = 0, and e^-u - 1 there. The start
@@ -70,42 +71,56 @@ namespace {
 /// little from the same state, and this saves the start's exponential. Else the root of
 /// the quadratic Taylor model ei_min u + ba (u - u^2 / 2) (close for the small steps of a
 /// sampled path), else the larger of the roots of g's tangent at 0 and of its asymptote
-/// ei_min u + ba (both below the root). Then Halley's method, g'' = -ba e^-u from the
-/// same exponential: cubic (the error after a step of order step^3, the derivatives'
-/// ratios being at most 1 in u), so a step below 1e-6 of u leaves an error of order
-/// 1e-18 u^3, and e^-u - 1 follows it to third order in the step instead of from a
-/// further exponential. Any start converges to the same root: the result does not
+/// ei_min u + ba (both below the root).
+///
+/// From u with E = e^-u the rest d of the way solves the same kind of equation,
+/// ei_min d + ba E (1 - e^-d) = -g(u), that is d - beta (d^2/2 - d^3/6 + ...) = r with
+/// r = -g / g' and beta = ba E / g' in [0, 1]. Where |r| <= 1e-3 min(u, 1) the series
+/// of its inverse to r^5 (the error of order r^6: below 1e-18 of u) ends the solve, and
+/// e^-d to d^6 carries E along: no exponential. Elsewhere Halley's step
+/// d = r / (1 - beta r / 2) (cubic; g'' = -ba E from the same exponential) and one
+/// exponential at the new u. Any start converges to the same root: the result does not
 /// depend on it beyond round-off.
 [[gnu::always_inline]] inline void solve_four_travels(Lanes ei_min, Lanes ba, Lanes target, Lanes last_u,
                                                       Lanes last_decay_minus_one, Lanes& u_out,
                                                       Lanes& decay_minus_one_out) {
-  const Lanes k0 = ei_min + ba;  // g'(0)
-  const Lanes below = max_lanes(target / k0, (target - ba) / ei_min);
-  const Lanes discriminant = k0 * k0 - 2.0 * ba * target;
-  Lanes root = max_lanes(discriminant, Lanes{});
-  for (int k = 0; k < 4; ++k) root[k] = std::sqrt(root[k]);
-  const Lanes modelled = discriminant > 0.0 ? max_lanes(below, 2.0 * target / (k0 + root)) : below;
   const LaneMask near_last =
       abs_lanes(ei_min * last_u - ba * last_decay_minus_one - target) <= 1e-3 * target;
-  Lanes u = near_last ? last_u : modelled;
-  Lanes decay_minus_one =
-      any_lane(~near_last) ? (near_last ? last_decay_minus_one : exp_minus_one_of_nonpositive(-modelled))
-                           : last_decay_minus_one;
+  Lanes u = last_u, decay_minus_one = last_decay_minus_one;
+  if (any_lane(~near_last)) {
+    const Lanes k0 = ei_min + ba;  // g'(0)
+    const Lanes below = max_lanes(target / k0, (target - ba) / ei_min);
+    const Lanes discriminant = k0 * k0 - 2.0 * ba * target;
+    Lanes root = max_lanes(discriminant, Lanes{});
+    for (int k = 0; k < 4; ++k) root[k] = std::sqrt(root[k]);
+    const Lanes modelled = discriminant > 0.0 ? max_lanes(below, 2.0 * target / (k0 + root)) : below;
+    u = near_last ? last_u : modelled;
+    decay_minus_one = near_last ? last_decay_minus_one : exp_minus_one_of_nonpositive(-modelled);
+  }
   LaneMask open = u == u;  // every lane
   for (int iteration = 0; iteration < 50 && any_lane(open); ++iteration) {
     const Lanes decay = 1.0 + decay_minus_one;
     const Lanes g = ei_min * u - ba * decay_minus_one - target;
-    const Lanes g1 = ei_min + ba * decay, g2 = -ba * decay;
-    const Lanes step = -g * g1 / (g1 * g1 - 0.5 * g * g2);
+    const Lanes b = ba * decay, inverse_g1 = 1.0 / (ei_min + b);
+    const Lanes r = -g * inverse_g1, beta = b * inverse_g1;
+    const LaneMask close = abs_lanes(r) <= 1e-3 * min_lanes(u, Lanes{} + 1.0);
+    // The inverse series' coefficients: r + c2 r^2 + ... + c5 r^5.
+    const Lanes c2 = 0.5 * beta, c3 = beta * (0.5 * beta - 1.0 / 6.0),
+                c4 = beta * (beta * (0.625 * beta - 5.0 / 12.0) + 1.0 / 24.0),
+                c5 = beta * (beta * (beta * (0.875 * beta - 0.875) + 5.0 / 24.0) - 1.0 / 120.0);
+    const Lanes series = r * (1.0 + r * (c2 + r * (c3 + r * (c4 + r * c5))));
+    const Lanes step = close ? series : r / (1.0 - 0.5 * beta * r);
     const Lanes next = u + step;
-    const LaneMask small = !(abs_lanes(step) > 1e-6 * next);
-    const Lanes followed = decay_minus_one + decay * (-step * (1.0 - step * (0.5 - step * (1.0 / 6.0))));
+    const Lanes followed =
+        decay_minus_one +
+        decay * (-step * (1.0 - step * (0.5 - step * (1.0 / 6.0 - step * (1.0 / 24.0 - step * (1.0 / 120.0 -
+                                                                                              step / 720.0))))));
     // The exponential only where an open lane needs it.
     const Lanes next_decay_minus_one =
-        any_lane(open & ~small) ? (small ? followed : exp_minus_one_of_nonpositive(-next)) : followed;
+        any_lane(open & ~close) ? (close ? followed : exp_minus_one_of_nonpositive(-next)) : followed;
     u = open ? next : u;
     decay_minus_one = open ? next_decay_minus_one : decay_minus_one;
-    open &= ~small;
+    open &= ~close;
   }
   const LaneMask negative = u < 0.0;
   u_out = negative ? Lanes{} : u;
@@ -240,13 +255,15 @@ __attribute__((target("arch=x86-64-v3"))) CableSums step_sections_avx2(const Sec
 
 }  // namespace
 
-BoucWenTravel bouc_wen_travel(double ei_min, double hysteretic, double chi0, double eta_from, double excess) {
+BoucWenTravel bouc_wen_travel(double ei_min, double hysteretic, double chi0, double eta_from, double excess,
+                              const BoucWenTravel& start) {
   const double sign = excess > 0.0 ? 1.0 : -1.0;
   const double ba = hysteretic * (1.0 - sign * eta_from);
   const double target = std::abs(excess) / chi0;
   // One lane of a group; the others solve the empty step (u = 0).
   Lanes u, decay_minus_one;
-  solve_four_travels(Lanes{} + ei_min, Lanes{ba}, Lanes{target}, Lanes{}, Lanes{}, u, decay_minus_one);
+  solve_four_travels(Lanes{} + ei_min, Lanes{ba}, Lanes{target}, Lanes{start.u}, Lanes{start.decay_minus_one}, u,
+                     decay_minus_one);
   return {u[0], decay_minus_one[0]};
 }
 
