@@ -65,37 +65,40 @@ namespace {
 [[gnu::always_inline]] inline Lanes min_lanes(Lanes a, Lanes b) { return a < b ? a : b; }
 [[gnu::always_inline]] inline Lanes abs_lanes(Lanes a) { return a < 0.0 ? -a : a; }
 
-/// The travels of four sections: u >= 0 with g(u) = 0, and e^-u - 1 there. The start
-/// is the last evaluation's travel where g there (from its own exponential, exact) is
-/// within 1e-3 of the target: the cantilever's Newton corrections move the loads a
-/// little from the same state, and this saves the start's exponential. Else the root of
-/// the quadratic Taylor model ei_min u + ba (u - u^2 / 2) (close for the small steps of a
-/// sampled path), else the larger of the roots of g's tangent at 0 and of its asymptote
-/// ei_min u + ba (both below the root).
+/// The travels of four sections: u >= 0 with g(u) = 0, and e^-u - 1 there.
 ///
-/// From u with E = e^-u the rest d of the way solves the same kind of equation,
-/// ei_min d + ba E (1 - e^-d) = -g(u), that is d - beta (d^2/2 - d^3/6 + ...) = r with
-/// r = -g / g' and beta = ba E / g' in [0, 1]. Where |r| <= 1e-3 min(u, 1) the series
-/// of its inverse to r^5 (the error of order r^6: below 1e-18 of u) ends the solve, and
-/// e^-d to d^6 carries E along: no exponential. Elsewhere Halley's step
-/// d = r / (1 - beta r / 2) (cubic; g'' = -ba E from the same exponential) and one
-/// exponential at the new u. Any start converges to the same root: the result does not
-/// depend on it beyond round-off.
+/// From any u with E = e^-u known the rest d of the way solves the same kind of
+/// equation, ei_min d + ba E (1 - e^-d) = -g(u), that is d - beta (d^2/2 - d^3/6 + ...)
+/// = r with r = -g / g' and beta = ba E / g' in [0, 1]. Where |r| <= 0.03 the series of
+/// its inverse to r^5 gives d within about r^6 / 6 (1e-10 at 0.03), and e^-d to d^8
+/// carries E along without an exponential; where |r| <= 1e-3 min(u, 1) that error is
+/// below 1e-18 of u and the step ends the solve. Farther off, Halley's step
+/// d = r / (1 - beta r / 2) (cubic; g'' = -ba E) and one exponential at the new u.
+///
+/// The start is the last evaluation's travel where g there (from its own exponential,
+/// exact) is within 1e-3 of the target: the cantilever's Newton corrections move the
+/// loads a little from the same state. Else u = 0 (E = 1), where the series takes the
+/// small steps of a sampled path (r = target / g'(0) <= 0.03); else the root of the
+/// quadratic Taylor model ei_min u + ba (u - u^2 / 2), or the larger of the roots of g's
+/// tangent at 0 and of its asymptote ei_min u + ba (both below the root), with one
+/// exponential. Any start converges to the same root: the result does not depend on it
+/// beyond round-off.
 [[gnu::always_inline]] inline void solve_four_travels(Lanes ei_min, Lanes ba, Lanes target, Lanes last_u,
                                                       Lanes last_decay_minus_one, Lanes& u_out,
                                                       Lanes& decay_minus_one_out) {
   const LaneMask near_last =
       abs_lanes(ei_min * last_u - ba * last_decay_minus_one - target) <= 1e-3 * target;
-  Lanes u = last_u, decay_minus_one = last_decay_minus_one;
-  if (any_lane(~near_last)) {
-    const Lanes k0 = ei_min + ba;  // g'(0)
+  const Lanes k0 = ei_min + ba;  // g'(0)
+  const LaneMask far = ~near_last & (target > 0.03 * k0);
+  Lanes u = near_last ? last_u : Lanes{}, decay_minus_one = near_last ? last_decay_minus_one : Lanes{};
+  if (any_lane(far)) {
     const Lanes below = max_lanes(target / k0, (target - ba) / ei_min);
     const Lanes discriminant = k0 * k0 - 2.0 * ba * target;
     Lanes root = max_lanes(discriminant, Lanes{});
     for (int k = 0; k < 4; ++k) root[k] = std::sqrt(root[k]);
     const Lanes modelled = discriminant > 0.0 ? max_lanes(below, 2.0 * target / (k0 + root)) : below;
-    u = near_last ? last_u : modelled;
-    decay_minus_one = near_last ? last_decay_minus_one : exp_minus_one_of_nonpositive(-modelled);
+    u = far ? modelled : u;
+    decay_minus_one = far ? exp_minus_one_of_nonpositive(-modelled) : decay_minus_one;
   }
   LaneMask open = u == u;  // every lane
   for (int iteration = 0; iteration < 50 && any_lane(open); ++iteration) {
@@ -103,21 +106,26 @@ namespace {
     const Lanes g = ei_min * u - ba * decay_minus_one - target;
     const Lanes b = ba * decay, inverse_g1 = 1.0 / (ei_min + b);
     const Lanes r = -g * inverse_g1, beta = b * inverse_g1;
-    const LaneMask close = abs_lanes(r) <= 1e-3 * min_lanes(u, Lanes{} + 1.0);
+    const Lanes size = abs_lanes(r);
+    const LaneMask by_series = size <= 0.03;
+    const LaneMask close = size <= 1e-3 * min_lanes(u, Lanes{} + 1.0);
     // The inverse series' coefficients: r + c2 r^2 + ... + c5 r^5.
     const Lanes c2 = 0.5 * beta, c3 = beta * (0.5 * beta - 1.0 / 6.0),
                 c4 = beta * (beta * (0.625 * beta - 5.0 / 12.0) + 1.0 / 24.0),
                 c5 = beta * (beta * (beta * (0.875 * beta - 0.875) + 5.0 / 24.0) - 1.0 / 120.0);
     const Lanes series = r * (1.0 + r * (c2 + r * (c3 + r * (c4 + r * c5))));
-    const Lanes step = close ? series : r / (1.0 - 0.5 * beta * r);
+    const Lanes step = by_series ? series : r / (1.0 - 0.5 * beta * r);
     const Lanes next = u + step;
-    const Lanes followed =
-        decay_minus_one +
-        decay * (-step * (1.0 - step * (0.5 - step * (1.0 / 6.0 - step * (1.0 / 24.0 - step * (1.0 / 120.0 -
-                                                                                              step / 720.0))))));
+    // e^-d - 1 to d^8.
+    const Lanes d = -step;
+    Lanes exp_step_minus_one = 1.0 / 40320.0 * d;
+    for (const double c : {1.0 / 5040.0, 1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0}) {
+      exp_step_minus_one = d * (c + exp_step_minus_one);
+    }
+    const Lanes followed = decay_minus_one + decay * exp_step_minus_one;
     // The exponential only where an open lane needs it.
     const Lanes next_decay_minus_one =
-        any_lane(open & ~close) ? (close ? followed : exp_minus_one_of_nonpositive(-next)) : followed;
+        any_lane(open & ~by_series) ? (by_series ? followed : exp_minus_one_of_nonpositive(-next)) : followed;
     u = open ? next : u;
     decay_minus_one = open ? next_decay_minus_one : decay_minus_one;
     open &= ~close;

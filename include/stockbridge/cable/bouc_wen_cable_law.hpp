@@ -5,12 +5,13 @@
 // exact in closed form in the curvature (section::bouc_wen_update); driven by its
 // moment it solves EI_min u + (EI_max - EI_min) a (1 - e^-u) = s dM / chi0 for the
 // curvature travelled u = |d chi| / chi0 (a = 1 - s eta_from, s the step's sign):
-// the left side is increasing and concave; from a close start (the last
-// evaluation's travel, or the quadratic Taylor model's root for small steps)
-// Halley's steps, each with one exponential, until the rest of the way is within
-// 1e-3, which the inverse series to fifth order then covers to round-off without an
-// exponential (on slenderpy's damper 1.16 steps and 0.84 exponentials a group of
-// four sections).
+// the left side is increasing and concave. The rest of the way from any u solves an
+// equation of the same kind: where it is short (|r| <= 0.03, r = -g / g') the inverse
+// series to fifth order covers it without an exponential, to round-off once r is
+// within 1e-3; farther off Halley's step and one exponential. The solve starts from
+// the last evaluation's travel where that is close, else from u = 0 for a short step,
+// else from the quadratic Taylor model's root (on slenderpy's damper 1.54 steps and
+// 0.39 exponentials a group of four sections).
 // The sections are solved four at a time on vector lanes (src/cable/exp_minus_one.hpp).
 
 #include <span>
