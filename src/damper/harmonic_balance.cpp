@@ -25,6 +25,7 @@ void HarmonicBalanceOptions::validate() const {
   if (!(jacobian_refresh_ratio > 0.0 && jacobian_refresh_ratio <= 1.0)) {
     throw_invalid("jacobian_refresh_ratio", jacobian_refresh_ratio, "a value in (0, 1]");
   }
+  if (!(settle_ratio >= 0.0 && std::isfinite(settle_ratio))) throw_invalid("settle_ratio", settle_ratio, "a value >= 0");
   cantilever.validate();
 }
 
@@ -336,8 +337,13 @@ NewtonSolve::Finish NewtonSolve::finish(const Eigen::VectorXd& q) {
 
 bool NewtonSolve::settle(const Eigen::VectorXd& q) {
   if (settling_periods_ >= options_.max_settling_periods) {
+    const std::string where =
+        norm_ <= options_.tolerance
+            ? std::string("the equations hold")
+            : fmt::format("the residual {:.3g} below {} times the periodicity defect {:.3g}", norm_,
+                          options_.settle_ratio, current_.cable.periodicity_defect);
     return fail(Termination::not_periodic,
-                fmt::format("(the equations hold; {} more periods at the solution did not settle the cable's memory)",
+                fmt::format("({}; {} more periods at the same coefficients did not settle the cable's memory)", where,
                             settling_periods_));
   }
   settling_periods_ += options_.periods;
@@ -396,7 +402,10 @@ bool NewtonSolve::run(Eigen::VectorXd& q) {
       if (outcome == Finish::not_yet) continue;
       return outcome == Finish::converged;
     }
-    if (norm_ <= options_.tolerance) {
+    // The equations hold, or the residual is mostly the memory's drift (a step cannot
+    // remove it: a stored Jacobian's step was then mostly rejected, and an exact one
+    // re-evaluated): let the memory settle at these coefficients first.
+    if (norm_ <= options_.tolerance || norm_ < options_.settle_ratio * current_.cable.periodicity_defect) {
       if (!settle(q)) return false;
       continue;
     }

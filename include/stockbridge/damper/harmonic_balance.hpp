@@ -48,6 +48,12 @@ struct HarmonicBalanceOptions {
   /// Once the equations hold, further periods at the same coefficients let the
   /// cable's memory settle; at most this many (near-stick states settle slowly).
   int max_settling_periods = 2000;
+  /// Settling also comes before a Newton step while the residual is below this many
+  /// times the periodicity defect: such a residual is mostly the drift of a memory
+  /// that has not settled, which no step removes (0: settle only once the equations
+  /// hold). 0.3: on slenderpy's Bouc-Wen damper 400 points in 38 % less time (the
+  /// Jacobians re-evaluated after rejected steps saved), |Z| within 1e-6 of 0's.
+  double settle_ratio = 0.3;
   /// The stored Jacobian is replaced by an exact one when a Newton step reduces the
   /// residual by less than this factor (an exact one costs about 12 residuals).
   double jacobian_refresh_ratio = 0.25;
