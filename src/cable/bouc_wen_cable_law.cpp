@@ -323,7 +323,7 @@ struct StepSensitivity {
   const double *curvature_from, *curvature_to, *tangent_to;
   double length;
   double inverse[4];  // the step's flexibility inverted, row-major
-  double *d_curvature, *d_eta, *alpha, *decay, *a_decay;
+  double *d_curvature, *d_eta, *decay, *a_decay, *on_curvature, *on_eta;
   double *d_rotation, *d_deflection, *d_clamp_moment, *d_tip_force;
 };
 
@@ -339,7 +339,10 @@ struct StepSensitivity {
   }
 }
 
-/// The loops over the parameters run on vector registers (two or four lanes).
+/// The loops over the parameters run on vector registers (two or four lanes). alpha's
+/// part from the step's start, on_curvature d kappa_f + on_eta d eta_f, is summed into
+/// the tip kinematics' derivatives first and computed again in the second loop (two
+/// multiplications, where storing and loading it cost more).
 [[gnu::always_inline]] inline void propagate_step(const StepSensitivity& t) {
   const std::size_t p = t.p;
   step_decays(t);
@@ -349,14 +352,15 @@ struct StepSensitivity {
     const double b = t.hysteretic[i], chi0 = t.chi0[i], k = t.tangent_to[i];
     t.a_decay[i] = b > 0.0 ? (k - t.ei_min[i]) / b : 0.0;
     const double on_curvature = (b / k) * t.a_decay[i], on_eta = -(b / k) * (chi0 * t.decay[i]);
+    t.on_curvature[i] = on_curvature;
+    t.on_eta[i] = on_eta;
     const double weight = t.w[i], weight_arm = t.w[i] * (t.length - t.s[i]);
     const double* __restrict d_curvature = t.d_curvature + i * p;
     const double* __restrict d_eta = t.d_eta + i * p;
-    double* __restrict alpha = t.alpha + i * p;
     for (std::size_t j = 0; j < p; ++j) {
-      alpha[j] = on_curvature * d_curvature[j] + on_eta * d_eta[j];
-      d_rotation[j] -= weight * alpha[j];
-      d_deflection[j] -= weight_arm * alpha[j];
+      const double alpha = on_curvature * d_curvature[j] + on_eta * d_eta[j];
+      d_rotation[j] -= weight * alpha;
+      d_deflection[j] -= weight_arm * alpha;
     }
   }
   double* __restrict d_clamp_moment = t.d_clamp_moment;
@@ -368,14 +372,15 @@ struct StepSensitivity {
   for (std::size_t i = 0; i < t.n; ++i) {
     const double inverse_k = 1.0 / t.tangent_to[i], s = t.s[i];
     const double on_alpha = t.a_decay[i] / t.chi0[i], decay = t.decay[i];
+    const double on_curvature = t.on_curvature[i], on_eta = t.on_eta[i];
     double* __restrict d_curvature = t.d_curvature + i * p;
     double* __restrict d_eta = t.d_eta + i * p;
-    double* __restrict alpha = t.alpha + i * p;
     for (std::size_t j = 0; j < p; ++j) {
       // d kappa_new - d kappa_f, then the new derivatives.
-      alpha[j] += inverse_k * (d_clamp_moment[j] - s * d_tip_force[j]) - d_curvature[j];
-      d_eta[j] = decay * d_eta[j] + on_alpha * alpha[j];
-      d_curvature[j] += alpha[j];
+      const double alpha = (on_curvature * d_curvature[j] + on_eta * d_eta[j]) +
+                           (inverse_k * (d_clamp_moment[j] - s * d_tip_force[j]) - d_curvature[j]);
+      d_eta[j] = decay * d_eta[j] + on_alpha * alpha;
+      d_curvature[j] += alpha;
     }
   }
 }
@@ -407,9 +412,10 @@ class BoucWenLoadSensitivity final : public LoadSensitivity {
     const auto n = static_cast<Eigen::Index>(positions_.size());
     d_curvature_.setZero(parameters, n);
     d_eta_.setZero(parameters, n);
-    alpha_.setZero(parameters, n);
     decay_.resize(lanes_padded(positions_.size()));
     a_decay_.resize(positions_.size());
+    on_curvature_.resize(positions_.size());
+    on_eta_.resize(positions_.size());
   }
 
   void step(const CableState& from, const CableState& to, Eigen::VectorXd& d_rotation, Eigen::VectorXd& d_deflection,
@@ -431,9 +437,10 @@ class BoucWenLoadSensitivity final : public LoadSensitivity {
                                  {inverse(0, 0), inverse(0, 1), inverse(1, 0), inverse(1, 1)},
                                  d_curvature_.data(),
                                  d_eta_.data(),
-                                 alpha_.data(),
                                  decay_.data(),
                                  a_decay_.data(),
+                                 on_curvature_.data(),
+                                 on_eta_.data(),
                                  d_rotation.data(),
                                  d_deflection.data(),
                                  d_clamp_moment.data(),
@@ -456,8 +463,8 @@ class BoucWenLoadSensitivity final : public LoadSensitivity {
   std::vector<double> positions_, weights_;
   double length_;
   const BoucWenCableLaw& law_;
-  Eigen::MatrixXd d_curvature_, d_eta_, alpha_;  // parameters x sections
-  std::vector<double> decay_, a_decay_;
+  Eigen::MatrixXd d_curvature_, d_eta_;  // parameters x sections
+  std::vector<double> decay_, a_decay_, on_curvature_, on_eta_;
 };
 
 }  // namespace
