@@ -97,7 +97,9 @@ TEST(LineSchedule, ARecommendationOfNPerEndIsUnsafeWithOneFewer) {
       EXPECT_NEAR(row.positions[k] * 100.0, std::round(row.positions[k] * 100.0), 1e-6);
       EXPECT_GE(row.positions[k], file.line.rules().positions.position_min);
       EXPECT_LE(row.positions[k], file.line.rules().positions.position_max);
-      if (k > 0) EXPECT_GE(row.positions[k] - row.positions[k - 1], file.line.rules().positions.spacing_min - 1e-9);
+      if (k > 0) {
+        EXPECT_GE(row.positions[k] - row.positions[k - 1], file.line.rules().positions.spacing_min - 1e-9);
+      }
     }
     if (row.per_end == 2) {
       ++checked_two;

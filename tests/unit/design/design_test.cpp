@@ -31,7 +31,7 @@ DesignSpan aster_span(const damper::DamperDescription& d, double position = 1.0)
   std::vector<span::SpanDamper> dampers{{damper::Damper(d), position, true, "damper", nullptr}};
   return {span::Span(span::testing::aster570(), 400.0, span::testing::aster570_tension, span::WindModel{},
                      span::SelfDampingModel{}, std::move(dampers), fatigue),
-          "aster"};
+          "aster", span::BalanceOptions{}};
 }
 
 DesignStudy study_of(std::vector<DesignVariable> variables, std::vector<DesignTie> ties = {},
