@@ -148,8 +148,9 @@ struct SectionArrays {
 
 /// The sums over the sections (CableSums), lane by lane, added at the end.
 struct LaneSums {
-  Lanes rotation{}, deflection{}, dissipated{}, f00{}, f01{}, f10{}, f11{};
-  Lanes change[2][3]{};  // CableState::flexibility_change's
+  Lanes rotation{}, moment_of_rotation{}, dissipated{};  // sum w kappa, sum w s kappa
+  Lanes compliance[3]{};                                 // sum w s^p / k, p = 0, 1, 2
+  Lanes change[4]{};                                     // sum w c s^p, p = 0 .. 3
 };
 
 /// Four sections' steps: the positions, weights and states at `at` (the cable's from
@@ -160,8 +161,7 @@ struct GroupArrays {
 };
 
 [[gnu::always_inline]] inline void step_group(const SectionArrays& a, std::size_t i, const GroupArrays& at,
-                                              double d_clamp_moment, double d_tip_force, double length,
-                                              LaneSums& sums) {
+                                              double d_clamp_moment, double d_tip_force, LaneSums& sums) {
   const Lanes s = load_lanes(at.s), w = load_lanes(at.w), eta_from = load_lanes(at.eta_from);
   const Lanes hysteretic = load_lanes(a.hysteretic + i), chi0 = load_lanes(a.chi0 + i);
   const Lanes ei_min = load_lanes(a.ei_min + i);
@@ -187,25 +187,22 @@ struct GroupArrays {
   // with e^-2u - 1 = (e^-u - 1)(e^-u + 1).
   sums.dissipated += w * hysteretic * chi0 * chi0 *
                      (u + decay_minus_one * (2.0 * slack - 0.5 * slack * slack * (2.0 + decay_minus_one)));
-  const Lanes arm = length - s;
   const Lanes compliance = 1.0 / tangent;
   const Lanes g = w * compliance;
-  sums.rotation += w * curvature;
-  sums.deflection += w * arm * curvature;
-  sums.f00 += g;
-  sums.f01 -= g * s;
-  sums.f10 += g * arm;
-  sums.f11 -= g * arm * s;
+  const Lanes w_curvature = w * curvature;
+  sums.rotation += w_curvature;
+  sums.moment_of_rotation += w_curvature * s;
+  sums.compliance[0] += g;
+  sums.compliance[1] += g * s;
+  sums.compliance[2] += g * s * s;
   // w d^2 kappa / dM^2 = w sign (k - EI_min) / (chi0 k^3): dk/dchi = -sign (k - EI_min) / chi0.
   const Lanes c0 = moves ? sign * (tangent - ei_min) * load_lanes(a.inverse_chi0 + i) * g * compliance * compliance
                          : Lanes{};
   const Lanes c1 = c0 * s, c2 = c1 * s;
-  sums.change[0][0] += c0;
-  sums.change[0][1] += c1;
-  sums.change[0][2] += c2;
-  sums.change[1][0] += arm * c0;
-  sums.change[1][1] += arm * c1;
-  sums.change[1][2] += arm * c2;
+  sums.change[0] += c0;
+  sums.change[1] += c1;
+  sums.change[2] += c2;
+  sums.change[3] += c2 * s;
 }
 
 /// Every section's monotone step from its state under the moment excess
@@ -218,7 +215,7 @@ struct GroupArrays {
   for (; i + 4 <= a.n; i += 4) {
     const GroupArrays at{a.s + i,         a.w + i,         a.curvature_from + i, a.eta_from + i, a.tangent_from + i,
                          a.curvature + i, a.eta + i,       a.tangent + i};
-    step_group(a, i, at, d_clamp_moment, d_tip_force, length, sums);
+    step_group(a, i, at, d_clamp_moment, d_tip_force, sums);
   }
   if (i < a.n) {
     // The last group, padded with empty steps of weight 0.
@@ -232,19 +229,25 @@ struct GroupArrays {
     copy_in(a.eta_from, eta_from);
     copy_in(a.tangent_from, tangent_from);
     step_group(a, i, {s, w, curvature_from, eta_from, tangent_from, curvature, eta, tangent}, d_clamp_moment,
-               d_tip_force, length, sums);
+               d_tip_force, sums);
     std::copy(curvature, curvature + count, a.curvature + i);
     std::copy(eta, eta + count, a.eta + i);
     std::copy(tangent, tangent + count, a.tangent + i);
   }
+  // The arm l - s multiplied out: sum w (l - s) f = l sum w f - sum w s f.
   auto total = [](const Lanes& v) { return (v[0] + v[1]) + (v[2] + v[3]); };
   CableSums cable_sums;
-  cable_sums.rotation = total(sums.rotation);
-  cable_sums.deflection = total(sums.deflection);
+  const double rotation = total(sums.rotation);
+  cable_sums.rotation = rotation;
+  cable_sums.deflection = length * rotation - total(sums.moment_of_rotation);
   cable_sums.dissipated = total(sums.dissipated);
-  cable_sums.flexibility << total(sums.f00), total(sums.f01), total(sums.f10), total(sums.f11);
-  for (int r = 0; r < 2; ++r) {
-    for (int p = 0; p < 3; ++p) cable_sums.flexibility_change(r, p) = total(sums.change[r][p]);
+  const double g0 = total(sums.compliance[0]), g1 = total(sums.compliance[1]), g2 = total(sums.compliance[2]);
+  cable_sums.flexibility << g0, -g1, length * g0 - g1, -(length * g1 - g2);
+  double c[4];
+  for (int p = 0; p < 4; ++p) c[p] = total(sums.change[p]);
+  for (int p = 0; p < 3; ++p) {
+    cable_sums.flexibility_change(0, p) = c[p];
+    cable_sums.flexibility_change(1, p) = length * c[p] - c[p + 1];
   }
   return cable_sums;
 }
