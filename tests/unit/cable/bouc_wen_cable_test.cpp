@@ -61,13 +61,19 @@ TEST(BoucWenCable, UnderAPureMomentEverySectionIsTheClosedFormLaw) {
   }
 }
 
-// d(phi, x)/d(T, F) equals central differences of the exact load evaluation.
-TEST(BoucWenCable, FlexibilityMatchesFiniteDifferences) {
-  Cantilever cantilever{Cable(slenderpy_cable(40))};
+/// Two tip steps, the second a reversal: the committed state from which the
+/// derivative tests load on in the direction of the last step.
+void drive_through_a_reversal(Cantilever& cantilever) {
   for (const auto& [x, phi] : std::vector<std::pair<double, double>>{{0.01, 0.08}, {-0.004, -0.03}}) {
     ASSERT_TRUE(cantilever.set_trial_tip(x, phi).converged());
     cantilever.commit();
   }
+}
+
+// d(phi, x)/d(T, F) equals central differences of the exact load evaluation.
+TEST(BoucWenCable, FlexibilityMatchesFiniteDifferences) {
+  Cantilever cantilever{Cable(slenderpy_cable(40))};
+  ASSERT_NO_FATAL_FAILURE(drive_through_a_reversal(cantilever));
   const CableState base = cantilever.committed();
   // Continued loading in the direction of the last step (the tangent is one-sided).
   const double dT = -0.05, dF = -0.3;
@@ -95,10 +101,7 @@ TEST(BoucWenCable, FlexibilityMatchesFiniteDifferences) {
 // section loading the same way; and it turns with the mirror.
 TEST(BoucWenCable, FlexibilityChangeMatchesFiniteDifferencesOfTheFlexibility) {
   Cantilever cantilever{Cable(slenderpy_cable(40))};
-  for (const auto& [x, phi] : std::vector<std::pair<double, double>>{{0.01, 0.08}, {-0.004, -0.03}}) {
-    ASSERT_TRUE(cantilever.set_trial_tip(x, phi).converged());
-    cantilever.commit();
-  }
+  ASSERT_NO_FATAL_FAILURE(drive_through_a_reversal(cantilever));
   const CableState base = cantilever.committed();
   const double dT = -0.05, dF = -0.3;
   cantilever.set_trial_loads(base.clamp_moment + dT, base.tip_force + dF);
@@ -106,8 +109,8 @@ TEST(BoucWenCable, FlexibilityChangeMatchesFiniteDifferencesOfTheFlexibility) {
   const Eigen::Matrix<double, 2, 3>& c = at.flexibility_change;
   ASSERT_GT(c.norm(), 0.0);
   const double h = 1e-5;
-  for (const Eigen::Vector2d d : {Eigen::Vector2d(dT, dF), Eigen::Vector2d(dT, 0.0), Eigen::Vector2d(0.0, dF),
-                                  Eigen::Vector2d(dT, 0.5 * dF)}) {
+  for (const Eigen::Vector2d& d : {Eigen::Vector2d(dT, dF), Eigen::Vector2d(dT, 0.0), Eigen::Vector2d(0.0, dF),
+                                   Eigen::Vector2d(dT, 0.5 * dF)}) {
     auto flexibility_times_d = [&](double t) {
       cantilever.set_trial_loads(at.clamp_moment + t * d(0), at.tip_force + t * d(1));
       return Eigen::Vector2d(cantilever.trial().flexibility * d);
