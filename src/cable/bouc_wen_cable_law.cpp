@@ -184,9 +184,11 @@ struct GroupArrays {
   store_lanes(at.eta, moves ? sign * (1.0 - slack * decay) : eta_from);
   store_lanes(at.tangent, tangent);
   // (EI_max - EI_min) chi0 int eta^2 |d chi| along the stretch (section::bouc_wen_update),
-  // with e^-2u - 1 = (e^-u - 1)(e^-u + 1).
+  // with e^-2u - 1 = (e^-u - 1)(e^-u + 1). The integral of a square is not negative;
+  // the terms cancel for a short stretch, to round-off of u, which the bound removes.
   sums.dissipated += w * hysteretic * chi0 * chi0 *
-                     (u + decay_minus_one * (2.0 * slack - 0.5 * slack * slack * (2.0 + decay_minus_one)));
+                     max_lanes(u + decay_minus_one * (2.0 * slack - 0.5 * slack * slack * (2.0 + decay_minus_one)),
+                               Lanes{});
   const Lanes compliance = 1.0 / tangent;
   const Lanes g = w * compliance;
   const Lanes w_curvature = w * curvature;

@@ -1,5 +1,6 @@
 #include "stockbridge/section/bouc_wen_section.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -39,8 +40,10 @@ BoucWenState bouc_wen_update(const BoucWenParameters& p, const BoucWenState& fro
   // D += (EI_max - EI_min) chi0 int eta^2 |d chi| = (EI_max - EI_min) chi0^2 int (1 - a e^-u)^2 du.
   const double one_minus_decay = -std::expm1(-u);
   const double one_minus_decay2 = -std::expm1(-2.0 * u);
+  // The integral of a square: not negative, though its terms cancel to round-off of u
+  // over a short stretch.
   to.dissipated = from.dissipated + hysteretic * p.chi0 * p.chi0 *
-                                        (u - 2.0 * a * one_minus_decay + 0.5 * a * a * one_minus_decay2);
+                                        std::max(u - 2.0 * a * one_minus_decay + 0.5 * a * a * one_minus_decay2, 0.0);
   return to;
 }
 

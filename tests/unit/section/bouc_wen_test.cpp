@@ -69,6 +69,21 @@ TEST(BoucWen, SmallCyclesDissipateAsTheCubeOfTheAmplitude) {
               1e-7 * steady_cycle_dissipation(kZone, chi_a));
 }
 
+// The dissipation of a stretch is the integral of a square: over stretches so short
+// that its terms cancel to round-off (1e-13 chi0 down), from the virgin state and
+// from states on either side, it never goes down.
+TEST(BoucWen, AShortStretchNeverDissipatesLess) {
+  for (const double start : {0.0, 0.3, -0.3, 2.0}) {
+    const BoucWenState from = bouc_wen_update(kZone, BoucWenState::virgin(kZone), start * kZone.chi0);
+    for (double step = 1e-3; step > 1e-16; step *= 0.37) {
+      for (const double sign : {1.0, -1.0}) {
+        const BoucWenState to = bouc_wen_update(kZone, from, from.curvature + sign * step * kZone.chi0);
+        EXPECT_GE(to.dissipated, from.dissipated) << "from " << start << " chi0, step " << sign * step << " chi0";
+      }
+    }
+  }
+}
+
 TEST(BoucWen, TheDissipationOfASteadyCycleIsTheLoopsArea) {
   BoucWenSection section(kZone);
   const int points = 20000;
