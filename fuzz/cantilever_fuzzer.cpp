@@ -80,7 +80,9 @@ struct LawView {
   }
 };
 
-void check_state(const cable::Cable& cable, const cable::CableState& from, const cable::CableState& s) {
+/// `history`: the sum of every committed state's |T| + |F| l so far.
+void check_state(const cable::Cable& cable, const cable::CableState& from, const cable::CableState& s,
+                 double history) {
   const double l = cable.length();
   fuzz::require(std::isfinite(s.clamp_moment) && std::isfinite(s.tip_force) && std::isfinite(s.rotation) &&
                     std::isfinite(s.deflection) && std::isfinite(s.dissipated) && s.flexibility.allFinite(),
@@ -88,10 +90,12 @@ void check_state(const cable::Cable& cable, const cable::CableState& from, const
   const LawView law(cable);
   const std::size_t n = law.variables();
   const double slip_total = law.hysteretic_capacity(0);
-  // Round-off: the curvatures move by increments from the committed state, so the
-  // sections balance to eps times the larger of the two states' moments.
+  // Round-off: the curvatures move by increments from state to state, so the
+  // sections balance to eps times the moments they went through: the two states'
+  // and every committed one's before (a small state reached back from a large one
+  // keeps the large one's round-off).
   const double scale = std::abs(s.clamp_moment) + std::abs(s.tip_force) * l + std::abs(from.clamp_moment) +
-                       std::abs(from.tip_force) * l + slip_total;
+                       std::abs(from.tip_force) * l + slip_total + history;
   for (std::size_t i = 0; i < cable.sections(); ++i) {
     for (std::size_t j = 0; j < n; ++j) {
       fuzz::require(std::abs(s.hysteretic[i * n + j]) <= law.bound(i, j) * (1.0 + 1e-12), "within the slip bound");
@@ -123,6 +127,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Tip motions up to those of an elastic cable (its slip stiffness alone) under moment_max.
   const double phi_max = moment_max * l / c.law().slip_stiffness(0);
   const double x_max = phi_max * l;
+  double history = 0.0;
   while (in.remaining_bytes() > 0) {
     const cable::CableState from = cantilever.committed();
     const int kind = in.ConsumeIntegralInRange(0, 3);
@@ -149,9 +154,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (kind == 1) fuzz::require(std::abs(s.tip_moment(l)) <= 1e-9 * (std::abs(s.clamp_moment) + slip_total), "Q = 0 in (a)");
       }
     }
-    check_state(c, from, cantilever.trial());
+    check_state(c, from, cantilever.trial(), history);
     if (in.ConsumeBool()) {
       cantilever.commit();
+      history += std::abs(cantilever.committed().clamp_moment) + std::abs(cantilever.committed().tip_force) * l;
     } else {
       cantilever.revert_to_last_commit();
     }
