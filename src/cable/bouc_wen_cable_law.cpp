@@ -317,6 +317,10 @@ double BoucWenCableLaw::internal_change(const CableState& start, const CableStat
   return change;
 }
 
+bool BoucWenCableLaw::accepts_extrapolated(const CableState& state) const {
+  return std::all_of(state.hysteretic.begin(), state.hysteretic.end(), [](double eta) { return std::abs(eta) <= 1.0; });
+}
+
 namespace {
 
 /// One step's sensitivities (BoucWenLoadSensitivity::step) on raw columns: `p`

@@ -50,6 +50,16 @@ void CableState::move_halfway_to(const CableState& other) {
   for (std::size_t i = 0; i < hysteretic.size(); ++i) halfway(hysteretic[i], other.hysteretic[i]);
 }
 
+void CableState::extrapolate_from(const CableState& previous, double ratio) {
+  auto along = [ratio](double& value, double before) { value += ratio * (value - before); };
+  along(clamp_moment, previous.clamp_moment);
+  along(tip_force, previous.tip_force);
+  along(rotation, previous.rotation);
+  along(deflection, previous.deflection);
+  for (std::size_t i = 0; i < curvature.size(); ++i) along(curvature[i], previous.curvature[i]);
+  for (std::size_t i = 0; i < hysteretic.size(); ++i) along(hysteretic[i], previous.hysteretic[i]);
+}
+
 Eigen::Matrix2d CableState::tip_stiffness(double length) const { return cable::tip_stiffness(flexibility, length); }
 
 Eigen::Matrix2d tip_stiffness(const Eigen::Matrix2d& flexibility, double length) {

@@ -46,6 +46,8 @@ class BoucWenCableLaw final : public CableLaw {
   void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force, CableState& to,
                    CableWorkspace& workspace) const override;
   double internal_change(const CableState& start, const CableState& end) const override;
+  /// Every |eta| <= 1.
+  bool accepts_extrapolated(const CableState& state) const override;
   std::unique_ptr<LoadSensitivity> load_sensitivity(const Cable& cable) const override;
 
  private:

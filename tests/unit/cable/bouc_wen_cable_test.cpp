@@ -3,6 +3,7 @@
 // dissipated against the work done at the tip, the mirror, and convergence in
 // sections across slenderpy's zone boundaries.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -77,6 +78,45 @@ TEST(BoucWenCable, AShortStepNeverDissipatesLess) {
     ASSERT_TRUE(cantilever.set_trial_rotation(committed == 1 ? -0.02 : 0.03).converged());
     cantilever.commit();
   }
+}
+
+// A state extrapolated along the line through two states is a state again: every
+// section carries T - F s_i of the extrapolated loads (the law's moment is linear),
+// halfway back is the mean, and the law accepts it while every |eta| <= 1.
+TEST(BoucWenCable, AnExtrapolatedStateIsAStateWithinEtasBounds) {
+  Cantilever cantilever{Cable(slenderpy_cable(40))};
+  ASSERT_TRUE(cantilever.set_trial_tip(0.004, 0.03).converged());
+  cantilever.commit();
+  const CableState previous = cantilever.committed();
+  ASSERT_TRUE(cantilever.set_trial_tip(0.006, 0.045).converged());
+  cantilever.commit();
+  const CableState& latest = cantilever.committed();
+  const auto& law = dynamic_cast<const BoucWenCableLaw&>(cantilever.cable().law());
+  const auto& s = cantilever.cable().positions();
+  for (const double ratio : {0.8, 2.5}) {
+    CableState state = latest;
+    state.extrapolate_from(previous, ratio);
+    EXPECT_NEAR(state.clamp_moment, latest.clamp_moment + ratio * (latest.clamp_moment - previous.clamp_moment),
+                1e-14 * std::abs(latest.clamp_moment));
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const double moment = law.ei_min(i) * state.curvature[i] +
+                            (law.ei_max(i) - law.ei_min(i)) * law.chi0(i) * state.hysteretic[i];
+      ASSERT_NEAR(moment, state.clamp_moment - state.tip_force * s[i], 1e-12 * std::abs(state.clamp_moment)) << i;
+    }
+    const bool within = std::all_of(state.hysteretic.begin(), state.hysteretic.end(),
+                                    [](double eta) { return std::abs(eta) <= 1.0; });
+    EXPECT_EQ(law.accepts_extrapolated(state), within) << ratio;
+  }
+  CableState far = latest;
+  far.extrapolate_from(previous, 40.0);
+  EXPECT_FALSE(law.accepts_extrapolated(far));  // eta beyond its bounds somewhere
+  CableState back = latest, mean = latest;
+  back.extrapolate_from(previous, -0.5);
+  mean.move_halfway_to(previous);
+  for (std::size_t i = 0; i < s.size(); ++i) EXPECT_NEAR(back.hysteretic[i], mean.hysteretic[i], 1e-15) << i;
+  // The Masing law's periodic states move by sticking sets: it takes none.
+  Cantilever masing{Cable(CableDescription::uniform(kMessengerLength, 40, 2.5, {{100.0, 0.1}}))};
+  EXPECT_FALSE(masing.cable().law().accepts_extrapolated(masing.committed()));
 }
 
 /// Two tip steps, the second a reversal: the committed state from which the
