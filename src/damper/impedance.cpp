@@ -60,13 +60,20 @@ bool Continuation::secant_applies(const Excitation& target) const {
   return last_step > 0.0 && step > 0.0 && step <= 2.0 * last_step && one_velocity;
 }
 
+namespace {
+/// The secant's step to `target` in units of the path's last step (log frequency).
+double secant_step_ratio(const Continuation& path, const Excitation& target) {
+  const double last_step = std::log(path.excitation.frequency_hz / path.previous_excitation.frequency_hz);
+  const double step = std::log(target.frequency_hz / path.excitation.frequency_hz);
+  return step / last_step;
+}
+}  // namespace
+
 std::optional<cable::CableState> Continuation::cable_state_predictor(const Excitation& target,
                                                                     const cable::CableLaw& law) const {
   if (!memory.cable_state || !previous_cable_state || !secant_applies(target)) return std::nullopt;
-  const double last_step = std::log(excitation.frequency_hz / previous_excitation.frequency_hz);
-  const double step = std::log(target.frequency_hz / excitation.frequency_hz);
   cable::CableState state = *memory.cable_state;
-  state.extrapolate_from(*previous_cable_state, step / last_step);
+  state.extrapolate_from(*previous_cable_state, secant_step_ratio(*this, target));
   if (!law.accepts_extrapolated(state)) return std::nullopt;
   return state;
 }
@@ -74,11 +81,9 @@ std::optional<cable::CableState> Continuation::cable_state_predictor(const Excit
 Eigen::VectorXd Continuation::predictor(const Excitation& target) const {
   Eigen::VectorXd scaled = unknowns * (target.displacement_amplitude / excitation.displacement_amplitude);
   if (!secant_applies(target)) return scaled;
-  const double last_step = std::log(excitation.frequency_hz / previous_excitation.frequency_hz);
-  const double step = std::log(target.frequency_hz / excitation.frequency_hz);
   const Eigen::VectorXd previous_scaled =
       previous_unknowns * (target.displacement_amplitude / previous_excitation.displacement_amplitude);
-  return scaled + (step / last_step) * (scaled - previous_scaled);
+  return scaled + secant_step_ratio(*this, target) * (scaled - previous_scaled);
 }
 
 void Continuation::advance(const Eigen::VectorXd& solution, const Excitation& at) {
