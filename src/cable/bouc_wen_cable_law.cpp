@@ -321,6 +321,38 @@ bool BoucWenCableLaw::accepts_extrapolated(const CableState& state) const {
   return std::all_of(state.hysteretic.begin(), state.hysteretic.end(), [](double eta) { return std::abs(eta) <= 1.0; });
 }
 
+std::size_t BoucWenCableLaw::periodic_coordinates(const Cable& cable) const { return cable.sections() + 2; }
+
+void BoucWenCableLaw::coordinates(const CableState& state, Eigen::VectorXd& z) const {
+  z.resize(static_cast<Eigen::Index>(state.hysteretic.size()) + 2);
+  z(0) = state.clamp_moment;
+  z(1) = state.tip_force;
+  for (std::size_t i = 0; i < state.hysteretic.size(); ++i) z(static_cast<Eigen::Index>(i) + 2) = state.hysteretic[i];
+}
+
+// M_i = T - F s_i = EI_min kappa_i + (EI_max - EI_min) chi0 eta_i: at given loads and
+// eta the curvature follows, and with it the tip kinematics (phi, x) = sum w_i
+// kappa_i [1, l - s_i].
+bool BoucWenCableLaw::shift(const Cable& cable, CableState& state, const Eigen::VectorXd& dz) const {
+  const std::size_t n = cable.sections();
+  if (!dz.allFinite()) return false;
+  const double d_clamp_moment = dz(0), d_tip_force = dz(1);
+  state.clamp_moment += d_clamp_moment;
+  state.tip_force += d_tip_force;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double s = cable.positions()[i], w = cable.weights()[i];
+    // eta within [-1, 1]: a section the step would carry beyond saturates.
+    const double d_eta = std::clamp(state.hysteretic[i] + dz(static_cast<Eigen::Index>(i) + 2), -1.0, 1.0) -
+                         state.hysteretic[i];
+    const double d_curvature = (d_clamp_moment - d_tip_force * s - hysteretic_[i] * chi0_[i] * d_eta) / ei_min_[i];
+    state.hysteretic[i] += d_eta;
+    state.curvature[i] += d_curvature;
+    state.rotation += w * d_curvature;
+    state.deflection += w * (cable.length() - s) * d_curvature;
+  }
+  return true;
+}
+
 namespace {
 
 /// One step's sensitivities (BoucWenLoadSensitivity::step) on raw columns: `p`
@@ -467,6 +499,20 @@ class BoucWenLoadSensitivity final : public LoadSensitivity {
     d_curvature_ = -d_curvature_;
     d_eta_ = -d_eta_;
   }
+
+  // z0 = (T, F, eta_j): d kappa_i = (dT - dF s_i - B_i chi0_i d eta_i) / EI_min_i.
+  void seed_coordinates(Eigen::Index first) override {
+    for (Eigen::Index i = 0; i < d_curvature_.cols(); ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      const double ei_min = law_.ei_min(k);
+      d_curvature_(first, i) = 1.0 / ei_min;
+      d_curvature_(first + 1, i) = -positions_[k] / ei_min;
+      d_curvature_(first + 2 + i, i) = -law_.hysteretic_data()[k] * law_.chi0(k) / ei_min;
+      d_eta_(first + 2 + i, i) = 1.0;
+    }
+  }
+
+  void internal_derivatives(Eigen::MatrixXd& out) const override { out = d_eta_.transpose(); }
 
  private:
   std::vector<double> positions_, weights_;

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <Eigen/LU>
@@ -62,6 +63,7 @@ HarmonicBalance::HarmonicBalance(Arm arm, HarmonicBalanceOptions options)
   if (!odd_only) harmonic_.push_back(0);
   for (int k = 1; k <= options_.harmonics; k += odd_only ? 2 : 1) harmonic_.insert(harmonic_.end(), {k, k});
   excitation_column_ = odd_only ? 1 : 2;
+  periodic_newton_ = options_.periodic_newton && arm_.cable().law().periodic_coordinates(arm_.cable()) > 0;
   const auto c_count = static_cast<Eigen::Index>(harmonic_.size());
   basis_.resize(driven_samples_, c_count);
   projection_.resize(c_count, driven_samples_);
@@ -135,7 +137,7 @@ Eigen::VectorXd HarmonicBalance::residual_change(const Excitation& from, const E
 
 HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation, const Eigen::VectorXd& q,
                                                     const cable::CableState* start, int periods, unsigned derivatives,
-                                                    HarmonicBalanceWorkspace& workspace) const {
+                                                    HarmonicBalanceWorkspace& workspace, PeriodicStart mode) const {
   assert(q.size() == unknown_count());
   const int c_count = static_cast<int>(harmonic_.size());
   const int p_count = 2 * c_count;
@@ -152,12 +154,22 @@ HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation
     out.cable.where = "in the tip motion (the Fourier coefficients hold NaN or inf)";
     return out;
   }
-  PeriodicCableResult loads = workspace.cable.evaluate(kinematics, periods, start, with_jacobian ? &basis_ : nullptr,
-                                                       with_jacobian ? &workspace.sensitivity : nullptr, symmetry_);
+  PeriodicCableResult loads =
+      workspace.cable.evaluate(kinematics, periods, start, with_jacobian ? &basis_ : nullptr,
+                               with_jacobian ? &workspace.sensitivity : nullptr, symmetry_, mode);
   out.cable = std::move(loads.summary);
   out.period = std::move(loads.period);
   if (!out.ok()) return out;
   out.end_state = workspace.cable.final_state();
+  if (mode == PeriodicStart::newton) {
+    const cable::CableLaw& law = arm_.cable().law();
+    Eigen::VectorXd z_start;
+    law.coordinates(start ? *start : cable::CableState::virgin(arm_.cable()), z_start);
+    law.coordinates(out.end_state, out.state_gap);
+    out.state_gap -= z_start;
+    out.state_jacobian = std::move(loads.state_jacobian);
+  }
+  const Eigen::Index columns = with_jacobian ? workspace.sensitivity.cols() : 0;  // q's, then z0's
   // Accelerations' coefficients: -k^2 W^2 per harmonic.
   Eigen::Matrix2Xd acceleration(2, c_count);
   for (int c = 0; c < c_count; ++c) {
@@ -170,11 +182,11 @@ HarmonicBalanceEvaluation HarmonicBalance::evaluate(const Excitation& excitation
     residual = mass * acceleration + out.period.loads.leftCols(driven_samples_) * projection_.transpose();
     residual.col(excitation_column_) -= -w * w * x_amp * load;  // excitation, sin(W t)
     if (with_jacobian) {
-      out.force_jacobian.resize(p_count, p_count);
+      out.force_jacobian.resize(p_count, columns);
       for (int d = 0; d < 2; ++d) {
-        const ConstStrided s(workspace.sensitivity.data() + d, driven_samples_, p_count,
+        const ConstStrided s(workspace.sensitivity.data() + d, driven_samples_, columns,
                              Eigen::Stride<Eigen::Dynamic, 2>(2 * driven_samples_, 2));
-        Strided(out.force_jacobian.data() + d, c_count, p_count, Eigen::Stride<Eigen::Dynamic, 2>(2 * c_count, 2)) =
+        Strided(out.force_jacobian.data() + d, c_count, columns, Eigen::Stride<Eigen::Dynamic, 2>(2 * c_count, 2)) =
             projection_ * s;
       }
     }
@@ -244,6 +256,9 @@ class NewtonSolve {
         memory_(memory),
         workspace_(workspace),
         summary_(summary),
+        periodic_newton_(model.uses_periodic_newton()),
+        mode_(periodic_newton_ ? PeriodicStart::newton : PeriodicStart::chained),
+        passes_(periodic_newton_ ? 1 : options_.periods),
         start_(memory.cable_state) {}
 
   /// Runs Newton from q (updated in place); true when converged. `current()` is the
@@ -276,6 +291,15 @@ class NewtonSolve {
   /// with a stored one: the secant condition J dq = dr along the step.
   void broyden_update(const Eigen::VectorXd& q);
   double norm_of(const HarmonicBalanceEvaluation& e) const { return e.residual.lpNorm<Eigen::Infinity>() / scale_; }
+  /// Newton on the periodic state: from an exact evaluation, the stored terms and
+  /// the force Jacobian with the state eliminated (false: G_z - I singular).
+  bool store_periodic_state_terms(const HarmonicBalanceEvaluation& e);
+  /// The residual Newton steps on: R, less R_z D^-1 G under Newton on the periodic state.
+  Eigen::VectorXd effective_residual(const HarmonicBalanceEvaluation& e) const;
+  /// Where the next evaluation after `e` starts for a step dq (empty: none): its end
+  /// state, or under Newton on the periodic state that moved to z + dz, dz = -D^-1 (G
+  /// + G_q dq) (the end state where the law refuses the move).
+  cable::CableState next_start(const HarmonicBalanceEvaluation& e, const Eigen::VectorXd* dq) const;
 
   const HarmonicBalance& model_;
   const HarmonicBalanceOptions& options_;
@@ -284,12 +308,21 @@ class NewtonSolve {
   HarmonicBalanceMemory& memory_;
   HarmonicBalanceWorkspace& workspace_;
   SolverSummary& summary_;
+  /// From here on, chained periods (and the half-wave's centring) instead of Newton
+  /// on the periodic state; the stored state terms are dropped with it.
+  void chain_periods();
+
+  bool periodic_newton_;
+  PeriodicStart mode_;
+  int passes_;  // a pass under Newton on the periodic state, else options' periods
   std::optional<cable::CableState> start_;  // where the cable's next evaluation starts (empty: virgin)
+  Eigen::VectorXd effective_;                 // the current evaluation's effective_residual
   HarmonicBalanceEvaluation current_;
   Eigen::MatrixXd jacobian_;
   bool exact_ = false;  // the Newton matrix is exact at the current point
   double norm_ = 0.0;   // of the current residual, relative to the force scale
   int settling_periods_ = 0;
+  double last_settling_defect_ = std::numeric_limits<double>::infinity();  // before the last settling pass
   Eigen::VectorXd step_start_, step_start_residual_;  // where the last step started
 };
 
@@ -302,18 +335,25 @@ bool NewtonSolve::fail(Termination termination, std::string where) {
 bool NewtonSolve::adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::string_view stage) {
   const unsigned derivatives = exact ? HarmonicBalance::kJacobian : HarmonicBalance::kNone;
   HarmonicBalanceEvaluation e =
-      model_.evaluate(excitation_, q, start_ ? &*start_ : nullptr, options_.periods, derivatives, workspace_);
+      model_.evaluate(excitation_, q, start_ ? &*start_ : nullptr, passes_, derivatives, workspace_, mode_);
   ++summary_.evaluations;
   summary_.jacobians += exact;
-  summary_.periods += options_.periods;
+  summary_.periods += passes_;
   if (e.cable.termination == Termination::non_finite) {
     return fail(Termination::non_finite, fmt::format("{} {}", stage, e.cable.where));
   }
   if (!e.ok()) return fail(Termination::inner_failure, fmt::format("{}: {}", stage, brief_report(e.cable)));
-  if (exact) memory_.force_jacobian = std::move(e.force_jacobian);
-  start_ = std::move(e.end_state);
+  if (exact) {
+    if (periodic_newton_) {
+      if (!store_periodic_state_terms(e)) return fail(Termination::singular_jacobian, std::string(stage));
+    } else {
+      memory_.force_jacobian = std::move(e.force_jacobian);
+    }
+  }
+  start_ = next_start(e, nullptr);
   current_ = std::move(e);
   norm_ = norm_of(current_);
+  effective_ = effective_residual(current_);
   model_.assemble_jacobian(excitation_, memory_.force_jacobian, jacobian_);
   exact_ = exact;
   if (!current_.residual.allFinite()) return fail(Termination::non_finite, fmt::format("{} in the residual", stage));
@@ -347,6 +387,11 @@ bool NewtonSolve::settle(const Eigen::VectorXd& q) {
                             settling_periods_));
   }
   settling_periods_ += options_.periods;
+  // Newton's move of the start stalls where the pass's map has a kink (a section
+  // whose moment reverses right at the period's start): there the rest of the solve
+  // chains periods from the last end state, as without Newton on the state.
+  if (periodic_newton_ && current_.cable.periodicity_defect > 0.5 * last_settling_defect_) chain_periods();
+  last_settling_defect_ = current_.cable.periodicity_defect;
   return adopt_evaluation(q, false, "while settling");
 }
 
@@ -354,7 +399,7 @@ NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
   Eigen::VectorXd direction;
   if (exact_) {
     const double reciprocal_condition =
-        numerics::solve_checked(jacobian_, Eigen::VectorXd(-current_.residual), direction);
+        numerics::solve_checked(jacobian_, Eigen::VectorXd(-effective_), direction);
     if (numerics::is_singular(reciprocal_condition, direction)) {
       summary_.reciprocal_condition = reciprocal_condition;
       fail(Termination::singular_jacobian);
@@ -364,26 +409,31 @@ NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
     // A stored Jacobian's step is tried once and an exact Jacobian decides if it
     // fails, so its conditioning is not estimated (that cost half a factorisation);
     // a singular one gives a non-finite step.
-    direction = Eigen::PartialPivLU<Eigen::MatrixXd>(jacobian_).solve(Eigen::VectorXd(-current_.residual));
+    direction = Eigen::PartialPivLU<Eigen::MatrixXd>(jacobian_).solve(Eigen::VectorXd(-effective_));
     if (!direction.allFinite()) return StepOutcome::retry_with_exact_jacobian;
   }
-  const double norm2 = current_.residual.norm();
+  const double norm2 = effective_.norm();
   // With a stored Jacobian only the full step is tried: if it fails, an exact one is cheaper than halving.
-  const int halvings = exact_ ? 30 : 1;
+  // Under Newton on the periodic state chained periods take over sooner (run()).
+  const int halvings = !exact_ ? 1 : periodic_newton_ ? 6 : 30;
   double alpha = 1.0;
   for (int halving = 0; halving < halvings; ++halving, alpha *= 0.5) {
-    const Eigen::VectorXd q_try = q + alpha * direction;
-    HarmonicBalanceEvaluation trial =
-        model_.evaluate(excitation_, q_try, start_ ? &*start_ : nullptr, options_.periods, HarmonicBalance::kNone,
-                        workspace_);
+    const Eigen::VectorXd dq = alpha * direction;
+    const Eigen::VectorXd q_try = q + dq;
+    const std::optional<cable::CableState> trial_start =
+        periodic_newton_ && !memory_.periodic_state.empty() ? std::optional(next_start(current_, &dq)) : start_;
+    HarmonicBalanceEvaluation trial = model_.evaluate(excitation_, q_try, trial_start ? &*trial_start : nullptr,
+                                                      passes_, HarmonicBalance::kNone, workspace_, mode_);
     ++summary_.evaluations;
-    summary_.periods += options_.periods;
+    summary_.periods += passes_;
+    if (!trial.ok()) continue;
     // Accept a decrease, or a step that meets the tolerance.
-    if (trial.ok() && (trial.residual.norm() <= (1.0 - 1e-4 * alpha) * norm2 ||
-                       norm_of(trial) <= options_.tolerance)) {
+    Eigen::VectorXd trial_effective = effective_residual(trial);
+    if (trial_effective.norm() <= (1.0 - 1e-4 * alpha) * norm2 || norm_of(trial) <= options_.tolerance) {
       q = q_try;
-      start_ = std::move(trial.end_state);
+      start_ = next_start(trial, nullptr);
       current_ = std::move(trial);
+      effective_ = std::move(trial_effective);
       return StepOutcome::accepted;
     }
   }
@@ -393,7 +443,8 @@ NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
 }
 
 bool NewtonSolve::run(Eigen::VectorXd& q) {
-  if (!adopt_evaluation(q, memory_.force_jacobian.size() == 0, "at the starting point")) return false;
+  const bool stored = memory_.force_jacobian.size() > 0 && (!periodic_newton_ || !memory_.periodic_state.empty());
+  if (!adopt_evaluation(q, !stored, "at the starting point")) return false;
   while (true) {
     summary_.residual = norm_;
     summary_.periodicity_defect = current_.cable.periodicity_defect;
@@ -405,7 +456,8 @@ bool NewtonSolve::run(Eigen::VectorXd& q) {
     // The equations hold, or the residual is mostly the memory's drift (a step cannot
     // remove it: a stored Jacobian's step was then mostly rejected, and an exact one
     // re-evaluated): let the memory settle at these coefficients first.
-    if (norm_ <= options_.tolerance || norm_ < options_.settle_ratio * current_.cable.periodicity_defect) {
+    if (norm_ <= options_.tolerance ||
+        (!periodic_newton_ && norm_ < options_.settle_ratio * current_.cable.periodicity_defect)) {
       if (!settle(q)) return false;
       continue;
     }
@@ -413,9 +465,19 @@ bool NewtonSolve::run(Eigen::VectorXd& q) {
     ++summary_.newton_iterations;
     const double previous_norm = norm_;
     step_start_ = q;
-    step_start_residual_ = current_.residual;
+    step_start_residual_ = effective_;
     const StepOutcome outcome = step(q);
-    if (outcome == StepOutcome::failed) return false;
+    if (outcome == StepOutcome::failed) {
+      if (!periodic_newton_ || summary_.termination != Termination::line_search_failed) return false;
+      // Newton's move of the start can leave the piece on which the pass's map is
+      // smooth (a section reversing at the period's start): chain periods instead.
+      --summary_.newton_iterations;
+      summary_.termination = Termination::not_run;
+      summary_.where.clear();
+      chain_periods();
+      if (!adopt_evaluation(q, true, "chaining periods")) return false;
+      continue;
+    }
     if (outcome == StepOutcome::retry_with_exact_jacobian) {
       --summary_.newton_iterations;
       if (!adopt_evaluation(q, true, "refreshing the Jacobian")) return false;
@@ -434,13 +496,52 @@ bool NewtonSolve::run(Eigen::VectorXd& q) {
   }
 }
 
+void NewtonSolve::chain_periods() {
+  periodic_newton_ = false;
+  mode_ = PeriodicStart::chained;
+  passes_ = options_.periods;
+  memory_.periodic_state = {};
+  start_ = current_.end_state;
+  effective_ = current_.residual;
+}
+
+bool NewtonSolve::store_periodic_state_terms(const HarmonicBalanceEvaluation& e) {
+  const Eigen::Index n = model_.unknown_count(), m = e.state_gap.size();
+  Eigen::MatrixXd d = e.state_jacobian.rightCols(m);
+  d.diagonal().array() -= 1.0;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(d);
+  PeriodicStateTerms& terms = memory_.periodic_state;
+  terms.start_by_gap = lu.inverse();
+  if (!terms.start_by_gap.allFinite()) return false;
+  terms.start_by_coefficients = terms.start_by_gap * e.state_jacobian.leftCols(n);
+  terms.residual_by_gap = e.force_jacobian.rightCols(m) * terms.start_by_gap;
+  memory_.force_jacobian = e.force_jacobian.leftCols(n) - e.force_jacobian.rightCols(m) * terms.start_by_coefficients;
+  return true;
+}
+
+Eigen::VectorXd NewtonSolve::effective_residual(const HarmonicBalanceEvaluation& e) const {
+  if (!periodic_newton_ || memory_.periodic_state.empty()) return e.residual;
+  return e.residual - memory_.periodic_state.residual_by_gap * e.state_gap;
+}
+
+cable::CableState NewtonSolve::next_start(const HarmonicBalanceEvaluation& e, const Eigen::VectorXd* dq) const {
+  if (!periodic_newton_ || memory_.periodic_state.empty()) return e.end_state;
+  const PeriodicStateTerms& terms = memory_.periodic_state;
+  // From the end state (z + G) to z + dz.
+  Eigen::VectorXd move = -(terms.start_by_gap * e.state_gap) - e.state_gap;
+  if (dq) move.noalias() -= terms.start_by_coefficients * *dq;
+  cable::CableState start = e.end_state;
+  if (!model_.arm().cable().law().shift(model_.arm().cable(), start, move)) return e.end_state;
+  return start;
+}
+
 void NewtonSolve::broyden_update(const Eigen::VectorXd& q) {
   if (!options_.broyden) return;
   const Eigen::VectorXd dq = q - step_start_;
   const double dq2 = dq.squaredNorm();
   if (!(dq2 > 0.0)) return;
   // The inertia terms are linear: the whole Newton matrix's secant error is the force Jacobian's.
-  const Eigen::VectorXd error = (current_.residual - step_start_residual_) - jacobian_ * dq;
+  const Eigen::VectorXd error = (effective_ - step_start_residual_) - jacobian_ * dq;
   memory_.force_jacobian.noalias() += (error / dq2) * dq.transpose();
 }
 

@@ -15,15 +15,19 @@ PeriodicCable::PeriodicCable(const cable::Cable& cable, cable::CantileverOptions
 
 PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, int passes,
                                             const cable::CableState* start, const Eigen::MatrixXd* basis,
-                                            Eigen::MatrixXd* sensitivity, PathSymmetry symmetry) {
+                                            Eigen::MatrixXd* sensitivity, PathSymmetry symmetry, PeriodicStart mode) {
   require_in_range("passes", passes, 1, 100000);
   const int n_samples = static_cast<int>(kinematics.cols());
   const bool half_wave = symmetry == PathSymmetry::half_wave;
   const bool with_sensitivity = basis && sensitivity;
+  const bool newton = mode == PeriodicStart::newton;
   if (with_sensitivity) {
-    const Eigen::Index p = 2 * basis->cols();
-    sensitivity_->start(p);
-    sensitivity->resize(2 * n_samples, p);
+    const Eigen::Index path_columns = 2 * basis->cols();
+    const auto coordinates = newton ? static_cast<Eigen::Index>(cable().law().periodic_coordinates(cable())) : 0;
+    columns_ = path_columns + coordinates;
+    sensitivity_->start(columns_);
+    if (coordinates > 0) sensitivity_->seed_coordinates(path_columns);
+    sensitivity->resize(2 * n_samples, columns_);
   }
   PeriodicCableResult result;
   SolverSummary& summary = result.summary;
@@ -66,7 +70,11 @@ PeriodicCableResult PeriodicCable::evaluate(const Eigen::Matrix2Xd& kinematics, 
   period.kinematics.leftCols(n_samples) = kinematics;
   if (half_wave) period.kinematics.rightCols(n_samples) = -kinematics;
   summary.periodicity_defect = state_change(period_start_, cantilever_.committed());
-  if (half_wave) settle_locked_moments();
+  if (newton && with_sensitivity && columns_ > 2 * basis->cols()) {
+    state_derivatives(result.state_jacobian);
+    if (half_wave) result.state_jacobian.topRows<2>() *= -1.0;  // the loads' derivatives before the mirror
+  }
+  if (half_wave && !newton) settle_locked_moments();
   summary.termination = Termination::converged;
   return result;
 }
@@ -113,10 +121,18 @@ double PeriodicCable::state_change(const cable::CableState& start, const cable::
                   cable().law().internal_change(start, end));
 }
 
+void PeriodicCable::state_derivatives(Eigen::MatrixXd& out) {
+  sensitivity_->internal_derivatives(internal_derivatives_);
+  out.resize(internal_derivatives_.rows() + 2, columns_);
+  out.row(0) = d_clamp_moment_.transpose();
+  out.row(1) = d_tip_force_.transpose();
+  out.bottomRows(internal_derivatives_.rows()) = internal_derivatives_;
+}
+
 void PeriodicCable::set_sample_derivative(const Eigen::MatrixXd& basis, int sample) {
-  // du/dq for this sample: q(2c + d) scaled by basis(sample, c).
-  rhs_phi_.setZero(2 * basis.cols());
-  rhs_x_.setZero(2 * basis.cols());
+  // du/dq for this sample: q(2c + d) scaled by basis(sample, c); zero for the start's coordinates.
+  rhs_phi_.setZero(columns_);
+  rhs_x_.setZero(columns_);
   for (Eigen::Index c = 0; c < basis.cols(); ++c) {
     rhs_phi_(2 * c + 1) = basis(sample, c);
     rhs_x_(2 * c) = basis(sample, c);
@@ -202,9 +218,8 @@ void PeriodicCable::find_turning_points(const Eigen::Matrix2Xd& kinematics, bool
       for (int k = 0; k < 4; ++k) t.kinematics(e) += w.value[k] * sample(j - 1 + k, e);
     }
     if (basis) {
-      const Eigen::Index p = 2 * basis->cols();
-      t.d_x.setZero(p);
-      t.d_phi.setZero(p);
+      t.d_x.setZero(columns_);
+      t.d_phi.setZero(columns_);
       const int other = 1 - d;
       double other_slope = 0.0;
       for (int k = 0; k < 4; ++k) other_slope += w.slope[k] * sample(j - 1 + k, other);

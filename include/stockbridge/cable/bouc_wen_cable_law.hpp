@@ -48,6 +48,10 @@ class BoucWenCableLaw final : public CableLaw {
   double internal_change(const CableState& start, const CableState& end) const override;
   /// Every |eta| <= 1.
   bool accepts_extrapolated(const CableState& state) const override;
+  std::size_t periodic_coordinates(const Cable& cable) const override;
+  void coordinates(const CableState& state, Eigen::VectorXd& z) const override;
+  /// Every |eta| <= 1 after the shift.
+  bool shift(const Cable& cable, CableState& state, const Eigen::VectorXd& dz) const override;
   std::unique_ptr<LoadSensitivity> load_sensitivity(const Cable& cable) const override;
 
  private:

@@ -51,6 +51,13 @@ class LoadSensitivity {
                     Eigen::VectorXd& d_deflection, Eigen::VectorXd& d_clamp_moment, Eigen::VectorXd& d_tip_force) = 0;
   /// The cable's state was mirrored (CableState::mirror): so are the derivatives.
   virtual void mirror() = 0;
+  /// For Newton on the periodic state (CableLaw::periodic_coordinates > 0), after
+  /// start(): the columns from `first` on are the derivatives with respect to the
+  /// starting state's coordinates z0 (CableLaw::coordinates), seeded here.
+  virtual void seed_coordinates(Eigen::Index /*first*/) {}
+  /// The internal variables' derivatives at the current state, sections x
+  /// internal variables rows (section-major) by the parameters.
+  virtual void internal_derivatives(Eigen::MatrixXd& /*out*/) const {}
 };
 
 class CableLaw {
@@ -79,6 +86,20 @@ class CableLaw {
   /// variables are within their bounds. No by default: the Masing law's states move
   /// by sticking sets, and on its example sweep the extrapolation saved 1 %.
   virtual bool accepts_extrapolated(const CableState& /*state*/) const { return false; }
+  /// Newton on the periodic state (optional; HarmonicBalance uses it where offered):
+  /// how many coordinates z fix a state of `cable` with its loads, 0 where the law
+  /// offers none (Masing: its sticking sets make the state's map piecewise
+  /// constant, and the halfway step settles it). Bouc-Wen: z = (T, F, eta_i), the
+  /// curvatures following from the moment's linearity.
+  virtual std::size_t periodic_coordinates(const Cable& /*cable*/) const { return 0; }
+  /// z of `state` (periodic_coordinates entries).
+  virtual void coordinates(const CableState& /*state*/, Eigen::VectorXd& /*z*/) const {}
+  /// Moves `state` by dz in its coordinates, its curvatures and tip kinematics along
+  /// (tangents, flexibility and dissipation stay): false, `state` unchanged, where
+  /// the result leaves the law's bounds.
+  virtual bool shift(const Cable& /*cable*/, CableState& /*state*/, const Eigen::VectorXd& /*dz*/) const {
+    return false;
+  }
   /// A new propagator of the loads' sensitivities for this law on `cable`.
   virtual std::unique_ptr<LoadSensitivity> load_sensitivity(const Cable& cable) const = 0;
 };

@@ -59,6 +59,13 @@ struct HarmonicBalanceOptions {
   double jacobian_refresh_ratio = 0.25;
   /// Between exact Jacobians, Broyden's rank-one update after each step.
   bool broyden = true;
+  /// Where the cable's law offers periodic coordinates (CableLaw::periodic_coordinates:
+  /// Bouc-Wen), Newton solves for the periodic start state together with q: each
+  /// evaluation drives one pass (no centring), the exact Jacobian carries the start's
+  /// coordinates as parameters too, and the next start is the Newton estimate of the
+  /// periodic state instead of the last end state (HarmonicBalance::solve). False:
+  /// chained periods for every law.
+  bool periodic_newton = true;
   cable::CantileverOptions cantilever;
 
   void validate() const;
@@ -74,10 +81,26 @@ struct HarmonicBalanceOptions {
 /// stays on the same piece of the piecewise-linear cable map and so reused across
 /// Newton iterations and neighbouring frequencies. Empty: a cold start (virgin
 /// cable, no stored Jacobian).
+/// Newton on the periodic state: with z the start state's coordinates, G = z_end - z
+/// the pass's gap, R_z and G_z, G_q their derivatives, and D = G_z - I, the state's
+/// Newton step is dz = -D^-1 (G + G_q dq), and q's is Newton's on the residual with the
+/// state eliminated, R - R_z D^-1 G, whose Jacobian is J - R_z D^-1 G_q (J with
+/// the start fixed). Kept from the last exact evaluation, as the force Jacobian is.
+struct PeriodicStateTerms {
+  Eigen::MatrixXd residual_by_gap;         ///< R_z D^-1 (N x m)
+  Eigen::MatrixXd start_by_gap;            ///< D^-1 (m x m)
+  Eigen::MatrixXd start_by_coefficients;   ///< D^-1 G_q (m x N)
+
+  bool empty() const { return start_by_gap.size() == 0; }
+};
+
 struct HarmonicBalanceMemory {
   std::optional<cable::CableState> cable_state;
-  Eigen::MatrixXd force_jacobian;  ///< d(force residual)/dq (empty: none stored)
-  int jacobian_sign = 0;           ///< sign of det(J) at the last solution (0: unknown)
+  /// d(force residual)/dq (empty: none stored); with periodic-state terms, that of
+  /// the residual with the state eliminated.
+  Eigen::MatrixXd force_jacobian;
+  PeriodicStateTerms periodic_state;  ///< empty: the next start is the last end state
+  int jacobian_sign = 0;              ///< sign of det(J) at the last solution (0: unknown)
 
   void clear() { *this = HarmonicBalanceMemory{}; }
 };
@@ -99,6 +122,11 @@ struct HarmonicBalanceEvaluation {
   cable::CableState end_state;     ///< the cable's state after it: where a chained evaluation goes on
   Eigen::MatrixXd force_jacobian;  ///< d(force residual)/dq, if asked for
   Eigen::VectorXd d_frequency;     ///< dR/dW at constant velocity amplitude, if asked for
+  /// Under PeriodicStart::newton: G = z(end) - z(start) in the law's periodic
+  /// coordinates; with the Jacobian, R_z (force_jacobian's further columns, N x m)
+  /// and d z_end / d(q, z0) (m x (N + m)).
+  Eigen::VectorXd state_gap;
+  Eigen::MatrixXd state_jacobian;
 
   bool ok() const { return cable.converged(); }
 };
@@ -130,7 +158,11 @@ class HarmonicBalance {
   /// and dR/dW if asked for. Check ok() before using any number.
   [[nodiscard]] HarmonicBalanceEvaluation evaluate(const Excitation& excitation, const Eigen::VectorXd& q,
                                                    const cable::CableState* start, int periods, unsigned derivatives,
-                                                   HarmonicBalanceWorkspace& workspace) const;
+                                                   HarmonicBalanceWorkspace& workspace,
+                                                   PeriodicStart mode = PeriodicStart::chained) const;
+  /// Whether solve() runs Newton on the periodic state (options' periodic_newton
+  /// and a law that offers coordinates).
+  bool uses_periodic_newton() const { return periodic_newton_; }
   /// Coefficients q of this model in the layout of the same model over whole periods
   /// (half_wave = false): the odd harmonics in their places, the mean and the even
   /// harmonics zero. q itself where this model uses whole periods already.
@@ -169,6 +201,7 @@ class HarmonicBalance {
   int driven_samples_;          // per pass of the cable: N, or N / 2 under half-wave symmetry
   std::vector<int> harmonic_;   // per coefficient column C: 0, 1, 1, 2, 2, ... (odd only: 1, 1, 3, 3, ...)
   int excitation_column_;       // the column of sin(W t)
+  bool periodic_newton_ = false;
   Eigen::MatrixXd basis_;       // driven samples x C: 1, cos(k W t_j), sin(k W t_j)
   Eigen::MatrixXd projection_;  // C x driven samples: Fourier coefficients from samples (harmonic balance)
 };

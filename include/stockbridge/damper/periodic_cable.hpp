@@ -54,6 +54,23 @@ struct PeriodicCableResult {
   /// The final period: the tip loads (F, Q), the clamp moment and the clamp
   /// section's curvature and moment per sample, the sliders' dissipation.
   ArmPeriod period;
+  /// Under PeriodicStart::newton with sensitivities: d z_end / d(q, z0), the end
+  /// state's coordinates (CableLaw::coordinates) by the path's parameters q and the
+  /// start state's coordinates z0 (m x (2C + m)).
+  Eigen::MatrixXd state_jacobian;
+};
+
+/// How the passes treat the state they start from.
+enum class PeriodicStart {
+  /// The passes run from it and, under half-wave symmetry, the final state is
+  /// centred between the last pass's start and its mirrored end (the moments
+  /// friction locks in); the start's own derivatives are zero.
+  chained,
+  /// The passes run from it as they are (no centring): the caller solves for the
+  /// periodic start itself (Newton on the periodic state). With sensitivities the
+  /// law's periodic coordinates of the start are parameters too (state_jacobian),
+  /// after the path's, and `sensitivity` has their columns.
+  newton,
 };
 
 class PeriodicCable {
@@ -70,7 +87,8 @@ class PeriodicCable {
   /// the first); the final state is the one the next pass would start from.
   PeriodicCableResult evaluate(const Eigen::Matrix2Xd& kinematics, int passes, const cable::CableState* start = nullptr,
                                const Eigen::MatrixXd* basis = nullptr, Eigen::MatrixXd* sensitivity = nullptr,
-                               PathSymmetry symmetry = PathSymmetry::none);
+                               PathSymmetry symmetry = PathSymmetry::none,
+                               PeriodicStart mode = PeriodicStart::chained);
   /// The cable's state at the end of the last evaluation.
   const cable::CableState& final_state() const { return cantilever_.committed(); }
   const cable::Cable& cable() const { return cantilever_.cable(); }
@@ -94,6 +112,8 @@ class PeriodicCable {
   void set_sample_derivative(const Eigen::MatrixXd& basis, int sample);
   void propagate_sensitivity(const cable::CableState& from, const cable::CableState& to, int sample,
                              Eigen::MatrixXd* sensitivity);
+  /// d z / d(q, z0) of the current state, its loads' derivatives the last step's.
+  void state_derivatives(Eigen::MatrixXd& out);
 
   double state_change(const cable::CableState& start, const cable::CableState& end) const;
   /// Mirrors the cable and, with it, the sensitivities carried to the next pass.
@@ -107,6 +127,8 @@ class PeriodicCable {
   std::vector<TurningPoint> turning_points_;
   std::unique_ptr<cable::LoadSensitivity> sensitivity_;
   Eigen::VectorXd rhs_phi_, rhs_x_, d_clamp_moment_, d_tip_force_;  // du/dq of the step's target, d(T, F)/dq
+  Eigen::Index columns_ = 0;  // sensitivity columns: the path's, then the start's coordinates
+  Eigen::MatrixXd internal_derivatives_;
 };
 
 }  // namespace stockbridge::damper

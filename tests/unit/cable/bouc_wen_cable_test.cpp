@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include <Eigen/LU>
 #include <gtest/gtest.h>
 
 #include "stockbridge/cable/bouc_wen_cable_law.hpp"
@@ -411,6 +412,121 @@ TEST(BoucWenCable, TheBaselineAndAvx2BuildsAgree) {
   for (std::size_t i = 0; i < own_cable.sections(); ++i) {
     EXPECT_NEAR(baseline.final_state().hysteretic[i], own.final_state().hysteretic[i], 1e-11) << i;
   }
+}
+
+// Newton on the periodic state: the derivatives of the end state's coordinates
+// z = (T, F, eta_i) with respect to the path's coefficients and the start state's
+// coordinates (PeriodicStart::newton) against central finite differences, over a
+// half period and its mirror from a state the path left (not a periodic one), at
+// an amplitude where some sections slip and some stay near stick.
+TEST(BoucWenCable, ThePeriodicStatesDerivativesMatchFiniteDifferences) {
+  const Cable cable(slenderpy_cable(12));
+  const CableLaw& law = cable.law();
+  const auto m = static_cast<Eigen::Index>(law.periodic_coordinates(cable));
+  ASSERT_EQ(m, 14);
+  const int samples = 32;  // a half period
+  Eigen::MatrixXd basis(samples, 2);
+  for (int j = 0; j < samples; ++j) {
+    const double t = std::numbers::pi * j / samples;
+    basis(j, 0) = std::sin(t);
+    basis(j, 1) = std::cos(t);
+  }
+  const Eigen::Vector4d q0(0.004, 0.03, 0.001, -0.008);  // (x, phi) of sin, then of cos
+  auto path_of = [&](const Eigen::Vector4d& q) {
+    Eigen::Matrix2Xd path(2, samples);
+    for (int j = 0; j < samples; ++j) {
+      path(0, j) = q(0) * basis(j, 0) + q(2) * basis(j, 1);
+      path(1, j) = q(1) * basis(j, 0) + q(3) * basis(j, 1);
+    }
+    return path;
+  };
+  damper::PeriodicCable periodic(cable, CantileverOptions{});
+  // A start the path has shaped but not settled: one pass from virgin at 0.7 q.
+  ASSERT_TRUE(periodic.evaluate(path_of(0.7 * q0), 1, nullptr, nullptr, nullptr, damper::PathSymmetry::half_wave,
+                                damper::PeriodicStart::newton)
+                  .summary.converged());
+  const CableState start = periodic.final_state();
+  auto end_coordinates = [&](const Eigen::Vector4d& q, const CableState& from) {
+    const damper::PeriodicCableResult r = periodic.evaluate(path_of(q), 1, &from, nullptr, nullptr,
+                                                            damper::PathSymmetry::half_wave,
+                                                            damper::PeriodicStart::newton);
+    EXPECT_TRUE(r.summary.converged());
+    Eigen::VectorXd z;
+    law.coordinates(periodic.final_state(), z);
+    return z;
+  };
+  Eigen::MatrixXd sensitivity;
+  const damper::PeriodicCableResult exact = periodic.evaluate(
+      path_of(q0), 1, &start, &basis, &sensitivity, damper::PathSymmetry::half_wave, damper::PeriodicStart::newton);
+  ASSERT_TRUE(exact.summary.converged());
+  ASSERT_EQ(exact.state_jacobian.rows(), m);
+  ASSERT_EQ(exact.state_jacobian.cols(), 4 + m);
+  Eigen::VectorXd z_start;
+  law.coordinates(start, z_start);
+  for (Eigen::Index c = 0; c < 4 + m; ++c) {
+    Eigen::VectorXd plus, minus;
+    bool one_sided = false;
+    if (c < 4) {
+      const double h = 1e-7 * q0.cwiseAbs().maxCoeff();
+      plus = end_coordinates(q0 + h * Eigen::Vector4d::Unit(c), start);
+      minus = end_coordinates(q0 - h * Eigen::Vector4d::Unit(c), start);
+      plus = (plus - minus) / (2.0 * h);
+    } else {
+      // Central differences; one-sided away from eta's bound where a section is
+      // within the step of saturation (the shift stops it there).
+      const Eigen::Index k = c - 4;
+      const double h = 1e-7 * (k < 2 ? std::max(std::abs(z_start(k)), 0.1) : 1.0);
+      const bool near_bound = k >= 2 && 1.0 - std::abs(z_start(k)) < 2.0 * h;
+      one_sided = near_bound;
+      const double up_step = near_bound ? -std::copysign(h, z_start(k)) : h;
+      const double down_step = near_bound ? 0.0 : -h;
+      CableState up = start, down = start;
+      ASSERT_TRUE(law.shift(cable, up, up_step * Eigen::VectorXd::Unit(m, k)));
+      ASSERT_TRUE(law.shift(cable, down, down_step * Eigen::VectorXd::Unit(m, k)));
+      plus = (end_coordinates(q0, up) - end_coordinates(q0, down)) / (up_step - down_step);
+    }
+    // One-sided differences (a saturated section's eta) carry an error of order h.
+    const double relative = one_sided ? 5e-3 : 1e-5;
+    const double tolerance = relative * exact.state_jacobian.col(c).cwiseAbs().maxCoeff() + 1e-9;
+    EXPECT_LT((exact.state_jacobian.col(c) - plus).cwiseAbs().maxCoeff(), tolerance) << "column " << c;
+  }
+}
+
+// At fixed coefficients, Newton on the periodic state, z <- z - (G_z - I)^-1 G with G
+// = z_end - z, converges quadratically from a state one pass from virgin (where
+// repeating passes settles geometrically).
+TEST(BoucWenCable, NewtonOnThePeriodicStateConvergesQuadratically) {
+  const Cable cable(slenderpy_cable(12));
+  const CableLaw& law = cable.law();
+  const int samples = 32;
+  Eigen::MatrixXd basis(samples, 1);
+  Eigen::Matrix2Xd path(2, samples);
+  for (int j = 0; j < samples; ++j) {
+    basis(j, 0) = std::sin(std::numbers::pi * j / samples);
+    path.col(j) = Eigen::Vector2d(0.004, 0.03) * basis(j, 0);
+  }
+  damper::PeriodicCable periodic(cable, CantileverOptions{});
+  ASSERT_TRUE(periodic.evaluate(path, 1, nullptr, nullptr, nullptr, damper::PathSymmetry::half_wave,
+                                damper::PeriodicStart::newton)
+                  .summary.converged());
+  CableState start = periodic.final_state();
+  std::vector<double> gaps;
+  for (int iteration = 0; iteration < 6; ++iteration) {
+    Eigen::MatrixXd sensitivity;
+    const damper::PeriodicCableResult r = periodic.evaluate(path, 1, &start, &basis, &sensitivity,
+                                                            damper::PathSymmetry::half_wave,
+                                                            damper::PeriodicStart::newton);
+    ASSERT_TRUE(r.summary.converged());
+    Eigen::VectorXd z_start, z_end;
+    law.coordinates(start, z_start);
+    law.coordinates(periodic.final_state(), z_end);
+    const Eigen::VectorXd gap = z_end - z_start;
+    gaps.push_back(gap.lpNorm<Eigen::Infinity>());
+    Eigen::MatrixXd d = r.state_jacobian.rightCols(gap.size());
+    d.diagonal().array() -= 1.0;
+    ASSERT_TRUE(law.shift(cable, start, Eigen::VectorXd(-d.partialPivLu().solve(gap))));
+  }
+  EXPECT_LT(gaps[3], 1e-10 * gaps[0]);
 }
 
 // (GCC notes that functions returning four-lane types are called differently with and
