@@ -74,7 +74,7 @@ void BM_SlenderpySweep(benchmark::State& state) {
   for (auto _ : state) converged = converged_points(run_sweep(damper, spec));
   state.counters["converged_points"] = converged;
 }
-BENCHMARK(BM_SlenderpySweep)->ArgNames({"points"})->Arg(40)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_SlenderpySweep)->ArgNames({"points"})->Arg(40)->Arg(400)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 void BM_OnePoint(benchmark::State& state, Method method, double frequency_hz) {
   const Damper damper = example();
