@@ -292,7 +292,8 @@ class NewtonSolve {
   void broyden_update(const Eigen::VectorXd& q);
   double norm_of(const HarmonicBalanceEvaluation& e) const { return e.residual.lpNorm<Eigen::Infinity>() / scale_; }
   /// Newton on the periodic state: from an exact evaluation, the stored terms and
-  /// the force Jacobian with the state eliminated (false: G_z - I singular).
+  /// the force Jacobian with the state eliminated (false, nothing stored: G_z - I
+  /// singular, its reciprocal condition below 1e-12).
   bool store_periodic_state_terms(const HarmonicBalanceEvaluation& e);
   /// The residual Newton steps on: R, less R_z D^-1 G under Newton on the periodic state.
   Eigen::VectorXd effective_residual(const HarmonicBalanceEvaluation& e) const;
@@ -343,17 +344,22 @@ bool NewtonSolve::adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::st
     return fail(Termination::non_finite, fmt::format("{} {}", stage, e.cable.where));
   }
   if (!e.ok()) return fail(Termination::inner_failure, fmt::format("{}: {}", stage, brief_report(e.cable)));
+  bool chain = false;
   if (exact) {
-    if (periodic_newton_) {
-      if (!store_periodic_state_terms(e)) return fail(Termination::singular_jacobian, std::string(stage));
-    } else {
+    if (!periodic_newton_) {
       memory_.force_jacobian = std::move(e.force_jacobian);
+    } else if (!store_periodic_state_terms(e)) {
+      // G_z - I singular: a memory the pass barely forgets (whole periods near
+      // stick), which no Newton step on the state resolves; chained periods settle it.
+      memory_.force_jacobian = e.force_jacobian.leftCols(model_.unknown_count());
+      chain = true;
     }
   }
   start_ = next_start(e, nullptr);
   current_ = std::move(e);
   norm_ = norm_of(current_);
   effective_ = effective_residual(current_);
+  if (chain) chain_periods();
   model_.assemble_jacobian(excitation_, memory_.force_jacobian, jacobian_);
   exact_ = exact;
   if (!current_.residual.allFinite()) return fail(Termination::non_finite, fmt::format("{} in the residual", stage));
@@ -510,6 +516,7 @@ bool NewtonSolve::store_periodic_state_terms(const HarmonicBalanceEvaluation& e)
   Eigen::MatrixXd d = e.state_jacobian.rightCols(m);
   d.diagonal().array() -= 1.0;
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(d);
+  if (!(lu.rcond() > 1e-12)) return false;
   PeriodicStateTerms& terms = memory_.periodic_state;
   terms.start_by_gap = lu.inverse();
   if (!terms.start_by_gap.allFinite()) return false;
