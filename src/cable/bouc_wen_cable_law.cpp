@@ -317,10 +317,6 @@ double BoucWenCableLaw::internal_change(const CableState& start, const CableStat
   return change;
 }
 
-bool BoucWenCableLaw::accepts_extrapolated(const CableState& state) const {
-  return std::all_of(state.hysteretic.begin(), state.hysteretic.end(), [](double eta) { return std::abs(eta) <= 1.0; });
-}
-
 std::size_t BoucWenCableLaw::periodic_coordinates(const Cable& cable) const { return cable.sections() + 2; }
 
 void BoucWenCableLaw::coordinates(const CableState& state, Eigen::VectorXd& z) const {

@@ -40,26 +40,14 @@ void CableState::mirror() {
   for (double& h : hysteretic) h = -h;
 }
 
-namespace {
-/// `combine(value, other's value)` on every field in which the moment is linear:
-/// loads, tip kinematics, curvatures and internal variables.
-template <class Combine>
-void combine_linear_fields(CableState& state, const CableState& other, Combine combine) {
-  combine(state.clamp_moment, other.clamp_moment);
-  combine(state.tip_force, other.tip_force);
-  combine(state.rotation, other.rotation);
-  combine(state.deflection, other.deflection);
-  for (std::size_t i = 0; i < state.curvature.size(); ++i) combine(state.curvature[i], other.curvature[i]);
-  for (std::size_t i = 0; i < state.hysteretic.size(); ++i) combine(state.hysteretic[i], other.hysteretic[i]);
-}
-}  // namespace
-
 void CableState::move_halfway_to(const CableState& other) {
-  combine_linear_fields(*this, other, [](double& value, double to) { value = 0.5 * (value + to); });
-}
-
-void CableState::extrapolate_from(const CableState& previous, double ratio) {
-  combine_linear_fields(*this, previous, [ratio](double& value, double before) { value += ratio * (value - before); });
+  auto halfway = [](double& value, double to) { value = 0.5 * (value + to); };
+  halfway(clamp_moment, other.clamp_moment);
+  halfway(tip_force, other.tip_force);
+  halfway(rotation, other.rotation);
+  halfway(deflection, other.deflection);
+  for (std::size_t i = 0; i < curvature.size(); ++i) halfway(curvature[i], other.curvature[i]);
+  for (std::size_t i = 0; i < hysteretic.size(); ++i) halfway(hysteretic[i], other.hysteretic[i]);
 }
 
 Eigen::Matrix2d CableState::tip_stiffness(double length) const { return cable::tip_stiffness(flexibility, length); }

@@ -69,15 +69,6 @@ double secant_step_ratio(const Continuation& path, const Excitation& target) {
 }
 }  // namespace
 
-std::optional<cable::CableState> Continuation::cable_state_predictor(const Excitation& target,
-                                                                    const cable::CableLaw& law) const {
-  if (!memory.cable_state || !previous_cable_state || !secant_applies(target)) return std::nullopt;
-  cable::CableState state = *memory.cable_state;
-  state.extrapolate_from(*previous_cable_state, secant_step_ratio(*this, target));
-  if (!law.accepts_extrapolated(state)) return std::nullopt;
-  return state;
-}
-
 Eigen::VectorXd Continuation::predictor(const Excitation& target) const {
   Eigen::VectorXd scaled = unknowns * (target.displacement_amplitude / excitation.displacement_amplitude);
   if (!secant_applies(target)) return scaled;
@@ -109,15 +100,7 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
   // smaller steps and arclength that follow start from the virgin cable at the last
   // converged unknowns. (Keeping the last converged state there was tried: one point
   // of SweepRobustness.TinyAmplitudeNearTheStickResonance then fails at 39.6 Hz.)
-  //
-  // Where the law's periodic state moves smoothly with the frequency (Bouc-Wen), the
-  // solve starts from the state's secant too: its memory then has less to settle
-  // (on slenderpy's damper 400 points take 12 % fewer periods).
   ArmSolution solve(const Excitation& excitation, Continuation& path) override {
-    std::optional<cable::CableState> last_state = path.memory.cable_state;
-    if (auto predicted = path.cable_state_predictor(excitation, model_.arm().cable().law())) {
-      path.memory.cable_state = std::move(predicted);
-    }
     ArmSolution solution = path.empty() ? model_.solve(excitation, model_.linear_guess(excitation), path.memory, workspace_)
                                         : model_.solve(excitation, predictor(excitation, path), path.memory, workspace_);
     if (!solution.summary.converged() && !path.empty()) {
@@ -135,10 +118,7 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
       ArmSolution whole = solve_over_whole_periods(excitation, solution.unknowns, path);
       if (whole.summary.converged()) return whole;
     }
-    if (solution.summary.converged()) {
-      advance(path, solution, excitation);
-      path.previous_cable_state = std::move(last_state);
-    }
+    if (solution.summary.converged()) advance(path, solution, excitation);
     return solution;
   }
 
@@ -151,7 +131,6 @@ class HarmonicBalanceArmSolver final : public ArmSolver {
     if (!crossings.solutions.empty()) {
       advance(path, crossings.solutions.back(), target);
       path.memory = std::move(crossings.memory);
-      path.previous_cable_state.reset();  // the branch between may have turned
     }
     return std::move(crossings.solutions);
   }

@@ -46,8 +46,6 @@ class BoucWenCableLaw final : public CableLaw {
   void apply_loads(const Cable& cable, const CableState& from, double clamp_moment, double tip_force, CableState& to,
                    CableWorkspace& workspace) const override;
   double internal_change(const CableState& start, const CableState& end) const override;
-  /// Every |eta| <= 1.
-  bool accepts_extrapolated(const CableState& state) const override;
   std::size_t periodic_coordinates(const Cable& cable) const override;
   void coordinates(const CableState& state, Eigen::VectorXd& z) const override;
   /// Every |eta| <= 1 after the shift.

@@ -16,8 +16,8 @@
 //     the mean of two states is a state, CableState::move_halfway_to);
 //   * how far two states' internal variables are apart (the periodicity defect);
 //   * a LoadSensitivity: the exact derivative of the loads along a path;
-//   * optionally, the flexibility's change (a smooth law) and whether a state
-//     extrapolated along a sweep may start the next point's solve.
+//   * optionally, the flexibility's change (a smooth law) and the coordinates of
+//     a periodic state, for harmonic balance's Newton on it.
 
 #include <cstddef>
 #include <memory>
@@ -80,12 +80,6 @@ class CableLaw {
   /// The largest change of an internal variable from `start` to `end`, relative to
   /// its scale (a slip moment, eta's range): 0 when equal.
   virtual double internal_change(const CableState& start, const CableState& end) const = 0;
-  /// Whether a state extrapolated from two periodic states along a sweep
-  /// (CableState::extrapolate_from) may start the next point's solve: where the law's
-  /// periodic state moves smoothly with the frequency and `state`'s internal
-  /// variables are within their bounds. No by default: the Masing law's states move
-  /// by sticking sets, and on its example sweep the extrapolation saved 1 %.
-  virtual bool accepts_extrapolated(const CableState& /*state*/) const { return false; }
   /// Newton on the periodic state (optional; HarmonicBalance uses it where offered):
   /// how many coordinates z fix a state of `cable` with its loads, 0 where the law
   /// offers none (Masing: its sticking sets make the state's map piecewise

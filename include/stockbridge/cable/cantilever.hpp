@@ -55,13 +55,6 @@ struct CableState {
   /// moment is linear in them); tangents, flexibility (and its change) and the
   /// energy dissipated stay this state's.
   void move_halfway_to(const CableState& other);
-  /// Along the line through `previous` and this state (both of the same cable):
-  /// loads, tip kinematics, curvatures and internal variables become this + ratio
-  /// (this - previous), statically admissible again; tangents, flexibility (and its
-  /// change) and the energy dissipated stay this state's. Whether the internal
-  /// variables stay within the law's bounds is the law's to say
-  /// (CableLaw::accepts_extrapolated).
-  void extrapolate_from(const CableState& previous, double ratio);
   /// Q = T - F l, N m.
   double tip_moment(double length) const { return clamp_moment - tip_force * length; }
   /// d(F, Q)/(x, phi): the tip stiffness for the damper, from the flexibility.

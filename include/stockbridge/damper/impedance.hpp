@@ -9,7 +9,6 @@
 #include <complex>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,9 +56,6 @@ struct Continuation {
   /// The solution before it (empty: none), for the secant.
   Eigen::VectorXd previous_unknowns;
   Excitation previous_excitation;
-  /// Harmonic balance and collocation: the cable's periodic state at that solution
-  /// (empty: none kept), for the state's secant.
-  std::optional<cable::CableState> previous_cable_state;
 
   bool empty() const { return unknowns.size() == 0; }
   /// The predictor at `target`: the unknowns scaled to its displacement amplitude
@@ -69,10 +65,6 @@ struct Continuation {
   Eigen::VectorXd predictor(const Excitation& target) const;
   /// Whether predictor() takes the secant at `target`.
   bool secant_applies(const Excitation& target) const;
-  /// The cable state the solve at `target` starts from where the secant applies and
-  /// both solutions' states are kept: the secant through them, extrapolated as the
-  /// unknowns are, where `law` accepts the result; else nothing (the last state).
-  std::optional<cable::CableState> cable_state_predictor(const Excitation& target, const cable::CableLaw& law) const;
   /// Moves on to a converged solution (the current one becomes the previous).
   void advance(const Eigen::VectorXd& solution, const Excitation& at);
 };

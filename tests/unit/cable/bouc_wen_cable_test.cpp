@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -81,43 +82,51 @@ TEST(BoucWenCable, AShortStepNeverDissipatesLess) {
   }
 }
 
-// A state extrapolated along the line through two states is a state again: every
-// section carries T - F s_i of the extrapolated loads (the law's moment is linear),
-// halfway back is the mean, and the law accepts it while every |eta| <= 1.
-TEST(BoucWenCable, AnExtrapolatedStateIsAStateWithinEtasBounds) {
+// A state shifted in its periodic coordinates (T, F, eta_i: CableLaw::shift) is a
+// state again: every section carries T - F s_i of the shifted loads (the law's moment
+// is linear), the tip kinematics are the curvatures' integrals, and a section pushed
+// beyond eta's bounds saturates. The Masing law offers no coordinates.
+TEST(BoucWenCable, AShiftedStateIsAStateWithinEtasBounds) {
   Cantilever cantilever{Cable(slenderpy_cable(40))};
   ASSERT_TRUE(cantilever.set_trial_tip(0.004, 0.03).converged());
   cantilever.commit();
-  const CableState previous = cantilever.committed();
-  ASSERT_TRUE(cantilever.set_trial_tip(0.006, 0.045).converged());
-  cantilever.commit();
-  const CableState& latest = cantilever.committed();
-  const auto& law = dynamic_cast<const BoucWenCableLaw&>(cantilever.cable().law());
-  const auto& s = cantilever.cable().positions();
-  for (const double ratio : {0.8, 2.5}) {
-    CableState state = latest;
-    state.extrapolate_from(previous, ratio);
-    EXPECT_NEAR(state.clamp_moment, latest.clamp_moment + ratio * (latest.clamp_moment - previous.clamp_moment),
-                1e-14 * std::abs(latest.clamp_moment));
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const double moment = law.ei_min(i) * state.curvature[i] +
-                            (law.ei_max(i) - law.ei_min(i)) * law.chi0(i) * state.hysteretic[i];
-      ASSERT_NEAR(moment, state.clamp_moment - state.tip_force * s[i], 1e-12 * std::abs(state.clamp_moment)) << i;
-    }
-    const bool within = std::all_of(state.hysteretic.begin(), state.hysteretic.end(),
-                                    [](double eta) { return std::abs(eta) <= 1.0; });
-    EXPECT_EQ(law.accepts_extrapolated(state), within) << ratio;
+  const Cable& cable = cantilever.cable();
+  const auto& law = dynamic_cast<const BoucWenCableLaw&>(cable.law());
+  const auto n = static_cast<Eigen::Index>(cable.sections());
+  ASSERT_EQ(static_cast<Eigen::Index>(law.periodic_coordinates(cable)), n + 2);
+  Eigen::VectorXd dz(n + 2);
+  dz(0) = 0.05;
+  dz(1) = -0.3;
+  for (Eigen::Index i = 0; i < n; ++i) dz(i + 2) = 0.02 * std::sin(0.3 * static_cast<double>(i));
+  dz(5) = 3.0;  // beyond the bound
+  CableState state = cantilever.committed();
+  ASSERT_TRUE(law.shift(cable, state, dz));
+  Eigen::VectorXd before, after;
+  law.coordinates(cantilever.committed(), before);
+  law.coordinates(state, after);
+  const auto& s = cable.positions();
+  const auto& w = cable.weights();
+  double rotation = 0.0, deflection = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const double moment = law.ei_min(k) * state.curvature[k] +
+                          (law.ei_max(k) - law.ei_min(k)) * law.chi0(k) * state.hysteretic[k];
+    ASSERT_NEAR(moment, state.clamp_moment - state.tip_force * s[k], 1e-12 * std::abs(state.clamp_moment)) << i;
+    EXPECT_NEAR(after(i + 2), std::clamp(before(i + 2) + dz(i + 2), -1.0, 1.0), 1e-15) << i;
+    rotation += w[k] * state.curvature[k];
+    deflection += w[k] * (cable.length() - s[k]) * state.curvature[k];
   }
-  CableState far = latest;
-  far.extrapolate_from(previous, 40.0);
-  EXPECT_FALSE(law.accepts_extrapolated(far));  // eta beyond its bounds somewhere
-  CableState back = latest, mean = latest;
-  back.extrapolate_from(previous, -0.5);
-  mean.move_halfway_to(previous);
-  for (std::size_t i = 0; i < s.size(); ++i) EXPECT_NEAR(back.hysteretic[i], mean.hysteretic[i], 1e-15) << i;
-  // The Masing law's periodic states move by sticking sets: it takes none.
-  Cantilever masing{Cable(CableDescription::uniform(kMessengerLength, 40, 2.5, {{100.0, 0.1}}))};
-  EXPECT_FALSE(masing.cable().law().accepts_extrapolated(masing.committed()));
+  EXPECT_EQ(after(5), 1.0);
+  EXPECT_NEAR(after(0), before(0) + dz(0), 1e-15);
+  EXPECT_NEAR(after(1), before(1) + dz(1), 1e-14);
+  EXPECT_NEAR(state.rotation, rotation, 1e-12 * std::abs(rotation));
+  EXPECT_NEAR(state.deflection, deflection, 1e-12 * std::abs(deflection));
+  dz(0) = std::numeric_limits<double>::quiet_NaN();
+  CableState refused = cantilever.committed();
+  EXPECT_FALSE(law.shift(cable, refused, dz));
+  EXPECT_EQ(refused.clamp_moment, cantilever.committed().clamp_moment);
+  const Cable masing(CableDescription::uniform(kMessengerLength, 40, 2.5, {{100.0, 0.1}}));
+  EXPECT_EQ(masing.law().periodic_coordinates(masing), 0u);
 }
 
 /// Two tip steps, the second a reversal: the committed state from which the

@@ -372,43 +372,6 @@ TEST(HarmonicBalance, SettlingBeforeAStepSavesJacobiansNotAccuracy) {
   EXPECT_LT(settling.periods, stepping.periods);
 }
 
-// Along a sweep a Bouc-Wen arm starts each point from the secant through the last
-// two points' periodic states (Continuation::cable_state_predictor), not from the
-// last state: its memory has less to settle. Along 50-100 Hz at 0.2 m/s in the
-// example sweep's steps (0.7 %) on slenderpy's arm that takes 28 % fewer cable
-// periods (964 against 1340), to the same answers within the tolerances (the
-// periodicity's 1e-6 of eta moves Z by a few 1e-6); without a kept previous state
-// the solve starts from the last one.
-TEST(HarmonicBalance, TheStatesSecantSavesPeriodsNotAccuracy) {
-  const Damper damper =
-      io::read_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/slenderpy_damper.toml");
-  struct Run {
-    std::vector<std::complex<double>> impedance;
-    int periods = 0;
-  };
-  auto run = [&](bool secant) {
-    SolverOptions options;
-    options.harmonic_balance.periodic_newton = false;  // chained periods, where the start matters
-    const std::unique_ptr<ArmSolver> solver = make_arm_solver(damper.arms().front(), options);
-    Continuation path;
-    Run out;
-    for (int k = 0; k <= 100; ++k) {
-      const Excitation e = Excitation::from_velocity(50.0 * std::pow(2.0, k / 100.0), 0.2);
-      if (!secant) path.previous_cable_state.reset();
-      const ArmSolution s = solver->solve(e, path);
-      EXPECT_TRUE(s.summary.converged()) << secant << " at " << e.frequency_hz << " Hz: " << brief_report(s.summary);
-      out.impedance.push_back(arm_force_first_harmonic(s.period) / 0.2);
-      out.periods += s.summary.periods;
-    }
-    return out;
-  };
-  const Run with_secant = run(true), without = run(false);
-  for (std::size_t k = 0; k < with_secant.impedance.size(); ++k) {
-    EXPECT_LT(std::abs(with_secant.impedance[k] - without.impedance[k]), 5e-6 * std::abs(without.impedance[k])) << k;
-  }
-  EXPECT_LT(with_secant.periods, 0.85 * without.periods) << with_secant.periods << " against " << without.periods;
-}
-
 // Newton on the periodic state (HarmonicBalanceOptions::periodic_newton, the
 // default where the law offers coordinates) against chained periods on slenderpy's
 // arm along 15-60 Hz at 0.2 m/s: the same answers within the tolerances, in
