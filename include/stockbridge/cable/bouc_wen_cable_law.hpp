@@ -48,7 +48,7 @@ class BoucWenCableLaw final : public CableLaw {
   double internal_change(const CableState& start, const CableState& end) const override;
   std::size_t periodic_coordinates(const Cable& cable) const override;
   void coordinates(const CableState& state, Eigen::VectorXd& z) const override;
-  /// Every |eta| <= 1 after the shift.
+  /// Each eta kept within [-1, 1].
   bool shift(const Cable& cable, CableState& state, const Eigen::VectorXd& dz) const override;
   std::unique_ptr<LoadSensitivity> load_sensitivity(const Cable& cable) const override;
 

@@ -89,8 +89,9 @@ class CableLaw {
   /// z of `state` (periodic_coordinates entries).
   virtual void coordinates(const CableState& /*state*/, Eigen::VectorXd& /*z*/) const {}
   /// Moves `state` by dz in its coordinates, its curvatures and tip kinematics along
-  /// (tangents, flexibility and dissipation stay): false, `state` unchanged, where
-  /// the result leaves the law's bounds.
+  /// (tangents, flexibility and dissipation stay), an internal variable stopped at
+  /// its bound (Bouc-Wen: eta saturates at -1 or 1); false, `state` unchanged, where
+  /// it cannot move (a non-finite dz).
   virtual bool shift(const Cable& /*cable*/, CableState& /*state*/, const Eigen::VectorXd& /*dz*/) const {
     return false;
   }

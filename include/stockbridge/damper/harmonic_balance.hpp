@@ -155,7 +155,10 @@ class HarmonicBalance {
   /// Drives the cable through `periods` periods of the tip motion q from `start`
   /// (nullptr: the virgin state) and evaluates the equations on the last one, with
   /// the exact force Jacobian (forward sensitivities, the start state held fixed)
-  /// and dR/dW if asked for. Check ok() before using any number.
+  /// and dR/dW if asked for. Under PeriodicStart::newton (and a law with periodic
+  /// coordinates) also the pass's gap G and, with the Jacobian, the start's
+  /// coordinates as further columns of force_jacobian and state_jacobian. Check
+  /// ok() before using any number.
   [[nodiscard]] HarmonicBalanceEvaluation evaluate(const Excitation& excitation, const Eigen::VectorXd& q,
                                                    const cable::CableState* start, int periods, unsigned derivatives,
                                                    HarmonicBalanceWorkspace& workspace,
@@ -185,7 +188,10 @@ class HarmonicBalance {
   /// iterations instead of being repeated in each. Convergence requires the
   /// residual (relative to force_scale) and the periodicity defect of the same
   /// evaluation; once the equations hold, further periods at the same coefficients
-  /// let the memory settle. On convergence `memory` holds this solution's state and
+  /// let the memory settle. Where the solve uses Newton on the periodic state
+  /// (uses_periodic_newton), each evaluation is one pass from the Newton estimate of
+  /// the periodic start state instead (PeriodicStateTerms), and chained periods take
+  /// over where that stalls. On convergence `memory` holds this solution's state and
   /// Jacobian; otherwise it is cleared. summary: newton_iterations, periods (in all),
   /// evaluations, jacobians, residual, periodicity_defect, energy_error.
   ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& initial, HarmonicBalanceMemory& memory,
