@@ -257,8 +257,6 @@ class NewtonSolve {
         workspace_(workspace),
         summary_(summary),
         periodic_newton_(model.uses_periodic_newton()),
-        mode_(periodic_newton_ ? PeriodicStart::newton : PeriodicStart::chained),
-        passes_(periodic_newton_ ? 1 : options_.periods),
         start_(memory.cable_state) {}
 
   /// Runs Newton from q (updated in place); true when converged. `current()` is the
@@ -313,9 +311,11 @@ class NewtonSolve {
   /// on the periodic state; the stored state terms are dropped with it.
   void chain_periods();
 
+  PeriodicStart mode() const { return periodic_newton_ ? PeriodicStart::newton : PeriodicStart::chained; }
+  /// Passes an evaluation drives: one under Newton on the periodic state, else options' periods.
+  int passes() const { return periodic_newton_ ? 1 : options_.periods; }
+
   bool periodic_newton_;
-  PeriodicStart mode_;
-  int passes_;  // a pass under Newton on the periodic state, else options' periods
   std::optional<cable::CableState> start_;  // where the cable's next evaluation starts (empty: virgin)
   Eigen::VectorXd effective_;                 // the current evaluation's effective_residual
   HarmonicBalanceEvaluation current_;
@@ -336,10 +336,10 @@ bool NewtonSolve::fail(Termination termination, std::string where) {
 bool NewtonSolve::adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::string_view stage) {
   const unsigned derivatives = exact ? HarmonicBalance::kJacobian : HarmonicBalance::kNone;
   HarmonicBalanceEvaluation e =
-      model_.evaluate(excitation_, q, start_ ? &*start_ : nullptr, passes_, derivatives, workspace_, mode_);
+      model_.evaluate(excitation_, q, start_ ? &*start_ : nullptr, passes(), derivatives, workspace_, mode());
   ++summary_.evaluations;
   summary_.jacobians += exact;
-  summary_.periods += passes_;
+  summary_.periods += passes();
   if (e.cable.termination == Termination::non_finite) {
     return fail(Termination::non_finite, fmt::format("{} {}", stage, e.cable.where));
   }
@@ -426,12 +426,11 @@ NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
   for (int halving = 0; halving < halvings; ++halving, alpha *= 0.5) {
     const Eigen::VectorXd dq = alpha * direction;
     const Eigen::VectorXd q_try = q + dq;
-    const std::optional<cable::CableState> trial_start =
-        periodic_newton_ && !memory_.periodic_state.empty() ? std::optional(next_start(current_, &dq)) : start_;
-    HarmonicBalanceEvaluation trial = model_.evaluate(excitation_, q_try, trial_start ? &*trial_start : nullptr,
-                                                      passes_, HarmonicBalance::kNone, workspace_, mode_);
+    const cable::CableState trial_start = next_start(current_, &dq);
+    HarmonicBalanceEvaluation trial =
+        model_.evaluate(excitation_, q_try, &trial_start, passes(), HarmonicBalance::kNone, workspace_, mode());
     ++summary_.evaluations;
-    summary_.periods += passes_;
+    summary_.periods += passes();
     if (!trial.ok()) continue;
     // Accept a decrease, or a step that meets the tolerance.
     Eigen::VectorXd trial_effective = effective_residual(trial);
@@ -504,8 +503,6 @@ bool NewtonSolve::run(Eigen::VectorXd& q) {
 
 void NewtonSolve::chain_periods() {
   periodic_newton_ = false;
-  mode_ = PeriodicStart::chained;
-  passes_ = options_.periods;
   memory_.periodic_state = {};
   start_ = current_.end_state;
   effective_ = current_.residual;

@@ -60,21 +60,14 @@ bool Continuation::secant_applies(const Excitation& target) const {
   return last_step > 0.0 && step > 0.0 && step <= 2.0 * last_step && one_velocity;
 }
 
-namespace {
-/// The secant's step to `target` in units of the path's last step (log frequency).
-double secant_step_ratio(const Continuation& path, const Excitation& target) {
-  const double last_step = std::log(path.excitation.frequency_hz / path.previous_excitation.frequency_hz);
-  const double step = std::log(target.frequency_hz / path.excitation.frequency_hz);
-  return step / last_step;
-}
-}  // namespace
-
 Eigen::VectorXd Continuation::predictor(const Excitation& target) const {
   Eigen::VectorXd scaled = unknowns * (target.displacement_amplitude / excitation.displacement_amplitude);
   if (!secant_applies(target)) return scaled;
   const Eigen::VectorXd previous_scaled =
       previous_unknowns * (target.displacement_amplitude / previous_excitation.displacement_amplitude);
-  return scaled + secant_step_ratio(*this, target) * (scaled - previous_scaled);
+  const double last_step = std::log(excitation.frequency_hz / previous_excitation.frequency_hz);
+  const double step = std::log(target.frequency_hz / excitation.frequency_hz);
+  return scaled + (step / last_step) * (scaled - previous_scaled);
 }
 
 void Continuation::advance(const Eigen::VectorXd& solution, const Excitation& at) {

@@ -75,12 +75,6 @@ struct HarmonicBalanceOptions {
   bool uses_half_wave() const;
 };
 
-/// What a solve leaves for the next one along a path (as in a stepped-sine test):
-/// the cable's periodic state at the last solution, where the next evaluation
-/// starts, and the Jacobian of the force residual there, exact as long as the path
-/// stays on the same piece of the piecewise-linear cable map and so reused across
-/// Newton iterations and neighbouring frequencies. Empty: a cold start (virgin
-/// cable, no stored Jacobian).
 /// Newton on the periodic state: with z the start state's coordinates, G = z_end - z
 /// the pass's gap, R_z and G_z, G_q their derivatives, and D = G_z - I, the state's
 /// Newton step is dz = -D^-1 (G + G_q dq), and q's is Newton's on the residual with the
@@ -94,6 +88,12 @@ struct PeriodicStateTerms {
   bool empty() const { return start_by_gap.size() == 0; }
 };
 
+/// What a solve leaves for the next one along a path (as in a stepped-sine test):
+/// the cable's periodic state at the last solution, where the next evaluation
+/// starts, and the Jacobian of the force residual there, exact as long as the path
+/// stays on the same piece of the piecewise-linear cable map and so reused across
+/// Newton iterations and neighbouring frequencies. Empty: a cold start (virgin
+/// cable, no stored Jacobian).
 struct HarmonicBalanceMemory {
   std::optional<cable::CableState> cable_state;
   /// d(force residual)/dq (empty: none stored); with periodic-state terms, that of
