@@ -53,7 +53,7 @@ namespace {
 
 // g(u) = ei_min u + ba (1 - e^-u) - target (ba = (EI_max - EI_min) a, a in [0, 2]) is
 // increasing and concave in u >= 0. The sections are solved four at a time, on lanes:
-// a start, then Halley steps until every lane's step is below 1e-6 of its u.
+// a start, then series or Halley steps until every lane's step is below 1e-3 of its u.
 
 [[gnu::always_inline]] inline Lanes load_lanes(const double* p) {
   Lanes v;
@@ -74,6 +74,9 @@ namespace {
 /// carries E along without an exponential; where |r| <= 1e-3 min(u, 1) that error is
 /// below 1e-18 of u and the step ends the solve. Farther off, Halley's step
 /// d = r / (1 - beta r / 2) (cubic; g'' = -ba E) and one exponential at the new u.
+/// Where every open lane's |r| is within 1e-6 of min(u, 1) (the step after a series or
+/// Halley step mostly is) the series to r^2 and e^-d to d^3 end the solve: the terms
+/// left out are below 1e-18 of u there.
 ///
 /// The start is the last evaluation's travel where g there (from its own exponential,
 /// exact) is within 1e-3 of the target: the cantilever's Newton corrections move the
@@ -106,15 +109,26 @@ namespace {
     const Lanes g = ei_min * u - ba * decay_minus_one - target;
     const Lanes b = ba * decay, inverse_g1 = 1.0 / (ei_min + b);
     const Lanes r = -g * inverse_g1, beta = b * inverse_g1;
-    const Lanes size = abs_lanes(r);
+    const Lanes size = abs_lanes(r), reach = min_lanes(u, Lanes{} + 1.0);
+    if (!any_lane(open & (size > 1e-6 * reach))) {
+      // Every open lane has all but arrived (the step after a series or Halley step
+      // mostly has): the series to r^2, its error below beta r^3 / 3 < 1e-18 u, and
+      // e^-d - 1 to d^3.
+      const Lanes step = r * (1.0 + 0.5 * beta * r), d = -step;
+      const Lanes exp_step_minus_one = d * (1.0 + d * (0.5 + d * (1.0 / 6.0)));
+      u = open ? u + step : u;
+      decay_minus_one = open ? decay_minus_one + decay * exp_step_minus_one : decay_minus_one;
+      break;
+    }
     const LaneMask by_series = size <= 0.03;
-    const LaneMask close = size <= 1e-3 * min_lanes(u, Lanes{} + 1.0);
+    const LaneMask close = size <= 1e-3 * reach;
     // The inverse series' coefficients: r + c2 r^2 + ... + c5 r^5.
     const Lanes c2 = 0.5 * beta, c3 = beta * (0.5 * beta - 1.0 / 6.0),
                 c4 = beta * (beta * (0.625 * beta - 5.0 / 12.0) + 1.0 / 24.0),
                 c5 = beta * (beta * (beta * (0.875 * beta - 0.875) + 5.0 / 24.0) - 1.0 / 120.0);
     const Lanes series = r * (1.0 + r * (c2 + r * (c3 + r * (c4 + r * c5))));
-    const Lanes step = by_series ? series : r / (1.0 - 0.5 * beta * r);
+    // Halley's step (a division) only where an open lane takes it.
+    const Lanes step = any_lane(open & ~by_series) ? (by_series ? series : r / (1.0 - 0.5 * beta * r)) : series;
     const Lanes next = u + step;
     // e^-d - 1 to d^8.
     const Lanes d = -step;
