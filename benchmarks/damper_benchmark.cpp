@@ -61,11 +61,10 @@ BENCHMARK(BM_SauterSweep)
     ->MinTime(2.0);
 
 // One point from a cold start (no continuation), per method, at a slipping frequency.
-/// slenderpy's damper (the Bouc-Wen law): `points` frequencies log-spaced over
-/// 5-100 Hz at 0.2 m/s, harmonic balance at its defaults, one thread.
-void BM_SlenderpySweep(benchmark::State& state) {
-  const Damper damper =
-      stockbridge::io::read_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/slenderpy_damper.toml");
+/// A damper file of examples/: `points` frequencies log-spaced over 5-100 Hz at
+/// 0.2 m/s, harmonic balance at its defaults, one thread.
+void sweep_5_to_100_hz(benchmark::State& state, const std::string& file) {
+  const Damper damper = stockbridge::io::read_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/" + file);
   SweepSpec spec;
   spec.frequencies = log_spaced(5.0, 100.0, static_cast<int>(state.range(0)));
   spec.amplitudes = {0.2};
@@ -74,7 +73,12 @@ void BM_SlenderpySweep(benchmark::State& state) {
   for (auto _ : state) converged = converged_points(run_sweep(damper, spec));
   state.counters["converged_points"] = converged;
 }
+/// slenderpy's damper (the Bouc-Wen law).
+void BM_SlenderpySweep(benchmark::State& state) { sweep_5_to_100_hz(state, "slenderpy_damper.toml"); }
+/// The dissertation's damper (the Masing law, arms of the same geometry) on the same sweep.
+void BM_SauterSameSweep(benchmark::State& state) { sweep_5_to_100_hz(state, "sauter2003.toml"); }
 BENCHMARK(BM_SlenderpySweep)->ArgNames({"points"})->Arg(40)->Arg(400)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_SauterSameSweep)->ArgNames({"points"})->Arg(400)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 void BM_OnePoint(benchmark::State& state, Method method, double frequency_hz) {
   const Damper damper = example();
