@@ -126,16 +126,18 @@ namespace {
     const Lanes c2 = 0.5 * beta, c3 = beta * (0.5 * beta - 1.0 / 6.0),
                 c4 = beta * (beta * (0.625 * beta - 5.0 / 12.0) + 1.0 / 24.0),
                 c5 = beta * (beta * (beta * (0.875 * beta - 0.875) + 5.0 / 24.0) - 1.0 / 120.0);
-    const Lanes series = r * (1.0 + r * (c2 + r * (c3 + r * (c4 + r * c5))));
+    // Estrin's scheme: the powers of r beside the coefficients (shorter chains of
+    // dependent operations than Horner's).
+    const Lanes r2 = r * r;
+    const Lanes series = r * ((1.0 + c2 * r) + r2 * ((c3 + c4 * r) + r2 * c5));
     // Halley's step (a division) only where an open lane takes it.
     const Lanes step = any_lane(open & ~by_series) ? (by_series ? series : r / (1.0 - 0.5 * beta * r)) : series;
     const Lanes next = u + step;
-    // e^-d - 1 to d^8.
-    const Lanes d = -step;
-    Lanes exp_step_minus_one = 1.0 / 40320.0 * d;
-    for (const double c : {1.0 / 5040.0, 1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0}) {
-      exp_step_minus_one = d * (c + exp_step_minus_one);
-    }
+    // e^-d - 1 to d^8, by Estrin's scheme.
+    const Lanes d = -step, d2 = d * d, d4 = d2 * d2;
+    const Lanes exp_step_minus_one =
+        d * (((1.0 + 0.5 * d) + d2 * (1.0 / 6.0 + 1.0 / 24.0 * d)) +
+             d4 * ((1.0 / 120.0 + 1.0 / 720.0 * d) + d2 * (1.0 / 5040.0 + 1.0 / 40320.0 * d)));
     const Lanes followed = decay_minus_one + decay * exp_step_minus_one;
     // The exponential only where an open lane needs it.
     const Lanes next_decay_minus_one =

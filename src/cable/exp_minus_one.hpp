@@ -40,19 +40,15 @@ inline std::size_t lanes_padded(std::size_t n) { return (n + 3) / 4 * 4; }
   const Lanes shifted = x * inverse_ln2 + shifter;
   const Lanes n = shifted - shifter;
   const Lanes r = (x - n * ln2_high) - n * ln2_low;
-  // e^r - 1 = r + r^2 (1/2! + r (1/3! + ...)), Horner.
-  Lanes p = r * (1.0 / 6227020800.0) + 1.0 / 479001600.0;  // 1/13!, 1/12!
-  p = p * r + 1.0 / 39916800.0;
-  p = p * r + 1.0 / 3628800.0;
-  p = p * r + 1.0 / 362880.0;
-  p = p * r + 1.0 / 40320.0;
-  p = p * r + 1.0 / 5040.0;
-  p = p * r + 1.0 / 720.0;
-  p = p * r + 1.0 / 120.0;
-  p = p * r + 1.0 / 24.0;
-  p = p * r + 1.0 / 6.0;
-  p = p * r + 0.5;
-  const Lanes r_minus_one = r + (r * r) * p;  // e^r - 1
+  // e^r - 1 = r + r^2 p(r), p(r) = 1/2! + r / 3! + ... + r^11 / 13!, by Estrin's
+  // scheme: pairs of terms joined by r^2, r^4 and r^8, a chain of five dependent
+  // operations where Horner's is twelve.
+  const Lanes r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+  const Lanes q0 = 0.5 + r * (1.0 / 6.0), q1 = 1.0 / 24.0 + r * (1.0 / 120.0);
+  const Lanes q2 = 1.0 / 720.0 + r * (1.0 / 5040.0), q3 = 1.0 / 40320.0 + r * (1.0 / 362880.0);
+  const Lanes q4 = 1.0 / 3628800.0 + r * (1.0 / 39916800.0), q5 = 1.0 / 479001600.0 + r * (1.0 / 6227020800.0);
+  const Lanes p = ((q0 + r2 * q1) + r4 * (q2 + r2 * q3)) + r8 * (q4 + r2 * q5);
+  const Lanes r_minus_one = r + r2 * p;  // e^r - 1
   // 2^n from n's bits in `shifted` (n >= -1010 here, so 2^n is normal).
   const LaneMask n_bits = std::bit_cast<LaneMask>(shifted) - std::bit_cast<std::int64_t>(shifter);
   const Lanes scale = std::bit_cast<Lanes>((n_bits + 1023) << 52);
