@@ -162,12 +162,24 @@ struct SectionArrays {
   double *last_u, *last_decay_minus_one;
 };
 
-/// The sums over the sections (CableSums), lane by lane, added at the end.
+/// The sums over the sections (CableSums), lane by lane, added at the end. The first
+/// group sets them (step_group<true>): zeroing them first cost a string store an
+/// evaluation.
 struct LaneSums {
-  Lanes rotation{}, moment_of_rotation{}, dissipated{};  // sum w kappa, sum w s kappa
-  Lanes compliance[3]{};                                 // sum w s^p / k, p = 0, 1, 2
-  Lanes change[4]{};                                     // sum w c s^p, p = 0 .. 3
+  Lanes rotation, moment_of_rotation, dissipated;  // sum w kappa, sum w s kappa
+  Lanes compliance[3];                             // sum w s^p / k, p = 0, 1, 2
+  Lanes change[4];                                 // sum w c s^p, p = 0 .. 3
 };
+
+/// sum += term, or sum = term for the first group.
+template <bool kFirst>
+[[gnu::always_inline]] inline void accumulate(Lanes& sum, Lanes term) {
+  if constexpr (kFirst) {
+    sum = term;
+  } else {
+    sum += term;
+  }
+}
 
 /// Four sections' steps: the positions, weights and states at `at` (the cable's from
 /// section i on, or a padded copy of its last group), the law's numbers at i.
@@ -176,6 +188,7 @@ struct GroupArrays {
   double *curvature, *eta, *tangent;
 };
 
+template <bool kFirst>
 [[gnu::always_inline]] inline void step_group(const SectionArrays& a, std::size_t i, const GroupArrays& at,
                                               double d_clamp_moment, double d_tip_force, LaneSums& sums) {
   const Lanes s = load_lanes(at.s), w = load_lanes(at.w), eta_from = load_lanes(at.eta_from);
@@ -202,25 +215,47 @@ struct GroupArrays {
   // (EI_max - EI_min) chi0 int eta^2 |d chi| along the stretch (section::bouc_wen_update),
   // with e^-2u - 1 = (e^-u - 1)(e^-u + 1). The integral of a square is not negative;
   // the terms cancel for a short stretch, to round-off of u, which the bound removes.
-  sums.dissipated += w * hysteretic * chi0 * chi0 *
-                     max_lanes(u + decay_minus_one * (2.0 * slack - 0.5 * slack * slack * (2.0 + decay_minus_one)),
-                               Lanes{});
+  accumulate<kFirst>(
+      sums.dissipated,
+      w * hysteretic * chi0 * chi0 *
+          max_lanes(u + decay_minus_one * (2.0 * slack - 0.5 * slack * slack * (2.0 + decay_minus_one)), Lanes{}));
   const Lanes compliance = 1.0 / tangent;
   const Lanes g = w * compliance;
   const Lanes w_curvature = w * curvature;
-  sums.rotation += w_curvature;
-  sums.moment_of_rotation += w_curvature * s;
-  sums.compliance[0] += g;
-  sums.compliance[1] += g * s;
-  sums.compliance[2] += g * s * s;
+  accumulate<kFirst>(sums.rotation, w_curvature);
+  accumulate<kFirst>(sums.moment_of_rotation, w_curvature * s);
+  accumulate<kFirst>(sums.compliance[0], g);
+  accumulate<kFirst>(sums.compliance[1], g * s);
+  accumulate<kFirst>(sums.compliance[2], g * s * s);
   // w d^2 kappa / dM^2 = w sign (k - EI_min) / (chi0 k^3): dk/dchi = -sign (k - EI_min) / chi0.
   const Lanes c0 = moves ? sign * (tangent - ei_min) * load_lanes(a.inverse_chi0 + i) * g * compliance * compliance
                          : Lanes{};
   const Lanes c1 = c0 * s, c2 = c1 * s;
-  sums.change[0] += c0;
-  sums.change[1] += c1;
-  sums.change[2] += c2;
-  sums.change[3] += c2 * s;
+  accumulate<kFirst>(sums.change[0], c0);
+  accumulate<kFirst>(sums.change[1], c1);
+  accumulate<kFirst>(sums.change[2], c2);
+  accumulate<kFirst>(sums.change[3], c2 * s);
+}
+
+/// The last group of a cable whose count is not a multiple of four, padded with empty
+/// steps of weight 0.
+template <bool kFirst>
+[[gnu::always_inline]] inline void step_last_group(const SectionArrays& a, std::size_t i, double d_clamp_moment,
+                                                   double d_tip_force, LaneSums& sums) {
+  const std::size_t count = a.n - i;
+  double s[4] = {}, w[4] = {}, curvature_from[4] = {}, eta_from[4] = {}, tangent_from[4] = {1.0, 1.0, 1.0, 1.0};
+  double curvature[4], eta[4], tangent[4];
+  auto copy_in = [&](const double* from, double* to) { std::copy(from + i, from + a.n, to); };
+  copy_in(a.s, s);
+  copy_in(a.w, w);
+  copy_in(a.curvature_from, curvature_from);
+  copy_in(a.eta_from, eta_from);
+  copy_in(a.tangent_from, tangent_from);
+  step_group<kFirst>(a, i, {s, w, curvature_from, eta_from, tangent_from, curvature, eta, tangent}, d_clamp_moment,
+                     d_tip_force, sums);
+  std::copy(curvature, curvature + count, a.curvature + i);
+  std::copy(eta, eta + count, a.eta + i);
+  std::copy(tangent, tangent + count, a.tangent + i);
 }
 
 /// Every section's monotone step from its state under the moment excess
@@ -228,29 +263,18 @@ struct GroupArrays {
 /// kinematics and flexibility take.
 [[gnu::always_inline]] inline CableSums step_sections(const SectionArrays& a, double d_clamp_moment,
                                                       double d_tip_force, double length) {
+  auto whole_group = [&](std::size_t i) {
+    return GroupArrays{a.s + i,         a.w + i,   a.curvature_from + i, a.eta_from + i, a.tangent_from + i,
+                       a.curvature + i, a.eta + i, a.tangent + i};
+  };
   LaneSums sums;
-  std::size_t i = 0;
-  for (; i + 4 <= a.n; i += 4) {
-    const GroupArrays at{a.s + i,         a.w + i,         a.curvature_from + i, a.eta_from + i, a.tangent_from + i,
-                         a.curvature + i, a.eta + i,       a.tangent + i};
-    step_group(a, i, at, d_clamp_moment, d_tip_force, sums);
-  }
-  if (i < a.n) {
-    // The last group, padded with empty steps of weight 0.
-    const std::size_t count = a.n - i;
-    double s[4] = {}, w[4] = {}, curvature_from[4] = {}, eta_from[4] = {}, tangent_from[4] = {1.0, 1.0, 1.0, 1.0};
-    double curvature[4], eta[4], tangent[4];
-    auto copy_in = [&](const double* from, double* to) { std::copy(from + i, from + a.n, to); };
-    copy_in(a.s, s);
-    copy_in(a.w, w);
-    copy_in(a.curvature_from, curvature_from);
-    copy_in(a.eta_from, eta_from);
-    copy_in(a.tangent_from, tangent_from);
-    step_group(a, i, {s, w, curvature_from, eta_from, tangent_from, curvature, eta, tangent}, d_clamp_moment,
-               d_tip_force, sums);
-    std::copy(curvature, curvature + count, a.curvature + i);
-    std::copy(eta, eta + count, a.eta + i);
-    std::copy(tangent, tangent + count, a.tangent + i);
+  if (a.n < 4) {
+    step_last_group<true>(a, 0, d_clamp_moment, d_tip_force, sums);
+  } else {
+    step_group<true>(a, 0, whole_group(0), d_clamp_moment, d_tip_force, sums);
+    std::size_t i = 4;
+    for (; i + 4 <= a.n; i += 4) step_group<false>(a, i, whole_group(i), d_clamp_moment, d_tip_force, sums);
+    if (i < a.n) step_last_group<false>(a, i, d_clamp_moment, d_tip_force, sums);
   }
   // The arm l - s multiplied out: sum w (l - s) f = l sum w f - sum w s f.
   auto total = [](const Lanes& v) { return (v[0] + v[1]) + (v[2] + v[3]); };
