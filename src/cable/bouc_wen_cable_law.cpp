@@ -130,8 +130,9 @@ namespace {
     // dependent operations than Horner's).
     const Lanes r2 = r * r;
     const Lanes series = r * ((1.0 + c2 * r) + r2 * ((c3 + c4 * r) + r2 * c5));
-    // Halley's step (a division) only where an open lane takes it.
-    const Lanes step = any_lane(open & ~by_series) ? (by_series ? series : r / (1.0 - 0.5 * beta * r)) : series;
+    // Halley's step (a division) and the exponential only where an open lane takes it.
+    const bool any_halley = any_lane(open & ~by_series);
+    const Lanes step = any_halley ? (by_series ? series : r / (1.0 - 0.5 * beta * r)) : series;
     const Lanes next = u + step;
     // e^-d - 1 to d^8, by Estrin's scheme.
     const Lanes d = -step, d2 = d * d, d4 = d2 * d2;
@@ -139,9 +140,8 @@ namespace {
         d * (((1.0 + 0.5 * d) + d2 * (1.0 / 6.0 + 1.0 / 24.0 * d)) +
              d4 * ((1.0 / 120.0 + 1.0 / 720.0 * d) + d2 * (1.0 / 5040.0 + 1.0 / 40320.0 * d)));
     const Lanes followed = decay_minus_one + decay * exp_step_minus_one;
-    // The exponential only where an open lane needs it.
     const Lanes next_decay_minus_one =
-        any_lane(open & ~by_series) ? (by_series ? followed : exp_minus_one_of_nonpositive(-next)) : followed;
+        any_halley ? (by_series ? followed : exp_minus_one_of_nonpositive(-next)) : followed;
     u = open ? next : u;
     decay_minus_one = open ? next_decay_minus_one : decay_minus_one;
     open &= ~close;
