@@ -99,7 +99,7 @@ class Branch {
   }
 
   /// The solver's memory at the current point of the branch.
-  HarmonicBalanceMemory memory() const { return {cable_state_, force_jacobian_, {}, 0}; }
+  HarmonicBalanceMemory memory() const { return {cable_state_, force_jacobian_, {}, 0, {}}; }
   const std::optional<cable::CableState>& cable_state() const { return cable_state_; }
   void set_cable_state(std::optional<cable::CableState> state) { cable_state_ = std::move(state); }
 

@@ -101,6 +101,9 @@ struct HarmonicBalanceMemory {
   Eigen::MatrixXd force_jacobian;
   PeriodicStateTerms periodic_state;  ///< empty: the next start is the last end state
   int jacobian_sign = 0;              ///< sign of det(J) at the last solution (0: unknown)
+  /// q at the last solution, where cable_state is periodic (empty: none): with the
+  /// periodic-state terms, the next solve moves its start by -D^-1 G_q (q - this).
+  Eigen::VectorXd unknowns;
 
   void clear() { *this = HarmonicBalanceMemory{}; }
 };
@@ -190,10 +193,12 @@ class HarmonicBalance {
   /// evaluation; once the equations hold, further periods at the same coefficients
   /// let the memory settle. Where the solve uses Newton on the periodic state
   /// (uses_periodic_newton), each evaluation is one pass from the Newton estimate of
-  /// the periodic start state instead (PeriodicStateTerms), and chained periods take
-  /// over where that stalls. On convergence `memory` holds this solution's state and
-  /// Jacobian; otherwise it is cleared. summary: newton_iterations, periods (in all),
-  /// evaluations, jacobians, residual, periodicity_defect, energy_error.
+  /// the periodic start state instead (PeriodicStateTerms), the first from
+  /// memory.cable_state moved to where the stored terms predict it periodic at
+  /// `initial`, and chained periods take over where that stalls. On convergence
+  /// `memory` holds this solution's state, q and Jacobian; otherwise it is cleared.
+  /// summary: newton_iterations, periods (in all), evaluations, jacobians, residual,
+  /// periodicity_defect, energy_error.
   ArmSolution solve(const Excitation& excitation, const Eigen::VectorXd& initial, HarmonicBalanceMemory& memory,
                     HarmonicBalanceWorkspace& workspace) const;
   /// A cold solve (virgin cable, no stored Jacobian).

@@ -414,6 +414,45 @@ TEST(HarmonicBalance, NewtonOnThePeriodicStateSavesPassesNotAccuracy) {
   EXPECT_FALSE(HarmonicBalance(Arm(sauter_arm()), HarmonicBalanceOptions{}).uses_periodic_newton());
 }
 
+// Along a sweep with the secant predictor, each solve under Newton on the periodic
+// state starts from the last periodic state moved by the stored terms to where they
+// predict it periodic at the predicted q (HarmonicBalanceMemory::unknowns). On
+// slenderpy's arm over 5-10 Hz at 0.2 m/s, its stiffest stretch, that takes the same
+// answers in fewer passes and exact Jacobians than the unmoved start (370 against
+// 445 half periods, 52 against 76 Jacobians; a move of the wrong sign takes 487 and 91).
+TEST(HarmonicBalance, APredictedPeriodicStartSavesPassesNotAccuracy) {
+  const Damper damper =
+      io::read_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/slenderpy_damper.toml");
+  const HarmonicBalance model(damper.arms().front(), HarmonicBalanceOptions{});
+  struct Run {
+    std::vector<std::complex<double>> impedance;
+    int periods = 0, jacobians = 0;
+  };
+  auto run = [&](bool predicted) {
+    Continuation path;
+    HarmonicBalanceWorkspace workspace = model.make_workspace();
+    Run out;
+    for (int k = 0; k <= 60; ++k) {
+      const Excitation e = Excitation::from_velocity(5.0 * std::pow(2.0, k / 60.0), 0.2);
+      if (!predicted) path.memory.unknowns.resize(0);  // the start stays the last periodic state
+      const ArmSolution s =
+          model.solve(e, path.empty() ? model.linear_guess(e) : path.predictor(e), path.memory, workspace);
+      EXPECT_TRUE(s.summary.converged()) << predicted << " at " << e.frequency_hz << " Hz: " << brief_report(s.summary);
+      path.advance(s.unknowns, e);
+      out.impedance.push_back(arm_force_first_harmonic(s.period) / 0.2);
+      out.periods += s.summary.periods;
+      out.jacobians += s.summary.jacobians;
+    }
+    return out;
+  };
+  const Run predicted = run(true), unmoved = run(false);
+  for (std::size_t k = 0; k < predicted.impedance.size(); ++k) {
+    EXPECT_LT(std::abs(predicted.impedance[k] - unmoved.impedance[k]), 3e-6 * std::abs(unmoved.impedance[k])) << k;
+  }
+  EXPECT_LT(predicted.periods, 0.9 * unmoved.periods) << predicted.periods << " against " << unmoved.periods;
+  EXPECT_LT(predicted.jacobians, 0.8 * unmoved.jacobians) << predicted.jacobians << " against " << unmoved.jacobians;
+}
+
 TEST(HarmonicBalance, NonConvergenceIsReportedNotThrown) {
   const Arm arm(sauter_arm());
   HarmonicBalanceOptions options;
