@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "../numerics/updated_factors.hpp"
 #include "stockbridge/numerics/linear_solve.hpp"
 
 namespace stockbridge::damper {
@@ -44,12 +45,9 @@ namespace {
 using Strided = Eigen::Map<Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 2>>;
 using ConstStrided = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 2>>;
 
-/// Sign of det(J) from its LU factors.
+/// Sign of det(J).
 int determinant_sign(const Eigen::MatrixXd& jacobian) {
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian);
-  double sign = lu.permutationP().determinant();
-  for (Eigen::Index i = 0; i < lu.matrixLU().rows(); ++i) sign *= lu.matrixLU()(i, i) < 0.0 ? -1.0 : 1.0;
-  return sign < 0.0 ? -1 : 1;
+  return numerics::determinant_sign(Eigen::PartialPivLU<Eigen::MatrixXd>(jacobian));
 }
 }  // namespace
 
@@ -327,6 +325,7 @@ class NewtonSolve {
   Eigen::VectorXd effective_;                 // the current evaluation's effective_residual
   HarmonicBalanceEvaluation current_;
   Eigen::MatrixXd jacobian_;
+  numerics::UpdatedFactors factors_;  // of jacobian_ where ready (its Broyden updates as rank-one changes)
   bool exact_ = false;  // the Newton matrix is exact at the current point
   double norm_ = 0.0;   // of the current residual, relative to the force scale
   int settling_periods_ = 0;
@@ -368,13 +367,14 @@ bool NewtonSolve::adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::st
   effective_ = effective_residual(current_);
   if (chain) chain_periods();
   model_.assemble_jacobian(excitation_, memory_.force_jacobian, jacobian_);
+  factors_.clear();
   exact_ = exact;
   if (!current_.residual.allFinite()) return fail(Termination::non_finite, fmt::format("{} in the residual", stage));
   return true;
 }
 
 NewtonSolve::Finish NewtonSolve::finish(const Eigen::VectorXd& q) {
-  int sign = determinant_sign(jacobian_);
+  int sign = factors_.ready() ? factors_.determinant_sign() : determinant_sign(jacobian_);
   if (!exact_ && sign != memory_.jacobian_sign) {
     // A fold is suspected: confirm the sign with the exact Jacobian.
     if (!adopt_evaluation(q, true, "confirming the Jacobian's sign")) return Finish::failed;
@@ -411,8 +411,9 @@ bool NewtonSolve::settle(const Eigen::VectorXd& q) {
 NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
   Eigen::VectorXd direction;
   if (exact_) {
-    const double reciprocal_condition =
-        numerics::solve_checked(jacobian_, Eigen::VectorXd(-effective_), direction);
+    factors_.factor(jacobian_);
+    const double reciprocal_condition = factors_.reciprocal_condition();
+    direction = factors_.solve(-effective_);
     if (numerics::is_singular(reciprocal_condition, direction)) {
       summary_.reciprocal_condition = reciprocal_condition;
       fail(Termination::singular_jacobian);
@@ -422,7 +423,8 @@ NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
     // A stored Jacobian's step is tried once and an exact Jacobian decides if it
     // fails, so its conditioning is not estimated (that cost half a factorisation);
     // a singular one gives a non-finite step.
-    direction = Eigen::PartialPivLU<Eigen::MatrixXd>(jacobian_).solve(Eigen::VectorXd(-effective_));
+    if (!factors_.ready()) factors_.factor(jacobian_);
+    direction = factors_.solve(-effective_);
     if (!direction.allFinite()) return StepOutcome::retry_with_exact_jacobian;
   }
   const double norm2 = effective_.norm();
@@ -562,8 +564,9 @@ void NewtonSolve::broyden_update(const Eigen::VectorXd& q) {
   const double dq2 = dq.squaredNorm();
   if (!(dq2 > 0.0)) return;
   // The inertia terms are linear: the whole Newton matrix's secant error is the force Jacobian's.
-  const Eigen::VectorXd error = (effective_ - step_start_residual_) - jacobian_ * dq;
-  memory_.force_jacobian.noalias() += (error / dq2) * dq.transpose();
+  const Eigen::VectorXd change = ((effective_ - step_start_residual_) - jacobian_ * dq) / dq2;
+  memory_.force_jacobian.noalias() += change * dq.transpose();
+  if (factors_.ready()) factors_.update(change, dq);
 }
 
 }  // namespace
