@@ -10,8 +10,8 @@
 #include <Eigen/LU>
 #include <fmt/format.h>
 
-#include "stockbridge/core/error.hpp"
 #include "../numerics/updated_factors.hpp"
+#include "stockbridge/core/error.hpp"
 #include "stockbridge/numerics/linear_solve.hpp"
 
 namespace stockbridge::damper {
