@@ -45,10 +45,6 @@ namespace {
 using Strided = Eigen::Map<Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 2>>;
 using ConstStrided = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 2>>;
 
-/// Sign of det(J).
-int determinant_sign(const Eigen::MatrixXd& jacobian) {
-  return numerics::determinant_sign(Eigen::PartialPivLU<Eigen::MatrixXd>(jacobian));
-}
 }  // namespace
 
 HarmonicBalance::HarmonicBalance(Arm arm, HarmonicBalanceOptions options)
@@ -304,6 +300,11 @@ class NewtonSolve {
   /// nearer its periodic state: on slenderpy's damper the first pass's defect falls
   /// from a median of 2.6e-2 to 3.3e-3, and a point takes 4.9 passes instead of 5.4.
   void predict_periodic_start(const Eigen::VectorXd& q);
+  /// Sign of det of the Newton matrix, from its factors (factored here where none are ready).
+  int newton_matrix_sign() {
+    if (!factors_.ready()) factors_.factor(jacobian_);
+    return factors_.determinant_sign();
+  }
 
   const HarmonicBalance& model_;
   const HarmonicBalanceOptions& options_;
@@ -374,12 +375,12 @@ bool NewtonSolve::adopt_evaluation(const Eigen::VectorXd& q, bool exact, std::st
 }
 
 NewtonSolve::Finish NewtonSolve::finish(const Eigen::VectorXd& q) {
-  int sign = factors_.ready() ? factors_.determinant_sign() : determinant_sign(jacobian_);
+  int sign = newton_matrix_sign();
   if (!exact_ && sign != memory_.jacobian_sign) {
     // A fold is suspected: confirm the sign with the exact Jacobian.
     if (!adopt_evaluation(q, true, "confirming the Jacobian's sign")) return Finish::failed;
     if (!criteria_met()) return Finish::not_yet;
-    sign = determinant_sign(jacobian_);
+    sign = newton_matrix_sign();
   }
   memory_.jacobian_sign = sign;
   summary_.residual = norm_;
@@ -409,11 +410,11 @@ bool NewtonSolve::settle(const Eigen::VectorXd& q) {
 }
 
 NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
-  Eigen::VectorXd direction;
+  if (!factors_.ready()) factors_.factor(jacobian_);
+  const Eigen::VectorXd direction = factors_.solve(-effective_);
   if (exact_) {
-    factors_.factor(jacobian_);
+    // Exact: adopted since the last factorisation, so no Broyden change on the factors.
     const double reciprocal_condition = factors_.reciprocal_condition();
-    direction = factors_.solve(-effective_);
     if (numerics::is_singular(reciprocal_condition, direction)) {
       summary_.reciprocal_condition = reciprocal_condition;
       fail(Termination::singular_jacobian);
@@ -423,8 +424,6 @@ NewtonSolve::StepOutcome NewtonSolve::step(Eigen::VectorXd& q) {
     // A stored Jacobian's step is tried once and an exact Jacobian decides if it
     // fails, so its conditioning is not estimated (that cost half a factorisation);
     // a singular one gives a non-finite step.
-    if (!factors_.ready()) factors_.factor(jacobian_);
-    direction = factors_.solve(-effective_);
     if (!direction.allFinite()) return StepOutcome::retry_with_exact_jacobian;
   }
   const double norm2 = effective_.norm();
