@@ -535,15 +535,18 @@ bool NewtonSolve::store_periodic_state_terms(const HarmonicBalanceEvaluation& e)
   PeriodicStateTerms& terms = memory_.periodic_state;
   terms.start_by_gap = lu.inverse();
   if (!terms.start_by_gap.allFinite()) return false;
-  terms.start_by_coefficients = terms.start_by_gap * e.state_jacobian.leftCols(n);
-  terms.residual_by_gap = e.force_jacobian.rightCols(m) * terms.start_by_gap;
-  memory_.force_jacobian = e.force_jacobian.leftCols(n) - e.force_jacobian.rightCols(m) * terms.start_by_coefficients;
+  terms.start_by_coefficients.noalias() = terms.start_by_gap * e.state_jacobian.leftCols(n);
+  terms.residual_by_start = e.force_jacobian.rightCols(m);
+  memory_.force_jacobian = e.force_jacobian.leftCols(n);
+  memory_.force_jacobian.noalias() -= terms.residual_by_start * terms.start_by_coefficients;
   return true;
 }
 
 Eigen::VectorXd NewtonSolve::effective_residual(const HarmonicBalanceEvaluation& e) const {
   if (!periodic_newton_ || memory_.periodic_state.empty()) return e.residual;
-  return e.residual - memory_.periodic_state.residual_by_gap * e.state_gap;
+  const PeriodicStateTerms& terms = memory_.periodic_state;
+  const Eigen::VectorXd start_move = terms.start_by_gap * e.state_gap;
+  return e.residual - terms.residual_by_start * start_move;
 }
 
 cable::CableState NewtonSolve::next_start(const HarmonicBalanceEvaluation& e, const Eigen::VectorXd* dq) const {

@@ -81,8 +81,8 @@ struct HarmonicBalanceOptions {
 /// state eliminated, R - R_z D^-1 G, whose Jacobian is J - R_z D^-1 G_q (J with
 /// the start fixed). Kept from the last exact evaluation, as the force Jacobian is.
 struct PeriodicStateTerms {
-  Eigen::MatrixXd residual_by_gap;         ///< R_z D^-1 (N x m)
   Eigen::MatrixXd start_by_gap;            ///< D^-1 (m x m)
+  Eigen::MatrixXd residual_by_start;       ///< R_z (N x m)
   Eigen::MatrixXd start_by_coefficients;   ///< D^-1 G_q (m x N)
 
   bool empty() const { return start_by_gap.size() == 0; }
