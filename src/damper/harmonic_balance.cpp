@@ -28,6 +28,7 @@ void HarmonicBalanceOptions::validate() const {
     throw_invalid("jacobian_refresh_ratio", jacobian_refresh_ratio, "a value in (0, 1]");
   }
   if (!(settle_ratio >= 0.0 && std::isfinite(settle_ratio))) throw_invalid("settle_ratio", settle_ratio, "a value >= 0");
+  require_in_range("stored_jacobian_points", stored_jacobian_points, 0, 1000000);
   cantilever.validate();
 }
 
@@ -467,7 +468,10 @@ void NewtonSolve::predict_periodic_start(const Eigen::VectorXd& q) {
 bool NewtonSolve::run(Eigen::VectorXd& q) {
   predict_periodic_start(q);
   const bool stored = memory_.force_jacobian.size() > 0 && (!periodic_newton_ || !memory_.periodic_state.empty());
-  if (!adopt_evaluation(q, !stored, "at the starting point")) return false;
+  // Under Newton on the periodic state the stored Jacobian drifts from point to point.
+  const bool aged = periodic_newton_ && options_.stored_jacobian_points > 0 &&
+                    memory_.jacobian_points >= options_.stored_jacobian_points;
+  if (!adopt_evaluation(q, !stored || aged, "at the starting point")) return false;
   while (true) {
     summary_.residual = norm_;
     summary_.periodicity_defect = current_.cable.periodicity_defect;
@@ -587,6 +591,7 @@ ArmSolution HarmonicBalance::solve(const Excitation& excitation, const Eigen::Ve
   if (converged) {
     memory.cable_state = newton.cable_state();
     memory.unknowns = solution.unknowns;
+    memory.jacobian_points = solution.summary.jacobians > 0 ? 1 : memory.jacobian_points + 1;
     solution.jacobian_sign = memory.jacobian_sign;
   } else {
     memory.clear();
