@@ -2,14 +2,18 @@
 // (200 frequencies log-spaced over 1-100 Hz at 0.05 and 0.2 m/s, harmonic
 // balance at its defaults), on 1 and 2 threads, with and without continuation blocks,
 // and at one amplitude; the same with slenderpy's Bouc-Wen damper
-// (examples/slenderpy_damper.toml, 0.2 m/s over 5-100 Hz); and the cost of one point
-// per method.
+// (examples/slenderpy_damper.toml, 0.2 m/s over 5-100 Hz); one pass of harmonic
+// balance over each damper's arm, driven by the tip kinematics as the solver drives
+// it and, beside it, the same half period's loads applied directly; and the cost of
+// one point per method.
 
 #include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
 
+#include "stockbridge/cable/cantilever.hpp"
+#include "stockbridge/damper/harmonic_balance.hpp"
 #include "stockbridge/damper/steady_state.hpp"
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/io/damper_file.hpp"
@@ -79,6 +83,50 @@ void BM_SlenderpySweep(benchmark::State& state) { sweep_5_to_100_hz(state, "slen
 void BM_SauterSameSweep(benchmark::State& state) { sweep_5_to_100_hz(state, "sauter2003.toml"); }
 BENCHMARK(BM_SlenderpySweep)->ArgNames({"points"})->Arg(40)->Arg(400)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_SauterSameSweep)->ArgNames({"points"})->Arg(400)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+/// An arm's half-period pass at its periodic solution at 20 Hz, 0.2 m/s (harmonic
+/// balance at its defaults): by the tip kinematics, as the solver drives it (a
+/// cantilever state determination a sample), and (`by_loads`) the loads that pass
+/// found, applied sample by sample (one cable evaluation a sample, no state
+/// determination): what a pass driven by the loads' coefficients would cost.
+void BM_HalfPeriodPass(benchmark::State& state, const std::string& file, bool by_loads) {
+  const Damper damper = stockbridge::io::read_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/" + file);
+  const HarmonicBalance model(damper.arms()[0], HarmonicBalanceOptions{});
+  const Excitation excitation = Excitation::from_velocity(20.0, 0.2);
+  HarmonicBalanceMemory memory;
+  HarmonicBalanceWorkspace workspace = model.make_workspace();
+  const ArmSolution solution = model.solve(excitation, model.linear_guess(excitation), memory, workspace);
+  if (!solution.summary.converged() || !memory.cable_state) {
+    state.SkipWithError("the periodic solution at 20 Hz did not converge");
+    return;
+  }
+  const stockbridge::cable::CableState& start = *memory.cable_state;
+  const PeriodicStart mode = model.uses_periodic_newton() ? PeriodicStart::newton : PeriodicStart::chained;
+  const stockbridge::cable::Cable& cable = model.arm().cable();
+  const Eigen::Index samples = solution.period.loads.cols() / 2;  // the driven half
+  std::vector<stockbridge::cable::CableState> states(2, start);
+  stockbridge::cable::CableWorkspace cable_workspace;
+  for (auto _ : state) {
+    if (!by_loads) {
+      benchmark::DoNotOptimize(
+          model.evaluate(excitation, solution.unknowns, &start, 1, HarmonicBalance::kNone, workspace, mode));
+      continue;
+    }
+    states[0] = start;
+    for (Eigen::Index j = 0; j < samples; ++j) {
+      const double tip_force = solution.period.loads(0, j), tip_moment = solution.period.loads(1, j);
+      stockbridge::cable::apply_loads(cable, states[j % 2], tip_moment + tip_force * cable.length(), tip_force,
+                                      states[(j + 1) % 2], cable_workspace);
+    }
+    benchmark::DoNotOptimize(states[samples % 2].rotation);
+  }
+  state.counters["samples"] = static_cast<double>(samples);
+}
+BENCHMARK_CAPTURE(BM_HalfPeriodPass, slenderpy_by_kinematics, "slenderpy_damper.toml", false)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_HalfPeriodPass, slenderpy_by_loads, "slenderpy_damper.toml", true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_HalfPeriodPass, sauter_by_kinematics, "sauter2003.toml", false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_HalfPeriodPass, sauter_by_loads, "sauter2003.toml", true)->Unit(benchmark::kMicrosecond);
 
 void BM_OnePoint(benchmark::State& state, Method method, double frequency_hz) {
   const Damper damper = example();
