@@ -22,12 +22,13 @@ struct CycleOptions {
   std::string cable_file;
   requests::CycleRequest request;
   bool json = false;
+  bool allow_unusual = false;
   std::string output;
 };
 
 int run_cycle_command(const CycleOptions& options) {
   (void)requests::experiment_drive(options.request);  // the options checked before the file is read
-  const cable::Cable cable = read_cable_input(options.cable_file, {{"-o", options.output}});
+  const cable::Cable cable = read_cable_input(options.cable_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
   const requests::CycleResult result = requests::run_cycle(cable, options.request);
   print_warnings(result.warnings);
   io::write_file_atomically(options.output,
@@ -60,6 +61,7 @@ void add_cycle_command(CLI::App& app, int& exit_code) {
   sub->add_option("--cycles", options->request.cycles, "Number of cycles")->capture_default_str();
   sub->add_option("--points", options->request.points, "Samples per cycle")->capture_default_str();
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout");
+  add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   sub->callback([options, &exit_code] { exit_code = run_cycle_command(*options); });
 }

@@ -39,6 +39,7 @@ struct DatasheetOptions {
   int span_points = requests::SpanRequest{}.points;
   int threads = 1;
   bool quiet = false;
+  bool allow_unusual = false;
   std::string output;
 };
 
@@ -64,10 +65,10 @@ int run_datasheet_command(const DatasheetOptions& options) {
   sweep.threads = options.threads;
   const damper::SweepSpec spec = requests::sweep_spec(sweep);
   require_in_range("span-points", options.span_points, 2, 100000);
-  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}});
+  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
   const std::string name = std::filesystem::path(options.damper_file).stem().string();
   std::vector<io::SpanFile> span_files;
-  for (const std::string& path : options.spans) span_files.push_back(read_span_input(path, {{"-o", options.output}}));
+  for (const std::string& path : options.spans) span_files.push_back(read_span_input(path, {{"-o", options.output}}, slip_policy(options.allow_unusual)));
 
   ProgressReport progress("datasheet: impedance", options.quiet);
   const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));
@@ -121,6 +122,7 @@ void add_datasheet_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   sub->add_option("--threads", options->threads, "Parallel runs")->capture_default_str();
   sub->add_flag("--quiet", options->quiet, "No progress on stderr");
+  add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output HTML file")->required();
   sub->callback([options, &exit_code] { exit_code = run_datasheet_command(*options); });
 }

@@ -41,6 +41,7 @@ struct DesignOptions {
   int threads = requests::DesignRequest{}.threads;
   bool json = false;
   bool quiet = false;
+  bool allow_unusual = false;
   bool resume = false;
   std::string output;
   std::string best;
@@ -239,7 +240,8 @@ int run_design_command(const DesignOptions& options) {
   requests::validate(request);
   check_report_path(options.report);
   const io::DesignFile file = read_design_input(
-      options.design_file, {{"-o", options.output}, {"--best", options.best}, {"--report", options.report.value_or("")}});
+      options.design_file, {{"-o", options.output}, {"--best", options.best}, {"--report", options.report.value_or("")}},
+      slip_policy(options.allow_unusual));
   const design::SearchOptions search = requests::search_options(file.search, request);
 
   const auto start = std::chrono::steady_clock::now();
@@ -308,6 +310,7 @@ void add_design_command(CLI::App& app, int& exit_code) {
                 "evaluated again");
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
+  add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file: every candidate evaluated")->required();
   sub->add_option("--best", options->best, "Output damper file: the best design (rounded to --round-digits where that "
                                            "stays feasible)")->required();

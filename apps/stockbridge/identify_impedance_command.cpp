@@ -27,6 +27,7 @@ struct ImpedanceFitOptions {
   std::string fitted;
   std::string fitted_damper;
   bool json = false;
+  bool allow_unusual = false;
 };
 
 /// Where the cable file of each cable type goes: -o for the first; for the others
@@ -55,9 +56,9 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
   const std::vector<CommandFile> outputs{
       {"-o", options.output}, {"--fitted", options.fitted}, {"--fitted-damper", options.fitted_damper}};
   require_outputs_apart(outputs, {{"the --input measurement", options.input}, {"the --damper file", options.damper_file}});
-  const io::MeasuredImpedanceFile measured = io::load_measured_impedance(options.input);
+  const io::MeasuredImpedanceFile measured = io::load_measured_impedance(options.input, slip_policy(options.allow_unusual));
   const identification::ImpedanceMeasurement& measurement = measured.measurement;
-  const damper::Damper damper = read_damper_input(options.damper_file, outputs);
+  const damper::Damper damper = read_damper_input(options.damper_file, outputs, slip_policy(options.allow_unusual));
   print_warnings(measured.warnings);
   identification::ImpedanceIdentification fit;
   try {
@@ -125,6 +126,7 @@ void add_identify_impedance_command(CLI::App& identify, int& exit_code) {
   sub->add_option("--fitted", options->fitted, "Write measured and model Z at the measured points (CSV, for plotting)");
   sub->add_option("--fitted-damper", options->fitted_damper,
                   "Write the fitted damper as a damper file (TOML: the fitted cables and --free numbers written out)");
+  add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_flag("--json", options->json,
                 "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"misfit\": ..., \"parameters\": ...} on "
                 "stdout");

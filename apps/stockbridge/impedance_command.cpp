@@ -39,6 +39,7 @@ struct ImpedanceOptions {
   int threads = requests::SweepRequest{}.threads;
   bool json = false;
   bool quiet = false;
+  bool allow_unusual = false;
   std::string output;
   std::optional<std::string> report;
 };
@@ -62,8 +63,9 @@ int run_impedance_command(const ImpedanceOptions& options) {
   const damper::SweepSpec spec = requests::sweep_spec(request);
   check_report_path(options.report);
   const damper::Damper damper =
-      read_damper_input(options.damper_file, {{"-o", options.output}, {"--report", options.report.value_or("")}});
-  warn_unusual_options(requests::unusual_values(request));
+      read_damper_input(options.damper_file, {{"-o", options.output}, {"--report", options.report.value_or("")}},
+                        slip_policy(options.allow_unusual));
+  warn_unusual_options(requests::unusual_values(request), slip_policy(options.allow_unusual));
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress("impedance", options.quiet);
   const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));
@@ -115,6 +117,7 @@ void add_impedance_command(CLI::App& app, int& exit_code) {
   sub->add_option("--threads", options->threads, "Parallel runs (amplitudes x distinct arms)")->capture_default_str();
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
+  add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   add_report_option(*sub, options->report, "the damper's numbers, |Z|, phase and power per amplitude, its linear modes");
   sub->callback([options, &exit_code] { exit_code = run_impedance_command(*options); });

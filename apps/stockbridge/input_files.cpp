@@ -23,42 +23,45 @@ void require_apart_from_references(const std::vector<CommandFile>& outputs, cons
 
 }  // namespace
 
-damper::Damper read_damper_input(const std::string& path, const std::vector<CommandFile>& outputs) {
+void add_allow_unusual_flag(CLI::App& command, bool& allow_unusual) {
+  command.add_flag("--allow-unusual", allow_unusual,
+                   "Take a value outside its typical range that a unit slip explains (a tension of 30.3: kN?) as given, "
+                   "with a warning, instead of refusing it");
+}
+
+damper::Damper read_damper_input(const std::string& path, const std::vector<CommandFile>& outputs, SlipPolicy policy) {
   require_outputs_apart(outputs, {{"the damper file", path}});
-  io::DamperFile file = io::load_damper_file(path);
+  io::DamperFile file = io::load_damper_file(path, policy);
   require_apart_from_references(outputs, "a cable file the damper file references", file.cable_files);
   print_warnings(file.warnings);
   return std::move(file.damper);
 }
 
-io::SpanFile read_span_input(const std::string& path, const std::vector<CommandFile>& outputs) {
+io::SpanFile read_span_input(const std::string& path, const std::vector<CommandFile>& outputs, SlipPolicy policy) {
   require_outputs_apart(outputs, {{"the span file", path}});
-  io::SpanFile file = io::load_span_file(path);
+  io::SpanFile file = io::load_span_file(path, policy);
   require_apart_from_references(outputs, "a file the span file references", file.inputs);
   print_warnings(file.warnings);
   return file;
 }
 
-io::DesignFile read_design_input(const std::string& path, const std::vector<CommandFile>& outputs) {
+io::DesignFile read_design_input(const std::string& path, const std::vector<CommandFile>& outputs, SlipPolicy policy) {
   require_outputs_apart(outputs, {{"the design file", path}});
-  io::DesignFile file = io::load_design_file(path);
+  io::DesignFile file = io::load_design_file(path, policy);
   require_apart_from_references(outputs, "a file the design file reads", file.inputs);
   print_warnings(file.warnings);
   return file;
 }
 
-cable::Cable read_cable_input(const std::string& path, const std::vector<CommandFile>& outputs) {
+cable::Cable read_cable_input(const std::string& path, const std::vector<CommandFile>& outputs, SlipPolicy policy) {
   require_outputs_apart(outputs, {{"the cable file", path}});
-  io::CableFile file = io::load_cable_file(path);
+  io::CableFile file = io::load_cable_file(path, policy);
   print_warnings(file.warnings);
   return std::move(file.cable);
 }
 
 void print_warnings(const std::vector<std::string>& lines) {
-  for (const std::string& line : lines) {
-    fmt::print(stderr, "warning: {}\n", line);
-    remember_warning(line);
-  }
+  for (const std::string& line : lines) remember_warning(line);
 }
 
 void print_warnings(const std::vector<Warning>& warnings) {
@@ -76,11 +79,26 @@ void print_warnings(const std::vector<Warning>& warnings) {
   }
 }
 
-void warn_unusual_options(const std::vector<UnusualValue>& values) {
+namespace {
+
+/// The values judged (typical_ranges.hpp), each named as its option ("--velocity").
+std::vector<std::string> judged_options(const std::vector<UnusualValue>& values, SlipPolicy policy) {
+  std::vector<std::string> lines;
   for (UnusualValue u : values) {
     u.field = "--" + u.field;
-    print_warnings({u.message()});
+    judge_unusual(u, "", policy, lines);
   }
+  return lines;
+}
+
+}  // namespace
+
+void warn_unusual_options(const std::vector<UnusualValue>& values, SlipPolicy policy) {
+  print_warnings(judged_options(values, policy));
+}
+
+void refuse_slipped_options(const std::vector<UnusualValue>& values, SlipPolicy policy) {
+  (void)judged_options(values, policy);
 }
 
 }  // namespace stockbridge::cli

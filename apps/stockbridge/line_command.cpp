@@ -47,6 +47,7 @@ struct LineOptions {
   std::string details;
   bool json = false;
   bool quiet = false;
+  bool allow_unusual = false;
   std::optional<std::string> report;
 };
 
@@ -112,27 +113,29 @@ std::string line_duration(double seconds) {
 void print_line_report(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows) {
   const line::ScheduleCounts counts = line::schedule_counts(rows);
   const line::ScheduleRow* governing = counts.governing;
-  fmt::print("line {}: {} spans, {} safe, {} unsafe, {} unknown\n", file.name, rows.size(), counts.safe, counts.unsafe,
-             counts.unknown);
+  fmt::print("line {}: {} spans, {} safe, {} unsafe, {} unknown, {} uncertain (criterion {})\n", file.name, rows.size(),
+             counts.safe, counts.unsafe, counts.unknown, counts.uncertain,
+             span::fatigue_criterion_name(file.line.spans().front().span.fatigue().criterion));
   for (const auto& [n, spans] : counts.per_end) fmt::print("  {} damper(s) per end: {} spans\n", n, spans);
   for (const line::BillLine& b : line::bill_of_materials(file.line, rows)) {
-    fmt::print("bill: {} x {}{}\n", b.dampers, b.damper_type,
-               b.mass ? fmt::format(" ({:.4g} kg)", *b.mass) : std::string());
+    fmt::print("bill: {} x {}{}{}\n", b.dampers, b.damper_type,
+               b.mass ? fmt::format(" ({:.4g} kg)", *b.mass) : std::string(),
+               b.price ? fmt::format(", price {:.6g}", *b.price) : std::string());
   }
   if (governing) {
-    fmt::print("governing span: {} ({}), {:.3g} MPa = {:.3g} of the endurance limit\n", governing->id,
-               line_arrangement(*governing), governing->max_stress / 1e6, governing->stress_ratio());
+    fmt::print("governing span: {} ({}), {:.3g} MPa, {:.3g} % of the endurance limit\n", governing->id,
+               line_arrangement(*governing), governing->max_stress / 1e6, 100.0 * governing->stress_ratio());
   }
   int shown = 0;
   for (const line::ScheduleRow& r : rows) {
-    if (r.verdict == span::Verdict::safe && r.warnings.empty()) continue;
+    if (r.verdict == span::Verdict::safe) continue;
     if (++shown > 10) {
-      fmt::print("  ... (the schedule's warnings column lists every span)\n");
+      fmt::print("  ... (the schedule's verdict column lists every span)\n");
       break;
     }
-    fmt::print("  {}: {}, {}{}\n", r.id, span::verdict_name(r.verdict), line_arrangement(r),
-               r.warnings.empty() ? "" : ": " + r.warnings.front());
+    fmt::print("  {}: {}, {}\n", r.id, span::verdict_name(r.verdict), line_arrangement(r));
   }
+  for (const std::string& w : line::grouped_warnings(rows)) fmt::print("  warning: {}\n", w);
 }
 
 /// --details: the span file and the balance CSV of a span's schedule.
@@ -146,7 +149,7 @@ void write_line_details(const std::filesystem::path& directory, const io::LineFi
 /// The line file, its outputs checked apart from every file it reads, its warnings printed.
 io::LineFile read_line_input(const LineOptions& options, const std::vector<CommandFile>& outputs) {
   require_outputs_apart(outputs, {{"the line file", options.line_file}});
-  io::LineFile file = io::load_line_file(options.line_file);
+  io::LineFile file = io::load_line_file(options.line_file, slip_policy(options.allow_unusual));
   std::vector<CommandFile> inputs;
   for (const auto& p : file.inputs) inputs.push_back({"a file the line file reads", p.string()});
   require_outputs_apart(outputs, inputs);
@@ -303,6 +306,7 @@ void add_line_command(CLI::App& app, int& exit_code) {
                   "Folder for each span's span file and balance CSV (<id>.toml, <id>.csv)");
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
   sub->add_flag("--quiet", options->quiet, "No progress on stderr");
+  add_allow_unusual_flag(*sub, options->allow_unusual);
   add_report_option(*sub, options->report, "the rules, the verdicts, the margin per span, the schedule and the bill");
   sub->callback([options, &exit_code] { exit_code = run_line_command(*options); });
 }

@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   try {
     cli::reject_misspellings(app, argc, argv);
     app.parse(argc, argv);
+    cli::flush_warnings();
   } catch (const CLI::CallForHelp&) {
     std::fputs(app.help().c_str(), stdout);
     return cli::kSuccess;
@@ -61,6 +62,9 @@ int main(int argc, char** argv) {
     return cli::kSuccess;
   } catch (const CLI::ParseError& e) {
     std::fputs(fmt::format("stockbridge: {} (see stockbridge --help)\n", one_line(e.what())).c_str(), stderr);
+    return cli::kBadInput;
+  } catch (const UnusualValueError& e) {
+    std::fputs(fmt::format("stockbridge: {} (--allow-unusual takes it as given)\n", one_line(e.what())).c_str(), stderr);
     return cli::kBadInput;
   } catch (const Error& e) {
     std::fputs(fmt::format("stockbridge: {}\n", one_line(e.what())).c_str(), stderr);

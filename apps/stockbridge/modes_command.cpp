@@ -24,6 +24,7 @@ namespace {
 struct ModesOptions {
   std::string damper_file;
   bool json = false;
+  bool allow_unusual = false;
   std::string output;
 };
 
@@ -63,7 +64,7 @@ void print_modes_table(const requests::ModesResult& result) {
 }
 
 int run_modes_command(const ModesOptions& options) {
-  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}});
+  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
   const requests::ModesResult result = requests::run_modes(damper);
   if (!options.output.empty()) {
     io::write_file_atomically(options.output, requests::modes_table().values(requests::mode_rows(result)).csv());
@@ -84,6 +85,7 @@ void add_modes_command(CLI::App& app, int& exit_code) {
       "modes", "Linear natural frequencies, every element sticking and every one slipping: each arm (clamp held) "
                "and the whole damper (clamp free)");
   sub->add_option("damper", options->damper_file, "Damper description (TOML)")->required();
+  add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_flag("--json", options->json,
                 "Print {\"arms\": [{\"name\", \"stick_hz\", \"slip_hz\"}], \"damper\": {...}} instead of the table");
   sub->add_option("-o,--output", options->output, "Also write a CSV: arm,state,mode,frequency_hz");

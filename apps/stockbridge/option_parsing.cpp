@@ -79,6 +79,13 @@ void require_outputs_apart(const std::vector<CommandFile>& outputs, const std::v
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const CommandFile& out = outputs[i];
     if (out.path.empty()) continue;
+    const std::filesystem::path folder = std::filesystem::path(out.path).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec)) {
+      throw InvalidParameter(fmt::format("{} {}: the folder {} does not exist: expected an output file in an existing "
+                                         "folder",
+                                         out.role, printable(out.path, 300), printable(folder.string(), 300)));
+    }
     for (const CommandFile& in : inputs) {
       if (!in.path.empty() && same_file(out.path, in.path)) {
         throw InvalidParameter(fmt::format("{} {}: is {} ({}); writing it would destroy that input, choose another "

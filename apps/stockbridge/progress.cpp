@@ -1,4 +1,5 @@
 #include "progress.hpp"
+#include "report_output.hpp"
 
 #include <cstdio>
 
@@ -17,7 +18,9 @@ ProgressReport::ProgressReport(std::string what, bool quiet, std::string unit)
       unit_(std::move(unit)),
       quiet_(quiet),
       terminal_(::isatty(STDERR_FILENO) == 1),
-      start_(std::chrono::steady_clock::now()) {}
+      start_(std::chrono::steady_clock::now()) {
+  flush_warnings();  // the inputs are read and checked: what they warn of comes before the progress
+}
 
 std::string ProgressReport::line(int done, int total, double seconds) const {
   const double rate = seconds > 0.0 ? done / seconds : 0.0;

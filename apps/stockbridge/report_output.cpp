@@ -14,8 +14,17 @@ namespace {
 struct RunRecord {
   std::mutex mutex;
   std::string command;
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings;  ///< every warning so far, printed or held
+  std::size_t printed = 0;            ///< of which printed on stderr
+  bool started = false;               ///< the computation started: a warning is printed at once
 };
+
+/// Prints the warnings held (the lock taken).
+void print_held(RunRecord& record) {
+  for (; record.printed < record.warnings.size(); ++record.printed) {
+    fmt::print(stderr, "warning: {}\n", record.warnings[record.printed]);
+  }
+}
 
 RunRecord& run_record() {
   static RunRecord record;
@@ -53,6 +62,13 @@ void remember_command_line(int argc, const char* const* argv) {
 void remember_warning(const std::string& line) {
   const std::lock_guard lock(run_record().mutex);
   run_record().warnings.push_back(line);
+  if (run_record().started) print_held(run_record());
+}
+
+void flush_warnings() {
+  const std::lock_guard lock(run_record().mutex);
+  run_record().started = true;
+  print_held(run_record());
 }
 
 report::ReportContext report_context() {

@@ -18,8 +18,12 @@ namespace stockbridge::cli {
 /// with spaces or quotes quoted for a POSIX shell).
 void remember_command_line(int argc, const char* const* argv);
 
-/// A warning line the command printed on stderr, kept for the report.
+/// A warning line for stderr ("warning: <line>"), kept for the report. Held until
+/// flush_warnings: a run refused for bad input then prints its one error line alone.
 void remember_warning(const std::string& line);
+/// Prints the warnings held, and every later one at once: when the computation
+/// starts (a progress report begins), or the command ended without an error.
+void flush_warnings();
 
 /// The run as the report states it: now (UTC), the command line, the warnings so far.
 report::ReportContext report_context();

@@ -16,6 +16,7 @@
 #include "stockbridge/damper/steady_state.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/response_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 
@@ -30,6 +31,7 @@ struct ResponseOptions {
   std::optional<double> displacement;
   SolverFlags solver;
   bool json = false;
+  bool allow_unusual = false;
   std::string output;
 };
 
@@ -40,7 +42,10 @@ int run_response_command(const ResponseOptions& options) {
   const requests::ResponseRequest request{options.frequency, options.velocity, options.displacement,
                                           options.solver.settings()};
   requests::validate(request);  // before the damper file is read: a bad option is named first
-  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}});
+  refuse_slipped_options(requests::unusual_excitation(request.frequency, request.velocity, request.displacement),
+                         slip_policy(options.allow_unusual));
+  const damper::Damper damper =
+      read_damper_input(options.damper_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
   const requests::ResponseResult result = requests::run_response(damper, request);
   print_warnings(result.warnings);
   const damper::ImpedancePoint& p = result.state.point;
@@ -80,6 +85,7 @@ void add_response_command(CLI::App& app, int& exit_code) {
   sub->add_option("--displacement", options->displacement, "Clamp displacement amplitude X, m (instead of --velocity)");
   options->solver.add_to(*sub);
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout");
+  add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   sub->callback([options, &exit_code] { exit_code = run_response_command(*options); });
 }

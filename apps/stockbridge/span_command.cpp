@@ -42,6 +42,7 @@ struct SpanOptions {
   int threads = requests::SpanRequest{}.threads;
   bool json = false;
   bool quiet = false;
+  bool allow_unusual = false;
   std::string output;
   std::optional<std::string> report;
 };
@@ -138,12 +139,19 @@ void print_span_report(const requests::SpanResult& result) {
   }
   if (std::isfinite(a.sheet_error_estimate)) {
     fmt::print("measured sheets: leaving out every other curve moves the fymax stress by up to {:.3g} % (the band: "
-               "CSV stress_fymax_low_mpa, stress_fymax_high_mpa)\n",
-               100.0 * a.sheet_error_estimate);
+               "CSV stress_fymax_low_mpa, stress_fymax_high_mpa){}\n",
+               100.0 * a.sheet_error_estimate,
+               std::isfinite(summary.max_judged_stress_high)
+                   ? fmt::format("; the band's top reaches {}, {:.3g} % of the endurance limit",
+                                 span_megapascal(summary.max_judged_stress_high),
+                                 100.0 * summary.max_judged_stress_high / summary.endurance_limit)
+                   : std::string());
   }
-  fmt::print("endurance limit: {} ({:.4g} microstrain peak-to-peak): {} (undamped: {})\n",
+  fmt::print("criterion {}: {}, {} ({:.4g} microstrain peak-to-peak) against the largest {}: {} (undamped: {})\n",
+             span::fatigue_criterion_name(s.fatigue().criterion), s.criterion_description(),
              span_megapascal(summary.endurance_limit),
              span::bending_strain_pp_microstrain(s.conductor(), summary.endurance_limit),
+             s.judges_poffenberger_swart() ? "bending strain from Yb" : "fymax stress",
              span::verdict_name(summary.verdict), span::verdict_name(summary.undamped_verdict));
   if (s.fatigue().life) {
     fmt::print("life: {} (undamped {}); lives are comparative: they rest on the assumed wind climate\n",
@@ -160,7 +168,8 @@ void print_span_report(const requests::SpanResult& result) {
 int run_span_command(const SpanOptions& options) {
   const requests::SpanRequest request = span_request_of(options);
   check_report_path(options.report);
-  const io::SpanFile file = read_span_input(options.span_file, {{"-o", options.output}, {"--report", options.report.value_or("")}});
+  const io::SpanFile file = read_span_input(options.span_file, {{"-o", options.output}, {"--report", options.report.value_or("")}},
+                                             slip_policy(options.allow_unusual));
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress("span: impedance tables", options.quiet);
   const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));
@@ -174,10 +183,12 @@ int run_span_command(const SpanOptions& options) {
   const span::BalanceSummary& summary = a.balance.summary;
   if (options.json) {
     fmt::print("{}\n", requests::span_summary(result).add("seconds", seconds).str());
-  } else {
+  } else if (!options.quiet) {
     print_span_report(result);
   }
-  fmt::print(stderr, "span: {} points in {:.2f} s, {} converged\n", summary.points, seconds, summary.converged);
+  if (!options.quiet) {
+    fmt::print(stderr, "span: {} points in {:.2f} s, {} converged\n", summary.points, seconds, summary.converged);
+  }
   for (const span::BalancePoint& p : a.balance.points) {
     if (p.several_states) fmt::print(stderr, "  note: f = {:.4g} Hz: {}\n", p.frequency_hz, p.note);
   }
@@ -222,7 +233,9 @@ void add_span_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   sub->add_option("--threads", options->threads, "Parallel runs for the dampers' impedance tables")->capture_default_str();
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout instead of the report");
-  sub->add_flag("--quiet", options->quiet, "No progress on stderr (a bar on a terminal; else a line every 10 s after 10 s)");
+  sub->add_flag("--quiet", options->quiet,
+                "No report on stdout and no progress on stderr (warnings, errors and --json still print)");
+  add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   add_report_option(*sub, options->report, "the inputs, the verdict, the stress, amplitude and power curves, the life");
   sub->callback([options, &exit_code] { exit_code = run_span_command(*options); });

@@ -64,6 +64,9 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// allow_unusual=True: a value a unit slip explains is a warning, not an error.
+SlipPolicy slip_policy(bool allow_unusual) { return allow_unusual ? SlipPolicy::warn : SlipPolicy::refuse; }
+
 /// Each warning line as a Python UnusualValueWarning (a UserWarning), where the CLI
 /// prints "warning: ..." (values outside the typical ranges: unit mistakes).
 void warn(const std::vector<std::string>& lines) {
@@ -72,12 +75,6 @@ void warn(const std::vector<std::string>& lines) {
   for (const std::string& line : lines) {
     if (PyErr_WarnEx(category.ptr(), line.c_str(), 2) != 0) throw py::error_already_set();
   }
-}
-
-std::vector<std::string> unusual_messages(const std::vector<UnusualValue>& values) {
-  std::vector<std::string> lines;
-  for (const UnusualValue& u : values) lines.push_back(u.message());
-  return lines;
 }
 
 template <class Loaded>
@@ -188,7 +185,7 @@ py::dict impedance(const damper::Damper& d, const std::optional<std::vector<doub
                    const py::object& velocity, const py::object& displacement, double fmin, double fmax, int points,
                    const std::string& method, std::optional<int> harmonics, std::optional<int> samples,
                    std::optional<int> steps, std::optional<int> max_iterations, std::optional<int> max_periods,
-                   std::optional<double> energy_tolerance, bool full_period, int threads) {
+                   std::optional<double> energy_tolerance, bool full_period, int threads, bool allow_unusual) {
   requests::SweepRequest request;
   request.velocities = amplitudes_of(velocity);
   request.displacements = amplitudes_of(displacement);
@@ -201,7 +198,9 @@ py::dict impedance(const damper::Damper& d, const std::optional<std::vector<doub
       solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance, full_period);
   request.threads = threads;
   const damper::SweepSpec spec = requests::sweep_spec(request);
-  warn(unusual_messages(requests::unusual_values(request)));
+  std::vector<std::string> unusual;
+  for (const UnusualValue& u : requests::unusual_values(request)) judge_unusual(u, "", slip_policy(allow_unusual), unusual);
+  warn(unusual);
   std::vector<damper::SweepRun> runs;
   {
     py::gil_scoped_release release;
@@ -222,11 +221,15 @@ py::dict impedance(const damper::Damper& d, const std::optional<std::vector<doub
 py::dict response(const damper::Damper& d, double frequency, std::optional<double> velocity, std::optional<double> displacement,
                   const std::string& method, std::optional<int> harmonics, std::optional<int> samples,
                   std::optional<int> steps, std::optional<int> max_iterations, std::optional<int> max_periods,
-                  std::optional<double> energy_tolerance, bool full_period) {
+                  std::optional<double> energy_tolerance, bool full_period, bool allow_unusual) {
   const requests::ResponseRequest request{
       frequency, velocity, displacement,
       solver_settings(method, harmonics, samples, steps, max_iterations, max_periods, energy_tolerance, full_period)};
   requests::validate(request);
+  std::vector<std::string> unusual;  // warned of with the result's warnings
+  for (const UnusualValue& u : requests::unusual_excitation(frequency, velocity, displacement)) {
+    judge_unusual(u, "", slip_policy(allow_unusual), unusual);
+  }
   std::optional<requests::ResponseResult> result;
   {
     py::gil_scoped_release release;
@@ -338,7 +341,8 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
                             const std::optional<std::vector<double>>& velocity,
                             const std::optional<std::vector<double>>& displacement,
                             const std::optional<std::vector<std::complex<double>>>& z, int elements, bool fit_clamp_mass,
-                            const std::vector<std::string>& free, double rms_limit, int threads) {
+                            const std::vector<std::string>& free, double rms_limit, int threads,
+                            bool allow_unusual) {
   const bool arrays = frequency || velocity || displacement || z;
   if (input.has_value() == arrays) {
     throw InvalidParameter("give either input (a measured CSV's path) or frequency, velocity (or displacement) and z");
@@ -350,7 +354,7 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
       requests::fit_options({elements, fit_clamp_mass, threads, free, rms_limit});
   io::MeasuredImpedanceFile measured;
   if (input) {
-    measured = io::load_measured_impedance(*input);
+    measured = io::load_measured_impedance(*input, slip_policy(allow_unusual));
   } else {
     measured.measurement =
         requests::measurement_from_arrays(*frequency, velocity ? *velocity : *displacement, velocity.has_value(), *z);
@@ -382,7 +386,7 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
 /// A measured impedance file's warnings (values outside the typical ranges, phases
 /// in radians), for the plots: stockbridge.plot impedance draws the file itself.
 std::vector<std::string> measured_impedance_warnings(const std::string& path) {
-  return io::load_measured_impedance(path).warnings;
+  return io::load_measured_impedance(path, SlipPolicy::warn).warnings;
 }
 
 /// The span command's CSV columns as arrays (one value per frequency) and its --json
@@ -392,7 +396,7 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
                       const std::optional<std::vector<double>>& frequencies, int points, bool no_dampers,
                       const std::optional<std::string>& damper_model,
                       const std::optional<std::pair<double, double>>& optimize_position, double spacing_min,
-                      const std::string& objective, int threads, bool report) {
+                      const std::string& objective, int threads, bool report, bool allow_unusual) {
   if (path.has_value() == text.has_value()) {
     throw InvalidParameter("give either file (a span file's path) or text (a span file's contents), one of the two");
   }
@@ -413,7 +417,8 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   request.threads = threads;
   requests::validate(request);
   io::SpanFile file =
-      path ? io::load_span_file(*path) : io::load_span_text(*text, "span(text=...)", base.value_or(std::string()));
+      path ? io::load_span_file(*path, slip_policy(allow_unusual))
+           : io::load_span_text(*text, "span(text=...)", base.value_or(std::string()), slip_policy(allow_unusual));
   warn(file.warnings);
   std::optional<requests::SpanResult> result;
   {
@@ -524,13 +529,14 @@ std::vector<line::ScheduleRow> schedule_line(const io::LineFile& file, int threa
 /// bill CSV's columns as arrays, the --json summary as JSON text and the line file's
 /// warnings (each also an UnusualValueWarning).
 py::dict line_schedule(const std::optional<std::string>& path, const std::optional<std::string>& text,
-                       const std::optional<std::string>& base, int threads, bool report) {
+                       const std::optional<std::string>& base, int threads, bool report, bool allow_unusual) {
   if (path.has_value() == text.has_value()) {
     throw InvalidParameter("give either file (a line file's path) or text (a line file's contents), one of the two");
   }
   require_in_range("threads", threads, 1, 256);
   const io::LineFile file =
-      path ? io::load_line_file(*path) : io::load_line_text(*text, "line(text=...)", base.value_or(std::string()));
+      path ? io::load_line_file(*path, slip_policy(allow_unusual))
+           : io::load_line_text(*text, "line(text=...)", base.value_or(std::string()), slip_policy(allow_unusual));
   warn(file.warnings);
   const std::vector<line::ScheduleRow> rows = schedule_line(file, threads);
   const std::vector<line::BillLine> bill = line::bill_of_materials(file.line, rows);
@@ -548,14 +554,14 @@ py::dict line_schedule(const std::optional<std::string>& path, const std::option
 /// package's design() parses it into a dict) and best.toml's text (None when no
 /// candidate is feasible).
 py::dict design_search(const std::string& path, std::optional<int> samples, std::optional<int> polish, int threads,
-                       int round_digits) {
+                       int round_digits, bool allow_unusual) {
   requests::DesignRequest request;
   request.samples = samples;
   request.polish = polish;
   request.threads = threads;
   request.round_digits = round_digits;
   requests::validate(request);
-  const io::DesignFile file = io::load_design_file(path);
+  const io::DesignFile file = io::load_design_file(path, slip_policy(allow_unusual));
   warn(file.warnings);
   const design::SearchOptions options = requests::search_options(file.search, request);
   std::optional<design::DesignResult> result;
@@ -600,10 +606,13 @@ PYBIND11_MODULE(_core, m) {
   static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<InvalidParameter> invalid_parameter(m, "InvalidParameter", PyExc_ValueError);
+  static py::exception<UnusualValueError> unusual_value_error(m, "UnusualValueError", input_error.ptr());
   static py::exception<NumericalError> numerical_error(m, "NumericalError", error.ptr());
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const UnusualValueError& e) {
+      unusual_value_error((std::string(e.what()) + " (allow_unusual=True takes it as given)").c_str());
     } catch (const InputError& e) {
       input_error(e.what());
     } catch (const InvalidParameter& e) {
@@ -673,15 +682,35 @@ PYBIND11_MODULE(_core, m) {
         return names;
       });
 
-  m.def("load_cable", [](const std::string& path) { return warned(io::load_cable_file(path)); }, py::arg("path"),
-        "Read a cable TOML file (an UnusualValueWarning for each value outside the typical ranges).");
-  m.def("load_damper", [](const std::string& path) { return warned(io::load_damper_file(path)); }, py::arg("path"),
-        "Read a damper TOML file (an UnusualValueWarning for each value outside the typical ranges).");
-  m.def("_cable_from_toml", [](std::string_view text, std::string_view source) { return warned(io::load_cable_text(text, source)); },
-        py::arg("text"), py::arg("source"),
-        "A cable from TOML text (make_cable builds it): the cable file reader's keys, checks, messages and warnings.");
-  m.def("_damper_from_toml", [](std::string_view text, std::string_view source) { return warned(io::load_damper_text(text, source)); },
-        py::arg("text"), py::arg("source"),
+  m.def(
+      "load_cable",
+      [](const std::string& path, bool allow_unusual) {
+        return warned(io::load_cable_file(path, slip_policy(allow_unusual)));
+      },
+      py::arg("path"), py::arg("allow_unusual") = false,
+      "Read a cable TOML file (an UnusualValueWarning for each value outside the typical ranges; UnusualValueError "
+      "for one a unit slip explains, unless allow_unusual).");
+  m.def(
+      "load_damper",
+      [](const std::string& path, bool allow_unusual) {
+        return warned(io::load_damper_file(path, slip_policy(allow_unusual)));
+      },
+      py::arg("path"), py::arg("allow_unusual") = false,
+      "Read a damper TOML file (an UnusualValueWarning for each value outside the typical ranges; UnusualValueError "
+      "for one a unit slip explains, unless allow_unusual).");
+  m.def(
+      "_cable_from_toml",
+      [](std::string_view text, std::string_view source, bool allow_unusual) {
+        return warned(io::load_cable_text(text, source, slip_policy(allow_unusual)));
+      },
+      py::arg("text"), py::arg("source"), py::arg("allow_unusual") = false,
+      "A cable from TOML text (make_cable builds it): the cable file reader's keys, checks, messages and warnings.");
+  m.def(
+      "_damper_from_toml",
+      [](std::string_view text, std::string_view source, bool allow_unusual) {
+        return warned(io::load_damper_text(text, source, slip_policy(allow_unusual)));
+      },
+      py::arg("text"), py::arg("source"), py::arg("allow_unusual") = false,
         "A damper from TOML text (make_damper builds it): the damper file reader's keys, checks, messages and warnings.");
   // The defaults are the library requests' (the CLI's too); the package's wrappers read theirs here.
   py::dict defaults;
@@ -704,6 +733,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("method") = solver.method, py::arg("harmonics") = py::none(), py::arg("samples") = py::none(),
         py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(), py::arg("max_periods") = py::none(),
         py::arg("energy_tolerance") = py::none(), py::arg("full_period") = false, py::arg("threads") = requests::SweepRequest{}.threads,
+        py::arg("allow_unusual") = false,
         "Z(f, amplitude) over `frequencies` (or fmin..fmax, `points` log-spaced): arrays of shape (amplitudes, "
         "frequencies) named as the impedance CSV's columns (the design figures per arm as '<arm>_power_w' and "
         "'<arm>_mass_amplitude_m', the arms named in 'arms'); NaN where a point did not converge (see 'converged', "
@@ -712,6 +742,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("displacement") = py::none(), py::arg("method") = solver.method, py::arg("harmonics") = py::none(),
         py::arg("samples") = py::none(), py::arg("steps") = py::none(), py::arg("max_iterations") = py::none(),
         py::arg("max_periods") = py::none(), py::arg("energy_tolerance") = py::none(), py::arg("full_period") = false,
+        py::arg("allow_unusual") = false,
         "One steady period; per-arm arrays have shape (arms, samples). A point that did not converge is returned "
         "as its last iterate with converged = False, its termination and message (NaN where nothing was computed). "
         "The point's design figures are numbers named as the impedance CSV's columns.");
@@ -721,18 +752,18 @@ PYBIND11_MODULE(_core, m) {
         py::arg("no_dampers") = false, py::arg("damper_model") = py::none(),
         py::arg("optimize_position") = py::none(), py::arg("spacing_min") = requests::SpanRequest{}.spacing_min,
         py::arg("objective") = requests::SpanRequest{}.objective, py::arg("threads") = requests::SpanRequest{}.threads,
-        py::arg("report") = false,
+        py::arg("report") = false, py::arg("allow_unusual") = false,
         "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
         "'converged', 'termination', 'messages', 'dampers', 'columns', the --json summary as 'summary_json' and "
         "with report the HTML report's text as 'report_html'.");
   m.def("_line", &line_schedule, py::arg("file") = py::none(), py::arg("text") = py::none(),
-        py::arg("base") = py::none(), py::arg("threads") = 1, py::arg("report") = false,
+        py::arg("base") = py::none(), py::arg("threads") = 1, py::arg("report") = false, py::arg("allow_unusual") = false,
         "A line's damper schedule (stockbridge.line wraps it): 'schedule' and 'bill', the schedule and bill CSVs' "
         "columns as arrays, the --json summary as 'summary_json', the line file's 'warnings' and with report the "
         "HTML report's text as 'report_html'.");
   m.def("_design", &design_search, py::arg("file"), py::arg("samples") = py::none(), py::arg("polish") = py::none(),
         py::arg("threads") = requests::DesignRequest{}.threads,
-        py::arg("round_digits") = requests::DesignRequest{}.round_digits,
+        py::arg("round_digits") = requests::DesignRequest{}.round_digits, py::arg("allow_unusual") = false,
         "A design study's search (stockbridge.design wraps it): the design CSV's columns as arrays, 'stage', "
         "'columns', 'variables', the --json summary as 'summary_json' and best.toml's text as 'best_damper'.");
   m.def("modes", &modes, py::arg("damper"),
@@ -757,6 +788,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("frequency") = py::none(), py::arg("velocity") = py::none(), py::arg("displacement") = py::none(),
         py::arg("z") = py::none(), py::arg("elements") = fit.elements, py::arg("fit_clamp_mass") = fit.fit_clamp_mass,
         py::arg("free") = fit.free, py::arg("rms_limit") = fit.rms_limit, py::arg("threads") = fit.threads,
+        py::arg("allow_unusual") = false,
         "The identification from a measured impedance (stockbridge.identify_impedance wraps it).");
   m.def("_measured_impedance_warnings", &measured_impedance_warnings, py::arg("path"),
         "A measured impedance CSV's warnings (values outside the typical ranges, phases in radians), as lines; "

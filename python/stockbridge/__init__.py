@@ -29,7 +29,8 @@ class UnusualValueWarning(UserWarning):
 
 try:
     from ._core import __version__  # noqa: F401  (the library's, as stockbridge --version)
-    from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError, conductor,  # noqa: F401
+    from ._core import (Cable, Damper, Error, InputError, InvalidParameter, NumericalError,  # noqa: F401
+                        UnusualValueError, conductor,
                         conductors, cycle, identify_global, identify_local, impedance, load_cable, load_conductor,
                         load_damper, load_strand, loop, modes, response, strand_bounds)
     from ._core import _cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _line, _span
@@ -37,11 +38,14 @@ except ImportError:  # the plots work from the source tree without the compiled 
     _defaults = {}  # the library's defaults come with it
 
 
-def _from_values(build, text, source):
+def _from_values(build, text, source, allow_unusual=False):
     """The library's reader on text made from Python values: its errors name the
-    values, not a file, so they are InvalidParameter (a ValueError)."""
+    values, not a file, so they are InvalidParameter (a ValueError); a value a unit
+    slip explains stays an UnusualValueError (allow_unusual=True takes it)."""
     try:
-        return build(text, source)
+        return build(text, source, allow_unusual)
+    except UnusualValueError:
+        raise
     except InputError as error:
         raise InvalidParameter(str(error)) from None
 
@@ -51,14 +55,16 @@ def _pair(element):
     return c, h
 
 
-def make_cable(length, sections=40, ei=None, jenkin=(), law=None, **keys):
+def make_cable(length, sections=40, ei=None, jenkin=(), law=None, allow_unusual=False, **keys):
     """A cable with the keys of a cable file's [cable] table: length (m), sections,
     and the section law's numbers. The Masing law (the default): ei (N m^2),
     jenkin = [(c, h), ...] or [{"c": ..., "h": ..., "k0": ...}, ...] (N m^2, N m),
     optionally lever_arm_cap. The Bouc-Wen law (law="bouc-wen"): ei_min, ei_max
     (N m^2) and chi0 (1/m). Optionally mirror_length; any value may be a profile
     {"s": [...], "value": [...]}. Checked exactly as a cable file is (a misspelt or
-    missing key, a key of the other law, a bad value: InvalidParameter naming it)."""
+    missing key, a key of the other law, a bad value: InvalidParameter naming it; a
+    value a unit slip explains, a length of 187.5 for 0.1875 m: UnusualValueError,
+    unless `allow_unusual`)."""
     elements = [e if isinstance(e, dict) else dict(zip(("c", "h"), _pair(e))) for e in jenkin]
     entries = {"length": length, "sections": sections, **keys}
     if law is not None:
@@ -67,15 +73,16 @@ def make_cable(length, sections=40, ei=None, jenkin=(), law=None, **keys):
         entries["jenkin"] = elements
     if ei is not None:
         entries["ei"] = ei
-    return _from_values(_cable_from_toml, _toml.table("cable", entries), "make_cable")
+    return _from_values(_cable_from_toml, _toml.table("cable", entries), "make_cable", allow_unusual)
 
 
-def make_damper(clamp_mass, arms):
+def make_damper(clamp_mass, arms, allow_unusual=False):
     """A damper from arms given as dicts {name, mass, inertia, offset, cable} (kg,
     kg m^2, m; cable a Cable or a dict of a cable table's keys), and optionally
     length (m): the arm's cable length, cutting the Cable (identified once, on any
     length) to it. Checked exactly as a damper file is (a misspelt or missing key, a
-    bad value: InvalidParameter naming it)."""
+    bad value: InvalidParameter naming it; a value a unit slip explains, a mass of
+    856 for 0.856 kg: UnusualValueError, unless `allow_unusual`)."""
     text = _toml.table("clamp", {"mass": clamp_mass})
     for arm in arms:
         arm = dict(arm)
@@ -89,7 +96,7 @@ def make_damper(clamp_mass, arms):
         text += "[[arm]]\n" + "".join(f"{_toml.key(k)} = {_toml.value(v)}\n" for k, v in arm.items())
         if cable is not None:
             text += _toml.table("arm.cable", cable)
-    return _from_values(_damper_from_toml, text, "make_damper")
+    return _from_values(_damper_from_toml, text, "make_damper", allow_unusual)
 
 
 _TENSION_FORMS = ("tension", "tension_fraction", "catenary_parameter")
@@ -158,7 +165,7 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
          optimize_position=None, threads=_defaults.get("span_threads"), text=None, spec=None, base=None,
          damper=None, positions=None, ends=None, tension=None, tension_fraction=None, catenary_parameter=None,
          length=None, conductor_type=None, spacing_min=_defaults.get("span_spacing_min"),
-         objective=_defaults.get("span_objective"), report=None):
+         objective=_defaults.get("span_objective"), report=None, allow_unusual=False):
     """The energy balance of a span over the wind band, as ``stockbridge span``.
 
     The span: a span file's path (`file`; its relative paths start at its folder), its
@@ -177,7 +184,9 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
     `spacing_min` m apart, minimising `objective`: "max_stress" or "life"; the
     positions found in the summary's positions_m); `threads` for the dampers'
     impedance tables; `report` a path: also write the HTML report there (as ``span
-    --report``: self-contained, printable on A4).
+    --report``: self-contained, printable on A4). A value a unit slip explains (a
+    tension of 30.3 for kN) and a tension no span hangs at are refused
+    (UnusualValueError) unless `allow_unusual` (as --allow-unusual: a warning).
 
     Returns a dict: one array per column of the span CSV, by the CSV's names (stresses
     in MPa; NaN where a point did not converge), 'converged' and 'several_states'
@@ -190,14 +199,16 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
         out = _span(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
                     frequencies=frequencies, points=points, no_dampers=no_dampers, damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
-                    spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None)
+                    spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None,
+                    allow_unusual=allow_unusual)
     else:
         described, folder = _span_spec(file, text, spec, None if base is None else str(base))
         described = _override(described, *overrides)
         out = _span(text=_toml.document(described), base=folder, frequencies=frequencies, points=points,
                     no_dampers=no_dampers, damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
-                    spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None)
+                    spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None,
+                    allow_unusual=allow_unusual)
     out["summary"] = json.loads(out.pop("summary_json"))
     _write_report(report, out)
     return out
@@ -211,7 +222,7 @@ def _write_report(path, out):
             f.write(html)
 
 
-def line(file=None, text=None, base=None, threads=1, report=None):
+def line(file=None, text=None, base=None, threads=1, report=None, allow_unusual=False):
     """The damper schedule of a line, as ``stockbridge line``: for every span the
     fewest dampers per end, of which type and where, that make it safe.
 
@@ -220,7 +231,8 @@ def line(file=None, text=None, base=None, threads=1, report=None):
     directory), one of the two. `threads` spans computed at once, sharing the
     dampers' impedance tables (the same schedule for any number). Minutes for a real
     line; Ctrl-C stops it (KeyboardInterrupt), nothing returned. `report` a path:
-    also write the HTML report there (as ``line --report``).
+    also write the HTML report there (as ``line --report``). A value a unit slip
+    explains is refused (UnusualValueError) unless `allow_unusual`.
 
     Returns a dict: 'schedule', one array per column of the schedule CSV by its names,
     one value per span in the line's order (id, conductor, undamped_verdict,
@@ -237,14 +249,14 @@ def line(file=None, text=None, base=None, threads=1, report=None):
     (or ``line(text=...)``), line and key; a span whose scheduling fails is a row
     with verdict unknown and the reason in its warnings, as in the command's CSV."""
     out = _line(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
-                threads=threads, report=report is not None)
+                threads=threads, report=report is not None, allow_unusual=allow_unusual)
     out["summary"] = json.loads(out.pop("summary_json"))
     _write_report(report, out)
     return out
 
 
 def design(file, samples=None, polish=None, threads=_defaults.get("design_threads"),
-           round_digits=_defaults.get("design_round_digits")):
+           round_digits=_defaults.get("design_round_digits"), allow_unusual=False):
     """The search for the best damper of a design study, as ``stockbridge design``: a
     design file's path (`file`; its damper and span files relative to it);
     `samples` space-filling candidates and `polish` local polishes instead of the
@@ -260,8 +272,10 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
     order), 'variables' (the variables' names, their columns), 'summary' (the --json
     summary's keys, None where the JSON has null; 'rounded' the rounded design's
     figures) and 'best_damper': the text of the --best damper file (the rounded
-    design where it stays feasible), None when no candidate is feasible."""
-    out = _design(file=str(file), samples=samples, polish=polish, threads=threads, round_digits=round_digits)
+    design where it stays feasible), None when no candidate is feasible. A value a
+    unit slip explains is refused (UnusualValueError) unless `allow_unusual`."""
+    out = _design(file=str(file), samples=samples, polish=polish, threads=threads, round_digits=round_digits,
+                  allow_unusual=allow_unusual)
     for name in ("stage", "governing_span"):
         if name in out:
             out[name] = numpy.array(out[name], dtype=str)
@@ -271,7 +285,8 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
 
 def identify_impedance(damper, input=None, *, frequency=None, velocity=None, displacement=None, z=None,
                        elements=_defaults.get("fit_elements"), fit_clamp_mass=_defaults.get("fit_clamp_mass"),
-                       free=(), rms_limit=_defaults.get("fit_rms_limit"), threads=_defaults.get("fit_threads")):
+                       free=(), rms_limit=_defaults.get("fit_rms_limit"), threads=_defaults.get("fit_threads"),
+                       allow_unusual=False):
     """The cable parameters (and with `fit_clamp_mass` the clamp mass) of a damper
     from its measured impedance, as ``stockbridge identify impedance``: `damper` a
     Damper (load_damper, make_damper) whose masses, inertias, offsets and cable
@@ -282,7 +297,8 @@ def identify_impedance(damper, input=None, *, frequency=None, velocity=None, dis
     ei_max and chi0 instead); `free` numbers of the damper fitted too, by
     path ("arm.long.mass", "arm.short.cable.length", "clamp.mass", as --free);
     `rms_limit` the RMS relative error of Z above which the fit is poor (warned of,
-    'poor_fit' True); `threads` model runs at once.
+    'poor_fit' True); `threads` model runs at once. A sheet's value outside what a
+    shaker test gives is refused (UnusualValueError) unless `allow_unusual`.
 
     Returns a dict: the --json summary's keys (ei, jenkin or law, ei_min, ei_max,
     chi0; misfit, rms_relative_error,
@@ -299,7 +315,7 @@ def identify_impedance(damper, input=None, *, frequency=None, velocity=None, dis
                               z=None if z is None else [complex(v) for v in numpy.ravel(numpy.asarray(z))],
                               elements=elements, fit_clamp_mass=fit_clamp_mass,
                               free=[free] if isinstance(free, str) else list(free), rms_limit=rms_limit,
-                              threads=threads)
+                              threads=threads, allow_unusual=allow_unusual)
     summary = json.loads(out.pop("summary_json"))
     summary.update(out)
     return summary

@@ -1,5 +1,6 @@
 #include "stockbridge/core/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -23,28 +24,53 @@ std::string format_value(double value) {
   return fmt::format("{}", value);
 }
 
+namespace {
+
+/// The length of the well-formed UTF-8 character at text[i] (a byte >= 0x80), or 0
+/// where it is not one (a stray continuation byte, a sequence cut short, an overlong
+/// form, a surrogate, beyond U+10FFFF).
+std::size_t utf8_length(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  std::size_t length = 0;
+  char32_t code = 0;
+  if (lead >= 0xC2 && lead <= 0xDF) length = 2, code = lead & 0x1F;
+  else if (lead >= 0xE0 && lead <= 0xEF) length = 3, code = lead & 0x0F;
+  else if (lead >= 0xF0 && lead <= 0xF4) length = 4, code = lead & 0x07;
+  else return 0;
+  if (i + length > text.size()) return 0;
+  for (std::size_t k = 1; k < length; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) return 0;
+    code = (code << 6) | (byte(i + k) & 0x3F);
+  }
+  const bool overlong = (length == 3 && code < 0x800) || (length == 4 && code < 0x10000);
+  if (overlong || (code >= 0xD800 && code <= 0xDFFF) || code > 0x10FFFF) return 0;
+  return length;
+}
+
+}  // namespace
+
 std::string printable(std::string_view text, std::size_t max_bytes) {
   std::string out;
-  std::size_t kept = text.size();
-  if (kept > max_bytes) {
-    kept = max_bytes;
-    while (kept > 0 && (static_cast<unsigned char>(text[kept]) & 0xC0) == 0x80) --kept;  // a continuation byte
-  }
-  for (const char ch : text.substr(0, kept)) {
-    const auto byte = static_cast<unsigned char>(ch);
-    switch (ch) {
+  std::size_t i = 0;
+  for (; i < text.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    const std::size_t length = byte >= 0x80 ? utf8_length(text, i) : 1;
+    if (i + std::max<std::size_t>(length, 1) > max_bytes) break;  // never a character cut
+    switch (text[i]) {
       case '\n': out += "\\n"; break;
       case '\r': out += "\\r"; break;
       case '\t': out += "\\t"; break;
       default:
-        if (byte < 0x20 || byte == 0x7F) {
-          out += fmt::format("\\x{:02x}", byte);
+        if (byte < 0x20 || byte == 0x7F || length == 0) {
+          out += fmt::format("\\x{:02x}", byte);  // a control character, or a byte that is not UTF-8
         } else {
-          out += ch;
+          out.append(text.substr(i, length));
+          i += length - 1;
         }
     }
   }
-  if (kept < text.size()) out += "...";
+  if (i < text.size()) out += "...";
   return out;
 }
 

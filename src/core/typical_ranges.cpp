@@ -15,7 +15,8 @@ const std::vector<TypicalRange>& typical::all() {
                                                 outer_wire_diameter, outer_wire_modulus, span_tension,
                                                 tension_fraction, catenary_parameter, damper_position, strouhal,
                                                 wind_speed, turbulence_intensity, self_damping_l, self_damping_m,
-                                                self_damping_n, fatigue_cycles, endurance_limit, weibull_shape,
+                                                self_damping_n, fatigue_cycles, endurance_limit, endurance_limit_mpa,
+                                                limit_pp_microstrain, weibull_shape,
                                                 weibull_scale, aeolian_fraction, yb_distance};
   return ranges;
 }
@@ -47,6 +48,17 @@ std::optional<UnusualValue> unusual(std::string field, double value, const Typic
 
 void check_typical(std::vector<UnusualValue>& out, std::string field, double value, const TypicalRange& range) {
   if (auto u = unusual(std::move(field), value, range)) out.push_back(std::move(*u));
+}
+
+void judge_unusual(const UnusualValue& value, const std::string& location, SlipPolicy policy,
+                   std::vector<std::string>& warnings) {
+  if (policy == SlipPolicy::refuse && value.slip_explained()) throw UnusualValueError(location + value.message());
+  warnings.push_back(location + value.message());
+}
+
+void judge_implausible(std::string line, SlipPolicy policy, std::vector<std::string>& warnings) {
+  if (policy == SlipPolicy::refuse) throw UnusualValueError(line);
+  warnings.push_back(std::move(line));
 }
 
 }  // namespace stockbridge

@@ -59,7 +59,7 @@ std::vector<UnusualValue> DamperDescription::unusual_values() const {
     const std::string name = fmt::format("arm[{}]", k);
     check_typical(found, name + ".mass", arm.mass, typical::arm_mass);
     check_typical(found, name + ".inertia", arm.inertia, typical::arm_inertia);
-    if (!typical::arm_offset.contains(std::abs(arm.offset))) found.push_back({name + ".offset", arm.offset, typical::arm_offset, {}});
+    check_typical(found, name + ".offset", arm.offset, typical::arm_offset);
     for (UnusualValue& u : arm.cable.unusual_values()) {
       u.field = name + ".cable." + u.field;
       found.push_back(std::move(u));

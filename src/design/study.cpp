@@ -14,7 +14,7 @@ namespace stockbridge::design {
 Objective parse_objective(std::string_view name) {
   if (name == "max_stress") return Objective::max_stress;
   if (name == "life") return Objective::life;
-  throw InvalidParameter("objective", fmt::format(" = '{}': expected max_stress or life", name));
+  throw InvalidParameter("objective", fmt::format(" = '{}': expected max_stress or life", printable(name)));
 }
 
 std::string_view objective_name(Objective objective) { return objective == Objective::life ? "life" : "max_stress"; }
@@ -26,14 +26,15 @@ void check_path(const std::string& field, const std::string& path, const damper:
   try {
     damper_number(base, path);
   } catch (const InvalidParameter& error) {
-    throw InvalidParameter(field, fmt::format(" = \"{}\"{}", path, error.detail()));
+    throw InvalidParameter(field, fmt::format(" = \"{}\"{}", printable(path), error.detail()));
   }
 }
 
 void validate_variable(const DesignVariable& v, std::size_t i, const damper::DamperDescription& base,
                        const std::vector<DesignSpan>& spans) {
   const std::string field = fmt::format("variable[{}]", i);
-  if (!(std::isfinite(v.min) && std::isfinite(v.max))) throw_invalid(field + ".min", v.min, "finite bounds");
+  if (!std::isfinite(v.min)) throw_invalid(field + ".min", v.min, "a finite bound");
+  if (!std::isfinite(v.max)) throw_invalid(field + ".max", v.max, "a finite bound");
   if (!(v.min < v.max)) throw_invalid(field + ".max", v.max, fmt::format("a value > min = {}", v.min));
   if (v.name == kPosition || v.name == kPositionLoopFraction) {
     if (!(v.min > 0.0)) throw_invalid(field + ".min", v.min, "a position > 0 m from the span clamp");
@@ -77,7 +78,8 @@ DesignStudy::DesignStudy(damper::DamperDescription base, std::vector<DesignSpan>
     validate_variable(variables_[i], i, base_, spans_);
     for (std::size_t j = 0; j < i; ++j) {
       if (variables_[j].name == variables_[i].name) {
-        throw InvalidParameter(fmt::format("variable[{}].name", i), fmt::format(" = \"{}\": already variable[{}]", variables_[i].name, j));
+        throw InvalidParameter(fmt::format("variable[{}].name", i),
+                               fmt::format(" = \"{}\": already variable[{}]", printable(variables_[i].name), j));
       }
     }
   }
@@ -87,10 +89,18 @@ DesignStudy::DesignStudy(damper::DamperDescription base, std::vector<DesignSpan>
     check_path(field + ".name", t.name, base_);
     const auto followed = std::find_if(variables_.begin(), variables_.end(), [&](const auto& v) { return v.name == t.equals; });
     if (followed == variables_.end() || t.equals == kPosition || t.equals == kPositionLoopFraction) {
-      throw InvalidParameter(field + ".equals", fmt::format(" = \"{}\": expected the name of a damper [[variable]]", t.equals));
+      throw InvalidParameter(field + ".equals",
+                             fmt::format(" = \"{}\": expected the name of a damper [[variable]]", printable(t.equals)));
     }
     for (const DesignVariable& v : variables_) {
-      if (v.name == t.name) throw InvalidParameter(field + ".name", fmt::format(" = \"{}\": is a [[variable]] itself", t.name));
+      if (v.name == t.name) {
+        throw InvalidParameter(field + ".name", fmt::format(" = \"{}\": is a [[variable]] itself", printable(t.name)));
+      }
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (ties_[j].name == t.name) {
+        throw InvalidParameter(field + ".name", fmt::format(" = \"{}\": already tie[{}]", printable(t.name), j));
+      }
     }
   }
   if (constraints_.total_mass_max) require_positive("constraints.total_mass_max", *constraints_.total_mass_max, "kg");
@@ -253,13 +263,13 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
                               b.points - b.converged, b.points, p->frequency_hz, brief_report(p->summary));
       return e;
     }
-    const double r = b.max_stress_fymax / b.endurance_limit;
-    e.spans.push_back(SpanFigures{r, b.max_stress_fymax, b.undamped_max_stress_fymax,
+    const double r = b.max_judged_stress / b.endurance_limit;
+    e.spans.push_back(SpanFigures{r, b.max_judged_stress, b.undamped_max_judged_stress,
                                   b.life ? b.life->life_years : std::numeric_limits<double>::quiet_NaN()});
     if (k == 0 || r > ratio) {
       ratio = r;
-      e.max_stress = b.max_stress_fymax;
-      e.frequency_at_max_hz = b.max_stress_frequency_hz;
+      e.max_stress = b.max_judged_stress;
+      e.frequency_at_max_hz = b.max_judged_stress_frequency_hz;
       e.span_at_max = k;
     }
     for (const span::BalancePoint& p : a.balance.points) {

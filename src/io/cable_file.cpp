@@ -105,18 +105,21 @@ cable::CableDescription read_cable_table(const TomlTable& table) {
 
 namespace {
 
-CableFile build_cable(const toml::table& document, const TomlSource& source) {
-  cable::Cable cable = build_from_file(document, source, [&] {
+CableFile build_cable(const toml::table& document, const TomlSource& source, SlipPolicy policy) {
+  cable::CableDescription description = build_from_file(document, source, [&] {
     const TomlTable top(document, source, "");
-    cable::CableDescription description = read_cable_table(top.table("cable"));
+    cable::CableDescription read = read_cable_table(top.table("cable"));
     top.reject_unknown_keys();
-    return within_field("cable", [&] { return cable::Cable(std::move(description)); });
+    return read;
   });
   std::vector<std::string> warnings;
-  for (UnusualValue& u : cable.description().unusual_values()) {
+  for (UnusualValue& u : description.unusual_values()) {
     u.field = "cable." + u.field;
-    warnings.push_back(field_location(document, source, u.field) + u.message());
+    judge_unusual(u, field_location(document, source, u.field), policy, warnings);
   }
+  cable::Cable cable = build_from_file(document, source, [&] {
+    return within_field("cable", [&] { return cable::Cable(std::move(description)); });
+  });
   return CableFile{std::move(cable), std::move(warnings)};
 }
 
@@ -132,18 +135,22 @@ std::string profile_toml(const cable::Profile& p) {
 
 }  // namespace
 
-CableFile load_cable_file(const std::filesystem::path& path) {
-  return build_cable(parse_toml_file(path), TomlSource{path.string(), true});
+CableFile load_cable_file(const std::filesystem::path& path, SlipPolicy policy) {
+  return build_cable(parse_toml_file(path), TomlSource{path.string(), true}, policy);
 }
 
-cable::Cable read_cable_file(const std::filesystem::path& path) { return load_cable_file(path).cable; }
+cable::Cable read_cable_file(const std::filesystem::path& path, SlipPolicy policy) {
+  return load_cable_file(path, policy).cable;
+}
 
-CableFile load_cable_text(std::string_view text, std::string_view source) {
+CableFile load_cable_text(std::string_view text, std::string_view source, SlipPolicy policy) {
   const TomlSource where{std::string(source), false};
-  return build_cable(parse_toml_text(text, source), where);
+  return build_cable(parse_toml_text(text, source), where, policy);
 }
 
-cable::Cable read_cable_text(std::string_view text, std::string_view source) { return load_cable_text(text, source).cable; }
+cable::Cable read_cable_text(std::string_view text, std::string_view source, SlipPolicy policy) {
+  return load_cable_text(text, source, policy).cable;
+}
 
 std::string cable_table_toml(const cable::CableDescription& c) {
   if (c.law == cable::SectionLawKind::bouc_wen) {

@@ -55,6 +55,17 @@ OpenedCsv open_csv(const std::filesystem::path& path) {
   throw InputError(fmt::format("{}: empty file: expected a header row and data", file));
 }
 
+/// A data row's cells, as many as the header's: fewer (a cell left out) or more (a
+/// decimal comma, "1,5", or a ',' inside a cell) is refused, naming the line.
+void require_cells(const std::string& file, std::size_t line_number, std::size_t cells, std::size_t header_cells) {
+  if (cells == header_cells) return;
+  throw InputError(fmt::format("{}:{}: {} cells: expected {}, as the header has ({})", file, line_number, cells,
+                               header_cells,
+                               cells > header_cells ? "a decimal comma? '.' is the decimal separator, and a cell "
+                                                      "cannot hold a ','"
+                                                    : "an empty cell is written as nothing between two commas"));
+}
+
 }  // namespace
 
 std::vector<std::string> read_csv_header(const std::filesystem::path& path) {
@@ -105,11 +116,8 @@ CsvRows read_csv_rows(const std::filesystem::path& path, const std::vector<std::
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
     const std::vector<std::string> cells = split_cells(line);
+    require_cells(file, line_number, cells.size(), header_cells);
     for (std::size_t k = 0; k < names.size(); ++k) {
-      if (index[k] >= cells.size()) {
-        throw InputError(fmt::format("{}:{}: {} cells: expected {} (column '{}' missing)", file, line_number,
-                                     cells.size(), header_cells, names[k]));
-      }
       const std::string& cell = cells[index[k]];
       double value = 0.0;
       const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
@@ -142,12 +150,7 @@ CsvCells read_csv_cells(const std::filesystem::path& path) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
     std::vector<std::string> cells = split_cells(line);
-    if (cells.size() > out.header.size()) {
-      throw InputError(fmt::format("{}:{}: {} cells: expected at most {}, as the header has (a ',' inside a cell is "
-                                   "not supported)",
-                                   path.string(), line_number, cells.size(), out.header.size()));
-    }
-    cells.resize(out.header.size());
+    require_cells(path.string(), line_number, cells.size(), out.header.size());
     out.rows.push_back(std::move(cells));
     out.lines.push_back(line_number);
   }

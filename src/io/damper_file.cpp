@@ -38,7 +38,7 @@ std::filesystem::path resolve(const std::filesystem::path& file, const std::file
 /// `[arm.cable] file = "..."`: the referenced cable file's cable (validated and
 /// located there), then the overrides of this table.
 cable::CableDescription read_referenced_cable(const TomlTable& table, const std::filesystem::path& base_directory,
-                                              CableReference& reference) {
+                                              SlipPolicy policy, CableReference& reference) {
   const std::string file = *table.optional_string("file");
   reference.path = resolve(file, base_directory);
   std::error_code ec;
@@ -47,7 +47,7 @@ cable::CableDescription read_referenced_cable(const TomlTable& table, const std:
                                    "at the damper file's folder)",
                                    printable(file), printable(reference.path.string())));
   }
-  CableFile referenced = load_cable_file(reference.path);
+  CableFile referenced = load_cable_file(reference.path, policy);
   reference.warnings = std::move(referenced.warnings);
   cable::CableDescription description = referenced.cable.description();
   for (const std::string_view parameter : {"ei", "jenkin"}) {
@@ -67,7 +67,7 @@ cable::CableDescription read_referenced_cable(const TomlTable& table, const std:
   return description;
 }
 
-damper::ArmDescription read_arm(const TomlTable& table, const std::filesystem::path& base_directory,
+damper::ArmDescription read_arm(const TomlTable& table, const std::filesystem::path& base_directory, SlipPolicy policy,
                                 std::optional<CableReference>& reference) {
   damper::ArmDescription arm;
   arm.name = table.optional_string("name").value_or("");
@@ -77,7 +77,7 @@ damper::ArmDescription read_arm(const TomlTable& table, const std::filesystem::p
   const TomlTable cable = table.table("cable");
   if (cable.contains("file")) {
     reference.emplace();
-    arm.cable = read_referenced_cable(cable, base_directory, *reference);
+    arm.cable = read_referenced_cable(cable, base_directory, policy, *reference);
   } else {
     arm.cable = read_cable_table(cable);
   }
@@ -85,7 +85,7 @@ damper::ArmDescription read_arm(const TomlTable& table, const std::filesystem::p
   return arm;
 }
 
-DamperReading read_damper_table(const TomlTable& top, const std::filesystem::path& base_directory) {
+DamperReading read_damper_table(const TomlTable& top, const std::filesystem::path& base_directory, SlipPolicy policy) {
   DamperReading reading;
   const TomlTable clamp = top.table("clamp");
   reading.description.clamp_mass = clamp.number("mass");
@@ -94,17 +94,18 @@ DamperReading read_damper_table(const TomlTable& top, const std::filesystem::pat
   if (arms.empty()) top.fail("arm", "an empty array: expected at least one [[arm]]");
   reading.references.resize(arms.size());
   for (std::size_t k = 0; k < arms.size(); ++k) {
-    reading.description.arms.push_back(read_arm(arms[k], base_directory, reading.references[k]));
+    reading.description.arms.push_back(read_arm(arms[k], base_directory, policy, reading.references[k]));
   }
   top.reject_unknown_keys();
   return reading;
 }
 
 /// The warnings of a damper: those of each referenced cable file (once per file),
-/// then each unusual value the damper file itself holds, at its line. A referenced
-/// cable's values that this file does not override are the cable file's to report.
+/// then each unusual value the damper file itself holds, at its line (one a unit
+/// slip explains refused where `policy` says so). A referenced cable's values that
+/// this file does not override are the cable file's to report.
 std::vector<std::string> damper_warnings(const DamperReading& reading, const toml::table& document,
-                                         const TomlSource& source) {
+                                         const TomlSource& source, SlipPolicy policy) {
   std::vector<std::string> warnings;
   const auto add = [&warnings](std::string line) {
     if (std::find(warnings.begin(), warnings.end(), line) == warnings.end()) warnings.push_back(std::move(line));
@@ -112,18 +113,21 @@ std::vector<std::string> damper_warnings(const DamperReading& reading, const tom
   for (const auto& reference : reading.references) {
     if (reference) std::for_each(reference->warnings.begin(), reference->warnings.end(), add);
   }
+  std::vector<std::string> own;
   for (const UnusualValue& u : reading.description.unusual_values()) {
     if (!document.at_path(u.field)) continue;  // in a referenced cable file
-    add(field_location(document, source, u.field) + u.message());
+    judge_unusual(u, field_location(document, source, u.field), policy, own);
   }
+  std::for_each(own.begin(), own.end(), add);
   return warnings;
 }
 
-DamperFile build_damper(const toml::table& document, const TomlSource& source, const std::filesystem::path& base_directory) {
+DamperFile build_damper(const toml::table& document, const TomlSource& source, const std::filesystem::path& base_directory,
+                        SlipPolicy policy) {
   DamperReading reading = build_from_file(document, source, [&] {
-    return read_damper_table(TomlTable(document, source, ""), base_directory);
+    return read_damper_table(TomlTable(document, source, ""), base_directory, policy);
   });
-  std::vector<std::string> warnings = damper_warnings(reading, document, source);
+  std::vector<std::string> warnings = damper_warnings(reading, document, source, policy);
   std::vector<std::filesystem::path> cable_files;
   for (const auto& reference : reading.references) {
     if (reference) cable_files.push_back(reference->path);
@@ -134,18 +138,21 @@ DamperFile build_damper(const toml::table& document, const TomlSource& source, c
 
 }  // namespace
 
-DamperFile load_damper_file(const std::filesystem::path& path) {
-  return build_damper(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path());
+DamperFile load_damper_file(const std::filesystem::path& path, SlipPolicy policy) {
+  return build_damper(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path(), policy);
 }
 
-damper::Damper read_damper_file(const std::filesystem::path& path) { return load_damper_file(path).damper; }
-
-DamperFile load_damper_text(std::string_view text, std::string_view source) {
-  return build_damper(parse_toml_text(text, source), TomlSource{std::string(source), false}, std::filesystem::path());
+damper::Damper read_damper_file(const std::filesystem::path& path, SlipPolicy policy) {
+  return load_damper_file(path, policy).damper;
 }
 
-damper::Damper read_damper_text(std::string_view text, std::string_view source) {
-  return load_damper_text(text, source).damper;
+DamperFile load_damper_text(std::string_view text, std::string_view source, SlipPolicy policy) {
+  return build_damper(parse_toml_text(text, source), TomlSource{std::string(source), false}, std::filesystem::path(),
+                      policy);
+}
+
+damper::Damper read_damper_text(std::string_view text, std::string_view source, SlipPolicy policy) {
+  return load_damper_text(text, source, policy).damper;
 }
 
 std::string damper_file_toml(const damper::DamperDescription& description, std::string_view comment) {

@@ -58,19 +58,19 @@ struct DesignReading {
   std::vector<std::string> warnings;
 };
 
-DesignReading read_design(const TomlTable& top, const std::filesystem::path& base_directory) {
+DesignReading read_design(const TomlTable& top, const std::filesystem::path& base_directory, SlipPolicy policy) {
   DesignReading r;
   const std::string damper = top.optional_string("damper").value_or("");
   if (!top.contains("damper")) top.fail("damper", "missing: expected the base damper file, e.g. damper = \"damper.toml\"");
   r.damper_file = design_input(top, "damper", damper, base_directory, "damper");
-  DamperFile d = load_damper_file(r.damper_file);
+  DamperFile d = load_damper_file(r.damper_file, policy);
   r.base = d.damper.description();
   r.inputs.push_back(r.damper_file);
   r.inputs.insert(r.inputs.end(), d.cable_files.begin(), d.cable_files.end());
   r.warnings = std::move(d.warnings);
   for (const std::string& name : design_span_names(top)) {
     const std::filesystem::path path = design_input(top, "spans", name, base_directory, "span");
-    SpanFile s = load_span_file(path);
+    SpanFile s = load_span_file(path, policy);
     r.inputs.push_back(path);
     r.inputs.insert(r.inputs.end(), s.inputs.begin(), s.inputs.end());
     r.warnings.insert(r.warnings.end(), s.warnings.begin(), s.warnings.end());
@@ -111,10 +111,10 @@ DesignReading read_design(const TomlTable& top, const std::filesystem::path& bas
 
 }  // namespace
 
-DesignFile load_design_file(const std::filesystem::path& path) {
+DesignFile load_design_file(const std::filesystem::path& path, SlipPolicy policy) {
   const toml::table document = parse_toml_file(path);
   const TomlSource source{path.string(), true};
-  DesignReading r = read_design(TomlTable(document, source, ""), path.parent_path());
+  DesignReading r = read_design(TomlTable(document, source, ""), path.parent_path(), policy);
   design::DesignStudy study = build_from_file(document, source, [&] {
     return design::DesignStudy(std::move(r.base), std::move(r.spans), r.objective, std::move(r.variables),
                                std::move(r.ties), r.constraints, r.points);

@@ -15,6 +15,7 @@
 #include "stockbridge/io/conductor_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/span/tension_figures.hpp"
 #include "span_reading.hpp"
 #include "toml_reader.hpp"
 
@@ -38,9 +39,22 @@ struct GivenSpan {
   std::string conductor;  ///< a catalogue type or a conductor file; empty: the line's
   std::optional<double> speed_min, speed_max;
   std::string where;      ///< "file:line: " for messages
-  /// The location of one of its keys or columns ("file:line: "), and its name there.
+  /// The location of one of its keys or columns ("file:line: ").
   std::function<std::string(std::string_view key)> located;
+  bool from_csv = false;  ///< a spans CSV's row (its keys named as columns) or a [[span]] table
+
+  /// A key as the span was given it: the [[span]] table's key, or the CSV's column
+  /// ("tension" -> "tension_n").
+  std::string named(std::string_view key) const;
 };
+
+std::string GivenSpan::named(std::string_view key) const {
+  if (!from_csv) return std::string(key);
+  if (key == "length") return "length_m";
+  if (key == "tension") return "tension_n";
+  if (key == "catenary_parameter") return "catenary_parameter_m";
+  return std::string(key);
+}
 
 constexpr std::array<std::string_view, 3> kTensionForms{"tension", "tension_fraction", "catenary_parameter"};
 
@@ -59,10 +73,14 @@ span::Conductor span_conductor(const GivenSpan& given, const span::Conductor& li
                                    given.located("conductor"), printable(c), printable(path.string(), 300)));
     }
     inputs.push_back(path);
-    return span::conductor_of(read_conductor_file(path));
+    span::Conductor read = span::conductor_of(read_conductor_file(path));
+    read.source = fmt::format("the conductor file {}", c);
+    return read;
   }
   try {
-    return span::conductor_of(catalogue_conductor(c));
+    span::Conductor read = span::conductor_of(catalogue_conductor(c));
+    read.source = fmt::format("the catalogue's {}", c);
+    return read;
   } catch (const InvalidParameter& e) {
     throw InputError(fmt::format("{}conductor{}, or a conductor file (*.toml)", given.located("conductor"), e.detail()));
   }
@@ -72,18 +90,26 @@ span::Conductor span_conductor(const GivenSpan& given, const span::Conductor& li
 /// InvalidParameter at the key (or column) it names, or at the shared table's line.
 line::LineSpan build_given(const GivenSpan& given, const SpanReading& shared, const toml::table& document,
                            const TomlSource& source, const std::filesystem::path& base,
-                           std::vector<std::filesystem::path>& inputs) {
+                           std::vector<std::filesystem::path>& inputs, std::vector<std::string>& warnings) {
   span::Conductor conductor = span_conductor(given, shared.conductor, base, inputs);
   span::WindModel wind = shared.wind;
   if (given.speed_min) wind.speed_min = *given.speed_min;
   if (given.speed_max) wind.speed_max = *given.speed_max;
   try {
+    wind = within_field("span", [&] {
+      return span::terrain_wind(std::move(wind), given.terrain, shared.wind_law_by_terrain, shared.turbulence_given);
+    });
     double tension = given.tension_value;
     if (given.tension_form == "tension_fraction") tension = span::tension_from_fraction(conductor, tension, "span.tension_fraction");
     if (given.tension_form == "catenary_parameter") {
       tension = span::tension_from_catenary_parameter(conductor, tension, "span.catenary_parameter");
     }
     if (given.tension_form == "tension") span::check_tension(conductor, tension, "span.tension");
+    require_plausible("span.length", *given.length, "m");
+    span_reading::judge_span_tension(
+        conductor, *given.length, tension,
+        fmt::format("{}span \"{}\": ", given.located(given.tension_form), printable(given.id)),
+        given.named(given.tension_form), given.tension_value, shared.policy, warnings);
     span::Span s(std::move(conductor), *given.length, tension, std::move(wind), shared.self_damping, {}, shared.fatigue,
                  given.terrain);
     return line::LineSpan{given.id, std::move(s), shared.balance, given.tension_form, given.tension_value,
@@ -92,7 +118,7 @@ line::LineSpan build_given(const GivenSpan& given, const SpanReading& shared, co
     const std::string& field = e.field();
     if (field.starts_with("span.")) {
       throw InputError(fmt::format("{}span \"{}\": {}{}", given.located(field.substr(5)), printable(given.id),
-                                   field.substr(5), e.detail()));
+                                   given.named(field.substr(5)), e.detail()));
     }
     if (field.starts_with("wind.speed_m") && (given.speed_min || given.speed_max)) {
       throw InputError(fmt::format("{}span \"{}\": {}", given.where, printable(given.id), e.what()));
@@ -104,15 +130,19 @@ line::LineSpan build_given(const GivenSpan& given, const SpanReading& shared, co
   }
 }
 
-void check_given(const GivenSpan& given, std::vector<std::string>& warnings) {
+/// The span's values outside their typical ranges, at its table or row: one a unit
+/// slip explains refused under `policy` (typical_ranges.hpp).
+void check_given(const GivenSpan& given, SlipPolicy policy, std::vector<std::string>& warnings) {
   std::vector<UnusualValue> unusual;
   check_typical(unusual, "length", *given.length, typical::span_length);
   const TypicalRange& range = given.tension_form == "tension"            ? typical::span_tension
                               : given.tension_form == "tension_fraction" ? typical::tension_fraction
                                                                          : typical::catenary_parameter;
   check_typical(unusual, given.tension_form, given.tension_value, range);
-  for (const UnusualValue& u : unusual) {
-    warnings.push_back(fmt::format("{}span \"{}\": {}", given.located(u.field), printable(given.id), u.message()));
+  for (UnusualValue& u : unusual) {
+    const std::string location = fmt::format("{}span \"{}\": ", given.located(u.field), printable(given.id));
+    u.field = given.named(u.field);
+    judge_unusual(u, location, policy, warnings);
   }
 }
 
@@ -195,6 +225,7 @@ std::vector<GivenSpan> given_from_csv(const std::filesystem::path& path) {
     GivenSpan g;
     g.where = where;
     g.located = [where](std::string_view) { return where; };
+    g.from_csv = true;
     g.id = cell(0);
     if (g.id.empty()) throw InputError(where + "column 'id' is empty: expected the span's name (e.g. T12-T13)");
     g.length = csv_number(cell(1), where, "length_m");
@@ -233,7 +264,7 @@ std::vector<GivenSpan> given_from_csv(const std::filesystem::path& path) {
 
 /// A damper type of [dampers] types: a damper file or a measured sheet, its mass.
 line::DamperType read_damper_type(const TomlTable& t, const std::filesystem::path& base, SpanReading& reading) {
-  t.accept_only({"name", "file", "impedance", "mass"});
+  t.accept_only({"name", "file", "impedance", "mass", "price"});
   span_reading::DamperSource source = span_reading::read_damper_source(
       t, base, reading,
       fmt::format("missing key 'file' in {}: expected a damper file, or impedance = a measured impedance CSV file "
@@ -241,6 +272,7 @@ line::DamperType read_damper_type(const TomlTable& t, const std::filesystem::pat
                   t.key_path()));
   line::DamperType type;
   type.mass = t.optional_number("mass");
+  type.price = t.optional_number("price");
   if (source.damper && !type.mass) type.mass = source.damper->total_mass();
   type.file = std::filesystem::absolute(source.path).lexically_normal().string();
   type.name = t.optional_string("name").value_or(source.name);
@@ -265,6 +297,16 @@ line::ScheduleRules read_rules(const TomlTable& d, const std::optional<TomlTable
     }
   }
   r.life_target = d.optional_number("life_target");
+  const auto parsed = [&d](std::string_view key, auto parse) {
+    try {
+      return parse(*d.optional_string(key));
+    } catch (const InvalidParameter& e) {
+      throw InputError(d.location(key) + e.within("dampers").what());
+    }
+  };
+  if (d.contains("choose")) r.choose = parsed("choose", line::parse_type_choice);
+  if (d.contains("undamped_rule")) r.undamped_rule = parsed("undamped_rule", line::parse_undamped_rule);
+  r.accept_uncertain = d.optional_boolean("accept_uncertain").value_or(false);
   r.position_step = d.optional_number("position_step").value_or(r.position_step);
   if (l) {
     if (const auto n = l->optional_integer("points", 2, 100000)) r.points = static_cast<int>(*n);
@@ -273,10 +315,12 @@ line::ScheduleRules read_rules(const TomlTable& d, const std::optional<TomlTable
   return r;
 }
 
-LineFile build_line(toml::table document, const TomlSource& source, const std::filesystem::path& base) {
+LineFile build_line(toml::table document, const TomlSource& source, const std::filesystem::path& base,
+                    SlipPolicy policy) {
   const TomlTable top(document, source, "");
   top.accept_only({"conductor", "wind", "self_damping", "fatigue", "balance", "line", "dampers", "span", "spans"});
   SpanReading shared;
+  shared.policy = policy;
   shared.conductor = span_reading::read_conductor(top.table("conductor"), base, shared);
   span_reading::read_wind(top.table("wind"), base, shared);
   shared.self_damping = span_reading::read_self_damping(top.table("self_damping"));
@@ -289,17 +333,23 @@ LineFile build_line(toml::table document, const TomlSource& source, const std::f
   const std::optional<TomlTable> line_table = top.optional_table("line");
   std::string name = source.lines ? std::filesystem::path(source.name).stem().string() : std::string("line");
   if (line_table) {
-    line_table->accept_only({"name", "points", "search_points"});
+    line_table->accept_only({"name", "points", "search_points", "wind_law_by_terrain"});
+    shared.wind_law_by_terrain = line_table->optional_boolean("wind_law_by_terrain").value_or(false);
     name = line_table->optional_string("name").value_or(name);
   }
   const TomlTable dampers = top.table("dampers");
   dampers.accept_only({"types", "min_per_end", "max_per_end", "position_min", "position_max", "spacing_min",
-                       "objective", "life_target", "position_step"});
+                       "objective", "life_target", "position_step", "choose", "accept_uncertain", "undamped_rule"});
   std::vector<line::DamperType> types;
   for (const TomlTable& t : dampers.table_array("types", true)) types.push_back(read_damper_type(t, base, shared));
   const line::ScheduleRules rules = read_rules(dampers, line_table);
 
   std::vector<GivenSpan> given;
+  if (const toml::node* node = top.node("spans"); node && !node->is_string()) {
+    top.fail("spans", fmt::format("{}: expected the path of a spans CSV file (a string); spans written in the line "
+                                  "file are [[span]] tables",
+                                  describe_type(*node)));
+  }
   const std::optional<std::string> spans_csv = top.optional_string("spans");
   const std::vector<TomlTable> span_tables = top.table_array("span", false);
   if (spans_csv && !span_tables.empty()) {
@@ -314,11 +364,17 @@ LineFile build_line(toml::table document, const TomlSource& source, const std::f
   }
   std::vector<std::string> warnings;
   span_reading::add_span_warnings(shared, document, source, warnings, false);
+  for (const auto& [key, value] : {std::pair{"position_min", rules.positions.position_min},
+                                   std::pair{"position_max", rules.positions.position_max}}) {
+    if (const auto u = unusual(fmt::format("dampers.{}", key), value, typical::damper_position)) {
+      judge_unusual(*u, dampers.location(key), policy, warnings);
+    }
+  }
   std::vector<line::LineSpan> spans;
   spans.reserve(given.size());
   for (const GivenSpan& g : given) {
-    check_given(g, warnings);
-    spans.push_back(build_given(g, shared, document, source, base, shared.inputs));
+    check_given(g, policy, warnings);
+    spans.push_back(build_given(g, shared, document, source, base, shared.inputs, warnings));
   }
   std::optional<line::Line> built;
   try {
@@ -340,12 +396,14 @@ LineFile build_line(toml::table document, const TomlSource& source, const std::f
 
 }  // namespace line_reading
 
-LineFile load_line_file(const std::filesystem::path& path) {
-  return line_reading::build_line(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path());
+LineFile load_line_file(const std::filesystem::path& path, SlipPolicy policy) {
+  return line_reading::build_line(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path(), policy);
 }
 
-LineFile load_line_text(std::string_view text, std::string_view source, const std::filesystem::path& base_directory) {
-  return line_reading::build_line(parse_toml_text(text, source), TomlSource{std::string(source), false}, base_directory);
+LineFile load_line_text(std::string_view text, std::string_view source, const std::filesystem::path& base_directory,
+                        SlipPolicy policy) {
+  return line_reading::build_line(parse_toml_text(text, source), TomlSource{std::string(source), false}, base_directory,
+                                  policy);
 }
 
 namespace {

@@ -1,6 +1,7 @@
 #include "stockbridge/io/span_file.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <initializer_list>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/span/stranded_conductor.hpp"
+#include "stockbridge/span/tension_figures.hpp"
 #include "span_reading.hpp"
 #include "toml_reader.hpp"
 
@@ -104,10 +106,18 @@ span::Conductor read_conductor(const TomlTable& table, const std::filesystem::pa
     c.outer_wire_diameter = table.number("outer_wire_diameter");
     c.outer_wire_modulus = table.number("outer_wire_modulus");
     c.aluminium_layers = static_cast<int>(table.integer("aluminium_layers", 1, 10));  // Conductor::validate's range
+    c.source = "the [conductor] keys";
     return c;
   }
   c = span::conductor_of(type ? span_catalogue_conductor(table, *type)
                               : span_conductor_file(table, *file, base_directory, reading));
+  c.source = type ? fmt::format("the catalogue's {}", *type) : fmt::format("the conductor file {}", *file);
+  std::string given;
+  for (const std::string_view key : {"name", "mass_per_length", "diameter", "rated_tensile_strength", "ei_min", "ei_max",
+                                     "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers"}) {
+    if (table.contains(key)) given += fmt::format("{}{}", given.empty() ? "" : ", ", key);
+  }
+  if (!given.empty()) c.source += fmt::format("; {} given beside it", given);
   c.name = table.optional_string("name").value_or(c.name);
   c.mass_per_length = table.optional_number("mass_per_length").value_or(c.mass_per_length);
   c.diameter = table.optional_number("diameter").value_or(c.diameter);
@@ -121,7 +131,8 @@ span::Conductor read_conductor(const TomlTable& table, const std::filesystem::pa
 }
 
 void read_span_table(const TomlTable& table, SpanReading& reading) {
-  table.accept_only({"length", "tension", "tension_fraction", "catenary_parameter", "terrain"});
+  table.accept_only({"length", "tension", "tension_fraction", "catenary_parameter", "terrain", "wind_law_by_terrain"});
+  reading.wind_law_by_terrain = table.optional_boolean("wind_law_by_terrain").value_or(false);
   reading.length = table.number("length");
   reading.tension = table.optional_number("tension");
   reading.tension_fraction = table.optional_number("tension_fraction");
@@ -153,7 +164,10 @@ void read_wind(const TomlTable& table, const std::filesystem::path& base_directo
   if (const auto v = table.optional_number("strouhal")) wind.strouhal = *v;
   if (const auto v = table.optional_number("speed_min")) wind.speed_min = *v;
   if (const auto v = table.optional_number("speed_max")) wind.speed_max = *v;
-  if (const auto v = table.optional_number("turbulence_intensity")) wind.turbulence_intensity = *v;
+  if (const auto v = table.optional_number("turbulence_intensity")) {
+    wind.turbulence_intensity = *v;
+    reading.turbulence_given = true;
+  }
   const std::optional<std::string> file = table.optional_string("table");
   if (wind.law != span::WindLaw::table) {
     if (file) {
@@ -174,8 +188,22 @@ void read_wind(const TomlTable& table, const std::filesystem::path& base_directo
                                     "span file's folder)",
                                     printable(*file), printable(path.string())));
   }
-  const std::vector<std::vector<double>> columns = read_csv_columns(path, {"y_over_d", "fnc"}, 2);
-  for (std::size_t i = 0; i < columns[0].size(); ++i) wind.table.push_back({columns[0][i], columns[1][i]});
+  const CsvRows rows = read_csv_rows(path, {"y_over_d", "fnc"}, 2);
+  for (std::size_t i = 0; i < rows.lines.size(); ++i) {
+    const double y = rows.columns[0][i];
+    const auto at = [&](std::string_view column, double value, std::string_view expected) {
+      return InputError(fmt::format("{}:{}: column '{}' = {}: expected {}", path.string(), rows.lines[i], column,
+                                    format_value(value), expected));
+    };
+    if (!(y >= 0.0) || y > 10.0) throw at("y_over_d", y, "an amplitude over the diameter from 0 to 10");
+    if (i > 0 && !(y > rows.columns[0][i - 1])) {
+      throw at("y_over_d", y, fmt::format("more than the row before's {} (increasing)", format_value(rows.columns[0][i - 1])));
+    }
+    if (std::abs(rows.columns[1][i]) > 1e3) {
+      throw at("fnc", rows.columns[1][i], "a reduced wind power within +-1000 W/(m Hz^3 m^4) (the published curves lie below 10)");
+    }
+    wind.table.push_back({y, rows.columns[1][i]});
+  }
   reading.inputs.push_back(path);
 }
 
@@ -210,7 +238,7 @@ std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, c
   for (const auto& [read, sheet] : reading.sheets) {
     if (read == path) return sheet;
   }
-  MeasuredImpedanceFile loaded = load_measured_impedance(path);
+  MeasuredImpedanceFile loaded = load_measured_impedance(path, reading.policy);
   span_add_warnings(reading, std::move(loaded.warnings));
   reading.inputs.push_back(path);
   try {
@@ -238,7 +266,7 @@ DamperSource read_damper_source(const TomlTable& table, const std::filesystem::p
     return source;
   }
   source.path = span_input_file(table, "file", *model, base_directory, "damper file");
-  DamperFile loaded = load_damper_file(source.path);
+  DamperFile loaded = load_damper_file(source.path, reading.policy);
   reading.inputs.push_back(source.path);
   reading.inputs.insert(reading.inputs.end(), loaded.cable_files.begin(), loaded.cable_files.end());
   span_add_warnings(reading, std::move(loaded.warnings));
@@ -269,11 +297,37 @@ span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem:
   return span::SpanDamper{std::move(source.damper), position, both_ends, std::move(source.name), std::move(source.sheet)};
 }
 
+/// The criterion, named or told by the one limit given: cycles (the Safe Border
+/// Line), endurance_limit_mpa or endurance_limit (Pa: a stress), limit_pp_microstrain.
+span::FatigueCriterion read_criterion(const TomlTable& table, const span::FatigueSpec& fatigue) {
+  if (const auto name = table.optional_string("criterion")) {
+    return span_parsed_name(table, "criterion", *name, span::parse_fatigue_criterion);
+  }
+  if (fatigue.endurance_limit) return span::FatigueCriterion::stress;
+  if (fatigue.limit_pp_microstrain) return span::FatigueCriterion::microstrain;
+  if (!fatigue.cycles) {
+    throw InputError(fmt::format("{}missing key 'cycles' in [fatigue]: expected cycles (the Safe Border Line at that "
+                                 "many cycles), endurance_limit_mpa (a given endurance limit), limit_pp_microstrain, "
+                                 "or criterion = \"safe-border-line\", \"microstrain\" or \"stress\"",
+                                 table.location("cycles")));
+  }
+  return span::FatigueCriterion::safe_border_line;
+}
+
 span::FatigueSpec read_fatigue(const TomlTable& table) {
-  table.accept_only({"cycles", "endurance_limit", "wind_weibull", "aeolian_fraction", "yb_distance"});
+  table.accept_only({"criterion", "cycles", "endurance_limit", "endurance_limit_mpa", "limit_pp_microstrain",
+                     "wind_weibull", "aeolian_fraction", "yb_distance"});
   span::FatigueSpec fatigue;
   fatigue.cycles = table.optional_number("cycles");
   fatigue.endurance_limit = table.optional_number("endurance_limit");
+  if (const auto mpa = table.optional_number("endurance_limit_mpa")) {
+    if (fatigue.endurance_limit) {
+      table.fail("endurance_limit_mpa", "given beside endurance_limit (Pa): expected one of the two");
+    }
+    fatigue.endurance_limit = *mpa * 1e6;
+  }
+  fatigue.limit_pp_microstrain = table.optional_number("limit_pp_microstrain");
+  fatigue.criterion = read_criterion(table, fatigue);
   fatigue.yb_distance = table.optional_number("yb_distance").value_or(fatigue.yb_distance);
   const std::optional<TomlTable> weibull = table.optional_table("wind_weibull");
   const std::optional<double> fraction = table.optional_number("aeolian_fraction");
@@ -323,9 +377,10 @@ span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
   return options;
 }
 
-SpanReading read_span_document(const TomlTable& top, const std::filesystem::path& base_directory) {
+SpanReading read_span_document(const TomlTable& top, const std::filesystem::path& base_directory, SlipPolicy policy) {
   top.accept_only({"conductor", "span", "wind", "self_damping", "damper", "fatigue", "balance"});
   SpanReading reading;
+  reading.policy = policy;
   reading.conductor = read_conductor(top.table("conductor"), base_directory, reading);
   read_span_table(top.table("span"), reading);
   read_wind(top.table("wind"), base_directory, reading);
@@ -375,28 +430,58 @@ void add_span_warnings(const SpanReading& reading, const toml::table& document, 
   }
   const span::FatigueSpec& f = reading.fatigue;
   check("fatigue.cycles", f.cycles, typical::fatigue_cycles);
-  check("fatigue.endurance_limit", f.endurance_limit, typical::endurance_limit);
+  if (document.at_path("fatigue.endurance_limit_mpa")) {
+    check("fatigue.endurance_limit_mpa", f.endurance_limit ? std::optional(*f.endurance_limit / 1e6) : std::nullopt,
+          typical::endurance_limit_mpa);
+  } else {
+    check("fatigue.endurance_limit", f.endurance_limit, typical::endurance_limit);
+  }
+  check("fatigue.limit_pp_microstrain", f.limit_pp_microstrain, typical::limit_pp_microstrain);
   check("fatigue.yb_distance", f.yb_distance, typical::yb_distance);
   if (f.life) {
     check("fatigue.wind_weibull.shape", f.life->wind_weibull.shape, typical::weibull_shape);
     check("fatigue.wind_weibull.scale", f.life->wind_weibull.scale, typical::weibull_scale);
     check("fatigue.aeolian_fraction", f.life->aeolian_fraction, typical::aeolian_fraction);
   }
-  for (const UnusualValue& u : unusual) warnings.push_back(field_location(document, source, u.field) + u.message());
+  for (const UnusualValue& u : unusual) {
+    judge_unusual(u, field_location(document, source, u.field), reading.policy, warnings);
+  }
 }
 
-SpanFile build_span(const toml::table& document, const TomlSource& source, const std::filesystem::path& base_directory) {
-  SpanReading reading = read_span_document(TomlTable(document, source, ""), base_directory);
+void judge_span_tension(const span::Conductor& conductor, double length, double tension, const std::string& location,
+                        std::string_view key, double given, SlipPolicy policy, std::vector<std::string>& warnings) {
+  if (const std::optional<std::string> why = span::implausible_tension(conductor, length, tension)) {
+    judge_implausible(fmt::format("{}{} = {}: {}", location, key, format_value(given), *why), policy, warnings);
+  }
+}
+
+SpanFile build_span(const toml::table& document, const TomlSource& source, const std::filesystem::path& base_directory,
+                    SlipPolicy policy) {
+  SpanReading reading = read_span_document(TomlTable(document, source, ""), base_directory, policy);
   add_span_warnings(reading, document, source, reading.warnings);
-  span::Span built = build_from_file(document, source, [&] {
-    const double tension = within_field("span", [&] {
+  const auto [key, given] = reading.tension              ? std::pair{"tension", *reading.tension}
+                            : reading.catenary_parameter ? std::pair{"catenary_parameter", *reading.catenary_parameter}
+                                                         : std::pair{"tension_fraction", *reading.tension_fraction};
+  const double tension = build_from_file(document, source, [&] {
+    within_field("conductor", [&] { reading.conductor.validate(); });
+    require_plausible("span.length", reading.length, "m");
+    return within_field("span", [&] {
       if (reading.tension) return *reading.tension;
       if (reading.catenary_parameter) {
         return span::tension_from_catenary_parameter(reading.conductor, *reading.catenary_parameter);
       }
       return span::tension_from_fraction(reading.conductor, *reading.tension_fraction);
     });
+  });
+  const std::string field = fmt::format("span.{}", key);
+  judge_span_tension(reading.conductor, reading.length, tension, field_location(document, source, field), field, given,
+                     policy, reading.warnings);
+  span::Span built = build_from_file(document, source, [&] {
     within_field("balance", [&] { reading.balance.validate(); });
+    reading.wind = within_field("span", [&] {
+      return span::terrain_wind(std::move(reading.wind), reading.terrain, reading.wind_law_by_terrain,
+                                reading.turbulence_given);
+    });
     return span::Span(std::move(reading.conductor), reading.length, tension, std::move(reading.wind),
                       std::move(reading.self_damping), std::move(reading.dampers), std::move(reading.fatigue),
                       reading.terrain);
@@ -408,12 +493,13 @@ SpanFile build_span(const toml::table& document, const TomlSource& source, const
 
 using span_reading::build_span;
 
-SpanFile load_span_file(const std::filesystem::path& path) {
-  return build_span(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path());
+SpanFile load_span_file(const std::filesystem::path& path, SlipPolicy policy) {
+  return build_span(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path(), policy);
 }
 
-SpanFile load_span_text(std::string_view text, std::string_view source, const std::filesystem::path& base_directory) {
-  return build_span(parse_toml_text(text, source), TomlSource{std::string(source), false}, base_directory);
+SpanFile load_span_text(std::string_view text, std::string_view source, const std::filesystem::path& base_directory,
+                        SlipPolicy policy) {
+  return build_span(parse_toml_text(text, source), TomlSource{std::string(source), false}, base_directory, policy);
 }
 
 }  // namespace stockbridge::io

@@ -19,13 +19,17 @@ namespace stockbridge::io::span_reading {
 
 /// A span file's contents before the model validates them.
 struct SpanReading {
+  /// What the readers do with a value a unit slip explains (typical_ranges.hpp).
+  SlipPolicy policy = SlipPolicy::refuse;
   span::Conductor conductor;
   double length = 0.0;
   std::optional<double> tension;
   std::optional<double> tension_fraction;
   std::optional<double> catenary_parameter;
   std::optional<int> terrain;
+  bool wind_law_by_terrain = false;  ///< [span] wind_law_by_terrain
   span::WindModel wind;
+  bool turbulence_given = false;     ///< [wind] turbulence_intensity given
   span::SelfDampingModel self_damping;
   std::vector<span::SpanDamper> dampers;
   span::FatigueSpec fatigue;
@@ -72,8 +76,14 @@ DamperSource read_damper_source(const TomlTable& table, const std::filesystem::p
 void span_add_warnings(SpanReading& reading, std::vector<std::string> warnings);
 /// The values outside their typical ranges, each at its line: the shared tables', and
 /// the [span] table's and the dampers' where `with_span` (a line's spans are checked
-/// where they are given).
+/// where they are given); one a unit slip explains refused (UnusualValueError) where
+/// the reading's policy says so.
 void add_span_warnings(const SpanReading& reading, const toml::table& document, const TomlSource& source,
                        std::vector<std::string>& warnings, bool with_span = true);
+/// A span's tension (N) judged against how spans hang (span::implausible_tension):
+/// `location` and `key` name it as given (the [span] table's key or a CSV column),
+/// `given` its value there; refused or a warning by `policy`.
+void judge_span_tension(const span::Conductor& conductor, double length, double tension, const std::string& location,
+                        std::string_view key, double given, SlipPolicy policy, std::vector<std::string>& warnings);
 
 }  // namespace stockbridge::io::span_reading

@@ -9,6 +9,32 @@
 
 namespace stockbridge::line {
 
+TypeChoice parse_type_choice(std::string_view name) {
+  if (name == "fewest-then-lightest") return TypeChoice::fewest_then_lightest;
+  if (name == "fewest-then-cheapest") return TypeChoice::fewest_then_cheapest;
+  if (name == "lowest-stress") return TypeChoice::lowest_stress;
+  throw InvalidParameter("choose", fmt::format(" = '{}': expected fewest-then-lightest, fewest-then-cheapest or "
+                                               "lowest-stress",
+                                               printable(name)));
+}
+
+std::string_view type_choice_name(TypeChoice choice) {
+  switch (choice) {
+    case TypeChoice::fewest_then_lightest: return "fewest-then-lightest";
+    case TypeChoice::fewest_then_cheapest: return "fewest-then-cheapest";
+    case TypeChoice::lowest_stress: return "lowest-stress";
+  }
+  return "fewest-then-lightest";
+}
+
+UndampedRule parse_undamped_rule(std::string_view name) {
+  if (name == "balance") return UndampedRule::balance;
+  if (name == "tb273") return UndampedRule::tb273;
+  throw InvalidParameter("undamped_rule", fmt::format(" = '{}': expected balance or tb273", printable(name)));
+}
+
+std::string_view undamped_rule_name(UndampedRule rule) { return rule == UndampedRule::tb273 ? "tb273" : "balance"; }
+
 void ScheduleRules::validate() const {
   require_in_range("dampers.min_per_end", min_per_end, 0, 10);
   require_in_range("dampers.max_per_end", max_per_end, 1, 10);
@@ -44,12 +70,18 @@ Line::Line(std::vector<LineSpan> spans, std::vector<DamperType> types, ScheduleR
   for (std::size_t i = 0; i < spans_.size(); ++i) {
     const LineSpan& s = spans_[i];
     const std::string field = fmt::format("span[{}].id", i);
-    if (s.id.empty()) throw InvalidParameter(field, ": empty: every span needs an id");
+    if (s.id.find_first_not_of(" \t") == std::string::npos) throw InvalidParameter(field, ": empty: every span needs an id");
     if (!ids.insert(s.id).second) throw InvalidParameter(field, fmt::format(" = \"{}\": given to an earlier span too", printable(s.id)));
     if (!s.span.dampers().empty()) throw InvalidParameter(field, ": a line's span carries no dampers of its own");
     if (rules_.positions.objective == span::PositionObjective::life && !s.span.fatigue().life) {
       throw InvalidParameter("dampers.objective", " = \"life\": the line gives no climate ([fatigue] wind_weibull and "
                                                   "aeolian_fraction) to compute a life with");
+    }
+    if (!(rules_.positions.position_max < 0.5 * s.span.length())) {
+      throw InvalidParameter("dampers.position_max",
+                             fmt::format(" = {}: expected less than half of every span, {} m for span \"{}\"",
+                                         format_value(rules_.positions.position_max),
+                                         format_value(0.5 * s.span.length()), printable(s.id)));
     }
     if (rules_.life_target && !s.span.fatigue().life) {
       throw InvalidParameter("dampers.life_target", ": the line gives no climate ([fatigue] wind_weibull and "
@@ -58,11 +90,25 @@ Line::Line(std::vector<LineSpan> spans, std::vector<DamperType> types, ScheduleR
   }
   std::set<std::string> names;
   for (std::size_t t = 0; t < types_.size(); ++t) {
+    if (types_[t].name.find_first_not_of(" \t") == std::string::npos) {
+      throw InvalidParameter(fmt::format("dampers.types[{}].name", t), ": empty: every damper type needs a name");
+    }
     if (!names.insert(types_[t].name).second) {
       throw InvalidParameter(fmt::format("dampers.types[{}].name", t),
                              fmt::format(" = \"{}\": given to an earlier type too", printable(types_[t].name)));
     }
     if (types_[t].mass) require_positive(fmt::format("dampers.types[{}].mass", t), *types_[t].mass, "kg");
+    if (types_[t].price) require_non_negative(fmt::format("dampers.types[{}].price", t), *types_[t].price, "");
+    // The choice compares every type by its mass or price: each must have it.
+    if (types_.size() > 1 && rules_.choose == TypeChoice::fewest_then_cheapest && !types_[t].price) {
+      throw InvalidParameter(fmt::format("dampers.types[{}].price", t),
+                             ": missing: choose = \"fewest-then-cheapest\" compares every type's price");
+    }
+    if (types_.size() > 1 && rules_.choose == TypeChoice::fewest_then_lightest && !types_[t].mass) {
+      throw InvalidParameter(fmt::format("dampers.types[{}].mass", t),
+                             ": missing: choose = \"fewest-then-lightest\" compares every type's mass (a measured "
+                             "sheet's type gives it as mass = kg), or choose = \"lowest-stress\"");
+    }
   }
 }
 

@@ -1,6 +1,7 @@
 #include "stockbridge/line/schedule.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -92,6 +93,11 @@ std::vector<double> extended(std::vector<double> x, const ScheduleRules& rules) 
   return x;
 }
 
+/// Safe by the rules: the verdict safe (uncertain too where the rules accept it).
+bool safe_by(span::Verdict verdict, const ScheduleRules& rules) {
+  return verdict == span::Verdict::safe || (rules.accept_uncertain && verdict == span::Verdict::uncertain);
+}
+
 span::Verdict verdict_of(const span::BalanceSummary& s, const ScheduleRules& rules, bool undamped) {
   if (!rules.life_target) return undamped ? s.undamped_verdict : s.verdict;
   const std::optional<span::LifeEstimate>& life = undamped ? s.undamped_life : s.life;
@@ -159,11 +165,23 @@ Candidate search_candidate(const Line& line, std::size_t index, std::size_t type
   span::SpanAnalysis analysis = analyse_with(line, index, type, positions, cache);
   Candidate c{type, std::move(positions), std::move(analysis), found.balances};
   c.objective = span::position_objective(c.analysis.balance, rules.positions.objective);
-  c.safe = verdict_of(c.analysis.balance.summary, rules, false) == span::Verdict::safe;
+  c.safe = safe_by(verdict_of(c.analysis.balance.summary, rules, false), rules);
   return c;
 }
 
 std::string megapascal(double pascal) { return fmt::format("{:.3g} MPa", pascal / 1e6); }
+
+/// What the type choice compares among the types safe with the fewest dampers: a
+/// damper's mass, its price, or nothing (0: the objective decides).
+double type_cost(const DamperType& type, TypeChoice choice) {
+  constexpr double kUnknown = std::numeric_limits<double>::infinity();
+  switch (choice) {
+    case TypeChoice::fewest_then_lightest: return type.mass.value_or(kUnknown);
+    case TypeChoice::fewest_then_cheapest: return type.price.value_or(kUnknown);
+    case TypeChoice::lowest_stress: return 0.0;
+  }
+  return 0.0;
+}
 
 void fill_undamped(ScheduleRow& row, const LineSpan& s, const span::BalanceSummary& u, const ScheduleRules& rules) {
   const span::TensionFigures t = span::tension_figures(s.span);
@@ -179,7 +197,7 @@ void fill_undamped(ScheduleRow& row, const LineSpan& s, const span::BalanceSumma
     row.terrain_within = safe->within ? 1 : 0;
   }
   row.endurance_limit = u.endurance_limit;
-  row.undamped_max_stress = u.undamped_max_stress_fymax;
+  row.undamped_max_stress = u.undamped_max_judged_stress;
   row.undamped_life_years = life_years_of(u.undamped_life);
   row.undamped_verdict = verdict_of(u, rules, true);
 }
@@ -191,8 +209,9 @@ void fill_arrangement(ScheduleRow& row, const Line& line, const Candidate* c, co
     row.per_end = static_cast<int>(c->positions.size());
     row.positions = c->positions;
   }
-  row.max_stress = s.converged > 0 ? s.max_stress_fymax : std::numeric_limits<double>::quiet_NaN();
-  row.max_stress_frequency = s.converged > 0 ? s.max_stress_frequency_hz : std::numeric_limits<double>::quiet_NaN();
+  row.max_stress = s.converged > 0 ? s.max_judged_stress : std::numeric_limits<double>::quiet_NaN();
+  row.max_stress_high = s.converged > 0 ? s.max_judged_stress_high : std::numeric_limits<double>::quiet_NaN();
+  row.max_stress_frequency = s.converged > 0 ? s.max_judged_stress_frequency_hz : std::numeric_limits<double>::quiet_NaN();
   row.life_years = life_years_of(s.life);
   row.verdict = verdict_of(s, line.rules(), false);
   row.converged = s.converged;
@@ -205,10 +224,9 @@ void fill_arrangement(ScheduleRow& row, const Line& line, const Candidate* c, co
                                        s.points - s.converged, s.points, failed->frequency_hz,
                                        brief_report(failed->summary)));
   }
-  if (c && s.converged > 0 && s.max_stress_fymax > s.undamped_max_stress_fymax) {
-    row.warnings.push_back(fmt::format("the dampers raise the largest fymax stress above the undamped span's ({} "
-                                       "against {})",
-                                       megapascal(s.max_stress_fymax), megapascal(s.undamped_max_stress_fymax)));
+  if (c && s.converged > 0 && s.max_judged_stress > s.undamped_max_judged_stress) {
+    row.warnings.push_back(fmt::format("the dampers raise the largest stress above the undamped span's ({} against {})",
+                                       megapascal(s.max_judged_stress), megapascal(s.undamped_max_judged_stress)));
   }
   row.warnings.insert(row.warnings.end(), a.warnings.begin(), a.warnings.end());
 }
@@ -221,8 +239,21 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
   SpanSchedule out{ScheduleRow{}, analyse_with(line, index, 0, {}, cache)};
   out.row.index = index;
   fill_undamped(out.row, s, out.analysis.balance.summary, rules);
-  if (rules.min_per_end == 0 && out.row.undamped_verdict == span::Verdict::safe) {
+  if (rules.min_per_end == 0 && safe_by(out.row.undamped_verdict, rules)) {
     fill_arrangement(out.row, line, nullptr, out.analysis);
+    out.row.no_damper_basis = "balance";
+    return out;
+  }
+  if (rules.min_per_end == 0 && rules.undamped_rule == UndampedRule::tb273 && out.row.terrain_within == 1) {
+    fill_arrangement(out.row, line, nullptr, out.analysis);
+    out.row.verdict = span::Verdict::safe;
+    out.row.no_damper_basis = "tb273";
+    out.row.warnings.insert(
+        out.row.warnings.begin(),
+        fmt::format("no dampers by CIGRE TB 273: H/w {:.4g} m is within the {:.4g} m of terrain category {}; the "
+                    "energy balance without dampers judges it {} (largest stress {})",
+                    out.row.catenary_parameter, span::terrain_category(out.row.terrain).catenary_parameter_limit,
+                    out.row.terrain, span::verdict_name(out.row.undamped_verdict), megapascal(out.row.undamped_max_stress)));
     return out;
   }
   std::vector<std::vector<double>> previous(line.types().size());
@@ -234,7 +265,13 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
       out.row.balances += c.balances;
       previous[t] = c.positions;
       const auto better = [&](const Candidate& a, const Candidate& b) {
-        return a.safe != b.safe ? a.safe : a.objective < b.objective;
+        if (a.safe != b.safe) return a.safe;
+        if (a.safe) {
+          const double cost_a = type_cost(line.types()[a.type], rules.choose);
+          const double cost_b = type_cost(line.types()[b.type], rules.choose);
+          if (cost_a != cost_b) return cost_a < cost_b;
+        }
+        return a.objective < b.objective;
       };
       if (!best || better(c, *best)) best = std::move(c);
     }
@@ -259,16 +296,72 @@ span::SpanAnalysis analyse_arrangement(const Line& line, const ScheduleRow& row,
 std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<ScheduleRow>& rows) {
   std::vector<BillLine> bill;
   for (const DamperType& type : line.types()) {
-    BillLine b{type.name, 0, 0, std::nullopt};
+    BillLine b{type.name, 0, 0, std::nullopt, std::nullopt};
     for (const ScheduleRow& row : rows) {
       if (row.damper_type != type.name) continue;
       b.dampers += 2 * row.per_end;
       ++b.spans;
     }
     if (type.mass) b.mass = *type.mass * b.dampers;
+    if (type.price) b.price = *type.price * b.dampers;
     bill.push_back(std::move(b));
   }
   return bill;
+}
+
+namespace {
+
+/// A warning's kind: its text with every number (digits, and the '.', 'e' and sign
+/// within them) as '#'.
+std::string warning_kind(const std::string& text) {
+  std::string kind;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (!std::isdigit(static_cast<unsigned char>(text[i]))) {
+      kind += text[i];
+      continue;
+    }
+    while (i + 1 < text.size() && (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '.' ||
+                                   ((text[i + 1] == 'e' || text[i + 1] == '+' || text[i + 1] == '-') && i + 2 < text.size() &&
+                                    std::isdigit(static_cast<unsigned char>(text[i + 2]))))) {
+      ++i;
+    }
+    kind += '#';
+  }
+  return kind;
+}
+
+}  // namespace
+
+std::vector<std::string> grouped_warnings(const std::vector<ScheduleRow>& rows) {
+  struct Group {
+    std::string kind, first;
+    std::vector<std::string> ids;
+  };
+  std::vector<Group> groups;
+  for (const ScheduleRow& r : rows) {
+    for (const std::string& w : r.warnings) {
+      const std::string kind = warning_kind(w);
+      auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) { return x.kind == kind; });
+      if (g == groups.end()) {
+        groups.push_back({kind, w, {}});
+        g = groups.end() - 1;
+      }
+      if (g->ids.empty() || g->ids.back() != r.id) g->ids.push_back(r.id);
+    }
+  }
+  std::vector<std::string> out;
+  for (const Group& g : groups) {
+    if (g.ids.size() == 1) {
+      out.push_back(fmt::format("{}: {}", g.ids.front(), g.first));
+      continue;
+    }
+    std::string ids;
+    for (std::size_t k = 0; k < g.ids.size() && k < 12; ++k) ids += fmt::format("{}{}", k == 0 ? "" : ", ", g.ids[k]);
+    if (g.ids.size() > 12) ids += fmt::format(" and {} more", g.ids.size() - 12);
+    out.push_back(fmt::format("{} ({} spans: {}; the figures are {}'s, each span's are in its row)", g.first,
+                              g.ids.size(), ids, g.ids.front()));
+  }
+  return out;
 }
 
 ScheduleCounts schedule_counts(const std::vector<ScheduleRow>& rows) {
@@ -277,6 +370,7 @@ ScheduleCounts schedule_counts(const std::vector<ScheduleRow>& rows) {
     c.safe += r.verdict == span::Verdict::safe;
     c.unsafe += r.verdict == span::Verdict::unsafe;
     c.unknown += r.verdict == span::Verdict::unknown;
+    c.uncertain += r.verdict == span::Verdict::uncertain;
     const bool converged = r.converged == r.points;
     c.not_converged += !converged;
     c.worse_than_undamped += converged && r.per_end > 0 && r.max_stress > r.undamped_max_stress;

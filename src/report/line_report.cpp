@@ -26,8 +26,10 @@ std::vector<Fact> line_rules(const io::LineFile& file) {
   const line::ScheduleRules& r = file.line.rules();
   std::vector<Fact> out;
   for (const line::DamperType& t : file.line.types()) {
-    out.emplace_back("damper type " + t.name, fmt::format("{}{}", t.mass ? parts::number(*t.mass, 4) + " kg each" : "mass not given",
-                                                          t.damper.measured() ? ", from a measured impedance sheet" : ", from its model"));
+    out.emplace_back("damper type " + t.name,
+                     fmt::format("{}{}{}", t.mass ? parts::number(*t.mass, 4) + " kg each" : "mass not given",
+                                 t.price ? ", price " + parts::number(*t.price, 6) : "",
+                                 t.damper.measured() ? ", from a measured impedance sheet" : ", from its model"));
   }
   out.emplace_back("dampers per end", fmt::format("{} to {}", r.min_per_end, r.max_per_end));
   out.emplace_back("positions", fmt::format("{} to {} m from the clamp, at least {} m apart, on a {} mm step",
@@ -35,9 +37,21 @@ std::vector<Fact> line_rules(const io::LineFile& file) {
                                             parts::number(r.positions.spacing_min), parts::number(1e3 * r.position_step)));
   out.emplace_back("objective", r.positions.objective == span::PositionObjective::life ? "the shortest life (damage per year)"
                                                                                        : "the largest fymax stress");
-  out.emplace_back("safe", r.life_target ? fmt::format("every point converged and a life of at least {} years (comparative)",
-                                                       parts::number(*r.life_target))
-                                         : std::string("every point converged and every fymax stress within the endurance limit"));
+  const span::Span& first = file.line.spans().front().span;
+  out.emplace_back("criterion", fmt::format("{}: {}", span::fatigue_criterion_name(first.fatigue().criterion),
+                                            first.criterion_description()));
+  out.emplace_back("safe", (r.life_target ? fmt::format("every point converged and a life of at least {} years (comparative)",
+                                                        parts::number(*r.life_target))
+                                          : std::string("every point converged and every judged stress within the "
+                                                        "endurance limit")) +
+                               (r.accept_uncertain ? "; uncertain (a sheet's band above the limit) accepted"
+                                                   : "; uncertain (a sheet's band above the limit) is not safe"));
+  out.emplace_back("damper type chosen", fmt::format("{} (among the types safe with the fewest dampers)",
+                                                     line::type_choice_name(r.choose)));
+  out.emplace_back("no dampers where",
+                   r.undamped_rule == line::UndampedRule::tb273
+                       ? "the span's balance without dampers is safe, or its H/w is within CIGRE TB 273's limit for its terrain"
+                       : "the span's balance without dampers is safe");
   out.emplace_back("frequencies", fmt::format("{} per balance over each span's wind band ({} in the position search)", r.points,
                                               r.search_points));
   return out;
@@ -90,14 +104,17 @@ std::string line_report(const io::LineFile& file, const std::vector<line::Schedu
     mass += b.mass.value_or(0.0);
     mass_known = mass_known && b.mass.has_value();
   }
-  const Tone tone = counts.unsafe > 0 ? Tone::bad : counts.unknown > 0 ? Tone::unknown : Tone::good;
-  page.verdict(counts.unsafe > 0 ? "unsafe spans" : counts.unknown > 0 ? "incomplete" : "safe",
+  const Tone tone = counts.unsafe > 0 ? Tone::bad : counts.unknown + counts.uncertain > 0 ? Tone::unknown : Tone::good;
+  page.verdict(counts.unsafe > 0 ? "unsafe spans" : counts.unknown > 0 ? "incomplete"
+                                                  : counts.uncertain > 0 ? "uncertain spans" : "safe",
                fmt::format(" {} spans: {} safe, {} unsafe even with the most dampers allowed, {} unknown (not converged "
-                           "throughout); {} dampers in all.",
-                           rows.size(), counts.safe, counts.unsafe, counts.unknown, dampers),
+                           "throughout), {} uncertain (a measured sheet's band reaches above the limit); {} dampers in "
+                           "all.",
+                           rows.size(), counts.safe, counts.unsafe, counts.unknown, counts.uncertain, dampers),
                tone);
   std::vector<Fact> key{{"spans", std::to_string(rows.size())},
-                        {"safe / unsafe / unknown", fmt::format("{} / {} / {}", counts.safe, counts.unsafe, counts.unknown)},
+                        {"safe / unsafe / unknown / uncertain",
+                         fmt::format("{} / {} / {} / {}", counts.safe, counts.unsafe, counts.unknown, counts.uncertain)},
                         {"dampers", std::to_string(dampers)},
                         {"damper mass", mass_known ? parts::number(mass, 4) + " kg" : "not known for every type"}};
   if (counts.governing) {
@@ -120,24 +137,27 @@ std::string line_report(const io::LineFile& file, const std::vector<line::Schedu
   std::vector<Tone> tones;
   for (const line::ScheduleRow& r : rows) {
     const bool trusted = r.converged == r.points;
+    const std::string tb273 = r.terrain_within < 0 ? "-" : r.terrain_within == 1 ? "within" : "above";
     table.push_back({r.id, parts::number(r.length), parts::number(100.0 * r.tension_fraction, 3), parts::number(r.catenary_parameter),
+                     r.terrain > 0 ? std::to_string(r.terrain) : "-", tb273,
                      arrangement(r), positions(r), parts::number(r.undamped_max_stress / 1e6, 3),
                      r.per_end > 0 ? stress_cell(r.max_stress, trusted) : "-",
+                     std::isfinite(r.max_stress_high) && trusted ? parts::number(r.max_stress_high / 1e6, 3) : "-",
                      trusted ? parts::number(100.0 * (1.0 - r.stress_ratio()), 3) : "-",
                      std::isnan(r.life_years) ? "-" : std::isinf(r.life_years) ? "unlimited" : parts::number(r.life_years, 3),
                      std::string(span::verdict_name(r.verdict))});
     tones.push_back(parts::verdict_tone(r.verdict));
   }
-  page.table({"span", "length (m)", "tension (% RTS)", "H/w (m)", "dampers per end", "positions (m)", "undamped max (MPa)",
-              "max (MPa)", "margin (%)", "life (years)", "verdict"},
+  page.table({"span", "length (m)", "tension (% RTS)", "H/w (m)", "terrain", "TB 273", "dampers per end", "positions (m)",
+              "undamped max (MPa)", "max (MPa)", "band top (MPa)", "margin (%)", "life (years)", "verdict"},
              table, tones);
   page.section("Bill of materials");
   std::vector<std::vector<std::string>> bill_rows;
   for (const line::BillLine& b : bill) {
     bill_rows.push_back({b.damper_type, std::to_string(b.dampers), std::to_string(b.spans),
-                         b.mass ? parts::number(*b.mass, 4) : "-"});
+                         b.mass ? parts::number(*b.mass, 4) : "-", b.price ? parts::number(*b.price, 6) : "-"});
   }
-  page.table({"damper type", "dampers", "spans", "mass (kg)"}, bill_rows);
+  page.table({"damper type", "dampers", "spans", "mass (kg)", "price"}, bill_rows);
   page.section("Assumptions");
   bool lives = false;
   for (const line::ScheduleRow& r : rows) lives = lives || !std::isnan(r.life_years) || !std::isnan(r.undamped_life_years);
@@ -147,9 +167,7 @@ std::string line_report(const io::LineFile& file, const std::vector<line::Schedu
   page.list(caveats);
   page.section("Warnings");
   std::vector<std::string> warnings = context.warnings;
-  for (const line::ScheduleRow& r : rows) {
-    for (const std::string& w : r.warnings) warnings.push_back(r.id + ": " + w);
-  }
+  for (const std::string& w : line::grouped_warnings(rows)) warnings.push_back(w);
   page.list(warnings, true);
   return page.html();
 }

@@ -1,5 +1,6 @@
 #include "report_parts.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -65,10 +66,15 @@ std::vector<Fact> span_inputs(const span::Span& s, span::DamperModel model) {
   }
   const span::WindModel& w = s.wind();
   const span::Interval band = w.frequency_band(c.diameter);
+  const std::string turbulence =
+      w.law != span::WindLaw::foti ? std::string()
+      : w.turbulence_terrain
+          ? fmt::format(", turbulence intensity {} (terrain category {}: this program's assumed intensity, docs/span.md)",
+                        number(w.turbulence_intensity, 3), *w.turbulence_terrain)
+          : ", turbulence intensity " + number(w.turbulence_intensity, 3);
   facts.emplace_back("wind", fmt::format("law {}, Strouhal {}, {} to {} m/s: {} to {} Hz{}", span::wind_law_name(w.law),
                                          number(w.strouhal, 3), number(w.speed_min, 3), number(w.speed_max, 3),
-                                         number(band.lo, 3), number(band.hi, 3),
-                                         w.law == span::WindLaw::foti ? ", turbulence " + number(w.turbulence_intensity, 3) : ""));
+                                         number(band.lo, 3), number(band.hi, 3), turbulence));
   const span::PowerLawExponents e = s.self_damping().exponents();
   facts.emplace_back("self-damping",
                      s.self_damping().law == span::SelfDampingLaw::foti
@@ -88,12 +94,14 @@ std::vector<Fact> span_inputs(const span::Span& s, span::DamperModel model) {
     }
   }
   const span::FatigueSpec& f = s.fatigue();
-  facts.emplace_back("endurance limit",
-                     fmt::format("{} ({} microstrain peak-to-peak){}", megapascal(s.endurance_limit()),
-                                 number(span::bending_strain_pp_microstrain(c, s.endurance_limit()), 3),
-                                 f.endurance_limit ? ", given" : fmt::format(", CIGRE Safe Border Line at {} cycles", number(f.cycles.value_or(NAN), 3))));
-  facts.emplace_back("stresses", fmt::format("fymax at the clamp (the verdict); Poffenberger-Swart from Yb at {} mm (the life)",
-                                             number(1e3 * f.yb_distance, 3)));
+  facts.emplace_back("criterion", fmt::format("{}: {}, {} ({} microstrain peak-to-peak)",
+                                              span::fatigue_criterion_name(f.criterion), s.criterion_description(),
+                                              megapascal(s.endurance_limit()),
+                                              number(span::bending_strain_pp_microstrain(c, s.endurance_limit()), 4)));
+  facts.emplace_back("stresses",
+                     fmt::format("{} at the clamp (the verdict); Poffenberger-Swart from Yb at {} mm (the life)",
+                                 s.judges_poffenberger_swart() ? "the bending strain from Yb" : "fymax",
+                                 number(1e3 * f.yb_distance, 3)));
   if (f.life) {
     facts.emplace_back("climate", fmt::format("Weibull wind k = {}, c = {} m/s; aeolian share of the year {}",
                                               number(f.life->wind_weibull.shape, 3), number(f.life->wind_weibull.scale, 3),
@@ -110,7 +118,14 @@ std::vector<Fact> span_key_figures(const span::SpanAnalysis& a) {
   if (m.converged > 0) {
     out.emplace_back("largest fymax stress" + partial,
                      fmt::format("{} at {} Hz", megapascal(m.max_stress_fymax), number(m.max_stress_frequency_hz, 3)));
-    out.emplace_back("stress / endurance limit" + partial, number(100.0 * m.max_stress_fymax / m.endurance_limit, 3) + " %");
+    out.emplace_back("judged / endurance limit" + partial, number(100.0 * m.max_judged_stress / m.endurance_limit, 3) + " %");
+    if (std::isfinite(m.max_judged_stress_high)) {
+      out.emplace_back("top of the measured sheets' band" + partial,
+                       fmt::format("{}, {} % of the endurance limit (the sheets' error estimate {} %)",
+                                   megapascal(m.max_judged_stress_high),
+                                   number(100.0 * m.max_judged_stress_high / m.endurance_limit, 3),
+                                   number(100.0 * a.sheet_error_estimate, 3)));
+    }
     out.emplace_back("largest Yb" + partial, fmt::format("{} mm p-p, {} µε", number(1e3 * m.max_bending_amplitude, 3),
                                                          number(span::bending_strain_pp_microstrain(c, m.max_stress_poffenberger_swart), 4)));
   }
@@ -136,16 +151,22 @@ std::vector<Fact> span_key_figures(const span::SpanAnalysis& a) {
 
 std::string span_verdict_reason(const span::SpanAnalysis& a) {
   const span::BalanceSummary& m = a.balance.summary;
-  const std::string limit = megapascal(m.endurance_limit);
+  const std::string limit = fmt::format("{} ({})", megapascal(m.endurance_limit), a.span.criterion_description());
+  const std::string judged = a.span.judges_poffenberger_swart() ? "Poffenberger-Swart stress (from Yb)" : "fymax stress";
   switch (m.verdict) {
     case span::Verdict::safe:
-      return fmt::format("every fymax stress is within the endurance limit {}: the largest, {} at {} Hz, is {} % of it.",
-                         limit, megapascal(m.max_stress_fymax), number(m.max_stress_frequency_hz, 3),
-                         number(100.0 * m.max_stress_fymax / m.endurance_limit, 3));
+      return fmt::format("every {} is within the endurance limit {}: the largest, {} at {} Hz, is {} % of it.", judged,
+                         limit, megapascal(m.max_judged_stress), number(m.max_judged_stress_frequency_hz, 3),
+                         number(100.0 * m.max_judged_stress / m.endurance_limit, 3));
     case span::Verdict::unsafe:
-      return fmt::format("the fymax stress reaches {} at {} Hz, {} % of the endurance limit {}.",
-                         megapascal(m.max_stress_fymax), number(m.max_stress_frequency_hz, 3),
-                         number(100.0 * m.max_stress_fymax / m.endurance_limit, 3), limit);
+      return fmt::format("the {} reaches {} at {} Hz, {} % of the endurance limit {}.", judged,
+                         megapascal(m.max_judged_stress), number(m.max_judged_stress_frequency_hz, 3),
+                         number(100.0 * m.max_judged_stress / m.endurance_limit, 3), limit);
+    case span::Verdict::uncertain:
+      return fmt::format("the {} stays within the endurance limit {} (at most {} % of it), but the measured sheets' "
+                         "band reaches {}, {} % of it: the sheets cannot tell whether the span is safe.",
+                         judged, limit, number(100.0 * m.max_judged_stress / m.endurance_limit, 3),
+                         megapascal(m.max_judged_stress_high), number(100.0 * m.max_judged_stress_high / m.endurance_limit, 3));
     default:
       return fmt::format("{} of {} points did not converge; no converged point exceeds the endurance limit {}, but the "
                          "verdict needs every point.",
@@ -161,6 +182,10 @@ Chart stress_chart(const span::SpanAnalysis& a, const requests::TableValues& v, 
   const span::Conductor& c = a.span.conductor();
   Chart chart(std::string(title), Axis("frequency (Hz)", true), Axis("fymax stress at the clamp (MPa)"));
   if (!a.span.dampers().empty()) chart.series.push_back({"with dampers", f, column(v, "stress_fymax_mpa"), LineStyle::solid, 0});
+  const std::vector<double> low = column(v, "stress_fymax_low_mpa"), high = column(v, "stress_fymax_high_mpa");
+  if (std::any_of(high.begin(), high.end(), [](double h) { return std::isfinite(h); })) {
+    chart.bands.push_back({"measured sheets' band", f, low, high, 0});
+  }
   chart.series.push_back({"without dampers", f, column(v, "undamped_stress_fymax_mpa"), LineStyle::dashed, 1});
   chart.references.push_back({"endurance limit " + megapascal(a.span.endurance_limit()), a.span.endurance_limit() / 1e6});
   chart.top = SecondaryAxis{"wind speed (m/s)", a.span.wind().wind_speed(1.0, c.diameter)};
@@ -182,11 +207,13 @@ void span_figures(HtmlPage& page, const span::SpanAnalysis& a, std::string_view 
   std::string title = fmt::format("{}: {}", name, span::verdict_name(m.verdict));
   if (!a.span.dampers().empty()) title += ", dampers at " + positions_text(a.span);
   if (m.converged > 0) title += fmt::format(", max {} at {} Hz", megapascal(m.max_stress_fymax), number(m.max_stress_frequency_hz, 3));
+  if (std::isfinite(m.max_judged_stress_high)) title += ", band top " + megapascal(m.max_judged_stress_high);
   if (a.span.fatigue().life && m.life) title += ", life " + years(m.life->life_years);
   page.figure(svg(stress_chart(a, v, title)),
               "The fymax bending stress at the span clamp over the wind band, with and without the dampers, against "
               "the endurance limit; the right axis gives the same as the outer wires' peak-to-peak strain. A gap is "
-              "a point that did not converge.");
+              "a point that did not converge. With measured sheets, the shaded band is where the sheets' "
+              "interpolation leaves the stress (the stress times 1 -+ the sheets' error estimate).");
 
   Chart amplitude(fmt::format("{}: antinode amplitude", name), Axis("frequency (Hz)", true),
                   Axis("amplitude Y, single peak (mm)", true));
@@ -208,11 +235,14 @@ void span_figures(HtmlPage& page, const span::SpanAnalysis& a, std::string_view 
 
 std::vector<std::string> span_caveats(bool life) {
   std::vector<std::string> out{
-      "The energy balance (CIGRE TB 273 practice) takes one standing mode at a time in steady, laminar wind across "
-      "the span; turbulence, span-wise wind variation and travelling-wave effects other than at the dampers are not "
-      "modelled, so the stresses are upper estimates of what a calm site sees.",
-      "The verdict compares the largest fymax stress with the endurance limit; it needs every point of the band to "
-      "converge, and is 'unknown' otherwise.",
+      "The energy balance method (EPRI's Orange Book, CIGRE's wind power and self-damping data, IEC 61897's damper "
+      "effectiveness evaluation; CIGRE TB 273's H/w rule is a separate judgement beside it) takes one standing mode "
+      "at a time in steady wind across the span; span-wise wind variation and travelling-wave effects other than at "
+      "the dampers are not modelled, and turbulence only through the foti law's intensity, so the stresses are upper "
+      "estimates of what a calm site sees.",
+      "The verdict compares the largest stress its criterion judges with the endurance limit; it needs every point "
+      "of the band to converge ('unknown' otherwise), and with measured sheets it is 'uncertain' where the sheets' "
+      "band reaches above the limit while the stress itself stays below.",
   };
   if (life) {
     out.push_back("Lives are comparative, not predictions: they rest on the assumed wind climate (a Weibull distribution "

@@ -172,6 +172,32 @@ std::string curve(const Series& s, std::string_view colour, const Scale& x, cons
   return out;
 }
 
+/// The band as filled polygons, broken where an end is missing or off the axes.
+std::string band_area(const Band& b, const Scale& x, const Scale& y) {
+  std::string out;
+  std::vector<std::size_t> run;
+  const auto flush = [&] {
+    if (run.size() > 1) {
+      out += fmt::format("<polygon fill=\"{}\" fill-opacity=\"0.2\" stroke=\"none\" points=\"",
+                         kPalette[static_cast<std::size_t>(b.colour) % std::size(kPalette)]);
+      for (const std::size_t i : run) out += fmt::format("{:.1f},{:.1f} ", x(b.x[i]), y(b.high[i]));
+      for (auto i = run.rbegin(); i != run.rend(); ++i) out += fmt::format("{:.1f},{:.1f} ", x(b.x[*i]), y(b.low[*i]));
+      out.back() = '"';
+      out += "/>";
+    }
+    run.clear();
+  };
+  for (std::size_t i = 0; i < b.x.size(); ++i) {
+    if (!x.shows(b.x[i]) || !y.shows(b.low[i]) || !y.shows(b.high[i])) {
+      flush();
+      continue;
+    }
+    run.push_back(i);
+  }
+  flush();
+  return out;
+}
+
 std::string legend_sample(const Series& s, std::string_view colour, double x, double y) {
   if (marks(s.style)) return mark(s.style, x + 12, y, colour);
   return fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"1.8\"{}/>",
@@ -183,17 +209,22 @@ std::string legend_sample(const Series& s, std::string_view colour, double x, do
 std::vector<double> ticks(double lo, double hi, bool log) {
   std::vector<double> out;
   if (!(hi > lo)) return {lo};
-  if (log && hi / lo >= 10.0) {
+  if (log) {
     const int first = static_cast<int>(std::floor(std::log10(lo) + 1e-9));
     const int last = static_cast<int>(std::ceil(std::log10(hi) - 1e-9));
-    const double decades = std::log10(hi / lo);
-    const int every = decades > 8 ? 2 : 1;
-    const std::vector<double> mantissas = decades <= 2.5 ? std::vector<double>{1, 2, 5} : std::vector<double>{1};
-    for (int d = first; d <= last; d += every) {
-      for (const double m : mantissas) {
-        const double v = m * std::pow(10.0, d);
-        if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9)) out.push_back(v);
+    const int every = std::log10(hi / lo) > 8 ? 2 : 1;
+    const std::vector<std::vector<double>> mantissa_sets{{1}, {1, 2, 5}, {1, 2, 3, 5}, {1, 1.5, 2, 3, 4, 5, 6, 8}};
+    for (const std::vector<double>& mantissas : mantissa_sets) {
+      std::vector<double> set;
+      for (int d = first; d <= last; d += every) {
+        for (const double m : mantissas) {
+          const double v = m * std::pow(10.0, d);
+          if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9)) set.push_back(v);
+        }
       }
+      if (set.size() > 12 && out.size() >= 2) break;  // the sparser set was enough
+      out = std::move(set);
+      if (out.size() >= 4) break;
     }
     if (out.size() >= 2) return out;
     out.clear();
@@ -215,6 +246,14 @@ std::string svg(const Chart& chart) {
     }
     xs.insert(xs.end(), s.x.begin(), s.x.end());
     ys.insert(ys.end(), s.y.begin(), s.y.end());
+  }
+  for (const Band& b : chart.bands) {
+    if (b.x.size() != b.low.size() || b.x.size() != b.high.size()) {
+      throw InvalidParameter(fmt::format("chart '{}': band '{}' has {} x, {} low and {} high values", chart.title, b.label,
+                                         b.x.size(), b.low.size(), b.high.size()));
+    }
+    ys.insert(ys.end(), b.low.begin(), b.low.end());
+    ys.insert(ys.end(), b.high.begin(), b.high.end());
   }
   for (const ReferenceLine& r : chart.references) ys.push_back(r.y);
   const bool categories = !chart.x_categories.empty();
@@ -239,21 +278,24 @@ std::string svg(const Chart& chart) {
 
   // The legend below the axis label, wrapped to the chart's width.
   struct Entry {
-    std::size_t series;
+    std::size_t index;  ///< a series', or (band) a band's
+    bool band;
     double x, row;
   };
   std::vector<Entry> entries;
   double lx = kLeft, row = 0;
-  for (std::size_t i = 0; i < chart.series.size(); ++i) {
-    if (chart.series[i].label.empty()) continue;
-    const double w = 34.0 + kCharWidth * static_cast<double>(chart.series[i].label.size()) + 18.0;
+  const auto add_entry = [&](std::size_t i, bool band, const std::string& label) {
+    if (label.empty()) return;
+    const double w = 34.0 + kCharWidth * static_cast<double>(label.size()) + 18.0;
     if (lx + w > kWidth - 10.0 && lx > kLeft) {
       lx = kLeft;
       row += 1;
     }
-    entries.push_back({i, lx, row});
+    entries.push_back({i, band, lx, row});
     lx += w;
-  }
+  };
+  for (std::size_t i = 0; i < chart.series.size(); ++i) add_entry(i, false, chart.series[i].label);
+  for (std::size_t i = 0; i < chart.bands.size(); ++i) add_entry(i, true, chart.bands[i].label);
   const double legend_top = bottom + tick_band + 34.0;
   const double height = legend_top + (entries.empty() ? 0.0 : 18.0 * (row + 1)) + 6.0;
 
@@ -330,7 +372,8 @@ std::string svg(const Chart& chart) {
                      bottom + tick_band + 20, escape(chart.x.label));
   out += fmt::format("<text transform=\"translate(16,{:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
                      0.5 * (top + bottom), escape(chart.y.label));
-  // Reference lines, then the curves on top.
+  // Bands, reference lines, then the curves on top.
+  for (const Band& b : chart.bands) out += band_area(b, x, y);
   for (const ReferenceLine& r : chart.references) {
     if (!y.shows(r.y)) continue;
     out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#000\" stroke-width=\"1.2\" "
@@ -349,9 +392,16 @@ std::string svg(const Chart& chart) {
                        0.5 * (kLeft + right), 0.5 * (top + bottom));
   }
   for (const Entry& e : entries) {
-    const Series& s = chart.series[e.series];
     const double ey = legend_top + 18.0 * e.row;
-    out += legend_sample(s, colour_of(s, e.series), e.x, ey - 4);
+    if (e.band) {
+      const Band& b = chart.bands[e.index];
+      out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"24\" height=\"10\" fill=\"{}\" fill-opacity=\"0.2\"/>",
+                         e.x, ey - 9, kPalette[static_cast<std::size_t>(b.colour) % std::size(kPalette)]);
+      out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>", e.x + 30, ey, escape(b.label));
+      continue;
+    }
+    const Series& s = chart.series[e.index];
+    out += legend_sample(s, colour_of(s, e.index), e.x, ey - 4);
     out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>", e.x + 30, ey, escape(s.label));
   }
   out += "</svg>";

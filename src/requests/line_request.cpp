@@ -45,14 +45,18 @@ Table<line::ScheduleRow> schedule_table() {
   return Table<Row>({
       {"id", "", "the span's name", K::label, {}, [](const Row& r, std::size_t) { return r.id; }},
       {"conductor", "", "the conductor's name", K::label, {}, [](const Row& r, std::size_t) { return r.conductor; }},
-      {"undamped_verdict", "", "safe, unsafe or unknown without dampers", K::label, {},
+      {"undamped_verdict", "", "safe, unsafe or unknown without dampers, by the span's energy balance", K::label, {},
        [](const Row& r, std::size_t) { return std::string(span::verdict_name(r.undamped_verdict)); }},
       {"damper_type", "", "the recommended damper type (empty: none needed)", K::label, {},
        [](const Row& r, std::size_t) { return r.damper_type; }},
       {"positions_m", "m", "each damper's distance from the clamp at one end, ';'-separated, increasing (both ends alike)",
        K::label, {}, [](const Row& r, std::size_t) { return positions_text(r.positions); }},
-      {"verdict", "", "safe, unsafe or unknown with the recommended dampers", K::label, {},
-       [](const Row& r, std::size_t) { return std::string(span::verdict_name(r.verdict)); }},
+      {"verdict", "", "safe, unsafe, unknown or uncertain (a measured sheet's band reaches above the limit) with the "
+                      "recommended dampers",
+       K::label, {}, [](const Row& r, std::size_t) { return std::string(span::verdict_name(r.verdict)); }},
+      {"no_damper_basis", "", "where the span gets no damper, what judged it safe: balance (its own) or tb273 (its H/w "
+                              "within its terrain's limit, dampers.undamped_rule)",
+       K::label, {}, [](const Row& r, std::size_t) { return r.no_damper_basis; }},
       {"warnings", "", "what the engineer should know, ' | '-separated", K::label, {},
        [](const Row& r, std::size_t) { return joined_warnings(r.warnings); }},
       {"length_m", "m", "the span's length", K::number, number([](const Row& r) { return r.length; }), {}},
@@ -66,16 +70,24 @@ Table<line::ScheduleRow> schedule_table() {
        number([](const Row& r) { return r.terrain > 0 ? static_cast<double>(r.terrain) : kLineNaN; }), {}},
       {"terrain_hw_within", "", "1 if H/w is within the terrain's limit for an undamped span, 0 if above", K::flag,
        number([](const Row& r) { return r.terrain_within < 0 ? kLineNaN : static_cast<double>(r.terrain_within); }), {}},
-      {"endurance_limit_mpa", "MPa", "the fymax stress the verdict allows", K::number,
+      {"endurance_limit_mpa", "MPa", "the stress the verdict allows (the criterion's limit as a zero-to-peak stress)",
+       K::number,
        number([](const Row& r) { return r.endurance_limit / 1e6; }), {}},
-      {"undamped_max_stress_mpa", "MPa", "the largest fymax stress at the span clamp without dampers", K::number,
+      {"undamped_max_stress_mpa", "MPa",
+       "the largest stress the criterion judges at the span clamp without dampers (fymax; Poffenberger-Swart under "
+       "the microstrain criterion)",
+       K::number,
        number([](const Row& r) { return r.undamped_max_stress / 1e6; }), {}},
       {"undamped_life_years", "years", "Miner's life without dampers (with the line's climate; inf: no damage)",
        K::number, number([](const Row& r) { return r.undamped_life_years; }), {}},
       {"dampers_per_end", "", "the recommended number of dampers at each end", K::count,
        number([](const Row& r) { return static_cast<double>(r.per_end); }), {}},
-      {"max_stress_mpa", "MPa", "the largest fymax stress at the span clamp with those dampers", K::number,
+      {"max_stress_mpa", "MPa", "the largest stress the criterion judges at the span clamp with those dampers", K::number,
        number([](const Row& r) { return trusted(r, r.max_stress / 1e6, false); }), {}},
+      {"max_stress_high_mpa", "MPa",
+       "the top of its measured sheets' band (empty without a measured damper): the verdict is uncertain where it "
+       "exceeds the limit and max_stress_mpa does not",
+       K::number, number([](const Row& r) { return trusted(r, r.max_stress_high / 1e6, false); }), {}},
       {"max_stress_frequency_hz", "Hz", "where it occurs", K::number,
        number([](const Row& r) { return trusted(r, r.max_stress_frequency, false); }), {}},
       {"life_years", "years", "Miner's life with those dampers", K::number,
@@ -104,6 +116,8 @@ Table<line::BillLine> bill_table() {
       {"spans", "", "spans that get the type", K::count, [](const B& b, std::size_t) { return static_cast<double>(b.spans); }, {}},
       {"mass_kg", "kg", "their mass (empty where the type's mass is not known)", K::number,
        [](const B& b, std::size_t) { return b.mass.value_or(kLineNaN); }, {}},
+      {"price", "", "their price, in the line file's currency (empty where the type's price is not given)", K::number,
+       [](const B& b, std::size_t) { return b.price.value_or(kLineNaN); }, {}},
   });
 }
 
@@ -121,6 +135,13 @@ io::JsonObject line_summary(const io::LineFile& file, const std::vector<line::Sc
       .add("spans_safe", c.safe)
       .add("spans_unsafe", c.unsafe)
       .add("spans_unknown", c.unknown)
+      .add("spans_uncertain", c.uncertain)
+      .add("criterion", file.line.spans().empty()
+                            ? std::string("safe-border-line")
+                            : std::string(span::fatigue_criterion_name(file.line.spans().front().span.fatigue().criterion)))
+      .add("choose", std::string(line::type_choice_name(file.line.rules().choose)))
+      .add("undamped_rule", std::string(line::undamped_rule_name(file.line.rules().undamped_rule)))
+      .add("accept_uncertain", file.line.rules().accept_uncertain)
       .add("spans_not_converged", c.not_converged)
       .add("spans_worse_than_undamped", c.worse_than_undamped)
       .add("dampers_per_end", counts)
@@ -139,10 +160,10 @@ using record_text::bad_record;
 using record_text::escaped;
 using record_text::RecordFields;
 
-constexpr std::string_view kRecordTag = "span-v1";
+constexpr std::string_view kRecordTag = "span-v2";
 
 span::Verdict verdict_from(long long v) {
-  if (v < 0 || v > 2) bad_record("a verdict out of range");
+  if (v < 0 || v > 3) bad_record("a verdict out of range");
   return static_cast<span::Verdict>(v);
 }
 
@@ -152,9 +173,11 @@ std::string schedule_record(const line::ScheduleRow& r) {
   std::string out = fmt::format("{}\t{}\t{}\t{}", kRecordTag, r.index, escaped(r.id), escaped(r.conductor));
   for (const double v : {r.length, r.tension, r.tension_fraction, r.catenary_parameter, r.span_parameter,
                          r.endurance_limit, r.undamped_max_stress, r.undamped_life_years, r.max_stress,
-                         r.max_stress_frequency, r.life_years}) {
+                         r.max_stress_high, r.max_stress_frequency, r.life_years}) {
     out += fmt::format("\t{}", v);
   }
+  out += '\t';
+  out += escaped(r.no_damper_basis);
   out += fmt::format("\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}", r.terrain, r.terrain_within,
                      static_cast<int>(r.undamped_verdict), static_cast<int>(r.verdict), r.per_end, r.converged,
                      r.points, r.balances, escaped(r.damper_type), r.positions.size());
@@ -177,9 +200,10 @@ line::ScheduleRow parse_schedule_record(std::string_view record) {
   r.conductor = f.text();
   for (double* v : {&r.length, &r.tension, &r.tension_fraction, &r.catenary_parameter, &r.span_parameter,
                     &r.endurance_limit, &r.undamped_max_stress, &r.undamped_life_years, &r.max_stress,
-                    &r.max_stress_frequency, &r.life_years}) {
+                    &r.max_stress_high, &r.max_stress_frequency, &r.life_years}) {
     *v = f.number();
   }
+  r.no_damper_basis = f.text();
   r.terrain = static_cast<int>(f.integer());
   r.terrain_within = static_cast<int>(f.integer());
   r.undamped_verdict = verdict_from(f.integer());
@@ -214,6 +238,7 @@ line::ScheduleRow failed_row(const io::LineFile& file, std::size_t index, std::s
   r.tension_fraction = s.span.tension() / s.span.conductor().rated_tensile_strength;
   r.catenary_parameter = r.span_parameter = r.endurance_limit = kLineNaN;
   r.undamped_max_stress = r.undamped_life_years = r.max_stress = r.max_stress_frequency = r.life_years = kLineNaN;
+  r.max_stress_high = kLineNaN;
   r.points = 1;
   r.warnings.push_back(fmt::format("not scheduled: {}", message));
   return r;

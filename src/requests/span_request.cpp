@@ -336,6 +336,63 @@ void add_field_figures(io::JsonObject& json, const span::SpanAnalysis& a) {
       .add("endurance_limit_pp_microstrain", span::bending_strain_pp_microstrain(c, s.endurance_limit));
 }
 
+/// What the span was computed with, as used (after the catalogue, the file and the
+/// keys beside them): the conductor and where it comes from, the tension in its three
+/// forms, the wind, the self-damping and the fatigue criterion.
+io::JsonObject span_inputs(const span::Span& span) {
+  const span::Conductor& c = span.conductor();
+  io::JsonObject conductor;
+  conductor.add("name", c.name)
+      .add("source", c.source)
+      .add("stranding", c.stranding)
+      .add("mass_per_length_kg_m", c.mass_per_length)
+      .add("diameter_m", c.diameter)
+      .add("rated_tensile_strength_n", c.rated_tensile_strength)
+      .add("ei_min_n_m2", c.ei_min)
+      .add("ei_max_n_m2", c.ei_max)
+      .add("outer_wire_diameter_m", c.outer_wire_diameter)
+      .add("outer_wire_modulus_pa", c.outer_wire_modulus)
+      .add("aluminium_layers", c.aluminium_layers);
+  const span::TensionFigures t = span::tension_figures(span);
+  const span::WindModel& w = span.wind();
+  io::JsonObject wind;
+  wind.add("law", span::wind_law_name(w.law))
+      .add("strouhal", w.strouhal)
+      .add("speed_min_m_s", w.speed_min)
+      .add("speed_max_m_s", w.speed_max);
+  if (w.law == span::WindLaw::foti) {
+    wind.add("turbulence_intensity", w.turbulence_intensity)
+        .add("turbulence_source", w.turbulence_terrain
+                                      ? fmt::format("terrain category {} (this program's assumed intensity)",
+                                                    *w.turbulence_terrain)
+                                      : std::string("given"));
+  }
+  const span::SelfDampingModel& sd = span.self_damping();
+  io::JsonObject self_damping;
+  self_damping.add("law", span::self_damping_law_name(sd.law));
+  if (sd.law == span::SelfDampingLaw::foti) {
+    self_damping.add("limit_curvature_per_m", sd.limit_curvature.value_or(kSpanNoValue));
+  } else {
+    const span::PowerLawExponents e = sd.exponents();
+    self_damping.add("k", sd.factor(c)).add("k_source", sd.k ? "given" : "Lilien's").add("l", e.l).add("m", e.m).add("n", e.n);
+  }
+  io::JsonObject fatigue;
+  fatigue.add("criterion", span::fatigue_criterion_name(span.fatigue().criterion))
+      .add("criterion_description", span.criterion_description())
+      .add("endurance_limit_mpa", span.endurance_limit() / kPascalPerMegapascal)
+      .add("yb_distance_m", span.fatigue().yb_distance);
+  return io::JsonObject()
+      .add("conductor", conductor)
+      .add("length_m", span.length())
+      .add("tension", io::JsonObject()
+                          .add("tension_n", t.tension)
+                          .add("fraction_of_rts", t.fraction_of_rts)
+                          .add("catenary_parameter_m", t.catenary_parameter))
+      .add("wind", wind)
+      .add("self_damping", self_damping)
+      .add("fatigue", fatigue);
+}
+
 }  // namespace
 
 io::JsonObject span_summary(const SpanResult& result) {
@@ -349,7 +406,11 @@ io::JsonObject span_summary(const SpanResult& result) {
       .add("damper_model", span::damper_model_name(result.damper_model))
       .add("dampers", static_cast<int>(a.span.dampers().size()))
       .add("endurance_limit_mpa", mpa(s.endurance_limit))
+      .add("criterion", span::fatigue_criterion_name(a.span.fatigue().criterion))
       .add("verdict", span::verdict_name(s.verdict))
+      .add("max_judged_stress_mpa", s.converged > 0 ? mpa(s.max_judged_stress) : kSpanNoValue)
+      .add("max_judged_stress_high_mpa", s.converged > 0 ? mpa(s.max_judged_stress_high) : kSpanNoValue)
+      .add("undamped_max_judged_stress_mpa", mpa(s.undamped_max_judged_stress))
       .add("max_stress_fymax_mpa", s.converged > 0 ? mpa(s.max_stress_fymax) : kSpanNoValue)
       .add("max_stress_frequency_hz", s.converged > 0 ? s.max_stress_frequency_hz : kSpanNoValue)
       .add("max_damper_clamp_stress_mpa", dampers && s.converged > 0 ? mpa(s.max_damper_clamp_stress) : kSpanNoValue)
@@ -391,7 +452,8 @@ io::JsonObject span_summary(const SpanResult& result) {
       .add("several_states_hz", several)
       .add("failed", failed)
       .add("sheet_error_estimate", a.sheet_error_estimate)
-      .add("warnings", a.warnings);
+      .add("warnings", a.warnings)
+      .add("inputs", span_inputs(a.span));
   return json;
 }
 

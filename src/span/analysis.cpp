@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "balance_summary.hpp"
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::span {
@@ -74,6 +75,7 @@ void add_sheet_band(SpanAnalysis& out, const SpanTables& tables, const BalanceOp
     p.stress_fymax_high = p.stress_fymax * (1.0 + worst);
   }
   out.sheet_error_estimate = cut.empty() ? std::numeric_limits<double>::quiet_NaN() : worst;
+  refresh_summary(out.span, out.balance);
   if (cut.empty()) {
     out.warnings.push_back(fmt::format("the measured sheet of {} has too few curves to estimate its interpolation "
                                        "error (every other curve leaves fewer than two): the stresses may be off by "
@@ -91,6 +93,21 @@ void add_sheet_band(SpanAnalysis& out, const SpanTables& tables, const BalanceOp
                                        "lowest curve: Z held at that curve's there (the points' notes say where)",
                                        below));
   }
+}
+
+/// A warning where the largest judged stress lies at an edge of the frequencies
+/// balanced: the stress still rises there, and a larger one may lie beyond.
+void add_edge_warning(SpanAnalysis& out) {
+  const BalanceSummary& s = out.balance.summary;
+  const std::vector<double>& f = out.frequencies;
+  if (s.converged == 0 || f.size() < 3 || !(s.max_judged_stress > 0.0)) return;
+  const double at = s.max_judged_stress_frequency_hz;
+  if (at != f.front() && at != f.back()) return;
+  out.warnings.push_back(fmt::format("the largest stress lies at the {} edge of the frequencies balanced ({:.4g} Hz, "
+                                     "wind {:.3g} m/s): a larger one may lie beyond it ([wind] speed_min and "
+                                     "speed_max bound the band)",
+                                     at == f.front() ? "low" : "high", at,
+                                     out.span.wind().wind_speed(at, out.span.conductor().diameter)));
 }
 
 }  // namespace
@@ -114,6 +131,7 @@ SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, con
   }
   out.balance = run_balance(out.span, *made, options.balance);
   add_sheet_band(out, *made, options.balance);
+  add_edge_warning(out);
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "stockbridge/span/fatigue.hpp"
 
@@ -12,8 +13,18 @@ std::string_view verdict_name(Verdict verdict) {
     case Verdict::safe: return "safe";
     case Verdict::unsafe: return "unsafe";
     case Verdict::unknown: return "unknown";
+    case Verdict::uncertain: return "uncertain";
   }
   return "unknown";
+}
+
+double judged_stress(const Span& span, const BalancePoint& point) {
+  return span.judges_poffenberger_swart() ? point.stress_poffenberger_swart : point.stress_fymax;
+}
+
+double judged_stress_high(const Span& span, const BalancePoint& point) {
+  if (!std::isfinite(point.stress_fymax_high) || !(point.stress_fymax > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return judged_stress(span, point) * point.stress_fymax_high / point.stress_fymax;
 }
 
 namespace {
@@ -30,10 +41,12 @@ struct Largest {
     if (s > stress) stress = s, frequency_hz = frequency;
   }
   /// Safe only when every point is known and within the limit; unsafe as soon as one
-  /// known point exceeds it.
-  Verdict verdict(int points, double limit) const {
+  /// known point exceeds it; uncertain where every point is known within it but a
+  /// band's top (`high`, NaN: none) reaches above.
+  Verdict verdict(int points, double limit, double high = std::numeric_limits<double>::quiet_NaN()) const {
     if (stress > limit) return Verdict::unsafe;
-    return known == points ? Verdict::safe : Verdict::unknown;
+    if (known != points) return Verdict::unknown;
+    return high > limit ? Verdict::uncertain : Verdict::safe;
   }
 };
 
@@ -52,7 +65,8 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
   BalanceSummary s;
   s.points = static_cast<int>(points.size());
   s.endurance_limit = span.endurance_limit();
-  Largest damped, undamped;
+  Largest damped, undamped, judged, undamped_judged;
+  double high = std::numeric_limits<double>::quiet_NaN();
   // The Safe Border Line is stated for the Poffenberger-Swart stress: the lives use it.
   std::vector<double> frequencies, stresses, undamped_stresses;
   for (const BalancePoint& p : points) {
@@ -61,6 +75,8 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
     stresses.push_back(stress);
     undamped_stresses.push_back(p.undamped_stress_poffenberger_swart);
     undamped.add(p.frequency_hz, p.undamped_stress_fymax);
+    undamped_judged.add(p.frequency_hz, span.judges_poffenberger_swart() ? p.undamped_stress_poffenberger_swart
+                                                                          : p.undamped_stress_fymax);
     if (std::isfinite(p.undamped_bending_amplitude)) {
       s.undamped_max_bending_amplitude = std::max(s.undamped_max_bending_amplitude, p.undamped_bending_amplitude);
       s.undamped_max_stress_poffenberger_swart =
@@ -69,6 +85,8 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
     if (!p.converged()) continue;
     ++s.converged;
     damped.add(p.frequency_hz, p.stress_fymax);
+    judged.add(p.frequency_hz, judged_stress(span, p));
+    if (const double top = judged_stress_high(span, p); !(top <= high)) high = top;
     s.max_bending_amplitude = std::max(s.max_bending_amplitude, p.bending_amplitude);
     s.max_stress_poffenberger_swart = std::max(s.max_stress_poffenberger_swart, p.stress_poffenberger_swart);
     s.max_damper_clamp_stress = std::max(s.max_damper_clamp_stress, p.damper_clamp_stress);
@@ -76,11 +94,15 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
   }
   s.max_stress_fymax = damped.stress;
   s.max_stress_frequency_hz = damped.frequency_hz;
-  s.verdict = damped.verdict(s.points, s.endurance_limit);
+  s.max_judged_stress = judged.stress;
+  s.max_judged_stress_frequency_hz = judged.frequency_hz;
+  s.max_judged_stress_high = high;
+  s.verdict = judged.verdict(s.points, s.endurance_limit, high);
   s.undamped_points = undamped.known;
   s.undamped_max_stress_fymax = undamped.stress;
   s.undamped_max_stress_frequency_hz = undamped.frequency_hz;
-  s.undamped_verdict = undamped.verdict(s.points, s.endurance_limit);
+  s.undamped_max_judged_stress = undamped_judged.stress;
+  s.undamped_verdict = undamped_judged.verdict(s.points, s.endurance_limit);
   if (span.fatigue().life) {
     s.life = life_of(span, frequencies, stresses);
     s.undamped_life = life_of(span, frequencies, undamped_stresses);
@@ -88,6 +110,18 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
     s.undamped_life_missing_points = s.points - s.undamped_points;
   }
   return s;
+}
+
+}  // namespace stockbridge::span
+
+namespace stockbridge::span {
+
+void refresh_summary(const Span& span, SpanBalance& balance) {
+  BalanceSummary s = summarise(span, balance.points);
+  s.impedance_nodes = balance.summary.impedance_nodes;
+  s.failed_impedance_nodes = balance.summary.failed_impedance_nodes;
+  s.direct_solves = balance.summary.direct_solves;
+  balance.summary = s;
 }
 
 }  // namespace stockbridge::span

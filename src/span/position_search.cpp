@@ -40,7 +40,7 @@ double position_objective(const SpanBalance& balance, PositionObjective objectiv
   const BalanceSummary& s = balance.summary;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!s.all_converged()) return kInf;
-  if (objective == PositionObjective::max_stress) return s.max_stress_fymax / s.endurance_limit;
+  if (objective == PositionObjective::max_stress) return s.max_judged_stress / s.endurance_limit;
   if (!s.life) return kInf;
   // Damage 0 (no stress at all) is the best there is: a floor keeps the log finite.
   return std::log10(std::max(s.life->damage_per_year, 1e-300));

@@ -9,22 +9,51 @@
 
 namespace stockbridge::span {
 
-namespace {
-
-void require_one_of(const std::optional<double>& a, std::string_view a_name, const std::optional<double>& b,
-                    std::string_view b_name) {
-  if (a.has_value() == b.has_value()) {
-    throw InvalidParameter(std::string(a.has_value() ? a_name : b_name),
-                           fmt::format(": give exactly one of {} and {}", a_name, b_name));
-  }
+FatigueCriterion parse_fatigue_criterion(std::string_view name) {
+  if (name == "safe-border-line") return FatigueCriterion::safe_border_line;
+  if (name == "microstrain") return FatigueCriterion::microstrain;
+  if (name == "stress") return FatigueCriterion::stress;
+  throw InvalidParameter("criterion", fmt::format(" = '{}': expected safe-border-line, microstrain or stress",
+                                                  printable(name)));
 }
 
-}  // namespace
+std::string_view fatigue_criterion_name(FatigueCriterion criterion) {
+  switch (criterion) {
+    case FatigueCriterion::safe_border_line: return "safe-border-line";
+    case FatigueCriterion::microstrain: return "microstrain";
+    case FatigueCriterion::stress: return "stress";
+  }
+  return "safe-border-line";
+}
 
 void FatigueSpec::validate() const {
-  require_one_of(cycles, "cycles", endurance_limit, "endurance_limit");
-  if (cycles) require_plausible("cycles", *cycles, "");
-  if (endurance_limit) require_plausible("endurance_limit", *endurance_limit, "Pa");
+  const auto refuse_beside = [this](const std::optional<double>& value, std::string_view name) {
+    if (value) {
+      throw InvalidParameter(std::string(name), fmt::format(": given beside criterion = \"{}\", which does not use it",
+                                                            fatigue_criterion_name(criterion)));
+    }
+  };
+  switch (criterion) {
+    case FatigueCriterion::safe_border_line:
+      if (!cycles) throw InvalidParameter("cycles", ": missing: criterion \"safe-border-line\" takes the Safe Border Line at cycles");
+      require_plausible("cycles", *cycles, "");
+      refuse_beside(endurance_limit, "endurance_limit");
+      refuse_beside(limit_pp_microstrain, "limit_pp_microstrain");
+      break;
+    case FatigueCriterion::microstrain:
+      if (limit_pp_microstrain) require_plausible("limit_pp_microstrain", *limit_pp_microstrain, "microstrain");
+      refuse_beside(cycles, "cycles");
+      refuse_beside(endurance_limit, "endurance_limit");
+      break;
+    case FatigueCriterion::stress:
+      if (!endurance_limit) {
+        throw InvalidParameter("endurance_limit", ": missing: criterion \"stress\" takes endurance_limit_mpa (or endurance_limit in Pa)");
+      }
+      require_plausible("endurance_limit", *endurance_limit, "Pa");
+      refuse_beside(cycles, "cycles");
+      refuse_beside(limit_pp_microstrain, "limit_pp_microstrain");
+      break;
+  }
   if (life) life->validate();
   require_plausible("yb_distance", yb_distance, "m");
 }
@@ -58,7 +87,8 @@ Span::Span(Conductor conductor, double length, double tension, WindModel wind, S
     }
     if (!(a > 0.0 && a < 0.5 * length_)) {
       throw_invalid(fmt::format("damper[{}].position", j), a,
-                    fmt::format("a distance from the span end > 0 and < half the span, {} m", 0.5 * length_));
+                    fmt::format("a distance from the span end > 0 and < half the span, {} m{}", 0.5 * length_,
+                                typical::damper_position.slipped(a) ? " (a position in mm?)" : ""));
     }
   }
   within_field("fatigue", [&] { fatigue_.validate(); });
@@ -66,8 +96,27 @@ Span::Span(Conductor conductor, double length, double tension, WindModel wind, S
 }
 
 double Span::endurance_limit() const {
-  if (fatigue_.endurance_limit) return *fatigue_.endurance_limit;
-  return safe_border_line(conductor_.aluminium_layers).endurance_limit(*fatigue_.cycles);
+  switch (fatigue_.criterion) {
+    case FatigueCriterion::safe_border_line:
+      return safe_border_line(conductor_.aluminium_layers).endurance_limit(*fatigue_.cycles);
+    case FatigueCriterion::microstrain:
+      return 0.5e-6 * fatigue_.limit_pp_microstrain.value_or(ieee_limit_pp_microstrain) * conductor_.outer_wire_modulus;
+    case FatigueCriterion::stress: return *fatigue_.endurance_limit;
+  }
+  return *fatigue_.endurance_limit;
+}
+
+std::string Span::criterion_description() const {
+  switch (fatigue_.criterion) {
+    case FatigueCriterion::safe_border_line:
+      return fmt::format("the CIGRE Safe Border Line at {:.3g} cycles", *fatigue_.cycles);
+    case FatigueCriterion::microstrain:
+      return fatigue_.limit_pp_microstrain
+                 ? fmt::format("{:.4g} microstrain peak-to-peak (given)", *fatigue_.limit_pp_microstrain)
+                 : fmt::format("{:.4g} microstrain peak-to-peak (the IEEE committee's limit)", ieee_limit_pp_microstrain);
+    case FatigueCriterion::stress: return "a given endurance limit";
+  }
+  return "";
 }
 
 Span Span::with_dampers_at(double position) const {

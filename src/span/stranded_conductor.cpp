@@ -163,6 +163,7 @@ Conductor conductor_of(const StrandedConductor& conductor) {
   c.outer_wire_diameter = conductor.layers.back().wire_diameter;
   c.outer_wire_modulus = conductor.layers.back().youngs_modulus;
   c.aluminium_layers = count_aluminium_layers(conductor);
+  c.stranding = stranding_label(conductor);
   return c;
 }
 

@@ -30,14 +30,25 @@ std::string arm_with_cable_file(const std::string& name, const std::string& cabl
   return "[[arm]]\nname = \"" + name + "\"\nmass = 0.856\ninertia = 0.001814\noffset = 0.0325\n[arm.cable]\n" + cable_keys;
 }
 
-TEST(UnusualValuesCli, EachUnitMistakeInADamperFileWarnsOnItsLineAndTheRunGoesOn) {
+// A unit slip in a damper file is refused: exit 2, one line naming the file, line,
+// key, value and the likely unit, nothing written; --allow-unusual takes each
+// unusual value as given, one warning each, and the run goes on.
+TEST(UnusualValuesCli, EachUnitMistakeInADamperFileIsRefusedOrWithAllowUnusualWarnsOnItsLine) {
   const auto dir = scratch_directory("unusual-damper");
   std::string text = read_text(kDamperExample);
   text.replace(text.find("mass = 0.856"), 12, "mass = 863");
   text.replace(text.find("inertia = 0.001814"), 18, "inertia = 1815");
   text.replace(text.find("ei = 2.8"), 8, "ei = 4.9e6");
   write(dir / "d.toml", text);
-  const CliResult r = run_cli("impedance d.toml --velocity 0.1 --frequencies 10 -o z.csv --quiet", dir);
+  const CliResult refused = run_cli("impedance d.toml --velocity 0.1 --frequencies 10 -o z.csv --quiet", dir);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(refused.stderr_lines(), 1) << refused.err;
+  EXPECT_NE(refused.err.find("stockbridge: d.toml:12: arm[0].mass = 863: outside the typical 0.05 to 20 kg of the arm "
+                             "mass (in g? 863 g = 0.863 kg) (--allow-unusual takes it as given)"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "z.csv"));
+  const CliResult r = run_cli("impedance d.toml --velocity 0.1 --frequencies 10 -o z.csv --quiet --allow-unusual", dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(count(r.err, "warning: "), 3) << r.err;
   EXPECT_NE(r.err.find("warning: d.toml:12: arm[0].mass = 863: outside the typical 0.05 to 20 kg"), std::string::npos) << r.err;
@@ -55,12 +66,25 @@ TEST(UnusualValuesCli, TheShippedExampleAndItsSweepSayNothing) {
 
 TEST(UnusualValuesCli, OptionsOutsideTheTypicalRangesWarnOncePerValue) {
   const auto dir = scratch_directory("unusual-options");
-  const CliResult sweep = run_cli("impedance '" + kDamperExample + "' --velocity 100,0.1 --frequencies 2000 -o z.csv --quiet", dir);
+  // 100 m/s a slip of mm/s: refused alone; 2000 Hz no slip explains: a warning.
+  const CliResult slip = run_cli("impedance '" + kDamperExample + "' --velocity 100,0.1 --frequencies 20 -o z.csv --quiet", dir);
+  EXPECT_EQ(slip.exit_code, 2);
+  EXPECT_EQ(slip.err, "stockbridge: --velocity = 100: outside the typical 0.001 to 2 m/s of the clamp velocity amplitude "
+                      "(in mm/s? 100 mm/s = 0.1 m/s) (--allow-unusual takes it as given)\n");
+  const CliResult sweep = run_cli(
+      "impedance '" + kDamperExample + "' --velocity 100,0.1 --frequencies 2000 -o z.csv --quiet --allow-unusual", dir);
   EXPECT_EQ(count(sweep.err, "warning: "), 2) << sweep.err;
   EXPECT_NE(sweep.err.find("warning: --velocity = 100: outside the typical 0.001 to 2 m/s"), std::string::npos) << sweep.err;
   EXPECT_NE(sweep.err.find("warning: --frequencies = 2000: outside the typical 0.5 to 500 Hz"), std::string::npos) << sweep.err;
 
-  const CliResult response = run_cli("response '" + kDamperExample + "' --frequency 20 --displacement 2 -o t.csv", dir);
+  const CliResult refused = run_cli("response '" + kDamperExample + "' --frequency 20 --displacement 2 -o t.csv", dir);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--displacement = 2: outside the typical 1e-06 to 0.05 m of the clamp displacement "
+                             "amplitude (in mm? 2 mm = 0.002 m)"),
+            std::string::npos)
+      << refused.err;
+  const CliResult response =
+      run_cli("response '" + kDamperExample + "' --frequency 20 --displacement 2 -o t.csv --allow-unusual", dir);
   EXPECT_NE(response.err.find("warning: --displacement = 2: outside the typical 1e-06 to 0.05 m"), std::string::npos)
       << response.err;
 
@@ -141,7 +165,10 @@ TEST(CableReferenceCli, AReferencedCableIsAnInputAndItsParametersAreNotOverridde
 
   write(dir / "mm.toml", "[clamp]\nmass = 0.7\n" + arm_with_cable_file("a", "file = \"cable.toml\"\nlength = 150\n"));
   const CliResult mm = run_cli("impedance mm.toml --velocity 0.1 --frequencies 20 -o z.csv --quiet", dir);
-  EXPECT_NE(mm.err.find("warning: mm.toml:10: arm[0].cable.length = 150: outside the typical 0.03 to 1 m"), std::string::npos)
+  EXPECT_EQ(mm.exit_code, 2);
+  EXPECT_NE(mm.err.find("stockbridge: mm.toml:10: arm[0].cable.length = 150: outside the typical 0.03 to 1 m of the "
+                        "damper cable length (in mm? 150 mm = 0.15 m)"),
+            std::string::npos)
       << mm.err;
 }
 

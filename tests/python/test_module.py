@@ -267,21 +267,31 @@ def test_values_outside_the_typical_ranges_warn_with_the_programs_words(tmp_path
         warnings.simplefilter("error")  # the shipped files say nothing
         sb.load_damper(EXAMPLE)
         sb.load_cable(CABLE)
+    # A unit slip is refused (UnusualValueError, an InputError) naming the key and the
+    # likely unit; allow_unusual=True takes it as given with the program's warning.
+    arm = dict(ARM, mass=856, cable={"length": 0.1875, "sections": 40, "ei": 2.8})
+    with pytest.raises(sb.UnusualValueError, match=r"arm\[0\]\.mass = 856: outside the typical 0.05 to 20 kg of the arm "
+                                                   r"mass \(in g\? 856 g = 0.856 kg\) \(allow_unusual=True takes it"):
+        sb.make_damper(0.7, [arm])
     with pytest.warns(sb.UnusualValueWarning, match=r"arm\[0\]\.mass = 856: outside the typical 0.05 to 20 kg"):
-        sb.make_damper(0.7, [dict(ARM, mass=856, cable={"length": 0.1875, "sections": 40, "ei": 2.8})])
+        sb.make_damper(0.7, [arm], allow_unusual=True)
     text = open(EXAMPLE).read().replace("length = 0.1875", "length = 187.5", 1)
     (tmp_path / "mm.toml").write_text(text)
-    with pytest.warns(sb.UnusualValueWarning) as record:
+    with pytest.raises(sb.InputError, match=r"mm.toml:16: arm\[0\]\.cable\.length = 187.5"):
         sb.load_damper(str(tmp_path / "mm.toml"))
+    with pytest.warns(sb.UnusualValueWarning) as record:
+        sb.load_damper(str(tmp_path / "mm.toml"), allow_unusual=True)
     assert [str(w.message) for w in record] == [
         f"{tmp_path / 'mm.toml'}:16: arm[0].cable.length = 187.5: outside the typical 0.03 to 1 m of the damper cable "
-        "length (a unit mistake?)"]
+        "length (in mm? 187.5 mm = 0.1875 m)"]
 
 
 def test_unusual_sweep_and_response_values_warn_as_the_program_does():
     damper = sb.load_damper(EXAMPLE)
-    with pytest.warns(sb.UnusualValueWarning, match=r"^velocity = 100: outside the typical 0.001 to 2 m/s"):
+    with pytest.raises(sb.UnusualValueError, match=r"^velocity = 100: outside the typical 0.001 to 2 m/s .*in mm/s"):
         sb.impedance(damper, [20.0], velocity=100.0)
+    with pytest.warns(sb.UnusualValueWarning, match=r"^velocity = 100: outside the typical 0.001 to 2 m/s"):
+        sb.impedance(damper, [20.0], velocity=100.0, allow_unusual=True)
     with pytest.warns(sb.UnusualValueWarning, match=r"^frequency = 2000: outside the typical 0.5 to 500 Hz"):
         sb.response(damper, 2000.0, velocity=0.1)
 
@@ -519,12 +529,13 @@ def test_line_returns_the_schedule_bill_and_summary(line_runs):
     assert set(out) <= documented_keys("line", ["-"])
     assert out["warnings"] == []
     s = out["schedule"]
-    assert list(s)[:7] == ["id", "conductor", "undamped_verdict", "damper_type", "positions_m", "verdict", "warnings"]
+    assert list(s)[:8] == ["id", "conductor", "undamped_verdict", "damper_type", "positions_m", "verdict",
+                           "no_damper_basis", "warnings"]
     assert s["id"] == SMALL_LINE_IDS
     assert s["conductor"] == ["AAAC ASTER570", "AAAC ASTER570", "ACSR Drake", "ACSR Linnet"]
     assert s["dampers_per_end"].dtype == np.int64 and s["dampers_per_end"].shape == (4,)
     assert all(0 <= n <= 2 for n in s["dampers_per_end"])
-    assert all(v in ("safe", "unsafe", "unknown") for v in s["verdict"] + s["undamped_verdict"])
+    assert all(v in ("safe", "unsafe", "unknown", "uncertain") for v in s["verdict"] + s["undamped_verdict"])
     assert s["converged"].dtype == bool and s["max_stress_mpa"].dtype == np.float64
     assert s["length_m"].tolist() == [300.0, 420.0, 250.0, 380.0]
     assert s["tension_n"][2] == 30000.0 and s["catenary_parameter_m"][1] == 1500.0
@@ -565,8 +576,9 @@ def test_line_summary_counts_the_schedule(line_runs):
     counts = {entry["dampers_per_end"]: entry["spans"] for entry in summary["dampers_per_end"]}
     assert counts == {n: int((s["dampers_per_end"] == n).sum()) for n in set(s["dampers_per_end"].tolist())}
     bill = out["bill"]
-    assert summary["bill"] == [{"damper_type": t, "dampers": int(d), "spans": int(n), "mass_kg": m}
+    assert summary["bill"] == [{"damper_type": t, "dampers": int(d), "spans": int(n), "mass_kg": m, "price": None}
                                for t, d, n, m in zip(bill["damper_type"], bill["dampers"], bill["spans"], bill["mass_kg"])]
+    assert np.isnan(bill["price"]).all()  # no type's price given
     assert sum(entry["dampers"] for entry in summary["bill"]) == 2 * s["dampers_per_end"].sum()  # both ends
 
 

@@ -28,6 +28,24 @@ def program_warnings(args, cwd):
     return keyword, run.stdout
 
 
+def program_refusal(args, cwd):
+    """The program's one line refusing a unit slip, without its words on how to accept it."""
+    run = subprocess.run([CLI, *args], cwd=cwd, capture_output=True, text=True)
+    assert run.returncode == 2 and run.stderr.count("\n") == 1, run.stderr
+    suffix = " (--allow-unusual takes it as given)\n"
+    assert run.stderr.startswith("stockbridge: ") and run.stderr.endswith(suffix), run.stderr
+    return run.stderr[len("stockbridge: "):-len(suffix)]
+
+
+def python_refusal(call):
+    """Python's UnusualValueError for the same, without its words on how to accept it."""
+    with pytest.raises(sb.UnusualValueError) as error:
+        call()
+    suffix = " (allow_unusual=True takes it as given)"
+    assert str(error.value).endswith(suffix), str(error.value)
+    return str(error.value)[:-len(suffix)]
+
+
 def python_warnings(call):
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -97,13 +115,17 @@ def test_a_measured_impedance_in_mm_per_second_and_radians(tmp_path):
             z = complex(float(row["re_z_n_s_m"]), float(row["im_z_n_s_m"]))
             handle.write(f"{row['frequency_hz']},{1000 * float(row['velocity_m_s']):g},{abs(z)},{cmath.phase(z)}\n")
     damper = os.path.join(EXAMPLES, "damper_to_identify.toml")
-    expected, stdout = program_warnings(
-        ["identify", "impedance", "--damper", damper, "--input", str(measured), "--json", "--rms-limit", "100"], tmp_path)
-    assert expected[0].startswith(f"{measured}:2: velocity_m_s = 50: outside the typical 0.001 to 2 m/s of the clamp "
-                                  "velocity amplitude (mm/s?); 7 more rows"), expected
+    refused = program_refusal(["identify", "impedance", "--damper", damper, "--input", str(measured)], tmp_path)
+    assert refused == python_refusal(lambda: sb.identify_impedance(sb.load_damper(damper), measured))
+    expected, stdout = program_warnings(["identify", "impedance", "--damper", damper, "--input", str(measured), "--json",
+                                         "--rms-limit", "100", "--allow-unusual"], tmp_path)
+    assert expected[0].startswith(f"{measured}:2: column 'velocity_m_s' = 50: outside the typical 0.001 to 2 m/s of the "
+                                  "clamp velocity amplitude (in mm/s? 50 mm/s = 0.05 m/s); 7 more rows"), expected
+    assert refused == expected[0].split("; 7 more rows")[0] + "; a measured sheet's values lie within it"
     assert "phase_deg looks like radians" in expected[1], expected
     assert json.loads(stdout)["warnings"] == expected
-    given, result = python_warnings(lambda: sb.identify_impedance(sb.load_damper(damper), measured, rms_limit=100))
+    given, result = python_warnings(
+        lambda: sb.identify_impedance(sb.load_damper(damper), measured, rms_limit=100, allow_unusual=True))
     assert given == expected
     assert result["warnings"] == expected
 
@@ -117,9 +139,14 @@ def test_a_span_file_in_wrong_units(tmp_path):
     text = text.replace('file = "sauter2003.toml"', 'file = "%s"' % os.path.join(EXAMPLES, "sauter2003.toml"))
     span_file = tmp_path / "wrong_units.toml"
     span_file.write_text(text)
-    expected, _ = program_warnings(["span", str(span_file), "--no-dampers", "--frequencies", "10", "-o", "s.csv"],
-                                   tmp_path)
+    refused = program_refusal(["span", str(span_file), "--no-dampers", "--frequencies", "10", "-o", "s.csv"], tmp_path)
+    assert refused.startswith(f"{span_file}:10: conductor.diameter = 31.05: "), refused
+    assert refused == python_refusal(lambda: sb.span(span_file, frequencies=[10.0], no_dampers=True))
+    expected, _ = program_warnings(["span", str(span_file), "--no-dampers", "--frequencies", "10", "-o", "s.csv",
+                                    "--allow-unusual"], tmp_path)
+    # The mass per length in g/m puts the tension's H/w at 1.8 m: no span hangs so.
     assert [line.split(": ", 1)[1].split(" = ")[0] for line in expected] == ["conductor.diameter",
-                                                                             "conductor.mass_per_length"], expected
-    given, _ = python_warnings(lambda: sb.span(span_file, frequencies=[10.0], no_dampers=True))
+                                                                             "conductor.mass_per_length",
+                                                                             "span.tension_fraction"], expected
+    given, _ = python_warnings(lambda: sb.span(span_file, frequencies=[10.0], no_dampers=True, allow_unusual=True))
     assert given == expected

@@ -48,6 +48,16 @@ class InputError : public Error {
   using Error::Error;
 };
 
+/// A value outside its typical range that the readers refuse (typical_ranges.hpp,
+/// SlipPolicy): one a unit slip explains (a tension of 30.3 where N is expected:
+/// 30.3 kN?), or a measured sheet's value outside what a shaker test gives. The
+/// message names the file, line (or row and column), key, value and the likely unit;
+/// the front ends add how to accept it as given (--allow-unusual, allow_unusual=True).
+class UnusualValueError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 /// A file could not be written.
 class OutputError : public Error {
  public:

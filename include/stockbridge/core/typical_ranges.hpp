@@ -1,9 +1,13 @@
 #pragma once
-// The ranges in which the values of real Stockbridge dampers and their tests lie.
-// A value outside is accepted (a study may go there on purpose) but is most often
-// a unit mistake (a cable length in mm, a mass in g, an inertia in kg cm^2): front
-// ends show one warning line per such value, naming it and its typical range.
-// docs/file-formats.md lists the same table (a test keeps the two equal).
+// The ranges in which the values of real Stockbridge dampers, spans and their tests
+// lie. A value outside is most often a unit mistake (a cable length in mm, a mass in
+// g, a tension in kN). Where the range's usual slip explains it (the value read in
+// the slip's unit lands in the range) the readers refuse it (SlipPolicy::refuse, the
+// default: UnusualValueError naming the key, the value and the likely unit); a study
+// that goes there on purpose says so (SlipPolicy::warn: the CLI's --allow-unusual,
+// Python's allow_unusual=True). Any other value outside is accepted with one warning
+// line naming it and its typical range. docs/file-formats.md lists the same table (a
+// test keeps the two equal).
 
 #include <optional>
 #include <string>
@@ -32,23 +36,28 @@ struct TypicalRange {
   std::optional<double> slipped(double value) const;
 };
 
+/// What a reader does with a value outside its typical range that the range's unit
+/// slip explains: refuse it (UnusualValueError), or accept it with a warning (a study
+/// beyond the usual on purpose: --allow-unusual, allow_unusual=True).
+enum class SlipPolicy { refuse, warn };
+
 /// The typical ranges, in SI units.
 namespace typical {
-inline constexpr TypicalRange cable_length{"damper cable length", 0.03, 1.0, "m", {}};
+inline constexpr TypicalRange cable_length{"damper cable length", 0.03, 1.0, "m", {1e-3, "mm"}};
 inline constexpr TypicalRange ei{"cable bending stiffness ei", 0.1, 1000.0, "N m^2", {}};
 inline constexpr TypicalRange jenkin_c{"Jenkin element stiffness c", 0.1, 10000.0, "N m^2", {}};
 inline constexpr TypicalRange bouc_wen_chi0{"Bouc-Wen curvature scale chi0", 0.001, 10.0, "1/m", {}};
 inline constexpr TypicalRange jenkin_h{"Jenkin element slip moment h", 0.001, 100.0, "N m", {}};
-inline constexpr TypicalRange clamp_mass{"clamp mass", 0.05, 20.0, "kg", {}};
-inline constexpr TypicalRange arm_mass{"arm mass", 0.05, 20.0, "kg", {}};
-inline constexpr TypicalRange arm_inertia{"arm inertia about its centre of gravity", 1e-6, 0.5, "kg m^2", {}};
-inline constexpr TypicalRange arm_offset{"|offset| of an arm's centre of gravity", 0.0, 0.3, "m", {}};
+inline constexpr TypicalRange clamp_mass{"clamp mass", 0.05, 20.0, "kg", {1e-3, "g"}};
+inline constexpr TypicalRange arm_mass{"arm mass", 0.05, 20.0, "kg", {1e-3, "g"}};
+inline constexpr TypicalRange arm_inertia{"arm inertia about its centre of gravity", 1e-6, 0.5, "kg m^2", {1e-4, "kg cm^2"}};
+inline constexpr TypicalRange arm_offset{"offset of an arm's centre of gravity", -0.3, 0.3, "m", {1e-3, "mm"}};
 inline constexpr TypicalRange frequency{"excitation frequency", 0.5, 500.0, "Hz", {}};
-inline constexpr TypicalRange velocity{"clamp velocity amplitude", 0.001, 2.0, "m/s", {}};
-inline constexpr TypicalRange displacement{"clamp displacement amplitude", 1e-6, 0.05, "m", {}};
+inline constexpr TypicalRange velocity{"clamp velocity amplitude", 0.001, 2.0, "m/s", {1e-3, "mm/s"}};
+inline constexpr TypicalRange displacement{"clamp displacement amplitude", 1e-6, 0.05, "m", {1e-3, "mm"}};
 /// A damper's |Z| at its clamp: the whole damper's mass line i W M over the test
 /// band (a 0.5 kg damper at 0.5 Hz gives 1.6 N s/m, a 10 kg one at 500 Hz 31000).
-inline constexpr TypicalRange impedance{"damper impedance |Z|", 1.0, 50000.0, "N s/m", {}};
+inline constexpr TypicalRange impedance{"damper impedance |Z|", 1.0, 50000.0, "N s/m", {1e3, "kN s/m"}};
 /// Of the cable's length: the quasi-static cantilever is a small-deflection model.
 inline constexpr TypicalRange tip_deflection_ratio{"tip deflection / cable length", 0.0, 0.3, "", {}};
 inline constexpr TypicalRange tip_rotation{"tip rotation", 0.0, 0.5, "rad", {}};
@@ -73,6 +82,10 @@ inline constexpr TypicalRange self_damping_m{"self-damping exponent m (frequency
 inline constexpr TypicalRange self_damping_n{"self-damping exponent n (tension)", 1.0, 3.5, "", {}};
 inline constexpr TypicalRange fatigue_cycles{"cycles of the endurance limit", 1e6, 1e10, "", {}};
 inline constexpr TypicalRange endurance_limit{"endurance limit (zero-to-peak stress)", 2e6, 5e7, "Pa", {1e6, "MPa"}};
+inline constexpr TypicalRange endurance_limit_mpa{"endurance limit in MPa (zero-to-peak stress)", 2.0, 50.0, "MPa",
+                                                  {1e-6, "Pa"}};
+inline constexpr TypicalRange limit_pp_microstrain{"peak-to-peak bending strain limit", 50.0, 500.0, "microstrain",
+                                                   {1e6, "strain"}};
 inline constexpr TypicalRange weibull_shape{"Weibull shape of the wind speed", 1.0, 4.0, "", {}};
 inline constexpr TypicalRange weibull_scale{"Weibull scale of the wind speed", 1.0, 15.0, "m/s", {1.0 / 3.6, "km/h"}};
 inline constexpr TypicalRange aeolian_fraction{"share of the year with aeolian vibration", 0.01, 1.0, "", {1e-2, "%"}};
@@ -89,8 +102,12 @@ struct UnusualValue {
   std::string field;
   double value = 0.0;
   TypicalRange range;
-  /// The likely slip where one is ("mm/s?"); empty: "a unit mistake?".
+  /// A hint where no slip of the range explains the value ("rad/s, or a frequency
+  /// beyond a shaker test's?"); empty: "a unit mistake?".
   std::string hint;
+
+  /// The range's unit slip explains the value (TypicalRange::slipped).
+  bool slip_explained() const { return range.slipped(value).has_value(); }
 
   /// "arm[0].mass = 863: outside the typical 0.05 to 20 kg of the arm mass (a unit mistake?)",
   /// or, where the range's slip explains it, "conductor.diameter = 28.14: outside the
@@ -102,5 +119,14 @@ struct UnusualValue {
 std::optional<UnusualValue> unusual(std::string field, double value, const TypicalRange& range);
 /// Appends `unusual(field, value, range)` to `out` if there is one.
 void check_typical(std::vector<UnusualValue>& out, std::string field, double value, const TypicalRange& range);
+
+/// A reader's judgement of a value outside its typical range, `location` its place
+/// ("span.toml:16: "): a UnusualValueError where its slip explains it and `policy`
+/// refuses slips, else a warning line appended to `warnings`.
+void judge_unusual(const UnusualValue& value, const std::string& location, SlipPolicy policy,
+                   std::vector<std::string>& warnings);
+/// The same for a located line about values that hang together implausibly (a
+/// span's sag): refused under SlipPolicy::refuse, else a warning.
+void judge_implausible(std::string line, SlipPolicy policy, std::vector<std::string>& warnings);
 
 }  // namespace stockbridge

@@ -15,11 +15,14 @@
 #include <vector>
 
 #include "stockbridge/cable/cable.hpp"
+#include "stockbridge/core/typical_ranges.hpp"
 
 namespace stockbridge::io {
 
 /// A cable file as read: the cable, and a warning line for each value outside the
-/// typical ranges ("<file>:<line>: cable.ei = 4.9e+06: outside the typical ...").
+/// typical ranges ("<file>:<line>: cable.ei = 4.9e+06: outside the typical ..."),
+/// but for one a unit slip explains, which `policy` refuses (UnusualValueError) or warns
+/// of (typical_ranges.hpp).
 struct CableFile {
   cable::Cable cable;
   std::vector<std::string> warnings;
@@ -27,13 +30,13 @@ struct CableFile {
 
 /// Reads a cable file and builds the (validated, discretised) cable. Throws
 /// InputError with one line naming the file, line, key, value and what was expected.
-CableFile load_cable_file(const std::filesystem::path& path);
+CableFile load_cable_file(const std::filesystem::path& path, SlipPolicy policy = SlipPolicy::refuse);
 /// load_cable_file's cable alone.
-cable::Cable read_cable_file(const std::filesystem::path& path);
+cable::Cable read_cable_file(const std::filesystem::path& path, SlipPolicy policy = SlipPolicy::refuse);
 /// The same from TOML text a front end built from its own values (Python's
 /// make_cable): the same keys, checks and messages, naming `source`, no lines.
-CableFile load_cable_text(std::string_view text, std::string_view source);
-cable::Cable read_cable_text(std::string_view text, std::string_view source);
+CableFile load_cable_text(std::string_view text, std::string_view source, SlipPolicy policy = SlipPolicy::refuse);
+cable::Cable read_cable_text(std::string_view text, std::string_view source, SlipPolicy policy = SlipPolicy::refuse);
 
 /// The keys of a [cable] table for `description` (what cable and damper files accept).
 std::string cable_table_toml(const cable::CableDescription& description);

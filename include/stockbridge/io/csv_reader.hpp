@@ -11,8 +11,9 @@ namespace stockbridge::io {
 
 /// The named columns, in the order asked, one value per data row. Throws InputError
 /// with one line naming the file (and line and column where it applies) for a
-/// missing file, an empty file or header, a missing or duplicated column, a row with
-/// too few cells, a non-numeric or non-finite cell, or fewer than `min_rows` rows.
+/// missing file, an empty file or header, a missing or duplicated column, a row of
+/// more or fewer cells than the header (a decimal comma splits a cell in two), a
+/// non-numeric or non-finite cell, or fewer than `min_rows` rows.
 std::vector<std::vector<double>> read_csv_columns(const std::filesystem::path& path,
                                                   const std::vector<std::string>& names, std::size_t min_rows);
 
@@ -27,10 +28,10 @@ CsvRows read_csv_rows(const std::filesystem::path& path, const std::vector<std::
 /// Every cell as text (trimmed; cells with ',' are not supported), with the header
 /// and each data row's line number: for files of labels and numbers (a line's spans).
 /// InputError for a missing or empty file, a header separated by ';' or tabs, or a
-/// row with more cells than the header.
+/// row of more or fewer cells than the header.
 struct CsvCells {
   std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;  ///< each as long as the header (missing cells empty)
+  std::vector<std::vector<std::string>> rows;  ///< each as long as the header
   std::vector<std::size_t> lines;
 };
 CsvCells read_csv_cells(const std::filesystem::path& path);

@@ -24,13 +24,15 @@
 #include <string_view>
 #include <vector>
 
+#include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/damper/damper.hpp"
 
 namespace stockbridge::io {
 
 /// A damper file as read: the damper, the cable files its arms reference (inputs a
 /// command must not overwrite), and a warning line for each value outside the
-/// typical ranges, located in the file that holds it.
+/// typical ranges, located in the file that holds it (but for one a unit slip
+/// explains, which `policy` refuses: UnusualValueError, typical_ranges.hpp).
 struct DamperFile {
   damper::Damper damper;
   std::vector<std::filesystem::path> cable_files;
@@ -39,14 +41,14 @@ struct DamperFile {
 
 /// Reads a damper file and builds the (validated) damper; InputError with file,
 /// line, key, value and expectation.
-DamperFile load_damper_file(const std::filesystem::path& path);
+DamperFile load_damper_file(const std::filesystem::path& path, SlipPolicy policy = SlipPolicy::refuse);
 /// load_damper_file's damper alone.
-damper::Damper read_damper_file(const std::filesystem::path& path);
+damper::Damper read_damper_file(const std::filesystem::path& path, SlipPolicy policy = SlipPolicy::refuse);
 /// The same from TOML text a front end built from its own values (Python's
 /// make_damper): the same keys, checks and messages, naming `source`, no lines;
 /// referenced cable files are relative to the working directory.
-DamperFile load_damper_text(std::string_view text, std::string_view source);
-damper::Damper read_damper_text(std::string_view text, std::string_view source);
+DamperFile load_damper_text(std::string_view text, std::string_view source, SlipPolicy policy = SlipPolicy::refuse);
+damper::Damper read_damper_text(std::string_view text, std::string_view source, SlipPolicy policy = SlipPolicy::refuse);
 
 /// A whole damper file for `description`, every arm's cable written out in full (no
 /// references): `comment` first (each line as a TOML comment). Numbers are written

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/design/search.hpp"
 #include "stockbridge/design/study.hpp"
 
@@ -38,7 +39,8 @@ struct DesignFile {
 };
 
 /// Reads a design file, its damper and span files; InputError naming the file, line,
-/// key, value and expectation.
-DesignFile load_design_file(const std::filesystem::path& path);
+/// key, value and expectation; a value a unit slip explains refused under `policy`
+/// (as load_span_file).
+DesignFile load_design_file(const std::filesystem::path& path, SlipPolicy policy = SlipPolicy::refuse);
 
 }  // namespace stockbridge::io

@@ -36,6 +36,7 @@
 #include <string_view>
 #include <vector>
 
+#include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/line/schedule.hpp"
 
 namespace stockbridge::io {
@@ -54,11 +55,14 @@ struct LineFile {
 };
 
 /// Reads a line file; InputError naming the file (or the spans CSV), line, key,
-/// value and expectation.
-LineFile load_line_file(const std::filesystem::path& path);
+/// value and expectation. A value a unit slip explains, and a span's tension at
+/// which no span hangs, are refused (UnusualValueError) under SlipPolicy::refuse,
+/// warnings under warn (as load_span_file).
+LineFile load_line_file(const std::filesystem::path& path, SlipPolicy policy = SlipPolicy::refuse);
 /// The same from TOML text (Python's line(text=...)): messages name `source`;
 /// relative paths start at `base_directory` (empty: the working directory).
-LineFile load_line_text(std::string_view text, std::string_view source, const std::filesystem::path& base_directory = {});
+LineFile load_line_text(std::string_view text, std::string_view source, const std::filesystem::path& base_directory = {},
+                        SlipPolicy policy = SlipPolicy::refuse);
 
 /// A span file of span `row.index` with the row's dampers at both ends (every path
 /// in it absolute): `stockbridge span` on it balances what the schedule balanced.

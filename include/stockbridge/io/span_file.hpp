@@ -52,6 +52,7 @@
 #include <string_view>
 #include <vector>
 
+#include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/span/balance.hpp"
 #include "stockbridge/span/span.hpp"
 
@@ -71,12 +72,15 @@ struct SpanFile {
 
 /// Reads a span file and builds the span; InputError naming the file, line, key,
 /// value and expectation. Damper files and the wind table are relative to the span
-/// file's folder.
-SpanFile load_span_file(const std::filesystem::path& path);
+/// file's folder. A value a unit slip explains (typical_ranges.hpp), and a tension
+/// at which no span hangs (span::implausible_tension: H/w outside 100 to 5000 m, a
+/// sag over a tenth of the span), are refused (UnusualValueError) under
+/// SlipPolicy::refuse, warnings under warn.
+SpanFile load_span_file(const std::filesystem::path& path, SlipPolicy policy = SlipPolicy::refuse);
 /// The same from TOML text a front end holds (Python's span(text=...)): messages
 /// name `source` and no lines; referenced files are relative to `base_directory`
 /// (empty: the working directory), and a missing one's message says which.
 SpanFile load_span_text(std::string_view text, std::string_view source,
-                        const std::filesystem::path& base_directory = {});
+                        const std::filesystem::path& base_directory = {}, SlipPolicy policy = SlipPolicy::refuse);
 
 }  // namespace stockbridge::io

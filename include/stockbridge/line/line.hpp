@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stockbridge/span/balance.hpp"
@@ -20,6 +21,7 @@ struct DamperType {
   std::string name;
   span::SpanDamper damper;
   std::optional<double> mass;  ///< kg per damper: the model's own, or the line file's for a sheet
+  std::optional<double> price;  ///< per damper, in the line file's currency (for choose = fewest-then-cheapest)
   std::string file;            ///< the damper file or sheet it was read from (absolute); empty if made in code
 };
 
@@ -43,6 +45,22 @@ inline span::PositionRules line_position_rules() {
   return rules;
 }
 
+/// Which damper type a span gets among those that make it safe with the fewest
+/// dampers per end: the lightest, the cheapest, or the one of the lowest stress (the
+/// objective); ties go to the objective, then to the type listed first.
+enum class TypeChoice { fewest_then_lightest, fewest_then_cheapest, lowest_stress };
+/// "fewest-then-lightest", "fewest-then-cheapest" or "lowest-stress"; InvalidParameter naming "choose" otherwise.
+TypeChoice parse_type_choice(std::string_view name);
+std::string_view type_choice_name(TypeChoice choice);
+
+/// What decides that a span needs no damper: its own energy balance without
+/// dampers (safe), or CIGRE TB 273's rule for its terrain (H/w within the limit of
+/// its terrain category; a span without a terrain is judged by its balance).
+enum class UndampedRule { balance, tb273 };
+/// "balance" or "tb273"; InvalidParameter naming "undamped_rule" otherwise.
+UndampedRule parse_undamped_rule(std::string_view name);
+std::string_view undamped_rule_name(UndampedRule rule);
+
 /// The schedule's rules (the line file's [dampers] table, docs/line.md).
 struct ScheduleRules {
   int min_per_end = 0;  ///< 0: a span safe without dampers gets none
@@ -55,6 +73,11 @@ struct ScheduleRules {
   /// none: when its largest fymax stress is within the endurance limit.
   std::optional<double> life_target;
   double position_step = 0.01;  ///< m: positions are rounded to this (what is installed)
+  TypeChoice choose = TypeChoice::fewest_then_lightest;
+  /// An arrangement whose verdict is uncertain (a measured sheet's band reaches above
+  /// the limit) counts as safe; by default it does not.
+  bool accept_uncertain = false;
+  UndampedRule undamped_rule = UndampedRule::balance;
   int points = 100;             ///< frequencies of each arrangement's polished balance over the band
   int search_points = 40;       ///< frequencies of the position search's balances (tables alone)
 

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <future>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -64,10 +65,18 @@ struct ScheduleRow {
   std::string damper_type;         ///< empty with no dampers
   int per_end = 0;
   std::vector<double> positions;   ///< m from the clamp, increasing; both ends alike
-  double max_stress = 0.0;         ///< the largest fymax stress over the converged points
+  /// The largest stress the criterion judges over the converged points (fymax, or
+  /// Poffenberger-Swart under the microstrain criterion), and the top of a measured
+  /// sheet's band there (NaN without one).
+  double max_stress = 0.0;
+  double max_stress_high = std::numeric_limits<double>::quiet_NaN();
   double max_stress_frequency = 0.0;  ///< Hz
   double life_years = 0.0;         ///< as undamped_life_years
   span::Verdict verdict = span::Verdict::unknown;
+  /// What judged the span without dampers safe where it gets none: "balance" (its
+  /// own), "tb273" (UndampedRule::tb273: its H/w within its terrain's limit; the
+  /// undamped balance's figures still beside it); empty where it has dampers.
+  std::string no_damper_basis;
   int converged = 0, points = 0;   ///< of the recommended arrangement's balance
   int balances = 0;                ///< the search's balances (its cost)
   std::vector<std::string> warnings;
@@ -97,7 +106,8 @@ struct BillLine {
   std::string damper_type;
   int dampers = 0;
   int spans = 0;
-  std::optional<double> mass;  ///< kg, all of them, where the type's mass is known
+  std::optional<double> mass;   ///< kg, all of them, where the type's mass is known
+  std::optional<double> price;  ///< all of them, where the type's price is known
 };
 std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<ScheduleRow>& rows);
 
@@ -105,12 +115,18 @@ std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<Sche
 /// whose dampers raise the stress above the undamped one, spans by dampers per end,
 /// and the governing span (the largest stress ratio among those converged throughout).
 struct ScheduleCounts {
-  int safe = 0, unsafe = 0, unknown = 0;
+  int safe = 0, unsafe = 0, unknown = 0, uncertain = 0;
   int not_converged = 0;
   int worse_than_undamped = 0;
   std::map<int, int> per_end;  ///< dampers per end -> spans
   const ScheduleRow* governing = nullptr;  ///< into the rows counted; none where no span converged
 };
 ScheduleCounts schedule_counts(const std::vector<ScheduleRow>& rows);
+
+/// The rows' warnings grouped by kind: warnings that differ only in their numbers
+/// (the same message of the same damper type on other spans) become one line, the
+/// first span's text with how many spans gave it and their ids ("(3 spans: T01,
+/// T04, T07; the figures are T01's)"), in the order of their first span.
+std::vector<std::string> grouped_warnings(const std::vector<ScheduleRow>& rows);
 
 }  // namespace stockbridge::line

@@ -24,6 +24,14 @@ struct Series {
   int colour = -1;  ///< an index in the palette; -1: the series' own index
 };
 
+/// A shaded band between two curves over the same x (an uncertainty's low and high
+/// ends), drawn under the curves; broken where either end is missing.
+struct Band {
+  std::string label;  ///< in the legend; empty: not listed
+  std::vector<double> x, low, high;
+  int colour = 0;  ///< an index in the palette
+};
+
 /// A horizontal line across the plot at y, labelled at its right end.
 struct ReferenceLine {
   std::string label;
@@ -49,6 +57,7 @@ struct Chart {
   std::string title;
   Axis x, y;
   std::vector<Series> series;
+  std::vector<Band> bands;
   std::vector<ReferenceLine> references;
   std::optional<SecondaryAxis> top;    ///< proportional to x
   std::optional<SecondaryAxis> right;  ///< proportional to y
@@ -63,7 +72,8 @@ struct Chart {
 std::string svg(const Chart& chart);
 
 /// "Nice" tick values covering [lo, hi]: multiples of 1, 2 or 5 times a power of ten
-/// on a linear axis; decades (with 2 and 5 between where there are few) on a log axis.
+/// on a linear axis; on a log axis decades, with 2 and 5 between (then 3, then 1.5,
+/// 4, 6 and 8) until at least four ticks label the range.
 std::vector<double> ticks(double lo, double hi, bool log);
 
 }  // namespace stockbridge::report

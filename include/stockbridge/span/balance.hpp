@@ -158,13 +158,22 @@ struct BalancePoint {
   bool converged() const { return summary.converged(); }
 };
 
-/// Pass or fail against the endurance limit, from converged points only.
+/// Pass or fail against the endurance limit, from converged points only: the stress
+/// the span's criterion judges (Span::judges_poffenberger_swart: fymax, or the
+/// Poffenberger-Swart stress of the microstrain criterion).
 enum class Verdict {
-  safe,     ///< every point converged, and every fymax stress within the limit
-  unsafe,   ///< a converged point's fymax stress exceeds the limit
-  unknown,  ///< some points did not converge and none of the others exceeds the limit
+  safe,       ///< every point converged, and every judged stress (and its band's top) within the limit
+  unsafe,     ///< a converged point's judged stress exceeds the limit
+  unknown,    ///< some points did not converge and none of the others exceeds the limit
+  uncertain,  ///< every point converged within the limit, but a measured sheet's band reaches above it
 };
 std::string_view verdict_name(Verdict verdict);
+
+/// The stress the span's criterion judges at a converged point, Pa; and the top of
+/// its measured sheets' band (the same, times stress_fymax_high / stress_fymax;
+/// NaN without a band).
+double judged_stress(const Span& span, const BalancePoint& point);
+double judged_stress_high(const Span& span, const BalancePoint& point);
 
 /// The span's figures over the band; nothing here rests on a point that did not converge.
 struct BalanceSummary {
@@ -178,11 +187,18 @@ struct BalanceSummary {
   /// Over the converged points too: the Poffenberger-Swart stress (Pa) and Yb (m) at the span clamp.
   double max_stress_poffenberger_swart = 0.0;
   double max_bending_amplitude = 0.0;
+  /// The largest stress the criterion judges over the converged points (fymax, or
+  /// Poffenberger-Swart under the microstrain criterion), Pa, its frequency, and the
+  /// largest top of its measured sheets' band (NaN without one).
+  double max_judged_stress = 0.0;
+  double max_judged_stress_frequency_hz = 0.0;
+  double max_judged_stress_high = std::numeric_limits<double>::quiet_NaN();
   Verdict verdict = Verdict::unknown;
   int undamped_points = 0;               ///< with an undamped balance (the rest: none up to 10 D)
   double undamped_max_stress_fymax = 0.0;
   double undamped_max_stress_frequency_hz = 0.0;
   Verdict undamped_verdict = Verdict::unknown;
+  double undamped_max_judged_stress = 0.0;               ///< Pa, as max_judged_stress
   double undamped_max_stress_poffenberger_swart = 0.0;  ///< Pa
   double undamped_max_bending_amplitude = 0.0;          ///< m
   /// Miner's life from the Poffenberger-Swart stresses (the Safe Border Line is stated

@@ -30,6 +30,11 @@ struct Conductor {
   double outer_wire_diameter = 0.0;     ///< d_a, diameter of an outer-layer wire, m
   double outer_wire_modulus = 0.0;      ///< E_a, Young's modulus of the outer wires, Pa
   int aluminium_layers = 1;             ///< picks the Safe Border Line: 1, or several (2..10)
+  /// Where the values come from, for reports: "the catalogue's ACSR Drake", "the
+  /// conductor file drake.toml", "the [conductor] keys", with the keys given beside
+  /// ("; diameter given"); and the stranding where it is known ("26/7: ...").
+  std::string source;
+  std::string stranding;
 
   /// Throws InvalidParameter naming the field as a span file spells it
   /// ("mass_per_length = -1: expected a finite value > 0 (kg/m)"): every magnitude

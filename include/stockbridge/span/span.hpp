@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stockbridge/damper/damper.hpp"
@@ -33,16 +34,32 @@ struct SpanDamper {
   bool measured() const { return sheet != nullptr; }
 };
 
-/// Where the fatigue verdict's endurance limit comes from: the Safe Border Line at
-/// `cycles`, or a given limit (Pa); and the climate for the life.
+/// The criterion a span's verdict judges by (docs/span.md, "Criteria"):
+///  * safe_border_line: the fymax stress against CIGRE's Safe Border Line at `cycles`;
+///  * microstrain: the peak-to-peak bending strain of the Poffenberger-Swart stress
+///    (from Yb, as a recorder measures it) against `limit_pp_microstrain` (the IEEE
+///    committee's 150 by default);
+///  * stress: the fymax stress against a given endurance limit (EPRI's by the
+///    conductor's construction, a utility's own).
+enum class FatigueCriterion { safe_border_line, microstrain, stress };
+/// "safe-border-line", "microstrain" or "stress"; InvalidParameter naming "criterion" otherwise.
+FatigueCriterion parse_fatigue_criterion(std::string_view name);
+std::string_view fatigue_criterion_name(FatigueCriterion criterion);
+/// The IEEE committee's peak-to-peak bending strain limit (IEEE 1966 report; EPRI "Orange Book").
+inline constexpr double ieee_limit_pp_microstrain = 150.0;
+
+/// The fatigue verdict's criterion and limit, and the climate for the life.
 struct FatigueSpec {
-  std::optional<double> cycles;
-  std::optional<double> endurance_limit;
+  FatigueCriterion criterion = FatigueCriterion::safe_border_line;
+  std::optional<double> cycles;           ///< safe_border_line: the cycles of the endurance limit
+  std::optional<double> endurance_limit;  ///< stress: the endurance limit, Pa (zero-to-peak)
+  std::optional<double> limit_pp_microstrain;  ///< microstrain: the limit (none: the IEEE's 150)
   std::optional<LifeModel> life;
   /// x_b of the bending amplitude Yb and the Poffenberger-Swart stress, m from the
   /// clamp's last point of contact (IEEE 1966: 89 mm).
   double yb_distance = poffenberger_swart_distance;
 
+  /// The criterion's own number and no other's: InvalidParameter naming the field.
   void validate() const;
 };
 
@@ -66,8 +83,16 @@ class Span {
   const FatigueSpec& fatigue() const { return fatigue_; }
   /// CIGRE TB 273's terrain category (1..4, tension_figures.hpp), if given.
   std::optional<int> terrain() const { return terrain_; }
-  /// The endurance limit the verdict uses, Pa.
+  /// The endurance limit the verdict uses, as a zero-to-peak stress, Pa (under the
+  /// microstrain criterion the Poffenberger-Swart stress of that strain, E_a eps / 2).
   double endurance_limit() const;
+  /// Whether the verdict judges the Poffenberger-Swart stress (the microstrain
+  /// criterion: Yb as measured) rather than the fymax stress.
+  bool judges_poffenberger_swart() const { return fatigue_.criterion == FatigueCriterion::microstrain; }
+  /// The criterion in words, as reports name it ("the CIGRE Safe Border Line at 5e+08
+  /// cycles", "150 microstrain peak-to-peak (the IEEE committee's limit)", "a given
+  /// endurance limit").
+  std::string criterion_description() const;
   /// The same span with every damper moved to `position` + (its position - the first's).
   Span with_dampers_at(double position) const;
   /// The same span without dampers.

@@ -59,6 +59,9 @@ struct WindModel {
   double speed_min = 1.0;             ///< lowest wind speed of the aeolian band, m/s
   double speed_max = 7.0;             ///< highest, m/s (> speed_min)
   double turbulence_intensity = 0.0;  ///< I_v, in [0, 1]; law foti only
+  /// Where turbulence_intensity is the span's terrain's assumed one (span/tension_figures.hpp,
+  /// terrain_wind): the TB 273 category; none where given.
+  std::optional<int> turbulence_terrain;
   std::vector<WindPoint> table;       ///< law table only: at least 2 points
 
   /// Throws InvalidParameter naming the field ("strouhal", "speed_max",

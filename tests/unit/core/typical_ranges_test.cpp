@@ -69,7 +69,35 @@ TEST(TypicalRanges, AValueWarnsExactlyOutsideItsRange) {
   EXPECT_TRUE(unusual("m", 0.0499, typical::arm_mass));
   EXPECT_TRUE(unusual("m", 20.01, typical::arm_mass));
   EXPECT_EQ(unusual("arm[0].mass", 863, typical::arm_mass)->message(),
-            "arm[0].mass = 863: outside the typical 0.05 to 20 kg of the arm mass (a unit mistake?)");
+            "arm[0].mass = 863: outside the typical 0.05 to 20 kg of the arm mass (in g? 863 g = 0.863 kg)");
+  EXPECT_EQ(unusual("arm[0].mass", 86300, typical::arm_mass)->message(),
+            "arm[0].mass = 86300: outside the typical 0.05 to 20 kg of the arm mass (a unit mistake?)");
+}
+
+// A reader refuses a value its range's slip explains (SlipPolicy::refuse, the
+// default), and warns of it where the study goes there on purpose; a value no slip
+// explains is a warning either way.
+TEST(TypicalRanges, AReaderRefusesASlipAndWarnsOfTheRest) {
+  const UnusualValue kn = *unusual("span.tension", 30.3, typical::span_tension);
+  const UnusualValue huge = *unusual("span.tension", 5e7, typical::span_tension);
+  EXPECT_TRUE(kn.slip_explained());
+  EXPECT_FALSE(huge.slip_explained());
+  std::vector<std::string> warnings;
+  try {
+    judge_unusual(kn, "s.toml:16: ", SlipPolicy::refuse, warnings);
+    ADD_FAILURE() << "a slip accepted";
+  } catch (const UnusualValueError& e) {
+    EXPECT_EQ(std::string(e.what()), "s.toml:16: span.tension = 30.3: outside the typical 1000 to 500000 N of the "
+                                     "conductor tension (in kN? 30.3 kN = 30300 N)");
+  }
+  EXPECT_TRUE(warnings.empty());
+  judge_unusual(huge, "s.toml:16: ", SlipPolicy::refuse, warnings);
+  judge_unusual(kn, "s.toml:16: ", SlipPolicy::warn, warnings);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[1], "s.toml:16: " + kn.message());
+  EXPECT_THROW(judge_implausible("x", SlipPolicy::refuse, warnings), UnusualValueError);
+  judge_implausible("x", SlipPolicy::warn, warnings);
+  EXPECT_EQ(warnings.back(), "x");
 }
 
 TEST(TypicalRanges, AUsualSlipOfUnitsIsNamedWhereItExplainsTheValue) {

@@ -53,10 +53,17 @@ TEST(CsvReader, EachMistakeGetsOnePreciseLine) {
   EXPECT_EQ(csv_error_of("curvature_per_m,moment_n_m\n0.1,1\n0.2,abc\n"),
             f + ":3: column 'moment_n_m' = 'abc': expected a number ('.' as decimal separator)");
   EXPECT_EQ(csv_error_of("curvature_per_m,moment_n_m\n0,1\n0;2\n"),
+            f + ":3: 1 cells: expected 2, as the header has (an empty cell is written as nothing between two commas)");
+  EXPECT_EQ(csv_error_of("curvature_per_m,moment_n_m\n0,1\n0;2,\n"),
             f + ":3: column 'curvature_per_m' = '0;2': expected a number ('.' as decimal separator)");
-  EXPECT_EQ(csv_error_of("curvature_per_m,moment_n_m\n0,1\n2\n"), f + ":3: 1 cells: expected 2 (column 'moment_n_m' missing)");
+  EXPECT_EQ(csv_error_of("curvature_per_m,moment_n_m\n0,1\n2\n"),
+            f + ":3: 1 cells: expected 2, as the header has (an empty cell is written as nothing between two commas)");
   EXPECT_EQ(csv_error_of("curvature_per_m,moment_n_m\n0.1,nan\n"), f + ":2: column 'moment_n_m' = nan: expected a finite number");
+  // A decimal comma splits a cell in two: the row is refused, not read as two numbers.
   EXPECT_EQ(csv_error_of("curvature_per_m,moment_n_m\n0.1,1,5\n0,\n"),
+            f + ":2: 3 cells: expected 2, as the header has (a decimal comma? '.' is the decimal separator, and a cell "
+                "cannot hold a ',')");
+  EXPECT_EQ(csv_error_of("curvature_per_m,moment_n_m\n0.1,1\n0,\n"),
             f + ":3: column 'moment_n_m' = '': expected a number ('.' as decimal separator)");
   EXPECT_EQ(csv_error_of("curvature_per_m,moment_n_m\n", 8), f + ": 0 data rows: expected at least 8");
   // Fuzzing finding: a lone CR or other control character inside a quoted cell or

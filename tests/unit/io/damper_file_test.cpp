@@ -145,13 +145,21 @@ TEST(DamperFile, ValuesOutsideTheTypicalRangesWarnOnceAtTheirLines) {
       dir, "warned.toml",
       "[clamp]\nmass = 0\n" + arm_keys("file = \"stiff.toml\"\nlength = 0.2\n") +
           heavy_arm_keys("file = \"stiff.toml\"\nlength = 157\n"));
-  const DamperFile file = load_damper_file(path);
+  // The mass in g and the length in mm are slips: refused at the first, the mass's line.
+  try {
+    load_damper_file(path);
+    ADD_FAILURE() << "slips accepted";
+  } catch (const UnusualValueError& e) {
+    EXPECT_EQ(std::string(e.what()), path.string() + ":11: arm[1].mass = 863: outside the typical 0.05 to 20 kg of the "
+                                                     "arm mass (in g? 863 g = 0.863 kg)");
+  }
+  const DamperFile file = load_damper_file(path, SlipPolicy::warn);
   ASSERT_EQ(file.warnings.size(), 3u);  // the cable file's ei once, the mass and the length; not the clamp's 0
   EXPECT_EQ(file.warnings[0], (dir / "stiff.toml").string() +
                                   ":4: cable.ei = 4900000: outside the typical 0.1 to 1000 N m^2 of the cable bending "
                                   "stiffness ei (a unit mistake?)");
   EXPECT_EQ(file.warnings[1], path.string() + ":11: arm[1].mass = 863: outside the typical 0.05 to 20 kg of the arm mass "
-                                              "(a unit mistake?)");
+                                              "(in g? 863 g = 0.863 kg)");
   EXPECT_NE(file.warnings[2].find(":16: arm[1].cable.length = 157: outside the typical 0.03 to 1 m"), std::string::npos)
       << file.warnings[2];
   EXPECT_TRUE(load_damper_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/sauter2003.toml").warnings.empty());

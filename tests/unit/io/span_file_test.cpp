@@ -343,57 +343,110 @@ TEST(SpanFile, TensionAsTheCatenaryParameterAndTheTerrain) {
             std::string::npos);
 }
 
-// The unit slips of the issue, each warned of at its line with the unit it likely is.
-TEST(SpanFile, UnitSlipsWarnAtTheirLineNamingTheLikelyUnit) {
-  const auto warning_of = [](const std::string& from, const std::string& to) {
+// The unit slips of a first use, each refused at its line naming the key and the
+// unit it likely is (nothing computed from it), and accepted with a warning where
+// the study says so (SlipPolicy::warn: --allow-unusual, allow_unusual=True).
+TEST(SpanFile, UnitSlipsAreRefusedAtTheirLineNamingTheLikelyUnit) {
+  const auto expect_slip = [&](const std::string& from, const std::string& to, const std::string& message,
+                               bool possible = true) {
     const std::string text = replaced(kSpan, from, to);
-    const SpanFile file = load_span_file(write_span(text));
+    const auto path = write_span(text, "slip.toml");
+    try {
+      load_span_file(path);
+      ADD_FAILURE() << to << ": accepted";
+    } catch (const UnusualValueError& e) {
+      EXPECT_EQ(std::string(e.what()), path.string() + at_line(line_of(text, to)) + message);
+    }
+    if (!possible) {  // no span has it: refused however unusual the study
+      EXPECT_THROW(load_span_file(path, SlipPolicy::warn), InputError) << to;
+      return;
+    }
+    const SpanFile accepted = load_span_file(path, SlipPolicy::warn);
+    ASSERT_FALSE(accepted.warnings.empty()) << to;
+    EXPECT_EQ(accepted.warnings.front(), path.string() + at_line(line_of(text, to)) + message);
+  };
+  expect_slip("rated_tensile_strength = 185300", "rated_tensile_strength = 185.3",
+              "conductor.rated_tensile_strength = 185.3: outside the typical 5000 to 1.5e+06 N of the conductor "
+              "rated tensile strength (in kN? 185.3 kN = 185300 N)");
+  expect_slip("outer_wire_modulus = 68e9", "outer_wire_modulus = 68.9",
+              "conductor.outer_wire_modulus = 68.9: outside the typical 4e+10 to 2.2e+11 Pa of the outer wire "
+              "Young's modulus (in GPa? 68.9 GPa = 6.89e+10 Pa)");
+  expect_slip("mass_per_length = 1.571", "mass_per_length = 1571",
+              "conductor.mass_per_length = 1571: outside the typical 0.03 to 8 kg/m of the conductor mass per length "
+              "(in g/m? 1571 g/m = 1.571 kg/m)");
+  expect_slip("diameter = 0.03105", "diameter = 31.05",
+              "conductor.diameter = 31.05: outside the typical 0.004 to 0.08 m of the conductor diameter (in mm? "
+              "31.05 mm = 0.03105 m)");
+  expect_slip("tension_fraction = 0.15", "tension = 28.02",
+              "span.tension = 28.02: outside the typical 1000 to 500000 N of the conductor tension (in kN? 28.02 kN = "
+              "28020 N)");
+  expect_slip("tension_fraction = 0.15", "tension_fraction = 15",
+              "span.tension_fraction = 15: outside the typical 0.03 to 0.4 of the tension as a fraction of the rated "
+              "tensile strength (a percentage? 15 % = 0.15)",
+              false);
+  expect_slip("length = 400", "length = 0.4",
+              "span.length = 0.4: outside the typical 20 to 3000 m of the span length (in km? 0.4 km = 400 m)", false);
+  expect_slip("position = 1.0", "position = 1200",
+              "damper[0].position = 1200: outside the typical 0.1 to 10 m of the damper position from the span clamp "
+              "(in mm? 1200 mm = 1.2 m)",
+              false);
+  expect_slip("aeolian_fraction = 0.3", "aeolian_fraction = 30",
+              "fatigue.aeolian_fraction = 30: outside the typical 0.01 to 1 of the share of the year with aeolian "
+              "vibration (a percentage? 30 % = 0.3)",
+              false);
+}
+
+// A value outside its range that no slip explains is a warning, and the run goes on.
+TEST(SpanFile, AnUnusualValueNoSlipExplainsWarnsAtItsLine) {
+  const auto warning_of = [](const std::string& from, const std::string& to) {
+    const SpanFile file = load_span_file(write_span(replaced(kSpan, from, to)));
     EXPECT_EQ(file.warnings.size(), 1u) << to;
     return file.warnings.empty() ? std::string() : file.warnings.front();
   };
-  const auto expect_warning = [&](const std::string& from, const std::string& to, const std::string& message) {
-    const std::string warning = warning_of(from, to);
-    EXPECT_NE(warning.find(at_line(line_of(replaced(kSpan, from, to), to)) + message), std::string::npos) << warning;
+  EXPECT_NE(warning_of("cycles = 5e8", "cycles = 500").find("fatigue.cycles = 500: outside the typical 1e+06 to 1e+10 "
+                                                            "of the cycles of the endurance limit (a unit mistake?)"),
+            std::string::npos);
+  EXPECT_NE(warning_of("aeolian_fraction = 0.3", "aeolian_fraction = 0.003").find("fatigue.aeolian_fraction = 0.003"),
+            std::string::npos);
+}
+
+// A tension at which no span hangs (a sag over a tenth of the span, H/w outside 100
+// to 5000 m) is refused at the tension's key, whichever form gave it; a tension
+// beyond the rated strength always.
+TEST(SpanFile, ATensionNoSpanHangsAtIsRefusedAtItsKey) {
+  const auto error_of = [](const std::string& to, SlipPolicy policy = SlipPolicy::refuse) {
+    const auto path = write_span(replaced(kSpan, "tension_fraction = 0.15", to), "sag.toml");
+    try {
+      const SpanFile file = load_span_file(path, policy);
+      return file.warnings.empty() ? std::string("accepted") : "warning " + file.warnings.back();
+    } catch (const InputError& e) {
+      return std::string(e.what()).substr(path.string().size());
+    }
   };
-  expect_warning("tension_fraction = 0.15", "tension = 28.02",
-                 "span.tension = 28.02: outside the typical 1000 to 500000 N of the conductor tension (in kN? 28.02 kN = "
-                 "28020 N)");
-  expect_warning("rated_tensile_strength = 185300", "rated_tensile_strength = 185.3",
-                 "conductor.rated_tensile_strength = 185.3: outside the typical 5000 to 1.5e+06 N of the conductor "
-                 "rated tensile strength (in kN? 185.3 kN = 185300 N)");
-  expect_warning("outer_wire_modulus = 68e9", "outer_wire_modulus = 68.9",
-                 "conductor.outer_wire_modulus = 68.9: outside the typical 4e+10 to 2.2e+11 Pa of the outer wire "
-                 "Young's modulus (in GPa? 68.9 GPa = 6.89e+10 Pa)");
-  expect_warning("mass_per_length = 1.571", "mass_per_length = 1571",
-                 "conductor.mass_per_length = 1571: outside the typical 0.03 to 8 kg/m of the conductor mass per length "
-                 "(in g/m? 1571 g/m = 1.571 kg/m)");
-  expect_warning("cycles = 5e8", "cycles = 500", "fatigue.cycles = 500: outside the typical 1e+06 to 1e+10 of the "
-                                                  "cycles of the endurance limit (a unit mistake?)");
-  expect_warning("aeolian_fraction = 0.3", "aeolian_fraction = 0.003", "fatigue.aeolian_fraction = 0.003");
-  // A diameter in mm moves the band out of the typical frequencies too: warned of, run as given.
-  expect_warning("diameter = 0.03105", "diameter = 31.05", "conductor.diameter = 31.05: outside the typical 0.004 to "
-                                                           "0.08 m of the conductor diameter (in mm? 31.05 mm = "
-                                                           "0.03105 m)");
+  // 2000 N: H/w = 130 m, a sag of 154 m on 400 m.
+  EXPECT_EQ(error_of("tension = 2000"), ":14: span.tension = 2000: H/w = 129.8 m and a sag of 154 m (38.5 % of the 400 "
+                                        "m span): expected H/w from 100 to 5000 m and a sag within 10 % of the span, as "
+                                        "spans hang");
+  EXPECT_EQ(error_of("catenary_parameter = 6000").find(":14: span.catenary_parameter = 6000: H/w = 6000 m"), 0u);
+  EXPECT_EQ(error_of("tension_fraction = 0.01").find(":14: span.tension_fraction = 0.01: H/w = 120.3 m"), 0u)
+      << error_of("tension_fraction = 0.01");
+  EXPECT_EQ(error_of("tension = 2000", SlipPolicy::warn).find("warning "), 0u);
+  EXPECT_NE(error_of("tension = 200000", SlipPolicy::warn).find("span.tension = 200000: expected less than the rated "
+                                                                "tensile strength"),
+            std::string::npos);
 }
 
 // A range error names the key at fault: ei_min in N mm^2 (not ei_max, which is
-// right); a span length in km (not the damper's position, which is usual).
+// right); a span too short for its dampers (not the damper's position, which is usual).
 TEST(SpanFile, RangeErrorsNameTheKeyAtFault) {
   expect_at_line("ei_min = 28.28", "ei_min = 37500",
                  "conductor.ei_min = 37500: expected at most ei_max = 2155 N m^2 (the free wires' stiffness, typically "
                  "0.5 to 2000 N m^2)");
   expect_at_line("ei_max = 2155", "ei_max = 20", "conductor.ei_max = 20: expected 0 (not given) or at least ei_min");
-  expect_at_line("length = 400", "length = 0.4",
-                 "span.length = 0.4: expected more than twice damper[0].position = 1 m: the span is too short for its "
-                 "dampers (a length in km?)");
-  expect_at_line("length = 400", "length = 1.5",
-                 "span.length = 1.5: expected more than twice damper[0].position = 1 m: the span is too short for its "
-                 "dampers");
-  expect_at_line("position = 1.0", "position = 300", "damper[0].position = 300: expected a distance from the span end");
-  EXPECT_NE(span_error_of(replaced(kSpan, "tension_fraction = 0.15", "tension_fraction = 15"))
-                .find("span.tension_fraction = 15: expected a fraction of the rated tensile strength > 0 and < 1 (a "
-                      "percentage? 15 % is 0.15)"),
-            std::string::npos);
+  expect_error_at(replaced(replaced(kSpan, "length = 400", "length = 16"), "position = 1.0", "position = 9"), "length = 16",
+                  "span.length = 16: expected more than twice damper[0].position = 9 m: the span is too short for its "
+                  "dampers");
+  expect_at_line("position = 1.0", "position = 300", "damper[0].position = 300: outside the typical 0.1 to 10 m");
 }
 
 // A damper known by its measured sheet: `impedance = "sheet.csv"` beside the span
@@ -443,9 +496,14 @@ TEST(SpanFile, AWindTableIsReadFromItsCsvBesideTheSpanFile) {
             std::string::npos);
   testing::write_temp_file(dir / "wind", "unsorted.csv", "y_over_d,fnc\n0.2,1\n0.1,2\n");
   const std::string unsorted = replaced(kSpan, "law = \"cigre\"", "law = \"table\"\ntable = \"wind/unsorted.csv\"");
-  const std::string error = span_error_of(unsorted);
-  EXPECT_EQ(error.rfind(at_line(line_of(unsorted, "table =")) + "wind.table[1].y_over_d = 0.1", 0), 0u)
-      << error;
+  // A bad point is named where it is written: the table's file, row and column.
+  EXPECT_EQ(span_error_of(unsorted),
+            (dir / "wind/unsorted.csv").string() + ":3: column 'y_over_d' = 0.1: expected more than the row before's 0.2 "
+                                                   "(increasing)");
+  testing::write_temp_file(dir / "wind", "negative.csv", "y_over_d,fnc\n-0.1,1\n0.1,2\n");
+  EXPECT_EQ(span_error_of(replaced(kSpan, "law = \"cigre\"", "law = \"table\"\ntable = \"wind/negative.csv\"")),
+            (dir / "wind/negative.csv").string() +
+                ":2: column 'y_over_d' = -0.1: expected an amplitude over the diameter from 0 to 10");
 }
 
 TEST(SpanFile, DamperFilesAreFoundRelativeToTheSpanFileFromAnotherFolder) {

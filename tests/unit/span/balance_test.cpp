@@ -256,6 +256,7 @@ TEST(SpanBalance, AFailedPointNeverEntersTheLifeOrTheVerdict) {
     SCOPED_TRACE(exceeded ? "a converged point exceeds the limit" : "every converged point within it");
     if (!exceeded) {
       fatigue.cycles.reset();
+      fatigue.criterion = FatigueCriterion::stress;
       fatigue.endurance_limit = 1e9;
     }
     const Span span(aster570(), 400.0, aster570_tension, WindModel{}, SelfDampingModel{}, {}, fatigue);
@@ -430,10 +431,16 @@ TEST(SpanBalance, ASpanIsCheckedWhereItsFileSpellsIt) {
   both.cycles = 5e8;
   both.endurance_limit = 8e6;
   EXPECT_NE(error_of([&] { Span(aster570(), 400.0, aster570_tension, {}, {}, {}, both); })
-                .find("fatigue.cycles: give exactly one of cycles and endurance_limit"),
+                .find("fatigue.endurance_limit: given beside criterion = \"safe-border-line\", which does not use it"),
             std::string::npos);
-  EXPECT_NE(error_of([] { Span(aster570(), 400.0, 1e7, {}, {}, {}, FatigueSpec{5e8, {}, {}}); }).find("span.tension"),
+  FatigueSpec none;
+  none.criterion = FatigueCriterion::stress;
+  EXPECT_NE(error_of([&] { Span(aster570(), 400.0, aster570_tension, {}, {}, {}, none); })
+                .find("fatigue.endurance_limit: missing: criterion \"stress\" takes endurance_limit_mpa"),
             std::string::npos);
+  FatigueSpec sbl;
+  sbl.cycles = 5e8;
+  EXPECT_NE(error_of([&] { Span(aster570(), 400.0, 1e7, {}, {}, {}, sbl); }).find("span.tension"), std::string::npos);
 }
 
 }  // namespace
