@@ -1,7 +1,9 @@
 """stockbridge: Stockbridge damper impedance from a distributed Masing cable model.
 
 The numerics live in the C++ library; this package binds it (``stockbridge._core``,
-built by the CMake project) and adds plots (``python3 -m stockbridge.plot``).
+built by the CMake project) and adds plots (``python3 -m stockbridge.plot`` of the CSV
+files; ``stockbridge.plot.span(result, "span.png")``, ``line`` and ``impedance`` of what
+span, line and impedance return, after ``import stockbridge.plot``).
 
     import stockbridge as sb
     damper = sb.load_damper("examples/sauter2003.toml")

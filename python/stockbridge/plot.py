@@ -12,6 +12,17 @@
 Errors (a missing file or column, a cell that is not a number, nothing to plot, an
 output that cannot be written) print one line on stderr and exit with status 2,
 without writing the output file.
+
+From Python, the same figures of what the module's functions return (no CSV file
+needed); each returns the matplotlib Figure and, given an output path, saves it:
+
+    import stockbridge as sb, stockbridge.plot
+    stockbridge.plot.span(sb.span("examples/drake_300m.toml", points=40), "span.png")
+    stockbridge.plot.line(sb.line("examples/line_short.toml", threads=2), "line.png")
+    damper = sb.load_damper("examples/sauter2003.toml")
+    stockbridge.plot.impedance(sb.impedance(damper, velocity=[0.2, 0.05], fmin=5, fmax=50, points=20), "z.png")
+
+A result the figure cannot use raises PlotError with the same one line.
 """
 
 import argparse
@@ -26,11 +37,10 @@ import textwrap
 import warnings
 
 import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.patches  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
-from matplotlib.ticker import FuncFormatter, LogLocator, MaxNLocator, NullFormatter  # noqa: E402
+import matplotlib.patches
+import matplotlib.pyplot as plt
+import numpy
+from matplotlib.ticker import FuncFormatter, LogLocator, MaxNLocator, NullFormatter
 
 FIGURE_SIZE = (8.0, 6.0)  # inches; at DPI this gives 800 x 600 pixels
 DPI = 100
@@ -62,38 +72,122 @@ class Table:
     def __contains__(self, name):
         return name in self.header
 
+    def __len__(self):
+        return len(self.rows)
+
+    def where(self, i):
+        """Row i's place in messages: "z.csv:12" (the file's line)."""
+        return f"{self.path}:{self.rows[i][0]}"
+
     def column(self, name, infinite=False):
         """The column's numbers, NaN for empty cells; +inf accepted where `infinite`."""
-        if name not in self.header:
-            raise PlotError(f"{self.path}: missing column '{name}'")
-        index = self.header.index(name)
-        return [self._number(line, name, row[index], infinite) for line, row in self.rows]
+        index = self._index(name)
+        return [self._number(i, name, row[index], infinite) for i, (_, row) in enumerate(self.rows)]
 
     def text(self, name):
         """The column's cells as text, stripped."""
-        if name not in self.header:
-            raise PlotError(f"{self.path}: missing column '{name}'")
-        index = self.header.index(name)
-        return [row[index].strip() for _, row in self.rows]
+        index = self._index(name)
+        return [str(row[index]).strip() for _, row in self.rows]
 
     def required(self, name, rows=None):
         """The column's numbers; a cell in `rows` (row numbers, default all) must not be empty."""
         values = self.column(name)
         for i in range(len(values)) if rows is None else rows:
             if math.isnan(values[i]):
-                raise PlotError(f"{self.path}:{self.rows[i][0]}: column '{name}' is empty: expected a number")
+                raise PlotError(f"{self.where(i)}: column '{name}' is empty: expected a number")
         return values
 
-    def _number(self, line, name, cell, infinite=False):
-        if not cell.strip():
+    def _index(self, name):
+        if name not in self.header:
+            raise PlotError(f"{self.path}: missing column '{name}'")
+        return self.header.index(name)
+
+    def _number(self, i, name, cell, infinite=False):
+        """A cell's number: NaN where it is empty; else finite, or +inf where `infinite`."""
+        if empty_cell(cell):
             return math.nan
         try:
             value = float(cell)
-        except ValueError:
+        except (TypeError, ValueError):
             value = math.nan
         if not (math.isfinite(value) or (infinite and value == math.inf)):
-            raise PlotError(f"{self.path}:{line}: column '{name}' = '{cell}': expected a finite number")
+            raise PlotError(f"{self.where(i)}: column '{name}' = '{cell}': expected a finite number")
         return value
+
+
+def empty_cell(cell):
+    """An empty CSV cell, or where a result has NaN or None (its CSV's cell is empty)."""
+    if isinstance(cell, str):
+        return not cell.strip()
+    try:
+        return cell is None or math.isnan(cell)
+    except TypeError:
+        return False
+
+
+class ResultTable(Table):
+    """The columns of a result the package returns (stockbridge.span(), line()['schedule'],
+    impedance() flattened) as a Table: the same names as its CSV, one value per row,
+    NaN (or None) where the CSV's cell is empty, bools as 1 and 0. `name` stands for
+    the file's path in titles and messages ("span[3]: ...": the row's index)."""
+
+    def __init__(self, columns, name, rows):
+        self.path = name
+        self.header = [key for key, values in columns.items() if _is_column(values, rows)]
+        if rows == 0:
+            raise PlotError(f"{name}: no rows: expected a result with at least one point")
+        cells = [list(columns[key]) for key in self.header]
+        self.rows = [(i, [values[i] for values in cells]) for i in range(rows)]
+
+    def where(self, i):
+        return f"{self.path}[{i}]"
+
+
+def _is_column(values, rows):
+    """Whether a result's entry is a column of `rows` values (an array or a list, not a
+    dict, text or a list of lists)."""
+    if isinstance(values, (str, bytes, dict)) or not hasattr(values, "__len__") or len(values) != rows:
+        return False
+    return getattr(values, "ndim", 1) == 1 and not any(isinstance(v, (list, tuple, dict)) for v in values)
+
+
+def result_table(result, function, key, name=None):
+    """The columns of what stockbridge.<function>() returns as a ResultTable named `name`
+    (default the function's name), its rows counted by column `key`."""
+    check_result(result, function, key)
+    return ResultTable(result, name or function, len(result[key]))
+
+
+def check_result(result, function, *keys):
+    """That `result` is a dict with `keys`, as stockbridge.<function>() returns; else one
+    line naming what was expected."""
+    if not isinstance(result, dict) or any(key not in result for key in keys):
+        got = type(result).__name__ if not isinstance(result, dict) else \
+            "a dict without " + ", ".join(repr(key) for key in keys if key not in result)
+        raise PlotError(f"{function}: expected the dict stockbridge.{function}() returns, got {got}")
+
+
+def listed(result, labels):
+    """A result or a list of them, and their labels (a name, or one per result; None
+    where not given)."""
+    results = list(result) if isinstance(result, (list, tuple)) else [result]
+    labels = [None] * len(results) if labels is None else [labels] if isinstance(labels, str) else list(labels)
+    if len(labels) != len(results):
+        raise PlotError(f"{len(labels)} labels for {len(results)} results: expected one per result, in their order")
+    return results, labels
+
+
+def finish(figure, output):
+    """The figure, saved to `output` when given (and then closed in pyplot: it stays
+    usable, pyplot no longer holds it)."""
+    if output is not None:
+        save(figure, os.fspath(output))
+    return figure
+
+
+def as_table(source):
+    """A Table of a CSV file's path, or the ResultTable given."""
+    return source if isinstance(source, Table) else Table(source)
 
 
 def _read_rows(path):
@@ -170,6 +264,48 @@ def log_scale(axes, which):
     axis.set_minor_formatter(NullFormatter())
 
 
+FREQUENCY_LABELS = 5  # at least this many labelled frequencies along an axis
+FREQUENCY_SUBS = [(1,), (1, 2, 5), (1, 2, 3, 5), range(1, 10), (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 7, 8, 9)]
+
+
+class FrequencyLocator(LogLocator):
+    """The labelled ticks of a log frequency axis: the sparsest of FREQUENCY_SUBS times
+    the powers of ten that puts FREQUENCY_LABELS or more inside the view (1, 10, ...,
+    10^4; 1, 2, 5, 10, 20, 50, 100; 5, 10, 20, 30, 50; 6, 7, 8, 9, 10, 20, 30, 40;
+    12, 15, 20, 25, 30), else evenly spaced round numbers (12, 14, ..., 24; 31, 31.5,
+    32, ...). Chosen at each draw, from the axis's limits."""
+
+    def tick_values(self, vmin, vmax):
+        vmin, vmax = sorted((vmin, vmax))
+        if vmin <= 0:
+            return super().tick_values(vmin, vmax)
+        for subs in FREQUENCY_SUBS:
+            ticks = decade_ticks(vmin, vmax, subs)
+            if len(ticks) >= FREQUENCY_LABELS:
+                return ticks
+        for bins in range(FREQUENCY_LABELS, 4 * FREQUENCY_LABELS):  # so many intervals at most, or one fewer
+            ticks = [t for t in MaxNLocator(nbins=bins, steps=[1, 2, 5, 10]).tick_values(vmin, vmax) if t > 0]
+            if sum(vmin <= t <= vmax for t in ticks) >= FREQUENCY_LABELS:
+                break
+        return ticks
+
+
+def decade_ticks(vmin, vmax, subs):
+    """The values sub x 10^k within [vmin, vmax], as exact as their decimal text."""
+    low, high = math.floor(math.log10(vmin)), math.ceil(math.log10(vmax))
+    values = (float(f"{sub:g}e{k}") for k in range(low, high + 1) for sub in subs)
+    return [v for v in values if vmin * (1 - 1e-9) <= v <= vmax * (1 + 1e-9)]
+
+
+def frequency_scale(axes):
+    """A log frequency axis (x) labelled in plain numbers at FrequencyLocator's ticks, the
+    other tenths of each decade unlabelled minor ticks."""
+    axes.set_xscale("log")
+    axes.xaxis.set_major_locator(FrequencyLocator())
+    axes.xaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
+    axes.xaxis.set_minor_formatter(NullFormatter())
+
+
 def log_if_positive(axes):
     """A log y scale when every plotted value is positive and they span a decade or more
     (else it stays linear)."""
@@ -198,7 +334,8 @@ def measured_file_warnings(path):
 
 
 class Sweep:
-    """One impedance CSV: per row the frequency, the velocity amplitude, Z and whether it converged.
+    """One impedance CSV, or a ResultTable of stockbridge.impedance()'s result (impedance_table):
+    per row the frequency, the velocity amplitude, Z and whether it converged.
 
     Every form identify impedance reads is accepted: the amplitude as velocity_m_s or
     displacement_m, Z as re_z_n_s_m, im_z_n_s_m or abs_z_n_s_m, phase_deg. A file without
@@ -206,13 +343,16 @@ class Sweep:
     identify impedance groups them), and the library's checks of a measured file (units,
     phases in radians) are warned of (UnusualValueWarning) when the compiled module is there."""
 
-    def __init__(self, path, label=None):
-        table = Table(path)
-        self.path, self.label = path, label or os.path.basename(path)
+    def __init__(self, source, label=None):
+        table = as_table(source)
+        result = isinstance(table, ResultTable)
+        path = self.path = table.path
+        self.label = label or os.path.basename(path)
+        self.title_name = None if result and label is None else path  # a result is named in the title when labelled
         self.frequency = table.required("frequency_hz")
         for i, f in enumerate(self.frequency):
             if f <= 0:
-                raise PlotError(f"{path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
+                raise PlotError(f"{table.where(i)}: frequency_hz = {f:g}: expected a positive frequency")
         self.measured = "converged" not in table
         self.converged = self._converged(table)
         good = [i for i, ok in enumerate(self.converged) if ok]
@@ -221,7 +361,7 @@ class Sweep:
         self.velocity, displacement = self._amplitudes(table)
         self.re, self.im = self._impedance(table, good)
         self.runs = self._measured_runs(displacement) if self.measured else self._runs(displacement)
-        if self.measured:
+        if self.measured and not result:
             measured_file_warnings(path)
 
     @staticmethod
@@ -333,15 +473,40 @@ def finish_impedance_axes(axes, panels, sweeps, linear):
     axes[0].legend(fontsize="small")
     axes[-1].set_xlabel("frequency (Hz)")
     if not linear:
-        log_scale(axes[0], "x")
-    names = ", ".join(sweep.path for sweep in sweeps)
-    axes[0].set_title(f"Impedance at the clamp ({names})", fontsize="medium")
+        frequency_scale(axes[0])
+    names = ", ".join(sweep.title_name for sweep in sweeps if sweep.title_name)
+    axes[0].set_title(f"Impedance at the clamp ({names})" if names else "Impedance at the clamp", fontsize="medium")
 
 
 def plot_impedance(paths, output, labels=None, re_im=False, linear=False, power=False):
     labels = labels or [None] * len(paths)
     sweeps = [Sweep(path, label) for path, label in zip(paths, labels)]
     save(impedance_figure(sweeps, re_im, linear, power), output)
+
+
+def impedance_table(result, name=None):
+    """What stockbridge.impedance() returns (arrays of amplitudes x frequencies, frequency_hz
+    1-D) as the rows of its CSV: amplitude by amplitude, each over the frequencies."""
+    check_result(result, "impedance", "frequency_hz", "converged")
+    shape = numpy.shape(result["converged"])
+    if len(shape) != 2 or shape[1] != len(result["frequency_hz"]):
+        raise PlotError(f"impedance: converged has shape {shape}: expected (amplitudes, frequencies) with "
+                        f"{len(result['frequency_hz'])} frequencies, as stockbridge.impedance() returns")
+    columns = {key: numpy.ravel(value) for key, value in result.items()
+               if isinstance(value, numpy.ndarray) and value.shape == shape}
+    columns["frequency_hz"] = numpy.tile(numpy.asarray(result["frequency_hz"], dtype=float), shape[0])
+    return ResultTable(columns, name or "impedance", shape[0] * shape[1])
+
+
+def impedance(result, output=None, *, labels=None, re_im=False, linear=False, power=False):
+    """plot impedance's figure of what stockbridge.impedance() returns: |Z| and phase (or
+    Re Z and Im Z with `re_im`, and the dissipated power with `power`) over frequency, a
+    curve per amplitude. A list of results is drawn on one figure, one line style each,
+    named in the legend by `labels` (one per result). Returns the matplotlib Figure;
+    with `output` (a path: .png, .pdf, .svg) also saves it there."""
+    results, labels = listed(result, labels)
+    sweeps = [Sweep(impedance_table(r, label), label) for r, label in zip(results, labels)]
+    return finish(impedance_figure(sweeps, re_im, linear, power), output)
 
 
 # ---------------------------------------------------------------- loops
@@ -432,7 +597,7 @@ def impedance_fit_figure(table):
     model = [complex(r, i) for r, i in zip(table.column("model_re_z_n_s_m"), table.column("model_im_z_n_s_m"))]
     for i, f in enumerate(frequency):
         if f <= 0:
-            raise PlotError(f"{table.path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
+            raise PlotError(f"{table.where(i)}: frequency_hz = {f:g}: expected a positive frequency")
     velocity, displacement = table.required("velocity_m_s"), table.required("displacement_m")
     by_velocity, by_displacement = amplitude_groups(velocity), amplitude_groups(displacement)
     curves, label = ((by_velocity, "V = {:g} m/s") if len(by_velocity) <= len(by_displacement)
@@ -459,7 +624,7 @@ def impedance_fit_figure(table):
     axes[1].set_xlabel("frequency (Hz)")
     for axis in axes:
         axis.grid(True, which="both", alpha=0.3)
-    log_scale(axes[0], "x")
+    frequency_scale(axes[0])
     log_if_positive(axes[0])
     axes[0].legend(fontsize="small")
     axes[0].set_title(f"Measured and fitted impedance ({table.path})", fontsize="medium")
@@ -497,6 +662,8 @@ TITLE_WIDTH = 100  # characters of a title line before it wraps
 LIVES_NOTE = ("Lives are comparative: they rest on the assumed climate (the span file's wind_weibull, "
               "aeolian_fraction) and the Safe Border Line.")
 SUMMARY_HINT = "expected the JSON summary that stockbridge span --json prints"
+VERDICTS = ("safe", "unsafe", "unknown")  # what a span CSV tells by itself: its stresses against the limit
+PROGRAM_VERDICTS = ("safe", "unsafe", "uncertain", "unknown")  # uncertain: a measured sheet's band reaches the limit
 
 
 def years(value):
@@ -509,25 +676,28 @@ def points(n):
 
 
 class SpanRun:
-    """One span CSV (stockbridge span -o): per frequency the antinode amplitude, the
-    fymax stress and (where the CSV has them) the bending strain at the span clamp,
-    with the dampers and without; whether each point converged; the endurance limit
-    (the same in every row); the wind speed over the frequency, D / St (None without a
-    wind_speed_m_s column); and the verdict the CSV carries, as the program judges it:
-    safe when every point converged within the limit, unsafe when a converged point
-    exceeds it, else unknown."""
+    """One span CSV (stockbridge span -o), or a ResultTable of stockbridge.span()'s
+    result: per frequency the antinode amplitude, the fymax stress and (where the CSV
+    has them) the bending strain at the span clamp, with the dampers and without; whether
+    each point converged; the endurance limit (the same in every row); the measured
+    sheet's band (None without its columns); the wind speed over the frequency, D / St
+    (None without a wind_speed_m_s column); and the verdict the CSV carries, as the
+    program judges it: safe when every point converged within the limit, unsafe when a
+    converged point exceeds it, else unknown (a summary's verdict replaces it: judged_by)."""
 
     NAMES = ["amplitude_m", "undamped_amplitude_m", "stress_fymax_mpa", "undamped_stress_fymax_mpa"]
     STRAIN = ["bending_strain_pp_microstrain", "undamped_bending_strain_pp_microstrain"]
 
-    def __init__(self, path, label=None):
-        table = Table(path)
-        self.path, self.named = path, label is not None
+    def __init__(self, source, label=None):
+        table = as_table(source)
+        path = self.path = table.path
+        self.named = label is not None
         self.label = label or os.path.splitext(os.path.basename(path))[0]
+        self.criterion = None  # the summary's, where it names one
         self.frequency = table.required("frequency_hz")
         for i, f in enumerate(self.frequency):
             if f <= 0:
-                raise PlotError(f"{path}:{table.rows[i][0]}: frequency_hz = {f:g}: expected a positive frequency")
+                raise PlotError(f"{table.where(i)}: frequency_hz = {f:g}: expected a positive frequency")
         self.converged = [value == 1.0 for value in table.required("converged")]
         self.good = [i for i, ok in enumerate(self.converged) if ok]
         if not self.good:
@@ -549,6 +719,12 @@ class SpanRun:
         self.missing = len(self.converged) - len(self.good)
         self.verdict = "unsafe" if self.max_stress > self.limit else "unknown" if self.missing else "safe"
 
+    def judged_by(self, summary):
+        """The program's verdict and criterion from its summary, in place of the CSV's
+        (a measured sheet's band reaching the limit makes it uncertain, which the CSV alone
+        does not tell)."""
+        self.verdict, self.criterion = summary.verdict, summary.criterion
+
     def _wind_ratio(self, table):
         """U / f in m (D / St: the frequency is St U / D) from the wind_speed_m_s column;
         None without it, or (with a warning) where it is not proportional to the frequency."""
@@ -566,38 +742,53 @@ class SpanRun:
         return self.label if several or self.named else self.path
 
     def verdict_text(self, limit=True):
-        """"safe, max 7.87 MPa at 23.4 Hz (limit 8.73 MPa)" (without the limit unless `limit`)."""
-        verdict = f"unknown ({points(self.missing)} missing)" if self.verdict == "unknown" else self.verdict
-        lower = f", {points(self.missing)} missing" if self.missing and self.verdict == "unsafe" else ""
+        """"safe, max 7.87 MPa at 23.4 Hz (limit 8.73 MPa)" (without the limit unless `limit`);
+        "unsafe (microstrain criterion), max ..." where the summary names its criterion; a
+        verdict other than the program's as it is given."""
+        verdict = f"unknown ({points(self.missing)} missing)" if self.verdict == "unknown" else str(self.verdict)
+        if self.criterion:
+            verdict += f" ({self.criterion} criterion)"
+        lower = f", {points(self.missing)} missing" if self.missing and self.verdict != "unknown" else ""
         return (f"{verdict}, max {self.max_stress:.3g} MPa at {self.frequency[self.peak]:.3g} Hz"
                 f"{f' (limit {self.limit:.3g} MPa)' if limit else ''}{lower}")
 
     def undamped(self, name):
         return self.columns["undamped_" + name]
 
+    def band_rows(self):
+        """The converged rows where the measured sheet's band is given."""
+        if self.band is None:
+            return []
+        low, high = self.band
+        return [i for i in self.good if not math.isnan(low[i]) and not math.isnan(high[i])]
+
+    def band_text(self):
+        """"the sheet's band up to 9.1 MPa": how high the measured sheet's band reaches, for
+        an uncertain verdict (None for another, or without a band)."""
+        rows = self.band_rows()
+        if self.verdict != "uncertain" or not rows:
+            return None
+        return f"the sheet's band up to {max(self.band[1][i] for i in rows):.3g} MPa"
+
 
 class SpanSummary:
-    """The JSON summary of a span run (the object stockbridge span --json prints): the
-    dampers' positions and the lives, which the CSV does not hold; its endurance limit,
-    largest stress and verdict must be its CSV's."""
+    """The summary of a span run (the object stockbridge span --json prints, the
+    'summary' of stockbridge.span()'s result): the dampers' positions, the lives and
+    the program's verdict (and its criterion, where it names one), which the CSV does
+    not hold; its endurance limit and largest stress must be its CSV's. `strict`: the
+    verdict must be one the program gives (a file's); else any text is shown as it is."""
 
-    def __init__(self, path):
+    def __init__(self, data, path, strict=True):
         self.path = path
-        try:
-            with open(path, encoding="utf-8") as handle:
-                data = json.load(handle)
-        except OSError as error:
-            raise PlotError(f"{path}: cannot read ({error.strerror or error})") from error
-        except UnicodeDecodeError as error:
-            raise PlotError(f"{path}: not UTF-8 text: {SUMMARY_HINT}") from error
-        except json.JSONDecodeError as error:
-            raise PlotError(f"{path}:{error.lineno}: not JSON ({error.msg}): {SUMMARY_HINT}") from error
         if not isinstance(data, dict):
             raise PlotError(f"{path}: a JSON {type(data).__name__}, not an object: {SUMMARY_HINT}")
         self.data = data
         self.verdict = self._value("verdict", str)
-        if self.verdict not in VERDICTS:
-            raise PlotError(f"{path}: verdict = '{self.verdict}': expected safe, unsafe or unknown")
+        if strict and self.verdict not in PROGRAM_VERDICTS:
+            raise PlotError(f"{path}: verdict = '{self.verdict}': expected {', '.join(PROGRAM_VERDICTS[:-1])} or "
+                            f"{PROGRAM_VERDICTS[-1]}")
+        criterion = data.get("criterion")
+        self.criterion = None if criterion is None else str(criterion)
         self.positions = self._value("positions_m", list)
         for p in self.positions:
             if not self._is_number(p):
@@ -611,6 +802,20 @@ class SpanSummary:
         self.life_missing = self._number("life_missing_points", null=True) if "life_missing_points" in data else None
         self.undamped_life = (self._number("undamped_life_years", null=True) if "undamped_life_years" in data
                               else None)
+
+    @classmethod
+    def read(cls, path):
+        """The summary in a JSON file (stockbridge span --json > path)."""
+        try:
+            with open(path, encoding="utf-8") as handle:
+                data = json.load(handle)
+        except OSError as error:
+            raise PlotError(f"{path}: cannot read ({error.strerror or error})") from error
+        except UnicodeDecodeError as error:
+            raise PlotError(f"{path}: not UTF-8 text: {SUMMARY_HINT}") from error
+        except json.JSONDecodeError as error:
+            raise PlotError(f"{path}:{error.lineno}: not JSON ({error.msg}): {SUMMARY_HINT}") from error
+        return cls(data, path)
 
     @staticmethod
     def _is_number(value):
@@ -636,13 +841,15 @@ class SpanSummary:
         return value
 
     def check(self, run):
-        """That this summary is of the run that wrote the CSV (the files given in the same order)."""
+        """That this summary is of the run that wrote the CSV (the files given in the same
+        order): the same limit and largest stress, and the same verdict where the CSV can
+        tell it (safe, unsafe or unknown without a criterion named: stress against the limit)."""
         for key, mine, theirs in (("endurance_limit_mpa", self.limit, run.limit),
                                   ("max_stress_fymax_mpa", self.max_stress, run.max_stress)):
             if mine is None or not math.isclose(mine, theirs, rel_tol=1e-6):
                 raise PlotError(f"{self.path}: {key} = {json.dumps(mine)} but {run.path}'s is {theirs:.6g}: expected "
                                 "the summary of the run that wrote the CSV (one --summary per CSV, in their order)")
-        if self.verdict != run.verdict:
+        if self.verdict in VERDICTS and self.criterion is None and self.verdict != run.verdict:
             raise PlotError(f"{self.path}: verdict = '{self.verdict}' but {run.path}'s is '{run.verdict}': expected "
                             "the summary of the run that wrote the CSV (one --summary per CSV, in their order)")
 
@@ -675,7 +882,8 @@ class SpanSummary:
 
 def span_title(runs, summaries, shared_limit=True, shared_undamped=True):
     """A line per file: its name, verdict, largest stress and the limit; with a summary,
-    the dampers' positions and the life (on a line of their own for one file). Of
+    the dampers' positions and the life, and of an uncertain verdict how high the
+    measured sheet's band reaches (on a line of their own for one file). Of
     several files, the limit and the undamped life only when they differ between the
     files (else the legend and the undamped curve tell them). Lines longer than
     TITLE_WIDTH wrap."""
@@ -683,12 +891,14 @@ def span_title(runs, summaries, shared_limit=True, shared_undamped=True):
     lines = []
     for run, summary in zip(runs, summaries):
         head = f"{run.name(several)}: {run.verdict_text(limit=not several or not shared_limit)}"
-        if summary is None:
+        more = [text for text in (summary and summary.text(undamped=not several or not shared_undamped),
+                                  run.band_text()) if text]
+        if not more:
             lines.append(head)
         elif several:
-            lines.append(f"{head}; {summary.text(undamped=not shared_undamped)}")
+            lines.append(f"{head}; {', '.join(more)}")
         else:
-            lines += [head, summary.text()]
+            lines += [head, ", ".join(more)]
     return "\n".join(textwrap.fill(line, TITLE_WIDTH, subsequent_indent="    ") for line in lines)
 
 
@@ -743,12 +953,19 @@ def span_figure(paths, labels=None, summaries=None):
     undamped curve and the limit once when the files share them. The wind speed on
     a second x axis on top. The title carries each file's verdict and largest stress,
     and with a summary (stockbridge span --json) the dampers' positions and the life."""
-    paths = [paths] if isinstance(paths, str) else list(paths)
+    paths = [paths] if isinstance(paths, (str, os.PathLike)) else list(paths)
     runs = [SpanRun(path, label) for path, label in zip(paths, labels or [None] * len(paths))]
-    summaries = [SpanSummary(path) for path in summaries] if summaries else [None] * len(runs)
+    summaries = [SpanSummary.read(path) for path in summaries] if summaries else [None] * len(runs)
+    return spans_figure(runs, summaries)
+
+
+def spans_figure(runs, summaries):
+    """span_figure's figure of SpanRuns, each with its SpanSummary or None (whose
+    verdict, checked against the run, is then the run's)."""
     for run, summary in zip(runs, summaries):
         if summary is not None:
             summary.check(run)
+            run.judged_by(summary)
     several = len(runs) > 1
     strain = all(run.strain for run in runs)
     size = (FIGURE_SIZE[0], FIGURE_SIZE[1] * (1.4 if strain else 1.0))
@@ -774,14 +991,7 @@ def span_figure(paths, labels=None, summaries=None):
                       marker="." if len(run.good) < 30 else None, label=label)
         axis.set_ylabel(ylabel)
         axis.grid(True, which="both", alpha=0.3)
-    for run, colour in zip(runs, colours):
-        if run.band is not None:
-            low, high = run.band
-            band = [i for i in run.good if not math.isnan(low[i]) and not math.isnan(high[i])]
-            if band:
-                axes[1].fill_between([run.frequency[i] for i in band], [low[i] for i in band], [high[i] for i in band],
-                                     color=colour, alpha=0.2, linewidth=0,
-                                     label=f"{run.label}: measured sheet's band" if several else "measured sheet's band")
+    bands(axes[1], runs, colours)
     limit_lines(axes[1], runs, colours, lambda run: run.limit, "{:.3g} MPa")
     if strain:
         limit_lines(axes[2], runs, colours, lambda run: run.limit_strain, "{:.4g} microstrain")
@@ -798,7 +1008,7 @@ def span_figure(paths, labels=None, summaries=None):
             kept = [k for k, n in enumerate(names) if n not in curves]
             handles, names = [handles[k] for k in kept], [names[k] for k in kept]
         axis.legend(handles, names, fontsize="small")
-    log_scale(axes[0], "x")  # shared; the limit lines are drawn across in axes units
+    frequency_scale(axes[0])  # shared; the limit lines are drawn across in axes units
     wind_axis(axes[0], runs)
     axes[-1].set_xlabel("frequency f (Hz)")
     shared_limit = all(math.isclose(run.limit, runs[0].limit, rel_tol=1e-9) for run in runs)
@@ -806,6 +1016,18 @@ def span_figure(paths, labels=None, summaries=None):
     if any(summary is not None and summary.life_text() for summary in summaries):
         lives_note(figure)
     return figure
+
+
+def bands(axis, runs, colours):
+    """Each run's measured sheet's band (stress_fymax_low_mpa to stress_fymax_high_mpa),
+    shaded in its colour where given (a run without a sheet has none)."""
+    for run, colour in zip(runs, colours):
+        rows = run.band_rows()
+        if rows:
+            low, high = run.band
+            axis.fill_between([run.frequency[i] for i in rows], [low[i] for i in rows], [high[i] for i in rows],
+                              color=colour, alpha=0.2, linewidth=0,
+                              label=f"{run.label}: measured sheet's band" if len(runs) > 1 else "measured sheet's band")
 
 
 def limit_lines(axis, runs, colours, limit, unit):
@@ -822,6 +1044,25 @@ def limit_lines(axis, runs, colours, limit, unit):
 
 def plot_span(paths, output, labels=None, summaries=None):
     save(span_figure(paths, labels, summaries), output)
+
+
+def span(result, output=None, *, labels=None):
+    """plot span's figure of what stockbridge.span() returns: the amplitude, the fymax
+    stress (with a measured sheet's band, where the result has one) and the strain over
+    frequency, with the dampers and without, against the endurance limit; the title
+    gives the verdict (the summary's: safe, unsafe, uncertain or unknown), the largest
+    stress, the dampers' positions and the life. A list of results (arrangements of a
+    span) is drawn on one figure, one colour each, named by `labels` (one per result;
+    default "span", or "span 1", "span 2", ...). Returns the matplotlib Figure; with
+    `output` (a path: .png, .pdf, .svg) also saves it there."""
+    results, labels = listed(result, labels)
+    runs, summaries = [], []
+    for k, (r, label) in enumerate(zip(results, labels)):
+        name = label or ("span" if len(results) == 1 else f"span {k + 1}")
+        runs.append(SpanRun(result_table(r, "span", "frequency_hz", name), name))
+        summary = r.get("summary")
+        summaries.append(None if summary is None else SpanSummary(summary, f"{name}: summary", strict=False))
+    return finish(spans_figure(runs, summaries), output)
 
 
 # ---------------------------------------------------------------- design
@@ -854,12 +1095,12 @@ class Designs:
         self.stage = table.text("stage")
         for i, stage in enumerate(self.stage):
             if stage not in DESIGN_STAGES:
-                raise PlotError(f"{path}:{table.rows[i][0]}: stage = '{stage}': expected base, sample or polish")
+                raise PlotError(f"{table.where(i)}: stage = '{stage}': expected base, sample or polish")
         self.converged = self._flags(table, "converged")
         self.feasible = self._flags(table, "feasible")
         for i, (ok, feasible) in enumerate(zip(self.converged, self.feasible)):
             if feasible and not ok:
-                raise PlotError(f"{path}:{table.rows[i][0]}: feasible = 1 but converged = 0: expected a feasible "
+                raise PlotError(f"{table.where(i)}: feasible = 1 but converged = 0: expected a feasible "
                                 "candidate to have converged")
         self.run = table.required("run")
         self.x = {name: table.required(name) for name in self.variables}
@@ -869,7 +1110,7 @@ class Designs:
         self.objective = table.column("objective", infinite=True)  # an infinite life is a result
         for i in good:
             if math.isnan(self.objective[i]):
-                raise PlotError(f"{path}:{table.rows[i][0]}: column 'objective' is empty: expected a number "
+                raise PlotError(f"{table.where(i)}: column 'objective' is empty: expected a number "
                                 "(converged = 1)")
         self.life = self._is_life(table, good)
         self.best = self._best()
@@ -881,7 +1122,7 @@ class Designs:
         values = table.required(name)
         for i, v in enumerate(values):
             if v not in (0.0, 1.0):
-                raise PlotError(f"{table.path}:{table.rows[i][0]}: {name} = {v:g}: expected 0 or 1")
+                raise PlotError(f"{table.where(i)}: {name} = {v:g}: expected 0 or 1")
         return [v == 1.0 for v in values]
 
     def _is_life(self, table, good):
@@ -1048,8 +1289,9 @@ def plot_design(path, output):
 
 # ---------------------------------------------------------------- line
 
-VERDICTS = ("safe", "unsafe", "unknown")
-VERDICT_COLOURS = {"safe": "C2", "unsafe": "C3", "unknown": "0.6"}
+VERDICT_COLOURS = {"safe": "C2", "unsafe": "C3", "uncertain": "C1", "unknown": "0.6"}
+OTHER_VERDICT_COLOUR = "C4"  # a verdict a result gives that this module does not know
+NOT_SAFE = ("unsafe", "uncertain", "unknown")  # the worst first: a line's verdict is its worst span's
 LINE_TICK_LABELS = 24  # at most this many span ids along the x axis
 
 
@@ -1057,11 +1299,12 @@ class Schedule:
     """A line's schedule CSV (stockbridge line -o): per span its id, the largest fymax
     stress with the recommended dampers and without (MPa, NaN where empty: a balance
     that did not converge throughout), the endurance limit (MPa, per span: it depends
-    on the conductor), the dampers per end and the verdict."""
+    on the conductor), the dampers per end and the verdict. Or the same columns of
+    stockbridge.line()'s schedule (a ResultTable), whose verdicts are taken as they are."""
 
-    def __init__(self, path):
-        table = Table(path)
-        self.path = path
+    def __init__(self, source):
+        table = as_table(source)
+        path = self.path = table.path
         for name in ("id", "verdict", "dampers_per_end", "max_stress_mpa", "undamped_max_stress_mpa",
                      "endurance_limit_mpa"):
             if name not in table:
@@ -1069,12 +1312,13 @@ class Schedule:
         self.id = table.text("id")
         self.verdict = table.text("verdict")
         for i, verdict in enumerate(self.verdict):
-            if verdict not in VERDICTS:
-                raise PlotError(f"{path}:{table.rows[i][0]}: verdict = '{verdict}': expected safe, unsafe or unknown")
+            if verdict not in PROGRAM_VERDICTS and not isinstance(table, ResultTable):
+                raise PlotError(f"{table.where(i)}: verdict = '{verdict}': expected safe, unsafe, uncertain or "
+                                "unknown")
         self.dampers = table.required("dampers_per_end")
         for i, n in enumerate(self.dampers):
             if n < 0 or n != int(n):
-                raise PlotError(f"{path}:{table.rows[i][0]}: dampers_per_end = {n:g}: expected a whole number >= 0")
+                raise PlotError(f"{table.where(i)}: dampers_per_end = {n:g}: expected a whole number >= 0")
         self.stress = table.column("max_stress_mpa")
         self.undamped = table.column("undamped_max_stress_mpa")
         self.limit = table.column("endurance_limit_mpa")
@@ -1082,7 +1326,7 @@ class Schedule:
                              ("endurance_limit_mpa", self.limit)):
             for i, v in enumerate(values):
                 if v <= 0:
-                    raise PlotError(f"{path}:{table.rows[i][0]}: {name} = {v:g}: expected a positive stress (MPa)")
+                    raise PlotError(f"{table.where(i)}: {name} = {v:g}: expected a positive stress (MPa)")
         if not any(math.isfinite(v) for v in self.stress + self.undamped):
             raise PlotError(f"{path}: no stress to plot (max_stress_mpa and undamped_max_stress_mpa are empty in "
                             "every row)")
@@ -1090,6 +1334,16 @@ class Schedule:
 
     def count(self, verdict):
         return sum(v == verdict for v in self.verdict)
+
+    def verdicts(self):
+        """The verdicts counted: safe, unsafe and unknown, then any other the spans have
+        (uncertain), in the order they come."""
+        return list(VERDICTS) + list(dict.fromkeys(v for v in self.verdict if v not in VERDICTS))
+
+    def not_safe(self):
+        """The verdicts other than safe that spans have, the worst first."""
+        present = [v for v in self.verdicts() if v != "safe" and self.count(v)]
+        return sorted(present, key=lambda v: NOT_SAFE.index(v) if v in NOT_SAFE else len(NOT_SAFE))
 
     def shortest_life(self):
         """The row of the shortest life with the dampers (an infinite one when every life
@@ -1109,13 +1363,21 @@ def span_ticks(axis, ids):
     axis.set_xlim(-0.7, n - 0.3)
 
 
+def verdict_colour(verdict):
+    return VERDICT_COLOURS.get(verdict, OTHER_VERDICT_COLOUR)
+
+
 def line_figure(path):
     """A line's schedule span by span along the line: the largest fymax stress at the
     span clamp with the recommended dampers (filled circles) and without (hollow
     grey circles, joined to it), and each span's endurance limit (a red step); unsafe
     spans shaded red and unknown ones grey on both panels; below, the dampers per
     end as bars coloured by verdict. The title gives the line's counts."""
-    schedule = Schedule(path)
+    return schedule_figure(Schedule(path))
+
+
+def schedule_figure(schedule):
+    """line_figure's figure of a Schedule."""
     n = len(schedule.id)
     x = list(range(n))
     figure, (stress, dampers) = plt.subplots(2, 1, figsize=FIGURE_SIZE, sharex=True, layout="constrained",
@@ -1123,7 +1385,7 @@ def line_figure(path):
     for i, verdict in enumerate(schedule.verdict):
         if verdict != "safe":
             for axis in (stress, dampers):
-                axis.axvspan(i - 0.5, i + 0.5, color=VERDICT_COLOURS[verdict], alpha=0.15, linewidth=0)
+                axis.axvspan(i - 0.5, i + 0.5, color=verdict_colour(verdict), alpha=0.15, linewidth=0)
     both = [i for i in x if finite(schedule.stress[i], schedule.undamped[i])]
     stress.vlines(both, [schedule.stress[i] for i in both], [schedule.undamped[i] for i in both], color="0.75",
                   linewidth=1.0)
@@ -1139,12 +1401,11 @@ def line_figure(path):
     stress.set_ylabel("largest fymax stress (MPa)")
     stress.grid(True, which="major", axis="y", alpha=0.3)
     handles, labels = stress.get_legend_handles_labels()
-    for verdict in ("unsafe", "unknown"):
-        if schedule.count(verdict):
-            handles.append(matplotlib.patches.Patch(color=VERDICT_COLOURS[verdict], alpha=0.15))
-            labels.append(f"{verdict} span")
-    stress.legend(handles, labels, fontsize="small", ncol=len(handles), loc="upper center")
-    colours = [VERDICT_COLOURS[v] for v in schedule.verdict]
+    for verdict in schedule.not_safe():
+        handles.append(matplotlib.patches.Patch(color=verdict_colour(verdict), alpha=0.15))
+        labels.append(f"{verdict} span")
+    stress.legend(handles, labels, fontsize="small", ncol=len(handles) if len(handles) <= 5 else 3, loc="upper center")
+    colours = [verdict_colour(v) for v in schedule.verdict]
     dampers.bar(x, schedule.dampers, width=0.7, color=colours)
     none = [i for i in x if schedule.dampers[i] == 0]
     if none:  # a span without dampers: its verdict's colour as a flat mark on the axis
@@ -1156,8 +1417,10 @@ def line_figure(path):
     dampers.set_ylabel("dampers per end")
     dampers.set_xlabel("span (id), along the line")
     dampers.grid(True, axis="y", alpha=0.3)
-    dampers.legend([matplotlib.patches.Patch(color=VERDICT_COLOURS[v]) for v in VERDICTS],
-                   [f"{v}: {schedule.count(v)}" for v in VERDICTS], fontsize="small", ncol=3, loc="upper left")
+    verdicts = schedule.verdicts()
+    dampers.legend([matplotlib.patches.Patch(color=verdict_colour(v)) for v in verdicts],
+                   [f"{v}: {schedule.count(v)}" for v in verdicts], fontsize="small", ncol=len(verdicts),
+                   loc="upper left")
     span_ticks(dampers, schedule.id)
     stress.set_title(line_title(schedule), fontsize="medium")
     if schedule.shortest_life() is not None:
@@ -1169,12 +1432,14 @@ LINE_TITLE_IDS = 6  # spans named in the title per verdict, at most
 
 
 def line_title(schedule):
-    """The line's verdict (unsafe if a span is, else unknown if a span is, else safe) and
-    counts; below, the unsafe and unknown spans by id and the shortest life."""
-    counts = ", ".join(f"{schedule.count(v)} {v}" for v in VERDICTS)
-    verdict = next((v for v in ("unsafe", "unknown") if schedule.count(v)), "safe")
+    """The line's verdict (its worst span's: unsafe if a span is, else uncertain, else
+    unknown, else safe) and counts; below, the spans that are not safe by id and the
+    shortest life."""
+    counts = ", ".join(f"{schedule.count(v)} {v}" for v in schedule.verdicts())
+    not_safe = schedule.not_safe()
+    verdict = not_safe[0] if not_safe else "safe"
     details = []
-    for v in ("unsafe", "unknown"):
+    for v in not_safe:
         ids = [i for i, verdict_i in zip(schedule.id, schedule.verdict) if verdict_i == v]
         if ids:
             more = f" and {len(ids) - LINE_TITLE_IDS} more" if len(ids) > LINE_TITLE_IDS else ""
@@ -1192,6 +1457,17 @@ def line_title(schedule):
 
 def plot_line(path, output):
     save(line_figure(path), output)
+
+
+def line(result, output=None, *, label=None):
+    """plot line's figure of what stockbridge.line() returns (or its 'schedule'): the
+    largest stress of each span with the recommended dampers and without, against its
+    endurance limit, and the dampers per end coloured by verdict; the title names the
+    line (`label`, default "line"), its verdict and counts. Returns the matplotlib
+    Figure; with `output` (a path: .png, .pdf, .svg) also saves it there."""
+    schedule = result.get("schedule", result) if isinstance(result, dict) else result
+    table = result_table(schedule, "line", "id", label or "line")
+    return finish(schedule_figure(Schedule(table)), output)
 
 
 # ---------------------------------------------------------------- command line
@@ -1258,6 +1534,7 @@ def run(args):
 
 def main(argv=None):
     args = parser().parse_args(argv)
+    matplotlib.use("Agg")  # files only; imported as a library, pyplot's backend stays the user's
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")

@@ -922,3 +922,268 @@ def test_line_title_names_the_unsafe_spans_and_the_shortest_life(tmp_path):
         f"{tmp_path / 'bad_line.csv'}: unsafe: 8 spans, 0 safe, 8 unsafe, 0 unknown",
         "unsafe: T1-T2, T2-T3, T3-T4, T4-T5, T5-T6, T6-T7 and 2 more"]
     module.plt.close(figure)
+
+
+# ---------------------------------------------------------------- figures of the module's results
+
+def compiled():
+    """The package with its compiled part (stockbridge.span, line, impedance)."""
+    pytest.importorskip("stockbridge._core")
+    import stockbridge
+    return stockbridge
+
+
+def drawn(figure):
+    """What each axes of a figure draws: its lines' labels and data, and its filled
+    areas' labels and outlines (a measured sheet's band), in drawing order."""
+    return [([(line.get_label(), list(line.get_xdata()), list(line.get_ydata())) for line in axis.get_lines()],
+             [(area.get_label(), [list(path.vertices.ravel()) for path in area.get_paths()])
+              for area in axis.collections])
+            for axis in figure.axes]
+
+
+def assert_same_drawing(one, other):
+    assert len(one) == len(other)
+    for (lines, areas), (other_lines, other_areas) in zip(one, other):
+        assert [label for label, *_ in lines] == [label for label, *_ in other_lines]
+        for (_, x, y), (_, other_x, other_y) in zip(lines, other_lines):
+            assert x == pytest.approx(other_x, rel=1e-12, nan_ok=True)
+            assert y == pytest.approx(other_y, rel=1e-12, nan_ok=True)
+        assert [label for label, _ in areas] == [label for label, _ in other_areas]
+        for (_, outlines), (_, other_outlines) in zip(areas, other_areas):
+            assert len(outlines) == len(other_outlines)
+            for outline, other_outline in zip(outlines, other_outlines):
+                assert outline == pytest.approx(other_outline, rel=1e-12)
+
+
+def sheet_span_file(directory):
+    """aster570_400m.toml with a vendor's measured sheet as its damper: its CSV has the
+    sheet's band (stress_fymax_low_mpa, stress_fymax_high_mpa)."""
+    with open(os.path.join(SOURCE, "examples", "aster570_400m.toml")) as handle:
+        text = handle.read()
+    sheet = os.path.join(SOURCE, "examples", "vendor_sheet.csv")
+    assert 'file = "sauter2003.toml"' in text
+    (directory / "sheet_span.toml").write_text(text.replace('file = "sauter2003.toml"', f'impedance = "{sheet}"'))
+    return directory / "sheet_span.toml"
+
+
+@pytest.fixture(scope="module")
+def results(runs):
+    """The module's results of the runs whose CSVs the other tests plot: the span of
+    damped.csv and damped.json, a span on a measured sheet (and its CSV and summary),
+    and the sweep of z.csv."""
+    sb = compiled()
+    span_file = sheet_span_file(runs)
+    with open(runs / "sheet.json", "w") as out:
+        subprocess.run([CLI, "span", str(span_file), "--points", "15", "--quiet", "-o", "sheet.csv", "--json"],
+                       cwd=runs, check=True, stdout=out)
+    damper = sb.load_damper(os.path.join(SOURCE, "examples", "sauter2003.toml"))
+    return {"span": sb.span(os.path.join(SOURCE, "examples", "aster570_400m.toml"), points=15),
+            "sheet": sb.span(str(span_file), points=15),
+            "impedance": sb.impedance(damper, velocity=[0.2, 0.05], fmin=5, fmax=50, points=12)}
+
+
+def test_a_span_result_draws_what_its_csv_and_summary_draw(runs, results):
+    module = plot_module()
+    for name in ("damped", "sheet"):
+        result = results["span" if name == "damped" else name]
+        from_result = module.span(result)
+        from_csv = module.span_figure(str(runs / f"{name}.csv"), summaries=[str(runs / f"{name}.json")])
+        assert_same_drawing(drawn(from_result), drawn(from_csv))
+        title = from_csv.axes[0].get_title()
+        assert from_result.axes[0].get_title() == "span" + title[title.index(":"):]
+        assert [text.get_text() for text in from_result.texts] == [module.LIVES_NOTE]
+        module.plt.close(from_result)
+        module.plt.close(from_csv)
+
+
+def test_an_impedance_result_draws_what_its_csv_draws(files, results):
+    module = plot_module()
+    for options in ({}, {"power": True}, {"re_im": True, "linear": True}):
+        from_result = module.impedance(results["impedance"], **options)
+        from_csv = module.impedance_figure([module.Sweep(str(files / "z.csv"))], **options)
+        assert_same_drawing(drawn(from_result), drawn(from_csv))
+        assert [line.get_label() for line in from_result.axes[0].get_lines()] == ["V = 0.2 m/s", "V = 0.05 m/s"]
+        assert from_result.axes[0].get_title() == "Impedance at the clamp"
+        module.plt.close(from_result)
+        module.plt.close(from_csv)
+    two = module.impedance([results["impedance"], results["impedance"]], labels=["a", "b"])
+    assert [line.get_label() for line in two.axes[0].get_lines()][::2] == ["a: V = 0.2 m/s", "b: V = 0.2 m/s"]
+    assert two.axes[0].get_title() == "Impedance at the clamp (a, b)"
+    module.plt.close(two)
+
+
+def schedule_result(text):
+    """A schedule CSV's text as stockbridge.line() returns it: text columns as lists of
+    str, counts as int arrays, flags as bool arrays, the rest float arrays with NaN
+    where the CSV's cell is empty; with the line's summary beside it."""
+    import numpy
+    rows = list(csv.DictReader(text.splitlines()))
+    columns = {}
+    for name in rows[0]:
+        cells = [row[name] for row in rows]
+        if name in ("id", "verdict"):
+            columns[name] = cells
+        elif name == "dampers_per_end":
+            columns[name] = numpy.array([int(c) for c in cells])
+        elif name == "converged":
+            columns[name] = numpy.array([c == "1" for c in cells])
+        else:
+            columns[name] = numpy.array([float(c) if c else numpy.nan for c in cells])
+    return {"schedule": columns, "summary": {"spans": len(rows)}, "bill": {}, "warnings": []}
+
+
+def test_a_line_result_draws_what_its_schedule_csv_draws(tmp_path):
+    from matplotlib.colors import to_rgba
+    module = plot_module()
+    (tmp_path / "schedule.csv").write_text(SCHEDULE)
+    from_csv = module.line_figure(str(tmp_path / "schedule.csv"))
+    result = schedule_result(SCHEDULE)
+    for given in (result, result["schedule"]):  # the whole result or its schedule
+        from_result = module.line(given, label="my line")
+        assert_same_drawing(drawn(from_result), drawn(from_csv))
+        assert [bar.get_height() for bar in from_result.axes[1].containers[0]] == [2, 1, 3, 2, 0]
+        title = from_csv.axes[0].get_title()
+        assert from_result.axes[0].get_title() == "my line" + title[title.index(":"):]
+        module.plt.close(from_result)
+    # uncertain and a verdict the module does not know: counted, named and coloured
+    result["schedule"]["verdict"][:2] = ["uncertain", "marginal"]
+    figure = module.line(result)
+    assert figure.axes[0].get_title().split("\n") == [
+        "line: unsafe: 5 spans, 1 safe, 1 unsafe, 1 unknown, 1 uncertain, 1 marginal",
+        "unsafe: T3-T4; uncertain: T1-T2; unknown: T4-T5; marginal: T2-T3"]
+    bars = figure.axes[1].containers[0]
+    assert bars[0].get_facecolor() == to_rgba("C1") and bars[1].get_facecolor() == to_rgba("C4")
+    assert [text.get_text() for text in figure.axes[0].get_legend().get_texts()][-4:] == [
+        "unsafe span", "uncertain span", "unknown span", "marginal span"]
+    module.plt.close(figure)
+
+
+def test_an_uncertain_span_in_a_schedule_csv(tmp_path):
+    (tmp_path / "schedule.csv").write_text(SCHEDULE.replace("T2-T3,420,1,7.9,40.9,8.73,0.905,9.5,safe",
+                                                            "T2-T3,420,1,7.9,40.9,8.73,0.905,9.5,uncertain"))
+    assert plot("line", "schedule.csv", "-o", "schedule.png", cwd=tmp_path).returncode == 0
+    module = plot_module()
+    figure = module.line_figure(str(tmp_path / "schedule.csv"))
+    assert "unsafe: T3-T4; uncertain: T2-T3; unknown: T4-T5" in figure.axes[0].get_title()
+    module.plt.close(figure)
+
+
+def fill_labels(axis):
+    return [area.get_label() for area in axis.collections if not area.get_label().startswith("_")]
+
+
+def all_finite(values):
+    return all(math.isfinite(v) for v in values)
+
+
+def test_the_sheets_band_is_drawn_where_the_run_has_one(runs, results):
+    """From a result and from its CSV: the band between stress_fymax_low_mpa and
+    stress_fymax_high_mpa where they are given, nothing where they are NaN (empty)."""
+    module = plot_module()
+    sheet = results["sheet"]
+    assert all_finite(sheet["stress_fymax_high_mpa"]) and not all_finite(
+        results["span"]["stress_fymax_high_mpa"])  # the premise: a band with the sheet only
+    for figure in (module.span(sheet), module.span_figure(str(runs / "sheet.csv"))):
+        stress = figure.axes[1]
+        assert fill_labels(stress) == ["measured sheet's band"]
+        (band,) = [area for area in stress.collections if area.get_label() == "measured sheet's band"]
+        outline = band.get_paths()[0].vertices
+        assert max(outline[:, 1]) == pytest.approx(max(sheet["stress_fymax_high_mpa"]))
+        assert min(outline[:, 1]) == pytest.approx(min(sheet["stress_fymax_low_mpa"]))
+        module.plt.close(figure)
+    for figure in (module.span(results["span"]), module.span_figure(str(runs / "damped.csv"))):
+        assert fill_labels(figure.axes[1]) == []
+        module.plt.close(figure)
+    both = module.span([sheet, results["span"]], labels=["sheet", "sauter"])
+    assert fill_labels(both.axes[1]) == ["sheet: measured sheet's band"]
+    module.plt.close(both)
+
+
+def test_an_uncertain_verdict_is_the_titles(runs, results):
+    """The summary's verdict, uncertain (a measured sheet's band reaching the limit), is
+    the title's with how high the band reaches; from a summary file too; a verdict the
+    plot does not know is shown as it is."""
+    module = plot_module()
+    sheet = dict(results["sheet"], summary=dict(results["sheet"]["summary"], verdict="uncertain", criterion="stress"))
+    top = max(sheet["stress_fymax_high_mpa"])
+    figure = module.span(sheet, labels="vendor sheet")
+    head, more = figure.axes[0].get_title().split("\n")[:2]
+    assert head.startswith("vendor sheet: uncertain (stress criterion), max ")
+    assert more.endswith(f"the sheet's band up to {top:.3g} MPa")
+    module.plt.close(figure)
+    (runs / "uncertain.json").write_text(json.dumps(sheet["summary"]))
+    result = plot("span", "sheet.csv", "--summary", "uncertain.json", "-o", "uncertain.png", cwd=runs)
+    assert result.returncode == 0 and result.stderr == "", result.stderr
+    figure = module.span_figure(str(runs / "sheet.csv"), summaries=[str(runs / "uncertain.json")])
+    assert unwrapped(figure.axes[0].get_title()).split("\n")[0].startswith(f"{runs / 'sheet.csv'}: uncertain")
+    module.plt.close(figure)
+    odd = dict(results["span"], summary=dict(results["span"]["summary"], verdict="marginal"))
+    figure = module.span(odd)
+    assert figure.axes[0].get_title().startswith("span: marginal, max ")
+    module.plt.close(figure)
+
+
+def test_a_figure_of_a_result_is_saved_where_asked(results, tmp_path):
+    module = plot_module()
+    figure = module.span(results["span"], tmp_path / "span.png")
+    assert png_size(tmp_path / "span.png") == (800, 839) and figure.axes[0].get_title().startswith("span: ")
+    figure = module.impedance(results["impedance"], str(tmp_path / "z.svg"))
+    assert (tmp_path / "z.svg").read_text().lstrip().startswith("<?xml") and len(figure.axes) == 2
+    with pytest.raises(module.PlotError, match="z.bmpx: unknown image format"):
+        module.impedance(results["impedance"], str(tmp_path / "z.bmpx"))
+
+
+@pytest.mark.parametrize("call,mention", [
+    (lambda m, r: m.span({"frequency": [1.0]}), "span: expected the dict stockbridge.span() returns, got a dict "
+                                                "without 'frequency_hz'"),
+    (lambda m, r: m.span("span.csv"), "span: expected the dict stockbridge.span() returns, got str"),
+    (lambda m, r: m.line(r["span"]), "line: expected the dict stockbridge.line() returns"),
+    (lambda m, r: m.impedance(r["span"]), "impedance: converged has shape (15,): expected (amplitudes, frequencies)"),
+    (lambda m, r: m.span([r["span"], r["span"]], labels=["one"]), "1 labels for 2 results"),
+    (lambda m, r: m.span(dict(r["span"], converged=r["span"]["converged"] & False)), "span: no converged point")])
+def test_a_result_the_figure_cannot_use_raises_one_line(results, call, mention):
+    module = plot_module()
+    with pytest.raises(module.PlotError) as error:
+        call(module, results)
+    assert mention in str(error.value) and "\n" not in str(error.value)
+
+
+def labelled_ticks(axis):
+    low, high = sorted(axis.get_xlim())
+    return [(tick, label) for tick, label in zip(axis.get_xticks(), axis.get_xticklabels())
+            if low <= tick <= high and label.get_text()]
+
+
+@pytest.mark.parametrize("band", [(5, 50), (5.96, 41.7), (6.6, 46), (10, 100), (15, 30), (20, 28), (1, 100), (2, 400),
+                                  (1, 1e4)])
+def test_log_frequency_axes_are_labelled_across_the_band(band):
+    """Five or more labelled frequencies inside any band (a 15-30 Hz band had 20 and 30
+    only), in plain numbers, at least 8 pixels apart."""
+    import numpy
+    module = plot_module()
+    figure, axis = module.plt.subplots(figsize=module.FIGURE_SIZE)
+    f = numpy.geomspace(*band, 30)
+    axis.plot(f, f)
+    module.frequency_scale(axis)
+    figure.canvas.draw()
+    ticks = labelled_ticks(axis)
+    assert len(ticks) >= 5, [label.get_text() for _, label in ticks]
+    assert all(float(label.get_text()) == pytest.approx(tick) for tick, label in ticks)
+    boxes = sorted((label.get_window_extent() for _, label in ticks), key=lambda box: box.x0)
+    assert all(right.x0 - left.x1 >= 8 for left, right in zip(boxes, boxes[1:]))
+    module.plt.close(figure)
+
+
+def test_every_log_frequency_axis_is_labelled_across_the_band(files, span_files, tmp_path):
+    """The span, impedance and fit figures' frequency axes: five or more labels over
+    their bands (the span CSV's 5.96-41.7 Hz, the impedance's 5-50 Hz)."""
+    module = plot_module()
+    figures = [module.span_figure(str(span_files / "span.csv")),
+               module.impedance_figure([module.Sweep(str(files / "z.csv"))], power=True)]
+    for figure in figures:
+        figure.canvas.draw()
+        for axis in figure.axes:
+            if axis.get_xscale() == "log" and axis.xaxis.get_ticklabels():
+                assert len(labelled_ticks(axis)) >= 5, [label.get_text() for _, label in labelled_ticks(axis)]
+        module.plt.close(figure)
