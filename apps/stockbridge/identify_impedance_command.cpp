@@ -92,8 +92,9 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
                fit.not_converged, measurement.points.size());
     return kNotConverged;
   }
-  // A poor fit's warning line (fit_warnings) says the RMS error and the limit.
-  return fit.poor_fit ? kNotConverged : kSuccess;
+  // A poor fit's warning line (fit_warnings) says the RMS error and the limit; a
+  // significant lack of fit's, the error against the scatter and the suspects.
+  return fit.poor_fit || fit.lack_of_fit.significant ? kNotConverged : kSuccess;
 }
 
 }  // namespace
@@ -119,6 +120,10 @@ void add_identify_impedance_command(CLI::App& identify, int& exit_code) {
   sub->add_option("--rms-limit", options->request.rms_limit,
                   "RMS relative error of Z above which the fit is poor (warned of, exit status 3)")
       ->capture_default_str();
+  sub->add_option("--scatter", options->request.scatter,
+                  "The measurement's relative scatter of Z (0.01 for 1 %; default 0.01, assumed): a fit whose RMS error "
+                  "exceeds it significantly (chi-square, 99 %) is a lack of fit (warned of with the fixed numbers that "
+                  "may be wrong, exit status 3)");
   sub->add_option("--threads", options->request.threads, "Model runs at once")->capture_default_str();
   sub->add_option("-o,--output", options->output,
                   "Write the identified cable as a cable file (TOML; the length of the first arm) that damper files "

@@ -342,7 +342,7 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
                             const std::optional<std::vector<double>>& displacement,
                             const std::optional<std::vector<std::complex<double>>>& z, int elements, bool fit_clamp_mass,
                             const std::vector<std::string>& free, double rms_limit, int threads,
-                            bool allow_unusual) {
+                            const std::optional<double>& scatter, bool allow_unusual) {
   const bool arrays = frequency || velocity || displacement || z;
   if (input.has_value() == arrays) {
     throw InvalidParameter("give either input (a measured CSV's path) or frequency, velocity (or displacement) and z");
@@ -351,7 +351,7 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
     throw InvalidParameter("give frequency, z and one of velocity or displacement (arrays of one value per point)");
   }
   const identification::ImpedanceIdentificationOptions options =
-      requests::fit_options({elements, fit_clamp_mass, threads, free, rms_limit});
+      requests::fit_options({elements, fit_clamp_mass, threads, free, rms_limit, scatter});
   io::MeasuredImpedanceFile measured;
   if (input) {
     measured = io::load_measured_impedance(*input, slip_policy(allow_unusual));
@@ -788,7 +788,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("frequency") = py::none(), py::arg("velocity") = py::none(), py::arg("displacement") = py::none(),
         py::arg("z") = py::none(), py::arg("elements") = fit.elements, py::arg("fit_clamp_mass") = fit.fit_clamp_mass,
         py::arg("free") = fit.free, py::arg("rms_limit") = fit.rms_limit, py::arg("threads") = fit.threads,
-        py::arg("allow_unusual") = false,
+        py::arg("scatter") = py::none(), py::arg("allow_unusual") = false,
         "The identification from a measured impedance (stockbridge.identify_impedance wraps it).");
   m.def("_measured_impedance_warnings", &measured_impedance_warnings, py::arg("path"),
         "A measured impedance CSV's warnings (values outside the typical ranges, phases in radians), as lines; "

@@ -288,7 +288,7 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
 def identify_impedance(damper, input=None, *, frequency=None, velocity=None, displacement=None, z=None,
                        elements=_defaults.get("fit_elements"), fit_clamp_mass=_defaults.get("fit_clamp_mass"),
                        free=(), rms_limit=_defaults.get("fit_rms_limit"), threads=_defaults.get("fit_threads"),
-                       allow_unusual=False):
+                       scatter=None, allow_unusual=False):
     """The cable parameters (and with `fit_clamp_mass` the clamp mass) of a damper
     from its measured impedance, as ``stockbridge identify impedance``: `damper` a
     Damper (load_damper, make_damper) whose masses, inertias, offsets and cable
@@ -299,12 +299,16 @@ def identify_impedance(damper, input=None, *, frequency=None, velocity=None, dis
     ei_max and chi0 instead); `free` numbers of the damper fitted too, by
     path ("arm.long.mass", "arm.short.cable.length", "clamp.mass", as --free);
     `rms_limit` the RMS relative error of Z above which the fit is poor (warned of,
-    'poor_fit' True); `threads` model runs at once. A sheet's value outside what a
-    shaker test gives is refused (UnusualValueError) unless `allow_unusual`.
+    'poor_fit' True); `scatter` the measurement's relative scatter of Z (0.01 for
+    1 %; None: 1 %, assumed), against which 'lack_of_fit' tests the residuals (a
+    significant lack of fit is warned of with the fixed numbers of the damper that may
+    be wrong, and inflates the standard errors); `threads` model runs at once. A
+    sheet's value outside what a shaker test gives is refused (UnusualValueError)
+    unless `allow_unusual`.
 
     Returns a dict: the --json summary's keys (ei, jenkin or law, ei_min, ei_max,
     chi0; misfit, rms_relative_error,
-    poor_fit, parameters with standard errors, geometry, correlation, undetermined,
+    poor_fit, lack_of_fit, parameters with standard errors, geometry, correlation, undetermined,
     notes, ...), 'fitted' (the --fitted CSV's columns as arrays: the measured and the
     model's Z at each point), 'cable' (a Cable: the identified cable at the first arm's
     length, for make_damper), 'cable_files' (each cable type's cable file text),
@@ -317,7 +321,8 @@ def identify_impedance(damper, input=None, *, frequency=None, velocity=None, dis
                               z=None if z is None else [complex(v) for v in numpy.ravel(numpy.asarray(z))],
                               elements=elements, fit_clamp_mass=fit_clamp_mass,
                               free=[free] if isinstance(free, str) else list(free), rms_limit=rms_limit,
-                              threads=threads, allow_unusual=allow_unusual)
+                              threads=threads, scatter=None if scatter is None else float(scatter),
+                              allow_unusual=allow_unusual)
     summary = json.loads(out.pop("summary_json"))
     summary.update(out)
     return summary

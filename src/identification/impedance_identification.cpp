@@ -139,6 +139,34 @@ std::vector<DamperNumber> damper_numbers(const damper::DamperDescription& start,
   return out;
 }
 
+/// The numbers of the damper options.free leaves fixed (the lack of fit's suspects):
+/// each arm's mass, inertia, offset and cable length not freed, parametrised as `free`
+/// would fit them (a mass, inertia or length that is not > 0 is left out: it has no
+/// logarithm). The clamp mass apart (its column is analytic).
+std::vector<DamperNumber> fixed_numbers(const damper::DamperDescription& start, const std::vector<DamperNumber>& free) {
+  static const std::pair<const char*, const char*> kFields[] = {
+      {"mass", "kg"}, {"inertia", "kg m^2"}, {"offset", "m"}, {"cable.length", "m"}};
+  std::vector<DamperNumber> out;
+  for (std::size_t k = 0; k < start.arms.size(); ++k) {
+    const damper::ArmDescription& a = start.arms[k];
+    for (const auto& [field, unit] : kFields) {
+      auto same = [&](const DamperNumber& n) { return n.arm == k && n.field == field; };
+      if (std::any_of(free.begin(), free.end(), same)) continue;
+      DamperNumber n;
+      n.path = a.name.empty() ? fmt::format("arm[{}].{}", k, field) : fmt::format("arm.{}.{}", a.name, field);
+      n.arm = k;
+      n.field = field;
+      n.unit = unit;
+      n.start = design::damper_number(start, n.path);
+      n.logarithmic = n.field != "offset";
+      if (n.logarithmic && !(n.start > 0.0)) continue;
+      n.scale = n.logarithmic ? 1.0 : std::max(std::abs(n.start), 0.01);
+      out.push_back(n);
+    }
+  }
+  return out;
+}
+
 /// The optimiser's variables and the damper they stand for. Per cable type: the
 /// logarithms, relative to the starting values, of its law's numbers (Masing: ei,
 /// c_0, h_0, c_1, h_1, ...; Bouc-Wen: ei_min, ei_max, chi0); then
@@ -179,6 +207,7 @@ class FitVariables {
   bool fits_clamp_mass() const { return fit_clamp_mass_; }
   int clamp_mass_index() const { return size() - 1; }
   double mass_scale() const { return mass_scale_; }
+  const std::vector<DamperNumber>& numbers() const { return numbers_; }
   /// The number of options.free variable i stands for, or nullptr for a cable's or the clamp mass's.
   const DamperNumber* number(int i) const {
     const int k = i - cable_variables();
@@ -533,6 +562,21 @@ class ImpedanceProblem : public least_squares::Problem {
     return jacobian;
   }
 
+  /// The Jacobian columns, at x, of numbers of the damper the variables keep fixed:
+  /// dr/dq for each number's variable q as `free` would fit it (DamperNumber), by the
+  /// same forward differences as jacobian()'s (on `threads` threads), then where
+  /// `clamp_mass` the clamp mass's (analytic, per the damper's mass).
+  Eigen::MatrixXd fixed_number_columns(const Eigen::VectorXd& x, const std::vector<DamperNumber>& numbers, bool clamp_mass) {
+    const Evaluation at = evaluated(x);
+    Eigen::MatrixXd columns(residual_count(), static_cast<Eigen::Index>(numbers.size()) + (clamp_mass ? 1 : 0));
+    run_in_parallel(numbers.size(), [&](std::size_t k) {
+      const Change change{numbers[k].path, numbers[k].value(kDifferenceStep)};
+      columns.col(static_cast<Eigen::Index>(k)) = (evaluate(x, &at, &change).residuals - at.residuals) / kDifferenceStep;
+    });
+    if (clamp_mass) columns.col(columns.cols() - 1) = clamp_mass_column(at);
+    return columns;
+  }
+
   /// The model's points (with the clamp mass) at x; converged() false where it did not converge.
   std::vector<damper::ImpedancePoint> points(const Eigen::VectorXd& x) const {
     const damper::DamperDescription description =
@@ -545,16 +589,25 @@ class ImpedanceProblem : public least_squares::Problem {
   int evaluations() const { return evaluations_.load(); }
 
  private:
-  /// The model with the clamp mass left out (it is added as i W m_c, which may then be negative).
-  Evaluation evaluate(const Eigen::VectorXd& x, const Evaluation* warm) {
+  /// A number of the damper set apart from the variables' (a fixed number's column).
+  struct Change {
+    std::string path;
+    double value = 0.0;
+  };
+
+  /// The model with the clamp mass left out (it is added as i W m_c, which may then
+  /// be negative), with `change` made to the damper if given.
+  Evaluation evaluate(const Eigen::VectorXd& x, const Evaluation* warm, const Change* change = nullptr) {
     ++evaluations_;
     const std::size_t n = measurement_.points.size();
     Evaluation e{x, Eigen::VectorXd(2 * n), std::vector<bool>(n, false), {}};
     std::vector<damper::ImpedancePoint> arms;
     if (x.cwiseAbs().maxCoeff() <= fit_core::Search::variable_limit) {
       try {
-        arms = solve_points(damper::Damper(variables_.damper(x, 0.0, max_sections_)), measurement_,
-                            options_.solver, warm ? &warm->solutions : nullptr, &e.solutions);
+        damper::DamperDescription description = variables_.damper(x, 0.0, max_sections_);
+        if (change) design::set_damper_number(description, change->path, change->value);
+        arms = solve_points(damper::Damper(description), measurement_, options_.solver,
+                            warm ? &warm->solutions : nullptr, &e.solutions);
       } catch (const InvalidParameter&) {
         arms.clear();  // parameters the model does not accept (overflowed)
       }
@@ -768,6 +821,75 @@ std::vector<std::string> determination_notes(const std::vector<ParameterEstimate
   return notes;
 }
 
+/// The lack-of-fit test of the misfit S at the optimum against the stated `scatter`
+/// of Z (m real residuals; the statistics' rank the parameters determined).
+LackOfFit lack_of_fit(const least_squares::Statistics& s, double sum_of_squares, double rms, double scatter, bool assumed,
+                      int residuals) {
+  const double component = scatter / std::sqrt(2.0);
+  const least_squares::ChiSquareTest test =
+      least_squares::chi_square_test(sum_of_squares / (component * component), residuals - s.rank, lack_of_fit_level);
+  LackOfFit out;
+  out.scatter = scatter;
+  out.assumed = assumed;
+  out.ratio = rms / scatter;
+  out.statistic = test.statistic;
+  out.degrees_of_freedom = test.degrees_of_freedom;
+  out.p_value = test.p_value;
+  out.critical = test.critical;
+  out.level = test.level;
+  out.significant = test.significant;
+  out.error_inflation = s.error_scatter / component;
+  return out;
+}
+
+/// The change of parameter i's value (in its unit) for a change dx of its variable at x.
+double value_change(const FitVariables& variables, const Eigen::VectorXd& x, int i, double dx) {
+  if (variables.fits_clamp_mass() && i == variables.clamp_mass_index()) return variables.mass_scale() * dx;
+  if (const DamperNumber* n = variables.number(i)) return n->value(x(i) + dx) - n->value(x(i));
+  Eigen::VectorXd moved = x;
+  moved(i) += dx;
+  return variables.cable_value(moved, i) - variables.cable_value(x, i);
+}
+
+/// Marks each parameter (confounded_by, confounded_shift) that a suspect explaining
+/// at least explaining_share of the misfit, moved to its suggested value, would move
+/// by more than its standard error (the suspect moving it most, in standard errors),
+/// and says so: one note per such suspect.
+std::vector<std::string> confounding_notes(const FitVariables& variables, const Eigen::VectorXd& x,
+                                           const least_squares::Statistics& s,
+                                           const std::vector<FixedNumberSuspect>& suspects,
+                                           const std::vector<least_squares::ExtraVariable>& steps,
+                                           std::vector<ParameterEstimate>& parameters) {
+  std::vector<double> worst(parameters.size(), 1.0);  // |shift| in standard errors
+  for (std::size_t k = 0; k < suspects.size(); ++k) {
+    if (suspects[k].misfit_reduction < explaining_share) break;  // ranked: the rest explain less
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+      const double se = s.standard_error(static_cast<Eigen::Index>(i));
+      const double shift = steps[k].shift(static_cast<Eigen::Index>(i));
+      if (!std::isfinite(se) || !(std::abs(shift) > worst[i] * se)) continue;
+      worst[i] = std::abs(shift) / se;
+      parameters[i].confounded_by = suspects[k].name;
+      parameters[i].confounded_shift = value_change(variables, x, static_cast<int>(i), shift);
+    }
+  }
+  std::vector<std::string> notes;
+  for (const FixedNumberSuspect& suspect : suspects) {
+    std::vector<std::string> moved;
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+      const ParameterEstimate& p = parameters[i];
+      if (p.confounded_by != suspect.name) continue;
+      moved.push_back(fmt::format("{} by {:+.3g} {} ({:.2g} standard errors)", p.name, p.confounded_shift, p.unit, worst[i]));
+    }
+    if (moved.empty()) continue;
+    notes.push_back(fmt::format("were {} {:.4g} {} instead of {:.4g}, as the lack of fit suggests, {} would move beyond "
+                                "{} standard error{}: {} (free it, or check it on the drawing)",
+                                suspect.name, suspect.suggested_value, suspect.unit, suspect.value,
+                                moved.size() == 1 ? "this estimate" : "these estimates", moved.size() == 1 ? "its" : "their",
+                                moved.size() == 1 ? "" : "s", fmt::join(moved, ", ")));
+  }
+  return notes;
+}
+
 }  // namespace
 
 void ImpedanceMeasurement::validate() const {
@@ -829,6 +951,9 @@ void ImpedanceIdentificationOptions::validate() const {
   if (!(std::isfinite(rms_limit) && rms_limit > 0.0)) {
     throw_invalid("rms_limit", rms_limit, "a finite fraction > 0 (0.1 for 10 %)");
   }
+  if (scatter && !(std::isfinite(*scatter) && *scatter > 0.0 && *scatter < 1.0)) {
+    throw_invalid("scatter", *scatter, "a fraction of |Z| > 0 and < 1 (0.01 for 1 %)");
+  }
   solver.validate();
 }
 
@@ -875,7 +1000,12 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
   Eigen::MatrixXd jacobian = problem.jacobian(x);
   const std::vector<Eigen::VectorXd> scalings = variables.scalings(x);
   for (const Eigen::VectorXd& g : scalings) jacobian -= (jacobian * g) * g.transpose();  // disjoint supports: orthogonal
-  const least_squares::Statistics statistics = least_squares::statistics(jacobian, sum_of_squares, kStatedScatter);
+  // The standard errors at the stated scatter per real residual (s / sqrt(2)), or at
+  // the residuals' own where larger (a lack of fit inflates them).
+  const double scatter = options.scatter.value_or(default_scatter);
+  const double component_scatter = scatter / std::sqrt(2.0);
+  const least_squares::Statistics statistics =
+      least_squares::statistics(jacobian, sum_of_squares, kStatedScatter, component_scatter);
 
   ImpedanceIdentification result;
   result.cable_type = variables.type_of_arm();
@@ -889,6 +1019,8 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
   result.rms_limit = options.rms_limit;
   result.poor_fit = result.rms_relative_error > options.rms_limit;
   result.parameters = estimates(variables, x, statistics);
+  result.lack_of_fit = lack_of_fit(statistics, sum_of_squares, result.rms_relative_error, scatter, !options.scatter.has_value(),
+                                   static_cast<int>(jacobian.rows()));
   result.correlation = statistics.correlation;
   result.stick_stiffness = stick_stiffnesses(variables, x, statistics);
   result.fitted = problem.points(x);
@@ -901,6 +1033,40 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
         "the data do not determine its size; fix one arm's inertia, cable length or (nonzero) offset at the drawing's "
         "value (leave it out of free)",
         variables.bouc_wen() ? "ei_min and ei_max times s^3, chi0 times s^-2" : "ei and c times s^3, h times s"));
+  }
+  if (result.lack_of_fit.significant) {
+    const Eigen::VectorXd residuals = problem.residuals(x);
+    const std::vector<DamperNumber> fixed = fixed_numbers(start, variables.numbers());
+    const bool clamp_mass = !variables.fits_clamp_mass();
+    const Eigen::MatrixXd columns = problem.fixed_number_columns(x, fixed, clamp_mass);
+    std::vector<least_squares::ExtraVariable> steps;
+    for (Eigen::Index k = 0; k < columns.cols(); ++k) {
+      least_squares::ExtraVariable step = least_squares::extra_variable(jacobian, residuals, columns.col(k));
+      FixedNumberSuspect suspect;
+      if (k < static_cast<Eigen::Index>(fixed.size())) {
+        const DamperNumber& n = fixed[static_cast<std::size_t>(k)];
+        suspect = {n.path, n.unit, n.start, 0.0, n.value(step.step)};
+      } else {
+        suspect = {"clamp.mass", "kg", start.clamp_mass, 0.0, start.clamp_mass + variables.mass_scale() * step.step};
+      }
+      suspect.misfit_reduction = sum_of_squares > 0.0 ? std::min(1.0, step.reduction / sum_of_squares) : 0.0;
+      result.lack_of_fit.suspects.push_back(suspect);
+      steps.push_back(std::move(step));
+    }
+    std::vector<std::size_t> order(steps.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return result.lack_of_fit.suspects[a].misfit_reduction > result.lack_of_fit.suspects[b].misfit_reduction;
+    });
+    std::vector<FixedNumberSuspect> ranked;
+    std::vector<least_squares::ExtraVariable> ranked_steps;
+    for (const std::size_t k : order) {
+      ranked.push_back(result.lack_of_fit.suspects[k]);
+      ranked_steps.push_back(steps[k]);
+    }
+    result.lack_of_fit.suspects = std::move(ranked);
+    result.lack_of_fit.notes =
+        confounding_notes(variables, x, statistics, result.lack_of_fit.suspects, ranked_steps, result.parameters);
   }
   result.fit = best.summary;
   if (!best.summary.converged()) {

@@ -1,9 +1,11 @@
 #include "least_squares.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include <Eigen/SVD>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <unsupported/Eigen/LevenbergMarquardt>
 
 namespace stockbridge::identification::least_squares {
@@ -84,10 +86,10 @@ double Statistics::resolution_of(const Eigen::VectorXd& g) const {
 
 double Statistics::standard_error_of(const Eigen::VectorXd& g) const {
   const double resolution = resolution_of(g);
-  return std::isinf(resolution) ? kInfinity : resolution / scatter * residual_scatter;
+  return std::isinf(resolution) ? kInfinity : resolution / scatter * error_scatter;
 }
 
-Statistics statistics(const Eigen::MatrixXd& jacobian, double sum_of_squares, double scatter) {
+Statistics statistics(const Eigen::MatrixXd& jacobian, double sum_of_squares, double scatter, double error_floor) {
   const Eigen::Index m = jacobian.rows(), n = jacobian.cols();
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian, Eigen::ComputeThinV);
   const Eigen::VectorXd& s = svd.singularValues();
@@ -105,8 +107,10 @@ Statistics statistics(const Eigen::MatrixXd& jacobian, double sum_of_squares, do
   }
   out.null_space.resize(n, static_cast<Eigen::Index>(null_columns.size()));
   for (std::size_t k = 0; k < null_columns.size(); ++k) out.null_space.col(static_cast<Eigen::Index>(k)) = v.col(null_columns[k]);
-  const double variance = m > n ? sum_of_squares / static_cast<double>(m - n) : kInfinity;
+  out.rank = static_cast<int>(n - out.null_space.cols());
+  const double variance = m > out.rank ? sum_of_squares / static_cast<double>(m - out.rank) : kInfinity;
   out.residual_scatter = std::sqrt(variance);
+  out.error_scatter = std::max(out.residual_scatter, error_floor);
   out.standard_error.resize(n);
   out.resolution.resize(n);
   out.sensitivity.resize(n);
@@ -115,7 +119,7 @@ Statistics statistics(const Eigen::MatrixXd& jacobian, double sum_of_squares, do
     const bool null = out.null_space.cols() > 0 && out.null_space.row(i).cwiseAbs().maxCoeff() > kNullComponent;
     out.in_null_space[static_cast<std::size_t>(i)] = null;
     const double c = out.covariance(i, i);
-    out.standard_error(i) = null ? kInfinity : std::sqrt(variance * c);
+    out.standard_error(i) = null ? kInfinity : out.error_scatter * std::sqrt(c);
     out.resolution(i) = null ? kInfinity : scatter * std::sqrt(c);
     out.sensitivity(i) = jacobian.col(i).norm() / std::sqrt(static_cast<double>(m));
   }
@@ -127,6 +131,45 @@ Statistics statistics(const Eigen::MatrixXd& jacobian, double sum_of_squares, do
                                    : out.covariance(i, j) / std::sqrt(out.covariance(i, i) * out.covariance(j, j));
     }
   }
+  return out;
+}
+
+ChiSquareTest chi_square_test(double statistic, int degrees_of_freedom, double level) {
+  ChiSquareTest out;
+  out.statistic = statistic;
+  out.degrees_of_freedom = degrees_of_freedom;
+  out.level = level;
+  if (degrees_of_freedom <= 0 || !std::isfinite(statistic)) {
+    out.p_value = degrees_of_freedom > 0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+    out.critical = std::numeric_limits<double>::quiet_NaN();
+    out.significant = degrees_of_freedom > 0;  // an infinite statistic
+    return out;
+  }
+  const boost::math::chi_squared distribution(static_cast<double>(degrees_of_freedom));
+  out.p_value = boost::math::cdf(boost::math::complement(distribution, std::max(statistic, 0.0)));
+  out.critical = boost::math::quantile(boost::math::complement(distribution, level));
+  out.significant = out.p_value < level;
+  return out;
+}
+
+ExtraVariable extra_variable(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& residuals,
+                             const Eigen::VectorXd& column) {
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  Eigen::Index rank = 0;
+  while (rank < s.size() && s(rank) > kNullSingularValue * s(0)) ++rank;
+  const Eigen::MatrixXd u = svd.matrixU().leftCols(rank);
+  const Eigen::VectorXd along = u.transpose() * column;  // the column in J's range, in U's basis
+  const Eigen::VectorXd outside = column - u * along;
+  ExtraVariable out;
+  out.shift = Eigen::VectorXd::Zero(jacobian.cols());
+  const double norm2 = outside.squaredNorm();
+  if (!(std::sqrt(norm2) > kNullSingularValue * column.norm())) return out;  // J's columns move Z so already
+  const double projection = outside.dot(residuals);
+  out.reduction = projection * projection / norm2;
+  out.step = -projection / norm2;
+  // J^+ column = V S^-1 U^T column over the range.
+  out.shift = -(svd.matrixV().leftCols(rank) * (along.array() / s.head(rank).array()).matrix()) * out.step;
   return out;
 }
 

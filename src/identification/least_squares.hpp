@@ -38,9 +38,11 @@ struct Run {
 /// the variables (which should be of order one), of radius `first_step` at first.
 Run levenberg_marquardt(Problem& problem, Eigen::VectorXd x, int max_jacobians, double first_step = 1.0);
 
-/// The estimates' statistics from the Jacobian J at the optimum (m x n) and the
-/// sum of squares S there. With C = (J^T J)^+:
-///   standard error of x_i:  sqrt(S / (m - n) C_ii)   (m > n; else infinity)
+/// The estimates' statistics from the Jacobian J at the optimum (m x n, rank k) and
+/// the sum of squares S there. With C = (J^T J)^+:
+///   standard error of x_i:  sigma sqrt(C_ii), sigma = max(sqrt(S / (m - k)),
+///                           `error_floor`): the residuals' own scatter, or the
+///                           floor where that is larger (m > k; else infinity)
 ///   resolution of x_i:      scatter sqrt(C_ii): the standard error the residuals
 ///                           would give at a scatter of `scatter` each
 ///   sensitivity of x_i:     |J_i| / sqrt(m), the column's RMS
@@ -59,9 +61,40 @@ struct Statistics {
   /// Its standard error (infinity likewise).
   double standard_error_of(const Eigen::VectorXd& g) const;
   double scatter = 0.0;           ///< the one asked for the resolutions
-  double residual_scatter = 0.0;  ///< sqrt(S / (m - n)): the residuals' own (infinity for m = n)
+  double residual_scatter = 0.0;  ///< sqrt(S / (m - k)): the residuals' own (infinity for m = k)
+  double error_scatter = 0.0;     ///< max(residual_scatter, error_floor): the standard errors'
+  int rank = 0;                   ///< k: n less the null space's dimension
   Eigen::MatrixXd null_space;     ///< its basis vectors as columns
 };
-Statistics statistics(const Eigen::MatrixXd& jacobian, double sum_of_squares, double scatter);
+Statistics statistics(const Eigen::MatrixXd& jacobian, double sum_of_squares, double scatter, double error_floor = 0.0);
+
+/// The chi-square test of a sum of squares against a stated scatter: with residuals
+/// of independent errors of standard deviation sigma, S / sigma^2 follows the
+/// chi-square distribution with `degrees_of_freedom` (m - k) degrees of freedom.
+struct ChiSquareTest {
+  double statistic = 0.0;       ///< S / sigma^2
+  int degrees_of_freedom = 0;
+  double p_value = 1.0;         ///< P(chi2 >= statistic); NaN without degrees of freedom
+  double critical = 0.0;        ///< the chi2 quantile at 1 - level (NaN likewise)
+  double level = 0.0;
+  bool significant = false;     ///< p_value < level: the residuals exceed the scatter
+};
+/// Boost.Math's chi-square distribution; `degrees_of_freedom` <= 0 gives no test
+/// (p_value and critical NaN, not significant).
+ChiSquareTest chi_square_test(double statistic, int degrees_of_freedom, double level);
+
+/// What one more variable, whose Jacobian column is `column`, would do at the
+/// optimum x of residuals r and Jacobian J (the Gauss-Newton step of the
+/// augmented problem [J, column]): with c' the part of `column` outside J's range,
+///   reduction = (c' . r)^2 / |c'|^2   (of |r|^2; 0 where |c'| <= 1e-9 |column|)
+///   step      = -(c' . r) / |c'|^2    (the new variable's)
+///   shift     = -J^+ column step      (the fitted variables' change with it)
+struct ExtraVariable {
+  double reduction = 0.0;
+  double step = 0.0;
+  Eigen::VectorXd shift;
+};
+ExtraVariable extra_variable(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& residuals,
+                             const Eigen::VectorXd& column);
 
 }  // namespace stockbridge::identification::least_squares

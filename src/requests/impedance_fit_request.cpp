@@ -30,15 +30,57 @@ io::JsonObject estimate_json(const identification::ParameterEstimate& e) {
       .add("geometry", e.geometry);
 }
 
+io::JsonObject& add_confounding(io::JsonObject& json, const identification::ParameterEstimate& e) {
+  if (e.confounded_by.empty()) return json.add_null("confounded_by").add("confounded_shift", 0.0);
+  return json.add("confounded_by", e.confounded_by).add("confounded_shift", e.confounded_shift);
+}
+
+io::JsonObject lack_of_fit_json(const identification::LackOfFit& l) {
+  std::vector<io::JsonObject> suspects;
+  for (const identification::FixedNumberSuspect& s : l.suspects) {
+    suspects.push_back(io::JsonObject()
+                           .add("name", s.name)
+                           .add("unit", s.unit)
+                           .add("value", s.value)
+                           .add("misfit_reduction", s.misfit_reduction)
+                           .add("suggested_value", s.suggested_value));
+  }
+  return io::JsonObject()
+      .add("scatter", l.scatter)
+      .add("scatter_assumed", l.assumed)
+      .add("ratio", l.ratio)
+      .add("statistic", l.statistic)
+      .add("degrees_of_freedom", l.degrees_of_freedom)
+      .add("p_value", l.p_value)
+      .add("critical_statistic", l.critical)
+      .add("level", l.level)
+      .add("significant", l.significant)
+      .add("error_inflation", l.error_inflation)
+      .add("suspects", suspects)
+      .add("notes", l.notes);
+}
+
+/// "p = 0.13", "p = 2.1e-40", "p < 1e-300" (a p-value below double's range).
+std::string p_value_text(double p) {
+  if (std::isnan(p)) return "no degrees of freedom";
+  return p > 0.0 ? fmt::format("p = {:.2g}", p) : "p < 1e-300";
+}
+
+/// "the scatter 1 %" with where it came from.
+std::string scatter_text(const identification::LackOfFit& l) {
+  return fmt::format("{:g} %{}", 100.0 * l.scatter, l.assumed ? ", assumed: a shaker test's; state the sheet's with --scatter" : "");
+}
+
 std::vector<io::JsonObject> jenkin_json(const section::MasingParameters& p) {
   std::vector<io::JsonObject> out;
   for (const section::Jenkin& e : p.jenkin) out.push_back(io::JsonObject().add("c", e.c).add("h", e.h));
   return out;
 }
 
-/// "2.79 +- 0.02" or "2.79 (not determined)".
+/// "2.79 +- 0.02", "2.79 (not determined)" or "3.18 +- 0.047 (confounded by arm.long.inertia)".
 std::string with_error(const identification::ParameterEstimate& e) {
   if (!e.determined) return fmt::format("{:.6g} (not determined)", e.value);
+  if (!e.confounded_by.empty()) return fmt::format("{:.6g} +- {:.2g} (confounded by {})", e.value, e.standard_error, e.confounded_by);
   return fmt::format("{:.6g} +- {:.2g}", e.value, e.standard_error);
 }
 
@@ -53,6 +95,7 @@ identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitReq
   options.threads = request.threads;
   options.free = request.free;
   options.rms_limit = request.rms_limit;
+  options.scatter = request.scatter;
   options.validate();
   return options;
 }
@@ -129,6 +172,42 @@ std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification&
                                fit.law == cable::SectionLawKind::masing ? ", --elements" : ""),
                    false});
   }
+  const identification::LackOfFit& l = fit.lack_of_fit;
+  if (l.significant) {
+    out.push_back({fmt::format("lack of fit: the RMS relative error of Z {:.3g} % is {:.3g} times the scatter of {} "
+                               "({}; chi-square {:.4g} on {} degrees of freedom, above {:.4g} at {:g} %, {}): the model "
+                               "cannot reach it within its scatter; the standard errors are inflated {:.3g} times",
+                               100.0 * fit.rms_relative_error, l.ratio, source, scatter_text(l), l.statistic,
+                               l.degrees_of_freedom, l.critical, 100.0 * (1.0 - l.level), p_value_text(l.p_value),
+                               l.error_inflation),
+                   false});
+    std::vector<std::string> named;
+    for (const identification::FixedNumberSuspect& s : l.suspects) {
+      if (s.misfit_reduction < identification::explaining_share || named.size() == 3) break;
+      named.push_back(fmt::format("{} {:.2g} % (to {:.4g} {}, from {:.4g})", s.name, 100.0 * s.misfit_reduction,
+                                  s.suggested_value, s.unit, s.value));
+    }
+    if (!named.empty()) {
+      // Shares within a tenth of the first's: the data hardly tell those numbers apart.
+      const bool close = named.size() > 1 && l.suspects[1].misfit_reduction >= 0.9 * l.suspects[0].misfit_reduction;
+      out.push_back({fmt::format("fixed numbers of the damper that may be wrong, by the share of the misfit freeing each "
+                                 "would remove: {}: {}",
+                                 fmt::join(named, ", "),
+                                 named.size() == 1 ? "check it on the drawing, or fit it with --free"
+                                 : close ? "shares this close hardly tell them apart: check them on the drawing, or fit "
+                                           "one at a time with --free"
+                                         : "check the first on the drawing, or fit it with --free"),
+                     false});
+    } else if (!l.suspects.empty()) {
+      out.push_back({fmt::format("no fixed number of the damper explains the lack of fit (freeing {}, the most, would "
+                                 "remove {:.2g} % of the misfit): check the measurement's units and scatter, the "
+                                 "cable's law{}",
+                                 l.suspects.front().name, 100.0 * l.suspects.front().misfit_reduction,
+                                 fit.law == cable::SectionLawKind::masing ? " and --elements" : ""),
+                     false});
+    }
+    for (const Warning& w : plain_warnings(l.notes)) out.push_back(w);
+  }
   return out;
 }
 
@@ -139,7 +218,8 @@ io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measureme
   std::vector<std::string> undetermined;
   io::JsonObject geometry;
   for (const identification::ParameterEstimate& e : fit.parameters) {
-    parameters.push_back(estimate_json(e));
+    io::JsonObject json = estimate_json(e);
+    parameters.push_back(add_confounding(json, e));
     if (!e.determined) undetermined.push_back(e.name);
     if (e.geometry) geometry.add(e.name, e.value);
   }
@@ -168,6 +248,7 @@ io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measureme
       .add("rms_relative_error", fit.rms_relative_error)
       .add("rms_limit", fit.rms_limit)
       .add("poor_fit", fit.poor_fit)
+      .add("lack_of_fit", lack_of_fit_json(fit.lack_of_fit))
       .add("points", static_cast<int>(measurement.points.size()))
       .add("curves", static_cast<int>(identification::measured_curves(measurement).size()))
       .add("not_converged", fit.not_converged)
@@ -196,10 +277,31 @@ std::string fit_summary_line(const identification::ImpedanceMeasurement& measure
     parts.push_back(fmt::format("{} = {} {}", e.name, with_error(e), e.unit));
   }
   const std::size_t curves = identification::measured_curves(measurement).size();
-  return fmt::format("identify impedance: {}; RMS relative error of Z {:.3g} % over {} points ({} curve{}), {} model runs",
+  const identification::LackOfFit& l = fit.lack_of_fit;
+  return fmt::format("identify impedance: {}; RMS relative error of Z {:.3g} % over {} points ({} curve{}), {:.3g} times "
+                     "the scatter {:g} %{} ({}{}), {} model runs",
                      fmt::join(parts, ", "), 100.0 * fit.rms_relative_error, measurement.points.size(), curves,
-                     curves == 1 ? "" : "s", fit.model_evaluations);
+                     curves == 1 ? "" : "s", l.ratio, 100.0 * l.scatter, l.assumed ? " assumed" : "",
+                     l.significant ? "lack of fit, " : "", p_value_text(l.p_value), fit.model_evaluations);
 }
+
+namespace {
+
+/// A file comment's line on a significant lack of fit ("" without one).
+std::string lack_of_fit_comment(const identification::ImpedanceIdentification& fit) {
+  const identification::LackOfFit& l = fit.lack_of_fit;
+  if (!l.significant) return "";
+  std::string line = fmt::format("\nLACK OF FIT: the error is {:.3g} times the scatter {:g} % ({}): the model does not reach "
+                                 "the measurement; a fixed number of the damper may be wrong",
+                                 l.ratio, 100.0 * l.scatter, p_value_text(l.p_value));
+  if (!l.suspects.empty() && l.suspects.front().misfit_reduction >= identification::explaining_share) {
+    line += fmt::format(" ({} explains {:.2g} % of the misfit)", l.suspects.front().name,
+                        100.0 * l.suspects.front().misfit_reduction);
+  }
+  return line + ".";
+}
+
+}  // namespace
 
 std::string fitted_cable_file(const identification::ImpedanceIdentification& fit, std::size_t type,
                               std::string_view source) {
@@ -209,6 +311,7 @@ std::string fitted_cable_file(const identification::ImpedanceIdentification& fit
       "Identified by stockbridge identify impedance from {}:\n"
       "RMS relative error of Z {:.4g} % at {} points; the length is arm[{}]'s (damper files cut it to theirs).",
       source, 100.0 * fit.rms_relative_error, fit.fitted.size(), arm);
+  comment += lack_of_fit_comment(fit);
   const std::string prefix = fit.types() > 1 ? fmt::format("arm[{}].cable.", arm) : "";
   for (const identification::ParameterEstimate& e : fit.parameters) {
     if (!e.determined && e.name.starts_with(prefix) && !e.geometry) comment += fmt::format("\n{} = {:.6g} {} is NOT determined by the data.", e.name, e.value, e.unit);
@@ -220,6 +323,7 @@ std::string fitted_damper_file(const identification::ImpedanceIdentification& fi
   std::string comment = fmt::format("Identified by stockbridge identify impedance from {}:\nRMS relative error of Z {:.4g} % at {} points{}.",
                                     source, 100.0 * fit.rms_relative_error, fit.fitted.size(),
                                     fit.poor_fit ? fmt::format(", above the limit {:g} %: a poor fit", 100.0 * fit.rms_limit) : "");
+  comment += lack_of_fit_comment(fit);
   std::vector<std::string> fitted;
   for (const identification::ParameterEstimate& e : fit.parameters) {
     if (e.geometry) fitted.push_back(e.name);

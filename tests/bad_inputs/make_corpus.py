@@ -227,6 +227,8 @@ cases = {
                                       MEASURED_Z, "elements = 9"),
     "option_impedance_fit_threads": ("identify impedance --damper nope.toml --input INPUT --threads 0 -o out.toml", "z.csv",
                                      MEASURED_Z, "threads = 0"),
+    "option_impedance_fit_scatter": ("identify impedance --damper nope.toml --input INPUT --scatter 1 -o out.toml", "z.csv",
+                                     MEASURED_Z, "scatter = 1: expected a fraction"),
     "option_design_samples_zero": ("design INPUT --samples 0 -o out.csv --best best.toml", "design.toml", DESIGN, "samples = 0"),
     "option_design_threads_zero": ("design INPUT --threads 0 -o out.csv --best best.toml", "design.toml", DESIGN, "threads = 0"),
     "option_design_polish_negative": ("design INPUT --polish -1 -o out.csv --best best.toml", "design.toml", DESIGN, "polish = -1"),

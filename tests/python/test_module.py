@@ -766,6 +766,31 @@ def test_identify_impedance_from_arrays_equals_the_file(impedance_fit):
         sb.identify_impedance(again["damper"], frequency=[10.0, 20.0], velocity=[0.1, 0.1], z=[1j, 2j], elements=0)
 
 
+def test_identify_impedance_tests_the_lack_of_fit_against_the_stated_scatter_as_the_program(impedance_fit, tmp_path):
+    """scatter: the program's --scatter; lack_of_fit the same; the default 1 %, assumed."""
+    _, summary, fit = impedance_fit
+    assert fit["lack_of_fit"]["scatter"] == 0.01 and fit["lack_of_fit"]["scatter_assumed"] is True
+    assert fit["lack_of_fit"]["significant"] is False and fit["lack_of_fit"]["suspects"] == []
+    damper = os.path.join(SOURCE, "examples", "damper_to_identify.toml")
+    measured = os.path.join(SOURCE, "examples", "measured_impedance.csv")
+    out = subprocess.run([CLI, "identify", "impedance", "--damper", damper, "--input", measured, "--json",
+                          "--scatter", "0.02"], cwd=tmp_path, check=True, capture_output=True, text=True).stdout
+    stated = sb.identify_impedance(sb.load_damper(damper), measured, scatter=0.02)
+    assert stated["lack_of_fit"] == json.loads(out)["lack_of_fit"]
+    lack = stated["lack_of_fit"]
+    assert lack["scatter"] == 0.02 and lack["scatter_assumed"] is False and lack["significant"] is False
+    assert lack["ratio"] == pytest.approx(stated["rms_relative_error"] / 0.02, rel=1e-12)
+    assert lack["statistic"] == pytest.approx(2 * stated["points"] * lack["ratio"] ** 2, rel=1e-12)
+    assert lack["degrees_of_freedom"] == 2 * stated["points"] - 3
+    # At 2 % stated the standard errors are the stated scatter's, twice the residuals' own 1 %.
+    assert lack["error_inflation"] == 1.0
+    for p, q in zip(stated["parameters"], summary["parameters"]):
+        assert p["standard_error"] > 1.5 * q["standard_error"], p["name"]
+        assert p["confounded_by"] is None
+    with pytest.raises(sb.InvalidParameter, match="scatter = 2: expected a fraction"):
+        sb.identify_impedance(stated["damper"], measured, scatter=2)
+
+
 def test_identify_impedance_of_a_bouc_wen_damper_gives_its_numbers_back():
     """A start of law "bouc-wen" fits ei_min, ei_max and chi0 (the summary names the
     law); the fitted cable is a Bouc-Wen Cable."""

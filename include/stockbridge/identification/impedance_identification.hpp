@@ -22,7 +22,15 @@
 // starts; the best start is polished to convergence. The Jacobian at the optimum
 // gives each parameter's standard error, its correlations, and which parameters (or
 // combinations) the data do not determine.
+//
+// Lack of fit: the misfit is tested against the measurement's stated scatter
+// (chi-square, LackOfFit). Where the model cannot reach the data within it, the
+// numbers of the damper the fit kept fixed are ranked by how much of the misfit
+// freeing each would remove (their Jacobian columns at the optimum, one Gauss-Newton
+// step), the standard errors carry the residuals' own scatter, and the estimates a
+// plausible error of such a number would move beyond them say so (confounded_by).
 #include <complex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,6 +75,17 @@ std::vector<std::size_t> cable_types(const damper::DamperDescription& damper);
 inline constexpr const char* free_damper_numbers =
     "clamp.mass, or arm.<name or [index]>. followed by mass, inertia, offset or cable.length";
 
+/// The scatter assumed where the measurement states none: a shaker test's, about 1 %
+/// of Z (docs/identification.md: the model's own error on cables of 12 sections or
+/// more is 0.35 % or less, so that a correct model is not flagged).
+inline constexpr double default_scatter = 0.01;
+/// The lack-of-fit test's level: significant where p < 1 % (the 99 % quantile).
+inline constexpr double lack_of_fit_level = 0.01;
+/// A fixed number of the damper whose freeing would remove at least this share of a
+/// significant lack of fit explains it: the warning names it, and the estimates its
+/// suggested change would move beyond their standard errors are confounded by it.
+inline constexpr double explaining_share = 0.1;
+
 struct ImpedanceIdentificationOptions {
   int elements = 1;              ///< Jenkin elements per cable type, 1..6 (1 under the Bouc-Wen law, which has none)
   bool fit_clamp_mass = false;   ///< also fit m_c (otherwise the description's); the same as "clamp.mass" in `free`
@@ -80,6 +99,12 @@ struct ImpedanceIdentificationOptions {
   /// scatter of about 1 %, and what a damper whose masses or lengths are 15-20 % off
   /// gives (docs/identification.md).
   double rms_limit = 0.1;
+  /// The measurement's stated relative scatter of Z: the RMS of |Z_measured - Z| / |Z|
+  /// it expects from the test alone (0.01 for 1 %; each of Re and Im then scatters by
+  /// scatter / sqrt(2) of |Z|). The lack-of-fit test compares the fit's residuals with
+  /// it, and the standard errors are never below what it gives. Unset: default_scatter,
+  /// assumed (ImpedanceIdentification::lack_of_fit says so).
+  std::optional<double> scatter;
   damper::SolverOptions solver;  ///< the model's periodic solver
   int max_jacobians = 30;        ///< per start: Levenberg-Marquardt iterations at most
   int threads = 1;               ///< Jacobian columns evaluated at once, >= 1
@@ -98,8 +123,9 @@ struct ParameterEstimate {
   double value = 0.0;
   /// A number of the damper (options.free or the clamp mass), not a cable parameter.
   bool geometry = false;
-  /// From the Jacobian at the optimum and the residual's spread, in the value's
-  /// unit; infinity where not determined.
+  /// From the Jacobian at the optimum and the scatter of Z, in the value's unit:
+  /// the stated one's (options.scatter) or, where larger, the residuals' own
+  /// (LackOfFit::error_inflation); infinity where not determined.
   double standard_error = 0.0;
   /// RMS relative change of Z per relative change of the parameter (per kg of
   /// clamp mass, per m of offset): how strongly the data see it.
@@ -111,6 +137,57 @@ struct ParameterEstimate {
   /// False where the data leave it free (its Jacobian column in the span of the
   /// others, or a 1 % scatter of Z moving it by more than half its value).
   bool determined = true;
+  /// Where the lack of fit is significant: the fixed number of the damper (a
+  /// LackOfFit::suspects entry) whose change to its suggested value would move this
+  /// estimate by more than its standard error (the most by that measure); empty if
+  /// none. Its standard error does not cover that number's error: a note says so.
+  std::string confounded_by;
+  /// That move, in the value's unit (0 where confounded_by is empty).
+  double confounded_shift = 0.0;
+};
+
+/// A number of the damper the fit kept fixed (not in `free`) that may be wrong: what
+/// freeing it would do, from its Jacobian column at the optimum (the same forward
+/// difference as the fit's; analytic for the clamp mass) and one Gauss-Newton step of
+/// the fit with it added (the fitted parameters moving with it).
+struct FixedNumberSuspect {
+  std::string name;   ///< its path, as `free` names it ("arm.long.inertia", "clamp.mass")
+  std::string unit;
+  double value = 0.0;  ///< the damper's (the start's)
+  /// The fraction of the misfit S that step removes, 0..1: how much of the lack of
+  /// fit an error in this number explains.
+  double misfit_reduction = 0.0;
+  /// The value the step moves it to (masses, inertias and lengths in logarithms,
+  /// offsets and the clamp mass linearly, as the fit would free them).
+  double suggested_value = 0.0;
+};
+
+/// The lack-of-fit test: the residuals against the measurement's stated scatter.
+/// With the scatter s of Z (options.scatter) each of the 2N real residuals has the
+/// standard deviation s / sqrt(2), so where the model is right
+///     statistic = S / (s^2 / 2) = 2 N (rms / s)^2
+/// follows the chi-square distribution with 2N - k degrees of freedom (k: the
+/// parameters the data determine, the Jacobian's rank).
+struct LackOfFit {
+  double scatter = default_scatter;  ///< s used (options.scatter or default_scatter)
+  bool assumed = true;               ///< options.scatter unset: the default
+  double ratio = 0.0;                ///< rms_relative_error / scatter
+  double statistic = 0.0;
+  int degrees_of_freedom = 0;
+  double p_value = 1.0;              ///< P(chi2 >= statistic); NaN without degrees of freedom
+  double critical = 0.0;             ///< the chi2 quantile at 1 - level (the 99 % one)
+  double level = lack_of_fit_level;
+  bool significant = false;          ///< p_value < level: the model cannot reach the data within their scatter
+  /// The factor the standard errors carry over what the stated scatter gives:
+  /// max(1, sqrt(S / (2N - k)) / (s / sqrt(2))) (the residuals' own scatter where larger).
+  double error_inflation = 1.0;
+  /// Where significant: every number of the damper not fitted (clamp.mass, each arm's
+  /// mass, inertia, offset and cable.length), the most explaining first; else empty.
+  std::vector<FixedNumberSuspect> suspects;
+  /// One sentence per suspect explaining at least explaining_share of the misfit
+  /// whose suggested change would move estimates beyond their standard errors
+  /// (ParameterEstimate::confounded_by), naming them and by how much.
+  std::vector<std::string> notes;
 };
 
 struct ImpedanceIdentification {
@@ -126,6 +203,7 @@ struct ImpedanceIdentification {
   double rms_relative_error = 0.0; ///< sqrt(S / N)
   double rms_limit = 0.1;          ///< options.rms_limit
   bool poor_fit = false;           ///< rms_relative_error > rms_limit
+  LackOfFit lack_of_fit;           ///< the residuals against the stated scatter
   /// In the order of the cables, then the numbers of options.free (in its order),
   /// then the clamp mass.
   std::vector<ParameterEstimate> parameters;

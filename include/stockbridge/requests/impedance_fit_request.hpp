@@ -5,6 +5,7 @@
 // measured points (the --fitted CSV's columns) and the identified cables as cable
 // files.
 #include <complex>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,10 +26,14 @@ struct ImpedanceFitRequest {
   std::vector<std::string> free;
   /// An RMS relative error of Z above this is a poor fit (warned of; the command exits 3).
   double rms_limit = identification::ImpedanceIdentificationOptions{}.rms_limit;
+  /// The measurement's stated relative scatter of Z (0.01 for 1 %); unset: 1 %,
+  /// assumed. A significant lack of fit against it is warned of; the command exits 3.
+  std::optional<double> scatter;
 };
 
-/// The fit's options; InvalidParameter naming "elements", "threads" or "rms_limit"
-/// (the command's --elements, --threads and --rms-limit, Python's keywords). The
+/// The fit's options; InvalidParameter naming "elements", "threads", "rms_limit" or
+/// "scatter" (the command's --elements, --threads, --rms-limit and --scatter, Python's
+/// keywords). The
 /// paths of `free` are checked against the damper by the fit (field "free").
 identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitRequest& request);
 
@@ -53,16 +58,22 @@ std::vector<FittedPoint> fitted_points(const identification::ImpedanceMeasuremen
 Table<FittedPoint> fitted_table();
 
 /// The fit's notes (parameters the data do not determine, points the model does
-/// not converge at, a fit stopped short) and a poor fit (an RMS error above the
-/// fit's rms_limit), as warnings; `source` names the measurement.
+/// not converge at, a fit stopped short, estimates a suspect fixed number moves), a
+/// poor fit (an RMS error above the fit's rms_limit) and a significant lack of fit
+/// (the residuals beyond the stated scatter; then a second line naming the fixed
+/// numbers that explain most of it), as warnings; `source` names the measurement.
 std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification& fit, std::string_view source);
 
 /// The summary, as `identify impedance --json` prints it and Python returns it:
 /// ei and jenkin [{c, h}] (the first cable type's, as identify global prints them;
 /// under the Bouc-Wen law law = "bouc-wen", ei_min, ei_max, chi0),
-/// clamp_mass_kg, misfit, rms_relative_error, rms_limit, poor_fit, points, curves,
+/// clamp_mass_kg, misfit, rms_relative_error, rms_limit, poor_fit, lack_of_fit
+/// {scatter, scatter_assumed, ratio, statistic, degrees_of_freedom, p_value,
+/// critical_statistic, level, significant, error_inflation, suspects [{name, unit,
+/// value, misfit_reduction, suggested_value}], notes}, points, curves,
 /// not_converged, parameters [{name, unit, value, standard_error,
-/// resolution_at_1_percent, sensitivity, determined, geometry}], geometry {path:
+/// resolution_at_1_percent, sensitivity, determined, geometry, confounded_by (null
+/// if none), confounded_shift}], geometry {path:
 /// value} (the fitted numbers of the damper), correlation (rows in the parameters' order, null for
 /// a parameter not determined), stick_stiffness [the same for each type's
 /// ei_plus_c; none under the Bouc-Wen law], undetermined [names], notes, cables

@@ -378,5 +378,75 @@ TEST(LeastSquares, FindsTheNullSpaceOfAZeroColumnAndOfEqualColumns) {
   EXPECT_TRUE(std::isinf(st.resolution_of(Eigen::Vector3d(1.0, -1.0, 0.0))));
 }
 
+TEST(LeastSquares, TheStandardErrorsAreAtTheStatedScatterWhereTheResidualsScatterLess) {
+  // The straight line above with a floor on the residual scatter: below the
+  // residuals' own it changes nothing, above it the errors are the floor's.
+  Eigen::MatrixXd a(4, 2);
+  a << 1, 0, 1, 1, 1, 2, 1, 3;
+  const Eigen::Matrix2d c = (a.transpose() * a).inverse();
+  const double s = 0.02;  // residual scatter sqrt(0.02 / 2) = 0.1
+  const least_squares::Statistics below = least_squares::statistics(a, s, 0.01, 0.05);
+  EXPECT_NEAR(below.residual_scatter, 0.1, 1e-12);
+  EXPECT_NEAR(below.error_scatter, 0.1, 1e-12);
+  EXPECT_NEAR(below.standard_error(0), 0.1 * std::sqrt(c(0, 0)), 1e-12);
+  const least_squares::Statistics above = least_squares::statistics(a, s, 0.01, 0.3);
+  EXPECT_EQ(above.rank, 2);
+  EXPECT_NEAR(above.error_scatter, 0.3, 1e-12);
+  EXPECT_NEAR(above.standard_error(1), 0.3 * std::sqrt(c(1, 1)), 1e-12);
+  EXPECT_NEAR(above.standard_error_of(Eigen::Vector2d(1.0, 1.0)), 0.3 * std::sqrt(c.sum()), 1e-12);
+}
+
+TEST(LeastSquares, TheChiSquareTestEqualsItsClosedFormsAtTwoAndFourDegreesOfFreedom) {
+  // Survival functions: exp(-x/2) for 2 degrees of freedom, exp(-x/2)(1 + x/2) for 4;
+  // the 99 % quantile for 2 is -2 ln 0.01.
+  for (const double x : {0.5, 3.0, 9.0, 20.0, 60.0}) {
+    const least_squares::ChiSquareTest two = least_squares::chi_square_test(x, 2, 0.01);
+    EXPECT_NEAR(two.p_value / std::exp(-x / 2.0), 1.0, 1e-12) << x;
+    EXPECT_EQ(two.significant, std::exp(-x / 2.0) < 0.01) << x;
+    const least_squares::ChiSquareTest four = least_squares::chi_square_test(x, 4, 0.01);
+    EXPECT_NEAR(four.p_value / (std::exp(-x / 2.0) * (1.0 + x / 2.0)), 1.0, 1e-12) << x;
+  }
+  const least_squares::ChiSquareTest two = least_squares::chi_square_test(1.0, 2, 0.01);
+  EXPECT_NEAR(two.critical, -2.0 * std::log(0.01), 1e-12);
+  EXPECT_EQ(two.degrees_of_freedom, 2);
+  EXPECT_EQ(two.level, 0.01);
+  // At the critical value itself p is the level; just above it the test is significant.
+  EXPECT_NEAR(least_squares::chi_square_test(two.critical, 2, 0.01).p_value, 0.01, 1e-14);
+  EXPECT_TRUE(least_squares::chi_square_test(two.critical * 1.001, 2, 0.01).significant);
+  EXPECT_FALSE(least_squares::chi_square_test(two.critical * 0.999, 2, 0.01).significant);
+  // Far in the tail p underflows to 0, still significant; no degrees of freedom: no test.
+  EXPECT_TRUE(least_squares::chi_square_test(1e6, 10, 0.01).significant);
+  const least_squares::ChiSquareTest none = least_squares::chi_square_test(3.0, 0, 0.01);
+  EXPECT_TRUE(std::isnan(none.p_value));
+  EXPECT_FALSE(none.significant);
+}
+
+TEST(LeastSquares, AnExtraVariablesStepIsTheAugmentedLinearProblemsSolution) {
+  // A straight line fitted to points that lie on a parabola: the quadratic's column,
+  // one Gauss-Newton step from the line's optimum, gives the parabola's fit exactly
+  // (a linear problem): its coefficient, the line's coefficients' change and the
+  // misfit it removes.
+  Eigen::MatrixXd a(5, 2);
+  a << 1, 0, 1, 1, 1, 2, 1, 3, 1, 4;
+  Eigen::VectorXd quadratic(5);
+  quadratic << 0, 1, 4, 9, 16;
+  Eigen::VectorXd b(5);
+  b << 1.0, 1.6, 3.1, 5.4, 8.2;
+  const Eigen::Vector2d line = (a.transpose() * a).ldlt().solve(a.transpose() * b);
+  const Eigen::VectorXd r = a * line - b;
+  Eigen::MatrixXd augmented(5, 3);
+  augmented << a, quadratic;
+  const Eigen::Vector3d parabola = (augmented.transpose() * augmented).ldlt().solve(augmented.transpose() * b);
+  const least_squares::ExtraVariable extra = least_squares::extra_variable(a, r, quadratic);
+  EXPECT_NEAR(extra.step, parabola(2), 1e-12);
+  EXPECT_NEAR(extra.shift(0), parabola(0) - line(0), 1e-12);
+  EXPECT_NEAR(extra.shift(1), parabola(1) - line(1), 1e-12);
+  EXPECT_NEAR(extra.reduction, r.squaredNorm() - (augmented * parabola - b).squaredNorm(), 1e-12);
+  // A column the line's already spans removes nothing.
+  const least_squares::ExtraVariable spanned = least_squares::extra_variable(a, r, a.col(0) + 2.0 * a.col(1));
+  EXPECT_EQ(spanned.reduction, 0.0);
+  EXPECT_EQ(spanned.step, 0.0);
+}
+
 }  // namespace
 }  // namespace stockbridge::identification
