@@ -112,9 +112,9 @@ void print_span_report(const requests::SpanResult& result) {
     fmt::print("dampers: none\n");
   } else {
     for (const span::SpanDamper& d : s.dampers()) {
-      fmt::print("damper {}: {:.4g} m from the clamp, {} ({} model{})\n", d.name, d.position,
+      fmt::print("damper {}: {:.4g} m from the clamp, {} ({} model{}{})\n", d.name, d.position,
                  d.both_ends ? "both ends" : "one end", span::damper_model_name(result.damper_model),
-                 d.measured() ? ", Z from its measured sheet" : "");
+                 d.measured() ? ", Z from its measured sheet" : "", d.fit ? "; " + d.fit->summary() : std::string());
     }
   }
   if (a.position) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cable_table.hpp"
+#include "damper_reading.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/cable_file.hpp"
 #include "stockbridge/io/toml_text.hpp"
@@ -122,6 +123,8 @@ std::vector<std::string> damper_warnings(const DamperReading& reading, const tom
   return warnings;
 }
 
+}  // namespace
+
 DamperFile build_damper(const toml::table& document, const TomlSource& source, const std::filesystem::path& base_directory,
                         SlipPolicy policy) {
   DamperReading reading = build_from_file(document, source, [&] {
@@ -135,8 +138,6 @@ DamperFile build_damper(const toml::table& document, const TomlSource& source, c
   damper::Damper damper = build_from_file(document, source, [&] { return damper::Damper(std::move(reading.description)); });
   return DamperFile{std::move(damper), std::move(cable_files), std::move(warnings)};
 }
-
-}  // namespace
 
 DamperFile load_damper_file(const std::filesystem::path& path, SlipPolicy policy) {
   return build_damper(parse_toml_file(path), TomlSource{path.string(), true}, path.parent_path(), policy);

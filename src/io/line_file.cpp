@@ -264,7 +264,7 @@ std::vector<GivenSpan> given_from_csv(const std::filesystem::path& path) {
 
 /// A damper type of [dampers] types: a damper file or a measured sheet, its mass.
 line::DamperType read_damper_type(const TomlTable& t, const std::filesystem::path& base, SpanReading& reading) {
-  t.accept_only({"name", "file", "impedance", "mass", "price"});
+  t.accept_only({"name", "file", "impedance", "fit_from", "free", "mass", "price"});
   span_reading::DamperSource source = span_reading::read_damper_source(
       t, base, reading,
       fmt::format("missing key 'file' in {}: expected a damper file, or impedance = a measured impedance CSV file "
@@ -278,6 +278,8 @@ line::DamperType read_damper_type(const TomlTable& t, const std::filesystem::pat
   type.name = t.optional_string("name").value_or(source.name);
   type.damper.damper = std::move(source.damper);
   type.damper.sheet = std::move(source.sheet);
+  type.damper.fit = std::move(source.fit);
+  if (type.damper.fit) type.fit_from = std::filesystem::absolute(source.fit_from).lexically_normal().string();
   type.damper.name = type.name;
   return type;
 }
@@ -455,7 +457,13 @@ std::string span_file_text(const LineFile& file, const line::ScheduleRow& row) {
     toml::array dampers;
     for (const double x : row.positions) {
       toml::table d;
-      d.insert(type->damper.measured() ? "impedance" : "file", type->file);
+      d.insert(type->damper.measured() || type->damper.fit ? "impedance" : "file", type->file);
+      if (type->damper.fit) {
+        d.insert("fit_from", type->fit_from);
+        toml::array free;
+        for (const std::string& number : type->damper.fit->free) free.push_back(number);
+        d.insert("free", std::move(free));
+      }
       d.insert("position", x);
       d.insert("ends", "both");
       dampers.push_back(std::move(d));

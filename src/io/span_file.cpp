@@ -1,8 +1,8 @@
 #include "stockbridge/io/span_file.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -18,6 +18,7 @@
 #include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/span/stranded_conductor.hpp"
 #include "stockbridge/span/tension_figures.hpp"
+#include "sheet_fit.hpp"
 #include "span_reading.hpp"
 #include "toml_reader.hpp"
 
@@ -250,14 +251,46 @@ std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, c
   }
 }
 
+/// A measured sheet's damper fitted from its drawing (`fit_from`, with `free`).
+DamperSource fitted_damper_source(const TomlTable& table, const std::string& measured, const std::string& start,
+                                  const std::filesystem::path& base_directory, SpanReading& reading) {
+  const std::vector<std::string> free = table.optional_string_array("free").value_or(std::vector<std::string>{});
+  const std::filesystem::path sheet =
+      span_input_file(table, "impedance", measured, base_directory, "measured impedance CSV file");
+  const std::filesystem::path drawing = span_input_file(table, "fit_from", start, base_directory, "damper file");
+  FittedSheet fitted = [&] {
+    try {
+      return fit_damper_to_sheet(sheet, measured, drawing, start, free, fit_cache_directory(base_directory),
+                                 reading.policy);
+    } catch (const InvalidParameter& e) {  // a number of `free` the drawing does not have
+      table.fail("free", e.what());
+    }
+  }();
+  reading.inputs.insert(reading.inputs.end(), fitted.inputs.begin(), fitted.inputs.end());
+  span_add_warnings(reading, std::move(fitted.warnings));
+  DamperSource source;
+  source.path = sheet;
+  source.damper = std::move(fitted.damper);
+  source.fit = std::move(fitted.fit);
+  source.fit_from = drawing;
+  source.name = sheet.stem().string() + " (fitted)";
+  return source;
+}
+
 DamperSource read_damper_source(const TomlTable& table, const std::filesystem::path& base_directory,
                                 SpanReading& reading, const std::string& missing) {
   const std::optional<std::string> model = table.optional_string("file");
   const std::optional<std::string> measured = table.optional_string("impedance");
+  const std::optional<std::string> fit_from = table.optional_string("fit_from");
   if (model.has_value() == measured.has_value()) {
     if (model) table.fail("impedance", "given beside file: expected a damper file or a measured sheet, one of the two");
     throw InputError(table.location("file") + missing);
   }
+  if (fit_from && !measured) {
+    table.fail("fit_from", "given beside file: fit_from fits the damper file's model to impedance = a measured sheet");
+  }
+  if (!fit_from && table.present("free")) table.fail("free", "given without fit_from: the numbers free in the fit to a sheet");
+  if (fit_from) return fitted_damper_source(table, *measured, *fit_from, base_directory, reading);
   DamperSource source;
   if (measured) {
     source.path = span_input_file(table, "impedance", *measured, base_directory, "measured impedance CSV file");
@@ -278,7 +311,7 @@ DamperSource read_damper_source(const TomlTable& table, const std::filesystem::p
 /// A span damper's name in tables and messages: its damper file's (or sheet's) stem.
 span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem::path& base_directory,
                                   SpanReading& reading) {
-  table.accept_only({"file", "impedance", "position", "ends"});
+  table.accept_only({"file", "impedance", "fit_from", "free", "position", "ends"});
   const double position = table.number("position");
   bool both_ends = true;
   if (const auto ends = table.optional_string("ends")) {
@@ -294,7 +327,8 @@ span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem:
       fmt::format("missing key 'file' in [{}]: expected the damper file (relative to the span file), or impedance = a "
                   "measured impedance CSV file",
                   table.key_path()));
-  return span::SpanDamper{std::move(source.damper), position, both_ends, std::move(source.name), std::move(source.sheet)};
+  return span::SpanDamper{std::move(source.damper), position, both_ends, std::move(source.name), std::move(source.sheet),
+                          std::move(source.fit)};
 }
 
 /// The criterion, named or told by the one limit given: cycles (the Safe Border

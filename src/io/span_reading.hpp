@@ -68,6 +68,8 @@ struct DamperSource {
   std::shared_ptr<const span::ImpedanceSheet> sheet;  ///< the measured sheet, where there is no model
   std::filesystem::path path;                        ///< the file read
   std::string name;
+  std::optional<span::SheetFit> fit;                 ///< the model fitted to the sheet (fit_from)
+  std::filesystem::path fit_from;                    ///< the drawing it was fitted from
 };
 DamperSource read_damper_source(const TomlTable& table, const std::filesystem::path& base_directory,
                                 SpanReading& reading, const std::string& missing);

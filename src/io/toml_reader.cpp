@@ -164,6 +164,29 @@ std::optional<std::string> TomlTable::optional_string(std::string_view key) cons
   return text;
 }
 
+std::optional<std::vector<std::string>> TomlTable::optional_string_array(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  const toml::array* array = n->as_array();
+  if (!array) fail(key, fmt::format("{}: expected an array of strings", describe_type(*n)));
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& element = (*array)[i];
+    const auto* text = element.as_string();
+    if (!text) {
+      throw InputError(fmt::format("{}{}[{}]: {}: expected a string", location_of(element), qualified(key), i,
+                                   describe_type(element)));
+    }
+    if (printable(text->get(), text->get().size()) != text->get()) {
+      throw InputError(fmt::format("{}{}[{}]: \"{}\": expected text without line breaks, tabs or other control "
+                                   "characters",
+                                   location_of(element), qualified(key), i, printable(text->get())));
+    }
+    out.push_back(text->get());
+  }
+  return out;
+}
+
 TomlTable TomlTable::table(std::string_view key) const {
   const toml::node& n = required(key, "a table");
   if (!n.is_table()) fail(key, fmt::format("{}: expected a table", describe_type(n)));

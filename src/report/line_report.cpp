@@ -29,7 +29,9 @@ std::vector<Fact> line_rules(const io::LineFile& file) {
     out.emplace_back("damper type " + t.name,
                      fmt::format("{}{}{}", t.mass ? parts::number(*t.mass, 4) + " kg each" : "mass not given",
                                  t.price ? ", price " + parts::number(*t.price, 6) : "",
-                                 t.damper.measured() ? ", from a measured impedance sheet" : ", from its model"));
+                                 t.damper.measured() ? ", from a measured impedance sheet"
+                                 : t.damper.fit      ? ", its model " + t.damper.fit->summary()
+                                                     : ", from its model"));
   }
   out.emplace_back("dampers per end", fmt::format("{} to {}", r.min_per_end, r.max_per_end));
   out.emplace_back("positions", fmt::format("{} to {} m from the clamp, at least {} m apart, on a {} mm step",

@@ -88,9 +88,10 @@ std::vector<Fact> span_inputs(const span::Span& s, span::DamperModel model) {
     for (const span::SpanDamper& d : s.dampers()) {
       const std::string mass = d.damper ? ", " + number(d.damper->total_mass(), 3) + " kg" : std::string();
       facts.emplace_back("damper " + d.name,
-                         fmt::format("{} m from the clamp, {}{}; {} model{}", number(d.position, 4),
+                         fmt::format("{} m from the clamp, {}{}; {} model{}{}", number(d.position, 4),
                                      d.both_ends ? "at both ends" : "at one end", mass, span::damper_model_name(model),
-                                     d.measured() ? ", Z from its measured sheet" : ""));
+                                     d.measured() ? ", Z from its measured sheet" : "",
+                                     d.fit ? "; its model " + d.fit->summary() : std::string()));
     }
   }
   const span::FatigueSpec& f = s.fatigue();

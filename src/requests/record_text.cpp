@@ -1,12 +1,10 @@
 #include "record_text.hpp"
 
 #include <charconv>
-#include <cstdint>
-#include <fstream>
-#include <iterator>
 
 #include <fmt/format.h>
 
+#include "stockbridge/core/digest.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/version.hpp"
 
@@ -78,29 +76,11 @@ long long RecordFields::integer() {
   return value;
 }
 
-namespace {
-
-/// FNV-1a, 64 bits: enough to tell inputs apart (not a defence against forgery).
-struct InputDigest {
-  std::uint64_t h = 1469598103934665603ULL;
-  void add(std::string_view bytes) {
-    for (const unsigned char c : bytes) h = (h ^ c) * 1099511628211ULL;
-    for (const unsigned char c : fmt::format("|{}|", bytes.size())) h = (h ^ c) * 1099511628211ULL;
-  }
-};
-
-}  // namespace
-
 std::string input_fingerprint(std::string_view text, const std::vector<std::filesystem::path>& inputs) {
-  InputDigest d;
-  d.add(version_string);
-  d.add(text);
-  for (const std::filesystem::path& input : inputs) {
-    std::ifstream in(input, std::ios::binary);
-    d.add(input.string());
-    d.add(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
-  }
-  return fmt::format("{:016x}", d.h);
+  ContentDigest d;
+  d.add(version_string).add(text);
+  for (const std::filesystem::path& input : inputs) d.add_file(input);
+  return d.hex();
 }
 
 }  // namespace stockbridge::requests::record_text

@@ -381,8 +381,26 @@ io::JsonObject span_inputs(const span::Span& span) {
       .add("criterion_description", span.criterion_description())
       .add("endurance_limit_mpa", span.endurance_limit() / kPascalPerMegapascal)
       .add("yb_distance_m", span.fatigue().yb_distance);
+  std::vector<io::JsonObject> dampers;
+  for (const span::SpanDamper& d : span.dampers()) {
+    io::JsonObject damper;
+    damper.add("name", d.name).add("position_m", d.position).add("ends", d.both_ends ? "both" : "one");
+    damper.add("source", d.fit ? "fitted" : d.measured() ? "sheet" : "model");
+    if (d.fit) {
+      damper.add("fit", io::JsonObject()
+                            .add("sheet", d.fit->sheet)
+                            .add("start", d.fit->start)
+                            .add("rms_relative_error", d.fit->rms_relative_error)
+                            .add("points", d.fit->points)
+                            .add("poor_fit", d.fit->poor_fit)
+                            .add("lack_of_fit", d.fit->lack_of_fit)
+                            .add("cached", d.fit->cached));
+    }
+    dampers.push_back(std::move(damper));
+  }
   return io::JsonObject()
       .add("conductor", conductor)
+      .add("dampers", dampers)
       .add("length_m", span.length())
       .add("tension", io::JsonObject()
                           .add("tension_n", t.tension)

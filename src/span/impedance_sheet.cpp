@@ -28,7 +28,10 @@ ImpedanceSheet::ImpedanceSheet(identification::ImpedanceMeasurement measurement,
   }
   if (curves_.size() < 2) {
     throw InvalidParameter(name_, fmt::format(": {} curve(s) of two or more frequencies: expected at least two "
-                                              "amplitudes measured over the band (Z between them is interpolated)",
+                                              "amplitudes measured over the band (Z between them is interpolated); "
+                                              "a sheet of one amplitude takes fit_from = the damper's file (its "
+                                              "drawing) and free = [its numbers to fit]: the damper's model fitted to "
+                                              "the sheet, as identify impedance --free",
                                               curves_.size()));
   }
   const Interval covered = frequency_range();

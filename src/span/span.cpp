@@ -1,6 +1,7 @@
 #include "stockbridge/span/span.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/core/typical_ranges.hpp"
@@ -8,6 +9,13 @@
 #include "stockbridge/span/tension_figures.hpp"
 
 namespace stockbridge::span {
+
+std::string SheetFit::summary() const {
+  return fmt::format("fitted to {} from {} (free: {}), RMS {:.3g} % of |Z| over {} points{}", sheet, start,
+                     free.empty() ? std::string("the cable only") : fmt::format("{}", fmt::join(free, ", ")),
+                     100.0 * rms_relative_error, points,
+                     poor_fit || lack_of_fit ? ": it does not follow the sheet" : "");
+}
 
 FatigueCriterion parse_fatigue_criterion(std::string_view name) {
   if (name == "safe-border-line") return FatigueCriterion::safe_border_line;

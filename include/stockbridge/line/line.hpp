@@ -23,6 +23,7 @@ struct DamperType {
   std::optional<double> mass;  ///< kg per damper: the model's own, or the line file's for a sheet
   std::optional<double> price;  ///< per damper, in the line file's currency (for choose = fewest-then-cheapest)
   std::string file;            ///< the damper file or sheet it was read from (absolute); empty if made in code
+  std::string fit_from;        ///< a model fitted to the sheet `file`: the drawing it was fitted from (absolute)
 };
 
 /// How one span was given, beside the span itself: what a schedule row restates.

@@ -21,6 +21,22 @@
 
 namespace stockbridge::span {
 
+/// A damper model fitted to a measured sheet from the damper's drawing (a span
+/// file's fit_from, docs/span.md): where it comes from and how well it follows.
+struct SheetFit {
+  std::string sheet;                ///< the measured sheet's path, as the file gives it
+  std::string start;                ///< the damper file it started from (the drawing)
+  std::vector<std::string> free;    ///< the damper's numbers fitted with the cable
+  double rms_relative_error = 0.0;  ///< of Z over the sheet's points
+  int points = 0;                   ///< the sheet's points
+  bool poor_fit = false;            ///< above identify impedance's rms_limit
+  bool lack_of_fit = false;         ///< significant against the sheet's assumed 1 % scatter
+  bool cached = false;              ///< read from the fit cache, not fitted in this run
+
+  /// "fitted to one.csv from drawing.toml (free: arm.long.mass, ...), RMS 0.083 % of |Z| over 16 points"
+  std::string summary() const;
+};
+
 /// A damper on the span: at `position` (m from the span end's clamp) at one end, or
 /// at both ends (mirrored); known by its model, or by a measured impedance sheet
 /// (impedance_sheet.hpp) where there is no model.
@@ -30,6 +46,7 @@ struct SpanDamper {
   bool both_ends = true;
   std::string name;  ///< how tables and messages call it ("damper 1" or the file's stem)
   std::shared_ptr<const ImpedanceSheet> sheet;  ///< the measured sheet, where there is no model
+  std::optional<SheetFit> fit;  ///< the model is fitted to a measured sheet (fit_from)
 
   bool measured() const { return sheet != nullptr; }
 };
