@@ -170,6 +170,7 @@ int run_span_command(const SpanOptions& options) {
   check_report_path(options.report);
   const io::SpanFile file = read_span_input(options.span_file, {{"-o", options.output}, {"--report", options.report.value_or("")}},
                                              slip_policy(options.allow_unusual));
+  requests::validate(request, file.span);  // a refusal prints its one line alone, before the file's warnings
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress("span: impedance tables", options.quiet);
   const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));

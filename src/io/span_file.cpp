@@ -354,7 +354,8 @@ span::FatigueSpec read_fatigue(const TomlTable& table) {
   span::FatigueSpec fatigue;
   fatigue.cycles = table.optional_number("cycles");
   fatigue.endurance_limit = table.optional_number("endurance_limit");
-  if (const auto mpa = table.optional_number("endurance_limit_mpa")) {
+  const std::optional<double> mpa = table.optional_number("endurance_limit_mpa");
+  if (mpa) {
     if (fatigue.endurance_limit) {
       table.fail("endurance_limit_mpa", "given beside endurance_limit (Pa): expected one of the two");
     }
@@ -362,6 +363,12 @@ span::FatigueSpec read_fatigue(const TomlTable& table) {
   }
   fatigue.limit_pp_microstrain = table.optional_number("limit_pp_microstrain");
   fatigue.criterion = read_criterion(table, fatigue);
+  // FatigueSpec::validate names the model's endurance_limit: a limit given in MPa is
+  // refused here, at its own key.
+  if (mpa && fatigue.criterion != span::FatigueCriterion::stress) {
+    table.fail("endurance_limit_mpa", fmt::format("given beside criterion = \"{}\", which does not use it",
+                                                  span::fatigue_criterion_name(fatigue.criterion)));
+  }
   fatigue.yb_distance = table.optional_number("yb_distance").value_or(fatigue.yb_distance);
   const std::optional<TomlTable> weibull = table.optional_table("wind_weibull");
   const std::optional<double> fraction = table.optional_number("aeolian_fraction");

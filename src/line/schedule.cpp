@@ -311,19 +311,29 @@ std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<Sche
 
 namespace {
 
-/// A warning's kind: its text with every number (digits, and the '.', 'e' and sign
-/// within them) as '#'.
+/// A warning's kind: its text with every number (digits, and the '.', sign and
+/// exponent within them: 12.5, 1.23e+03, 4.5e-05) as '#'.
 std::string warning_kind(const std::string& text) {
+  const auto at = [&text](std::size_t k) { return k < text.size() ? text[k] : '\0'; };
+  const auto digit = [&at](std::size_t k) { return std::isdigit(static_cast<unsigned char>(at(k))) != 0; };
+  const auto sign = [&at](std::size_t k) { return at(k) == '+' || at(k) == '-'; };
+  const auto exponent = [&at](std::size_t k) { return at(k) == 'e' || at(k) == 'E'; };
   std::string kind;
   for (std::size_t i = 0; i < text.size(); ++i) {
-    if (!std::isdigit(static_cast<unsigned char>(text[i]))) {
+    if (!digit(i)) {
       kind += text[i];
       continue;
     }
-    while (i + 1 < text.size() && (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '.' ||
-                                   ((text[i + 1] == 'e' || text[i + 1] == '+' || text[i + 1] == '-') && i + 2 < text.size() &&
-                                    std::isdigit(static_cast<unsigned char>(text[i + 2]))))) {
-      ++i;
+    while (true) {
+      if (digit(i + 1) || at(i + 1) == '.' || (sign(i + 1) && digit(i + 2))) {
+        ++i;
+      } else if (exponent(i + 1) && digit(i + 2)) {
+        i += 2;
+      } else if (exponent(i + 1) && sign(i + 2) && digit(i + 3)) {
+        i += 3;  // e+03, as fmt writes an exponent
+      } else {
+        break;
+      }
     }
     kind += '#';
   }

@@ -96,6 +96,16 @@ void validate(const SpanRequest& request) {
   span::parse_position_objective(request.objective);
 }
 
+void validate(const SpanRequest& request, const span::Span& span) {
+  validate(request);
+  if (!request.position_min) return;
+  if (span.dampers().empty()) throw InvalidParameter("optimize_position", ": the span file has no [[damper]] to place");
+  if (span::parse_position_objective(request.objective) == span::PositionObjective::life && !span.fatigue().life) {
+    throw InvalidParameter("objective", " = \"life\": the span gives no climate ([fatigue] wind_weibull and "
+                                        "aeolian_fraction) to compute a life with");
+  }
+}
+
 span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const SpanRequest& request) {
   validate(request);
   span::AnalysisOptions options;
@@ -116,11 +126,9 @@ span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const S
 
 SpanResult run_span(const span::Span& file_span, const span::BalanceOptions& file, const SpanRequest& request,
                     const damper::SweepProgress& progress) {
+  validate(request, file_span);
   const span::AnalysisOptions options = analysis_options(file, request);
   const span::Span span = request.no_dampers ? file_span.without_dampers() : file_span;
-  if (request.position_min && span.dampers().empty()) {
-    throw InvalidParameter("optimize_position", ": the span file has no [[damper]] to place");
-  }
   std::vector<double> frequencies =
       request.frequencies.empty() ? span::band_frequencies(span, request.points) : request.frequencies;
   return SpanResult{span::analyse_span(span, std::move(frequencies), options, progress), options.balance.damper_model};

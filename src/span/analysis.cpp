@@ -59,11 +59,12 @@ void add_sheet_band(SpanAnalysis& out, const SpanTables& tables, const BalanceOp
     const BalancePoint& p = out.balance.points[i];
     if (!p.converged()) continue;
     if (p.below_sheet) ++below;
+    if (!(p.stress_fymax > 0.0)) continue;  // no vibration (Y = 0): no relative change to take
     for (const SpanBalance& b : cut) {
       const BalancePoint& q = b.points[i];
       if (!q.converged()) continue;
       const double relative = std::abs(q.stress_fymax - p.stress_fymax) / p.stress_fymax;
-      if (!(relative <= worst)) worst = relative, worst_f = p.frequency_hz;
+      if (std::isfinite(relative) && !(relative <= worst)) worst = relative, worst_f = p.frequency_hz;
     }
   }
   // The band: the worst relative change over the band at every point. Near a kink of

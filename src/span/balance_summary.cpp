@@ -86,7 +86,8 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
     ++s.converged;
     damped.add(p.frequency_hz, p.stress_fymax);
     judged.add(p.frequency_hz, judged_stress(span, p));
-    if (const double top = judged_stress_high(span, p); !(top <= high)) high = top;
+    // A point without a band (no vibration: stress 0) leaves the largest top as it is.
+    if (const double top = judged_stress_high(span, p); std::isfinite(top) && !(top <= high)) high = top;
     s.max_bending_amplitude = std::max(s.max_bending_amplitude, p.bending_amplitude);
     s.max_stress_poffenberger_swart = std::max(s.max_stress_poffenberger_swart, p.stress_poffenberger_swart);
     s.max_damper_clamp_stress = std::max(s.max_damper_clamp_stress, p.damper_clamp_stress);

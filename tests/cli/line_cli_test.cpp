@@ -207,6 +207,22 @@ TEST(LineCli, AJournalOfOtherInputsIsRefused) {
   EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv"));
 }
 
+// An output in a folder that does not exist is refused before anything is read or
+// computed: one line naming the option and the folder, no journal, no folder made.
+TEST(LineCli, AnOutputInAMissingFolderIsRefusedBeforeAnythingIsWritten) {
+  const auto dir = line_folder("line-missing-folder");
+  const CliResult r = run_cli("line line.toml -o missing_folder/x.csv", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "stockbridge: -o missing_folder/x.csv: the folder missing_folder does not exist: expected an output "
+                   "file in an existing folder\n");
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(std::filesystem::exists(dir / "missing_folder"));
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "line.toml" || name == "stdout.txt" || name == "stderr.txt") << name << " written";
+  }
+}
+
 TEST(LineCli, BadSpansAreNamedByFileLineAndKey) {
   struct Case {
     std::string csv;

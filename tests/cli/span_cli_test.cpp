@@ -280,6 +280,194 @@ TEST(SpanCli, PositionSearchReportsAndBalancesAtThePositionFound) {
   EXPECT_NE(report.out.find("minimise the largest fymax stress"), std::string::npos) << report.out;
 }
 
+/// The JSON object after "key": in `json` (balanced braces; none: empty).
+std::string span_json_object(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": {");
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "no object " << key << " in " << json;
+    return {};
+  }
+  const std::size_t open = json.find('{', at);
+  int depth = 0;
+  for (std::size_t i = open; i < json.size(); ++i) {
+    depth += json[i] == '{' ? 1 : json[i] == '}' ? -1 : 0;
+    if (depth == 0) return json.substr(open, i - open + 1);
+  }
+  return {};
+}
+
+// --quiet: nothing on stdout and no progress on stderr; --json still prints its summary.
+TEST(SpanCli, QuietPrintsNothingButTheJsonItIsAskedFor) {
+  const auto dir = example_copy("span-quiet");
+  const CliResult quiet = run_cli("span span.toml --frequencies 10,20 --no-dampers --quiet -o span.csv", dir);
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.out, "");
+  EXPECT_EQ(quiet.err, "");
+  EXPECT_EQ(read_csv(dir / "span.csv").rows.size(), 2u);
+  const CliResult json = run_cli("span span.toml --frequencies 10,20 --no-dampers --quiet --json -o span.csv", dir);
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_EQ(json.out.rfind("{\"points\": 2, \"converged\": 2, ", 0), 0u) << json.out;
+  EXPECT_EQ(lines_of(json.out).size(), 1u) << json.out;
+  EXPECT_EQ(json.err, "");
+}
+
+// The JSON's inputs restate the span as computed: the catalogue's Drake (26/7, EI_min
+// 44.25 N m^2) at 20 % of its RTS, T = 0.2 RTS = (H/w) m g; CIGRE's wind, Lilien's k.
+TEST(SpanCli, TheJsonRestatesTheInputsAsUsed) {
+  const auto dir = scratch_directory("span-inputs-json");
+  const CliResult r = run_cli("span '" + kExamples + "drake_300m.toml' --frequencies 10,20 --no-dampers --json -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string inputs = span_json_object(r.out, "inputs");
+  const std::string conductor = span_json_object(inputs, "conductor");
+  EXPECT_NE(conductor.find("\"name\": \"ACSR Drake\""), std::string::npos) << conductor;
+  EXPECT_NE(conductor.find("\"source\": \"the catalogue's ACSR Drake\""), std::string::npos) << conductor;
+  EXPECT_NE(conductor.find("\"stranding\": \"26/7"), std::string::npos) << conductor;
+  EXPECT_NEAR(span_json_number(conductor, "ei_min_n_m2"), 44.25, 0.01);
+  EXPECT_EQ(span_json_number(conductor, "aluminium_layers"), 2.0);
+  const double rts = span_json_number(conductor, "rated_tensile_strength_n");
+  const double mass = span_json_number(conductor, "mass_per_length_kg_m");
+  EXPECT_NEAR(rts, 138.8e3, 0.1e3);
+  EXPECT_EQ(span_json_number(inputs, "length_m"), 300.0);
+  const std::string tension = span_json_object(inputs, "tension");
+  const double t = span_json_number(tension, "tension_n");
+  EXPECT_NEAR(span_json_number(tension, "fraction_of_rts"), 0.2, 1e-12);
+  EXPECT_NEAR(t, 0.2 * rts, 1e-9 * t);
+  EXPECT_NEAR(t, span_json_number(tension, "catenary_parameter_m") * mass * 9.80665, 1e-9 * t);
+  EXPECT_EQ(t, span_json_number(r.out, "tension_n"));  // the summary's own
+  const std::string wind = span_json_object(inputs, "wind");
+  EXPECT_NE(wind.find("\"law\": \"cigre\""), std::string::npos) << wind;
+  EXPECT_EQ(wind.find("turbulence"), std::string::npos) << wind;  // only foti has one
+  EXPECT_EQ(span_json_number(wind, "strouhal"), 0.185);
+  EXPECT_EQ(span_json_number(wind, "speed_max_m_s"), 7.0);
+  const std::string self_damping = span_json_object(inputs, "self_damping");
+  EXPECT_NE(self_damping.find("\"law\": \"noiseux-1991\""), std::string::npos) << self_damping;
+  EXPECT_NE(self_damping.find("\"k_source\": \"Lilien's\""), std::string::npos) << self_damping;
+  // Lilien's k, D[mm] / sqrt(m RTS[kN]).
+  const double diameter = span_json_number(conductor, "diameter_m");
+  EXPECT_NEAR(span_json_number(self_damping, "k"), 1e3 * diameter / std::sqrt(mass * rts / 1e3), 1e-9);
+  const std::string fatigue = span_json_object(inputs, "fatigue");
+  EXPECT_NE(fatigue.find("\"criterion\": \"safe-border-line\""), std::string::npos) << fatigue;
+  EXPECT_NE(fatigue.find("\"criterion_description\": \"the CIGRE Safe Border Line at 5e+08 cycles\""),
+            std::string::npos)
+      << fatigue;
+  EXPECT_EQ(span_json_number(fatigue, "endurance_limit_mpa"), span_json_number(r.out, "endurance_limit_mpa"));
+}
+
+/// The example Drake span (examples/drake_300m.toml) with D. Sauter's damper known by
+/// the vendor's sheet (examples/vendor_sheet.csv) in `dir`, its [span] and [fatigue]
+/// lines `tension` and `cycles` replaced by `tension_to` and `cycles_to`.
+void write_drake_with_vendor_sheet(const std::filesystem::path& dir, const std::string& tension_to = "",
+                                   const std::string& cycles_to = "") {
+  std::string text = read_text(kExamples + "drake_300m.toml");
+  text.replace(text.find("file = \"sauter2003.toml\""), 24, "impedance = \"vendor_sheet.csv\"");
+  if (!tension_to.empty()) text.replace(text.find("tension_fraction = 0.2 "), 22, tension_to);
+  if (!cycles_to.empty()) text.replace(text.find("cycles = 5e8"), 12, cycles_to);
+  std::ofstream(dir / "span.toml") << text;
+  std::filesystem::copy_file(kExamples + "vendor_sheet.csv", dir / "vendor_sheet.csv",
+                             std::filesystem::copy_options::overwrite_existing);
+}
+
+// The microstrain criterion (the IEEE committee's 150 microstrain peak-to-peak,
+// 0.5e-6 * 150 * 68.9 GPa = 5.17 MPa) judges the Poffenberger-Swart stress, the strain
+// a recorder's Yb gives: the Drake span at 18 % RTS with the vendor's sheet, safe by
+// the Safe Border Line (fymax 5.46 MPa, the band's top 7.96 MPa, against 8.73 MPa),
+// bends its outer wires by 158.6 microstrain: unsafe by it.
+TEST(SpanCli, TheMicrostrainCriterionJudgesThePoffenbergerSwartStrain) {
+  const auto dir = scratch_directory("span-microstrain");
+  write_drake_with_vendor_sheet(dir, "tension_fraction = 0.18");
+  const CliResult sbl = run_cli("span span.toml --json -o span.csv", dir);
+  ASSERT_EQ(sbl.exit_code, 0) << sbl.err;
+  EXPECT_NE(sbl.out.find("\"criterion\": \"safe-border-line\", \"verdict\": \"safe\""), std::string::npos) << sbl.out;
+
+  write_drake_with_vendor_sheet(dir, "tension_fraction = 0.18", "criterion = \"microstrain\"");
+  const CliResult r = run_cli("span span.toml --json -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"criterion\": \"microstrain\", \"verdict\": \"unsafe\""), std::string::npos) << r.out;
+  EXPECT_NEAR(span_json_number(r.out, "endurance_limit_mpa"), 0.5e-6 * 150.0 * 68.9e3, 1e-12);
+  EXPECT_NEAR(span_json_number(r.out, "endurance_limit_pp_microstrain"), 150.0, 1e-9);
+  EXPECT_NEAR(span_json_number(r.out, "max_bending_strain_pp_microstrain"), 158.6, 0.05);
+  // The stress judged is the largest Poffenberger-Swart stress, not the fymax one.
+  const Csv csv = read_csv(dir / "span.csv");
+  const std::vector<double> ps = csv.column("stress_ps_mpa"), fymax = csv.column("stress_fymax_mpa");
+  const double judged = span_json_number(r.out, "max_judged_stress_mpa");
+  EXPECT_EQ(judged, *std::max_element(ps.begin(), ps.end()));
+  EXPECT_LT(judged, span_json_number(r.out, "max_stress_fymax_mpa"));
+  EXPECT_EQ(span_json_number(r.out, "max_stress_fymax_mpa"), *std::max_element(fymax.begin(), fymax.end()));
+  EXPECT_NEAR(judged, 158.6e-6 / 2.0 * 68.9e3, 0.002);  // E_a eps / 2
+  const std::string fatigue = span_json_object(span_json_object(r.out, "inputs"), "fatigue");
+  EXPECT_NE(fatigue.find("\"criterion\": \"microstrain\", \"criterion_description\": \"150 microstrain peak-to-peak (the "
+                         "IEEE committee's limit)\""),
+            std::string::npos)
+      << fatigue;
+  const CliResult report = run_cli("span span.toml -o span.csv", dir);
+  EXPECT_NE(report.out.find("criterion microstrain: 150 microstrain peak-to-peak (the IEEE committee's limit), 5.17 MPa "
+                            "(150 microstrain peak-to-peak) against the largest bending strain from Yb: unsafe"),
+            std::string::npos)
+      << report.out;
+}
+
+// The wind's turbulence: the terrain's assumed intensity where wind_law_by_terrain
+// asks for it, named as such; a foti law's own intensity "given".
+TEST(SpanCli, TheJsonSaysWhereTheTurbulenceComesFrom) {
+  const auto dir = example_copy("span-terrain-json");
+  std::string text = read_text(dir / "span.toml");
+  text.replace(text.find("tension_fraction = 0.15"), 23, "tension_fraction = 0.15\nterrain = 4\nwind_law_by_terrain = true");
+  std::ofstream(dir / "terrain.toml") << text;
+  const CliResult r = run_cli("span terrain.toml --frequencies 10,20 --no-dampers --json -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string wind = span_json_object(span_json_object(r.out, "inputs"), "wind");
+  EXPECT_NE(wind.find("\"law\": \"foti\""), std::string::npos) << wind;
+  EXPECT_NEAR(span_json_number(wind, "turbulence_intensity"), 1.0 / std::log(10.0 / 0.3), 1e-12);
+  EXPECT_NE(wind.find("\"turbulence_source\": \"terrain category 4 (this program's assumed intensity)\""),
+            std::string::npos)
+      << wind;
+  text.replace(text.find("law = \"cigre\""), 13, "law = \"foti\"\nturbulence_intensity = 0.05");
+  std::ofstream(dir / "given.toml") << text;
+  const CliResult given = run_cli("span given.toml --frequencies 10,20 --no-dampers --json -o span.csv", dir);
+  ASSERT_EQ(given.exit_code, 0) << given.err;
+  const std::string own = span_json_object(span_json_object(given.out, "inputs"), "wind");
+  EXPECT_EQ(span_json_number(own, "turbulence_intensity"), 0.05);
+  EXPECT_NE(own.find("\"turbulence_source\": \"given\""), std::string::npos) << own;
+}
+
+// The example Drake span with D. Sauter's damper known by the vendor's sheet instead:
+// every stress within the 8.73 MPa limit, but the sheet's band reaches 8.98 MPa.
+TEST(SpanCli, TheVendorSheetsBandAboveTheLimitMakesTheVerdictUncertain) {
+  const auto dir = scratch_directory("span-uncertain");
+  write_drake_with_vendor_sheet(dir);
+  const CliResult r = run_cli("span span.toml --json -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"verdict\": \"uncertain\""), std::string::npos) << r.out;
+  const double limit = span_json_number(r.out, "endurance_limit_mpa");
+  const double stress = span_json_number(r.out, "max_judged_stress_mpa");
+  const double high = span_json_number(r.out, "max_judged_stress_high_mpa");
+  EXPECT_NEAR(limit, 8.73, 0.005);
+  EXPECT_LT(stress, limit);
+  EXPECT_GT(high, limit);
+  EXPECT_NEAR(high, 8.98, 0.005);
+  // The top is the largest of the CSV's band.
+  double top = 0.0;
+  for (const double v : read_csv(dir / "span.csv").column("stress_fymax_high_mpa")) top = std::max(top, v);
+  EXPECT_NEAR(high, top, 1e-9 * top);
+  const CliResult report = run_cli("span span.toml -o span.csv", dir);
+  EXPECT_NE(report.out.find("against the largest fymax stress: uncertain"), std::string::npos) << report.out;
+}
+
+// The largest stress at the first or last frequency balanced may not be the span's
+// largest: a warning says so. Undamped, the stress falls with the frequency.
+TEST(SpanCli, TheLargestStressAtAnEdgeOfTheBandWarns) {
+  const auto dir = example_copy("span-edge");
+  const CliResult r = run_cli("span span.toml --frequencies 10,20,30 --no-dampers --quiet -o span.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "warning: the largest stress lies at the low edge of the frequencies balanced (10 Hz, wind 1.68 m/s): "
+                   "a larger one may lie beyond it ([wind] speed_min and speed_max bound the band)\n");
+  const CliResult json = run_cli("span span.toml --frequencies 10,20,30 --no-dampers --json -o span.csv", dir);
+  EXPECT_NE(json.out.find("\"warnings\": [\"the largest stress lies at the low edge"), std::string::npos) << json.out;
+  // Two frequencies are no band to have an edge.
+  const CliResult two = run_cli("span span.toml --frequencies 10,20 --no-dampers --quiet -o span.csv", dir);
+  EXPECT_EQ(two.err, "");
+}
+
 /// Exit 2, one line on stderr containing `mention`, and no output file.
 void expect_bad(const std::string& arguments, const std::string& mention) {
   const auto dir = example_copy("span-bad");

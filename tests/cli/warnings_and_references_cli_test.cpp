@@ -124,6 +124,83 @@ TEST(UnusualValuesCli, GlobalIdentificationWarnsOfTheLengthDeflectionsInMmAndALa
   EXPECT_NE(in_mm.err.find("deflections in mm"), std::string::npos) << in_mm.err;
 }
 
+/// The example span in `dir` (with its damper file), its [fatigue] cycles 500: a
+/// value outside the typical 1e6 to 1e10 that no unit slip explains, warned of.
+std::string span_with_a_warning(const std::filesystem::path& dir) {
+  std::filesystem::copy_file(kDamperExample, dir / "sauter2003.toml");
+  std::string text = read_text(kSource + "/examples/aster570_400m.toml");
+  text.replace(text.find("cycles = 5e8"), 12, "cycles = 500");
+  return text;
+}
+
+/// `text` without the lines from the one starting with `from` to the one before `to`.
+std::string without_lines(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t a = text.find(from), b = text.find(to, a);
+  text.erase(a, b - a);
+  return text;
+}
+
+// Warnings are held until the computation starts: a run refused with exit 2 prints
+// its one line alone, also where an option is refused against the file read.
+TEST(UnusualValuesCli, ARefusedRunPrintsItsOneLineWithoutTheFilesWarnings) {
+  const auto dir = scratch_directory("refused-warnings");
+  const std::string text = span_with_a_warning(dir);
+  write(dir / "span.toml", text);
+  const CliResult warned = run_cli("span span.toml --frequencies 10,20 --no-dampers --quiet -o out.csv", dir);
+  EXPECT_EQ(warned.exit_code, 0) << warned.err;
+  EXPECT_EQ(warned.stderr_lines(), 1) << warned.err;
+  EXPECT_NE(warned.err.find("warning: span.toml:"), std::string::npos) << warned.err;
+  EXPECT_NE(warned.err.find("fatigue.cycles = 500: outside the typical 1e+06 to 1e+10"), std::string::npos) << warned.err;
+  std::filesystem::remove(dir / "out.csv");
+
+  // No [[damper]] to place.
+  write(dir / "bare.toml", without_lines(text, "[[damper]]", "[fatigue]"));
+  const CliResult bare = run_cli("span bare.toml --frequencies 10,20 --optimize-position 0.5:3 -o out.csv", dir);
+  EXPECT_EQ(bare.exit_code, 2);
+  EXPECT_EQ(bare.err, "stockbridge: optimize_position: the span file has no [[damper]] to place\n");
+  // The life as the objective of a span without a climate.
+  write(dir / "no_climate.toml", without_lines(text, "wind_weibull", "\n\n") + "\n");
+  const CliResult life =
+      run_cli("span no_climate.toml --frequencies 10,20 --optimize-position 0.5:3 --objective life -o out.csv", dir);
+  EXPECT_EQ(life.exit_code, 2);
+  EXPECT_EQ(life.stderr_lines(), 1) << life.err;
+  EXPECT_NE(life.err.find("objective = \"life\": the span gives no climate"), std::string::npos) << life.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));
+}
+
+TEST(UnusualValuesCli, ARefusedLineRunPrintsItsOneLineWithoutTheFilesWarnings) {
+  const auto dir = scratch_directory("refused-line-warnings");
+  write(dir / "line.toml", std::string(R"([line]
+points = 10
+search_points = 8
+[conductor]
+type = "AAAC ASTER570"
+[wind]
+law = "cigre"
+[self_damping]
+law = "noiseux-1991"
+[fatigue]
+cycles = 500
+[dampers]
+types = [ { name = "sb1", file = ")") + kDamperExample + R"(" } ]
+[[span]]
+id = "T1/T2"
+length = 300
+tension_fraction = 0.15
+[[span]]
+id = "T1:T2"
+length = 300
+tension_fraction = 0.15
+)");
+  // --details names each span's files by its id: both ids give T1_T2.
+  const CliResult r = run_cli("line line.toml -o schedule.csv --details spans", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_NE(r.err.find("--details: two spans' ids give the file name T1_T2"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv.journal"));
+}
+
 TEST(CableReferenceCli, ArmsCutOneCableFileToTheirLengthsAsIfWrittenOut) {
   const auto dir = scratch_directory("cable-reference");
   std::filesystem::create_directories(dir / "cables");

@@ -412,6 +412,87 @@ def test_span_overrides_without_editing_text(tmp_path):
         sb.span(SPAN, spec=spec, length=300.0)
 
 
+def test_span_verdict_criterion_and_inputs_are_the_programs(tmp_path):
+    """The example Drake span with the vendor's sheet for its damper (nothing solved):
+    uncertain by the Safe Border Line (every stress within 8.73 MPa, the sheet's band
+    reaching above it), unsafe by the IEEE's 150 microstrain; Python's summary, its
+    criterion and its inputs included, is the program's JSON."""
+    shutil.copy(os.path.join(SOURCE, "examples", "vendor_sheet.csv"), tmp_path / "vendor_sheet.csv")
+    text = open(os.path.join(SOURCE, "examples", "drake_300m.toml")).read()
+    text = text.replace('file = "sauter2003.toml"', 'impedance = "vendor_sheet.csv"')
+    for criterion, verdict in (("safe-border-line", "uncertain"), ("microstrain", "unsafe")):
+        (tmp_path / "span.toml").write_text(text.replace("cycles = 5e8", f'criterion = "{criterion}"'
+                                                         if criterion == "microstrain" else "cycles = 5e8"))
+        out = subprocess.run([CLI, "span", "span.toml", "--json", "--quiet", "-o", "span.csv"], cwd=tmp_path,
+                             check=True, capture_output=True, text=True).stdout
+        expected = json.loads(out)
+        del expected["seconds"]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", sb.UnusualValueWarning)
+            s = sb.span(tmp_path / "span.toml")
+        assert s["summary"] == expected
+        summary = s["summary"]
+        assert summary["criterion"] == criterion and summary["verdict"] == verdict
+        assert summary["inputs"]["fatigue"]["criterion"] == criterion
+        assert summary["inputs"]["conductor"]["source"] == "the catalogue's ACSR Drake"
+        assert summary["inputs"]["tension"]["fraction_of_rts"] == pytest.approx(0.2, rel=1e-12)
+        if verdict == "uncertain":
+            assert summary["max_judged_stress_mpa"] < summary["endurance_limit_mpa"] < summary["max_judged_stress_high_mpa"]
+            assert summary["max_judged_stress_high_mpa"] == pytest.approx(np.nanmax(s["stress_fymax_high_mpa"]), rel=1e-12)
+        else:
+            assert summary["endurance_limit_mpa"] == pytest.approx(0.5e-6 * 150 * 68.9e3, rel=1e-12)
+            assert summary["max_judged_stress_mpa"] == pytest.approx(np.nanmax(s["stress_ps_mpa"]), rel=1e-12)
+
+
+def test_line_chooses_the_cheaper_type_and_leaves_a_span_to_tb273(tmp_path):
+    """A line of two short spans and the vendor's sheet as two types (one lighter, one
+    cheaper): under fewest-then-cheapest the cheaper, its price in the bill; under
+    undamped_rule = "tb273" the span within its terrain's limit gets no damper."""
+    sheet = os.path.join(SOURCE, "examples", "vendor_sheet.csv")
+    text = f"""[line]
+points = 20
+search_points = 12
+[conductor]
+type = "AAAC ASTER570"
+[wind]
+law = "cigre"
+[self_damping]
+law = "noiseux-1991"
+[fatigue]
+cycles = 5e8
+[dampers]
+types = [ {{ name = "light-dear", impedance = "{sheet}", mass = 2.0, price = 60 }},
+          {{ name = "heavy-cheap", impedance = "{sheet}", mass = 3.0, price = 40 }} ]
+max_per_end = 1
+position_max = 4.0
+choose = "fewest-then-cheapest"
+undamped_rule = "tb273"
+[[span]]
+id = "A"
+length = 150
+catenary_parameter = 1300
+terrain = 4
+[[span]]
+id = "B"
+length = 150
+catenary_parameter = 1300
+"""
+    out = sb.line(text=text, base=tmp_path)
+    s = out["schedule"]
+    assert s["damper_type"] == ["", "heavy-cheap"]
+    assert s["no_damper_basis"] == ["tb273", ""]
+    assert s["verdict"] == ["safe", "safe"] and s["undamped_verdict"] == ["unsafe", "unsafe"]
+    assert s["dampers_per_end"].tolist() == [0, 1]
+    assert out["bill"]["damper_type"] == ["light-dear", "heavy-cheap"]
+    assert out["bill"]["price"].tolist() == [0.0, 80.0]
+    assert out["bill"]["mass_kg"].tolist() == [0.0, 6.0]
+    summary = out["summary"]
+    assert (summary["choose"], summary["undamped_rule"], summary["accept_uncertain"]) == \
+        ("fewest-then-cheapest", "tb273", False)
+    with pytest.raises(sb.InputError, match=r"dampers\.types\[1\]\.price: missing"):
+        sb.line(text=text.replace(", price = 40", ""), base=tmp_path)
+
+
 def test_span_position_search_takes_the_spacing_and_objective_as_the_program(tmp_path):
     """spacing_min and objective are --spacing-min and --objective: every damper's
     position searched (each its own), the same summary as the program's."""

@@ -36,6 +36,13 @@ struct SpanRequest {
 /// setting: "frequencies[1]", "points", "damper_model", "optimize_position", "threads").
 void validate(const SpanRequest& request);
 
+/// Checks the request against the span it is for (the span file's, before
+/// no_dampers drops its dampers), before anything is computed: InvalidParameter
+/// "optimize_position" (a position search of a span without dampers) or "objective"
+/// (the life, of a span without a climate). A front end calls it before it starts
+/// (and prints the inputs' warnings); run_span calls it too.
+void validate(const SpanRequest& request, const span::Span& span);
+
 /// The analysis's options: the span file's balance options with the request's
 /// changes (validated).
 span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const SpanRequest& request);
@@ -47,7 +54,7 @@ struct SpanResult {
   span::DamperModel damper_model = span::DamperModel::travelling;
 };
 
-/// Validates the request against the span (a position search needs dampers) and
+/// Validates the request against the span (validate(request, span)) and
 /// runs the analysis (span::analyse_span) at the request's frequencies, with the
 /// span file's balance options (`file`) and the request's changes; `progress`
 /// counts the tables' nodes. Non-convergence is in the points, never an exception.

@@ -4,6 +4,7 @@
 // relative to the span file from any working directory; unknown keys rejected.
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -504,6 +505,109 @@ TEST(SpanFile, AWindTableIsReadFromItsCsvBesideTheSpanFile) {
   EXPECT_EQ(span_error_of(replaced(kSpan, "law = \"cigre\"", "law = \"table\"\ntable = \"wind/negative.csv\"")),
             (dir / "wind/negative.csv").string() +
                 ":2: column 'y_over_d' = -0.1: expected an amplitude over the diameter from 0 to 10");
+}
+
+// [fatigue] criterion: named, or told by the one limit given; the microstrain
+// criterion's limit as a zero-to-peak stress, E_a eps / 2 (150 microstrain, the
+// IEEE's, by default); a limit in MPa the same as in Pa.
+TEST(SpanFile, TheFatigueCriterionIsNamedOrToldByItsLimit) {
+  const auto fatigue_of = [](const std::string& keys) {
+    return load_span_file(write_span(replaced(kSpan, "cycles = 5e8", keys))).span;
+  };
+  const span::Span microstrain = fatigue_of("criterion = \"microstrain\"");
+  EXPECT_EQ(microstrain.fatigue().criterion, span::FatigueCriterion::microstrain);
+  EXPECT_FALSE(microstrain.fatigue().limit_pp_microstrain.has_value());
+  EXPECT_DOUBLE_EQ(microstrain.endurance_limit(), 0.5e-6 * 150.0 * 68e9);  // 5.1 MPa
+  EXPECT_TRUE(microstrain.judges_poffenberger_swart());
+  EXPECT_EQ(microstrain.criterion_description(), "150 microstrain peak-to-peak (the IEEE committee's limit)");
+  const span::Span given = fatigue_of("criterion = \"microstrain\"\nlimit_pp_microstrain = 200");
+  EXPECT_DOUBLE_EQ(given.endurance_limit(), 0.5e-6 * 200.0 * 68e9);
+  EXPECT_EQ(given.criterion_description(), "200 microstrain peak-to-peak (given)");
+  // The criterion told by the key given.
+  const span::Span told = fatigue_of("limit_pp_microstrain = 200");
+  EXPECT_EQ(told.fatigue().criterion, span::FatigueCriterion::microstrain);
+  EXPECT_EQ(told.endurance_limit(), given.endurance_limit());
+  const span::Span in_mpa = fatigue_of("endurance_limit_mpa = 8.5");
+  const span::Span in_pa = fatigue_of("endurance_limit = 8.5e6");
+  EXPECT_EQ(in_mpa.fatigue().criterion, span::FatigueCriterion::stress);
+  EXPECT_EQ(in_pa.fatigue().criterion, span::FatigueCriterion::stress);
+  EXPECT_EQ(in_mpa.endurance_limit(), 8.5e6);
+  EXPECT_EQ(in_pa.endurance_limit(), in_mpa.endurance_limit());
+  EXPECT_FALSE(in_mpa.judges_poffenberger_swart());
+  EXPECT_EQ(in_mpa.criterion_description(), "a given endurance limit");
+  EXPECT_EQ(fatigue_of("criterion = \"stress\"\nendurance_limit_mpa = 8.5").endurance_limit(), 8.5e6);
+  const span::Span sbl = load_span_file(write_span(kSpan)).span;
+  EXPECT_EQ(sbl.fatigue().criterion, span::FatigueCriterion::safe_border_line);
+  EXPECT_EQ(sbl.criterion_description(), "the CIGRE Safe Border Line at 5e+08 cycles");
+  EXPECT_EQ(fatigue_of("criterion = \"safe-border-line\"\ncycles = 5e8").endurance_limit(), sbl.endurance_limit());
+}
+
+// A limit of another criterion, or the same limit twice, is refused at its line
+// naming the key as written.
+TEST(SpanFile, ALimitTheCriterionDoesNotUseIsRefusedNamingIt) {
+  const auto refused = [](const std::string& keys, const std::string& at, const std::string& message) {
+    expect_error_at(replaced(kSpan, "cycles = 5e8", keys), at, message);
+  };
+  refused("endurance_limit = 8.5e6\nendurance_limit_mpa = 8.5", "endurance_limit_mpa",
+          "fatigue.endurance_limit_mpa: given beside endurance_limit (Pa): expected one of the two");
+  refused("criterion = \"microstrain\"\ncycles = 5e8", "cycles",
+          "fatigue.cycles: given beside criterion = \"microstrain\", which does not use it");
+  refused("criterion = \"microstrain\"\nendurance_limit = 8.5e6", "endurance_limit",
+          "fatigue.endurance_limit: given beside criterion = \"microstrain\", which does not use it");
+  refused("criterion = \"stress\"\nendurance_limit_mpa = 8.5\nlimit_pp_microstrain = 150", "limit_pp_microstrain",
+          "fatigue.limit_pp_microstrain: given beside criterion = \"stress\", which does not use it");
+  refused("criterion = \"safe-border-line\"\ncycles = 5e8\nlimit_pp_microstrain = 150", "limit_pp_microstrain",
+          "fatigue.limit_pp_microstrain: given beside criterion = \"safe-border-line\", which does not use it");
+  // A stress limit told by its key leaves the cycles beside it unused.
+  refused("cycles = 5e8\nendurance_limit_mpa = 8.5", "cycles",
+          "fatigue.cycles: given beside criterion = \"stress\", which does not use it");
+  refused("criterion = \"stress\"", "[fatigue]",
+          "fatigue.endurance_limit: missing: criterion \"stress\" takes endurance_limit_mpa (or endurance_limit in Pa)");
+  refused("criterion = \"ieee\"", "criterion",
+          "fatigue.criterion = 'ieee': expected safe-border-line, microstrain or stress");
+  refused("criterion = \"microstrain\"\nlimit_pp_microstrain = -150", "limit_pp_microstrain",
+          "fatigue.limit_pp_microstrain = -150");
+  EXPECT_NE(span_error_of(replaced(kSpan, "cycles = 5e8\n", "")).find(
+                "missing key 'cycles' in [fatigue]: expected cycles (the Safe Border Line at that many cycles), "
+                "endurance_limit_mpa (a given endurance limit), limit_pp_microstrain, or criterion ="),
+            std::string::npos)
+      << span_error_of(replaced(kSpan, "cycles = 5e8\n", ""));
+}
+
+// A limit of the stress criterion given in MPa beside the microstrain criterion is
+// named as written (endurance_limit_mpa), not as the model holds it.
+TEST(SpanFile, ALimitInMpaTheCriterionDoesNotUseIsNamedAsWritten) {
+  expect_error_at(replaced(kSpan, "cycles = 5e8", "criterion = \"microstrain\"\nendurance_limit_mpa = 8.5"),
+                  "endurance_limit_mpa",
+                  "fatigue.endurance_limit_mpa: given beside criterion = \"microstrain\", which does not use it");
+}
+
+// [span] wind_law_by_terrain: the cigre law becomes foti with the terrain's assumed
+// intensity; refused without a terrain; a foti law's own intensity kept.
+TEST(SpanFile, TheWindLawByTerrain) {
+  const span::Span by_terrain = load_span_file(write_span(replaced(
+      kSpan, "tension_fraction = 0.15", "tension_fraction = 0.15\nterrain = 4\nwind_law_by_terrain = true"))).span;
+  EXPECT_EQ(by_terrain.wind().law, span::WindLaw::foti);
+  EXPECT_DOUBLE_EQ(by_terrain.wind().turbulence_intensity, 1.0 / std::log(10.0 / 0.3));
+  EXPECT_EQ(by_terrain.wind().turbulence_terrain, 4);
+  // A terrain alone leaves CIGRE's laminar wind.
+  const span::Span terrain_only =
+      load_span_file(write_span(replaced(kSpan, "tension_fraction = 0.15", "tension_fraction = 0.15\nterrain = 4"))).span;
+  EXPECT_EQ(terrain_only.wind().law, span::WindLaw::cigre);
+  EXPECT_EQ(terrain_only.wind().turbulence_intensity, 0.0);
+  // foti with its own intensity keeps it; foti without one takes the terrain's.
+  const std::string foti = replaced(replaced(kSpan, "law = \"cigre\"", "law = \"foti\"\nturbulence_intensity = 0.05"),
+                                    "tension_fraction = 0.15", "tension_fraction = 0.15\nterrain = 4");
+  const span::Span own = load_span_file(write_span(foti)).span;
+  EXPECT_EQ(own.wind().turbulence_intensity, 0.05);
+  EXPECT_FALSE(own.wind().turbulence_terrain.has_value());
+  const span::Span taken =
+      load_span_file(write_span(replaced(foti, "\nturbulence_intensity = 0.05", ""))).span;
+  EXPECT_DOUBLE_EQ(taken.wind().turbulence_intensity, 1.0 / std::log(10.0 / 0.3));
+  expect_at_line("tension_fraction = 0.15", "tension_fraction = 0.15\nwind_law_by_terrain = true",
+                 "span.wind_law_by_terrain: the span gives no terrain (1 to 4) to take the wind's turbulence from");
+  expect_at_line("tension_fraction = 0.15", "tension_fraction = 0.15\nwind_law_by_terrain = 1",
+                 "span.wind_law_by_terrain: the integer 1: expected true or false");
 }
 
 TEST(SpanFile, DamperFilesAreFoundRelativeToTheSpanFileFromAnotherFolder) {

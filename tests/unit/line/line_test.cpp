@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -174,6 +175,104 @@ TEST(LineFile, MistakesAreNamedWhereTheyAre) {
   EXPECT_NE(error_of(line_text("max_per_end = 0\n", "[[span]]\nid = \"A\"\nlength = 300\ntension = 3e4\n"))
                 .find("max_per_end"),
             std::string::npos);
+}
+
+/// A row of span `id` with `warnings`.
+ScheduleRow row_warning(const std::string& id, std::vector<std::string> warnings) {
+  ScheduleRow r;
+  r.id = id;
+  r.warnings = std::move(warnings);
+  return r;
+}
+
+// Warnings that differ only in their numbers are one line: the first span's text,
+// how many spans and which; the others each on their own line, led by their span.
+TEST(GroupedWarnings, WarningsDifferingOnlyInTheirNumbersAreOneLineWithTheirSpans) {
+  const std::string raise = "the dampers raise the largest stress above the undamped span's ";
+  const std::string below = "at 3 of the frequencies a measured damper's clamp velocity lay below its sheet's lowest curve";
+  const std::vector<ScheduleRow> rows{
+      row_warning("T01", {raise + "(9.12 MPa against 8.2 MPa)", below}),
+      row_warning("T02", {raise + "(12.5 MPa against 10 MPa)"}),
+      row_warning("T03", {"a warning of its own"}),
+      row_warning("T04", {}),
+      row_warning("T05", {raise + "(7 MPa against 6.55 MPa)"}),
+  };
+  EXPECT_EQ(grouped_warnings(rows),
+            (std::vector<std::string>{
+                raise + "(9.12 MPa against 8.2 MPa) (3 spans: T01, T02, T05; the figures are T01's, each span's are in "
+                        "its row)",
+                "T01: " + below,
+                "T03: a warning of its own",
+            }));
+  EXPECT_TRUE(grouped_warnings({row_warning("T01", {}), row_warning("T02", {})}).empty());
+}
+
+// Other words are another kind, however alike: kept apart.
+TEST(GroupedWarnings, WarningsOfOtherWordsAreKeptApart) {
+  const std::vector<ScheduleRow> rows{
+      row_warning("A", {"the measured sheet of vendor is too coarse for this span: 12 %"}),
+      row_warning("B", {"the measured sheet of other is too coarse for this span: 12 %"}),
+      row_warning("C", {"the measured sheet of vendor is too coarse for this span: 15 %"}),
+  };
+  EXPECT_EQ(grouped_warnings(rows),
+            (std::vector<std::string>{
+                "the measured sheet of vendor is too coarse for this span: 12 % (2 spans: A, C; the figures are A's, "
+                "each span's are in its row)",
+                "B: the measured sheet of other is too coarse for this span: 12 %",
+            }));
+}
+
+// A number is a number however it is written: with a decimal point, a sign, or an
+// exponent as fmt writes it (1.23e+03, 4.5e-05).
+TEST(GroupedWarnings, NumbersInExponentFormAreNumbersToo) {
+  const std::vector<ScheduleRow> rows{
+      row_warning("A", {"life 1.23e+03 years at 8 Hz"}),
+      row_warning("B", {"life 950 years at 8 Hz"}),
+      row_warning("C", {"life 4.5e-05 years at 12.5 Hz"}),
+  };
+  EXPECT_EQ(grouped_warnings(rows),
+            (std::vector<std::string>{
+                "life 1.23e+03 years at 8 Hz (3 spans: A, B, C; the figures are A's, each span's are in its row)"}));
+}
+
+TEST(GroupedWarnings, AGroupOfManySpansListsTwelveAndCountsTheRest) {
+  std::vector<ScheduleRow> rows;
+  for (int i = 1; i <= 15; ++i) {
+    std::string id = "S", warning = "stress ";
+    id += std::to_string(i);
+    warning += std::to_string(i);
+    warning += " MPa";
+    rows.push_back(row_warning(id, {warning}));
+  }
+  EXPECT_EQ(grouped_warnings(rows),
+            (std::vector<std::string>{"stress 1 MPa (15 spans: S1, S2, S3, S4, S5, S6, S7, S8, S9, S10, S11, S12 and 3 "
+                                      "more; the figures are S1's, each span's are in its row)"}));
+}
+
+TEST(ScheduleRules, TheTypeChoiceAndTheUndampedRuleAreNamed) {
+  for (const TypeChoice c : {TypeChoice::fewest_then_lightest, TypeChoice::fewest_then_cheapest, TypeChoice::lowest_stress}) {
+    EXPECT_EQ(parse_type_choice(type_choice_name(c)), c);
+  }
+  EXPECT_EQ(type_choice_name(TypeChoice::fewest_then_cheapest), "fewest-then-cheapest");
+  EXPECT_EQ(parse_undamped_rule("tb273"), UndampedRule::tb273);
+  EXPECT_EQ(parse_undamped_rule("balance"), UndampedRule::balance);
+  EXPECT_EQ(undamped_rule_name(UndampedRule::tb273), "tb273");
+  EXPECT_EQ(ScheduleRules{}.choose, TypeChoice::fewest_then_lightest);
+  EXPECT_EQ(ScheduleRules{}.undamped_rule, UndampedRule::balance);
+  EXPECT_FALSE(ScheduleRules{}.accept_uncertain);
+  EXPECT_NE(error_of(line_text("choose = \"cheapest\"\n", "[[span]]\nid = \"A\"\nlength = 300\ntension = 3e4\n"))
+                .find("dampers.choose = 'cheapest': expected fewest-then-lightest, fewest-then-cheapest or lowest-stress"),
+            std::string::npos);
+  EXPECT_NE(error_of(line_text("undamped_rule = \"tb-273\"\n", "[[span]]\nid = \"A\"\nlength = 300\ntension = 3e4\n"))
+                .find("dampers.undamped_rule = 'tb-273': expected balance or tb273"),
+            std::string::npos);
+  const io::LineFile f = io::load_line_text(
+      line_text("choose = \"lowest-stress\"\naccept_uncertain = true\nundamped_rule = \"tb273\"\n",
+                "[[span]]\nid = \"A\"\nlength = 300\ntension = 3e4\n"),
+      "line(text=...)");
+  EXPECT_EQ(f.line.rules().choose, TypeChoice::lowest_stress);
+  EXPECT_TRUE(f.line.rules().accept_uncertain);
+  EXPECT_EQ(f.line.rules().undamped_rule, UndampedRule::tb273);
 }
 
 }  // namespace

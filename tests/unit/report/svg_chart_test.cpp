@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,19 @@ TEST(ChartTicks, LogTicksAreDecadesWithTwoAndFiveBetweenWhenTheRangeIsShort) {
   const std::vector<double> t = ticks(6.0, 41.0, true);
   EXPECT_GE(t.size(), 3u);
   EXPECT_TRUE(std::all_of(t.begin(), t.end(), [](double v) { return v >= 6.0 && v <= 41.0; }));
+}
+
+// A band of the aeolian frequencies (6.5 to 46 Hz, less than a decade) still gets
+// four labels or more: 1, 2 and 5 give two (10, 20), 1, 2, 3 and 5 three, so the
+// finer set labels it.
+TEST(ChartTicks, ANarrowLogRangeGetsAtLeastFourTicks) {
+  EXPECT_EQ(ticks(6.5, 46.0, true), (std::vector<double>{8, 10, 15, 20, 30, 40}));
+  EXPECT_EQ(ticks(12.0, 80.0, true), (std::vector<double>{15, 20, 30, 40, 50, 60, 80}));
+  // Where 1, 2 and 5 give four already, they are kept; decades where they suffice.
+  EXPECT_EQ(ticks(5.0, 100.0, true), (std::vector<double>{5, 10, 20, 50, 100}));
+  EXPECT_EQ(ticks(2.0, 60.0, true), (std::vector<double>{2, 5, 10, 20, 50}));
+  EXPECT_EQ(ticks(1e-4, 10.0, true), (std::vector<double>{1e-4, 1e-3, 1e-2, 1e-1, 1, 10}));
+  EXPECT_EQ(ticks(1.0, 1e10, true), (std::vector<double>{1, 100, 1e4, 1e6, 1e8, 1e10}));  // every other decade
 }
 
 Chart two_curves() {
@@ -108,6 +122,71 @@ TEST(Chart, AChartWithNothingToShowSaysSoAndMismatchedSeriesAreRefused) {
   chart.series.push_back({"", {1, 2}, {1, 2}});
   EXPECT_EQ(svg(chart).find("no point to show"), std::string::npos);
   chart.series = {{"", {1, 2}, {1}}};
+  EXPECT_THROW(svg(chart), InvalidParameter);
+}
+
+/// The points="..." lists of the chart's elements `tag` ("polygon", "polyline"), in order.
+std::vector<std::string> points_of(const std::string& svg_text, const std::string& tag) {
+  std::vector<std::string> lists;
+  const std::regex element("<" + tag + " [^>]*points=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(svg_text.begin(), svg_text.end(), element); it != std::sregex_iterator(); ++it) {
+    lists.push_back((*it)[1]);
+  }
+  return lists;
+}
+
+/// The "x,y" pairs of a points list.
+std::vector<std::string> pairs_of(const std::string& list) {
+  std::vector<std::string> pairs;
+  std::istringstream in(list);
+  for (std::string pair; in >> pair;) pairs.push_back(pair);
+  return pairs;
+}
+
+// A band is a filled polygon under the curves: along its high end, back along its low
+// end, at the pixels the same values take as curves; broken where an end is missing.
+TEST(Chart, ABandIsAPolygonAlongItsHighEndAndBackAlongItsLowEnd) {
+  Chart chart("t", Axis("frequency (Hz)", true), Axis("stress (MPa)"));
+  const std::vector<double> x{5, 10, 20, 30, 40};
+  const std::vector<double> low{1, 2, 3, 2, 1}, high{2, 4, 6, 4, 2};
+  chart.bands.push_back({"the sheet's band", x, low, high, 0});
+  chart.series.push_back({"high", x, high, LineStyle::solid, 1});
+  chart.series.push_back({"low", x, low, LineStyle::solid, 2});
+  const std::string s = svg(chart);
+  const std::vector<std::string> polygons = points_of(s, "polygon"), curves = points_of(s, "polyline");
+  ASSERT_EQ(polygons.size(), 1u) << s;
+  ASSERT_EQ(curves.size(), 2u) << s;
+  std::vector<std::string> expected = pairs_of(curves[0]);
+  std::vector<std::string> low_pairs = pairs_of(curves[1]);
+  expected.insert(expected.end(), low_pairs.rbegin(), low_pairs.rend());
+  EXPECT_EQ(pairs_of(polygons[0]), expected);
+  EXPECT_LT(s.find("<polygon"), s.find("<polyline"));  // under the curves
+  EXPECT_NE(s.find(">the sheet&#39;s band<"), std::string::npos) << s;  // in the legend
+
+  // A missing low end at 20 Hz: two polygons of two points a side, 5-10 and 30-40 Hz.
+  chart.bands[0].low[2] = NAN;
+  const std::vector<std::string> broken = points_of(svg(chart), "polygon");
+  ASSERT_EQ(broken.size(), 2u);
+  const std::vector<std::string> high_pairs = pairs_of(curves[0]);
+  EXPECT_EQ(pairs_of(broken[0]), (std::vector<std::string>{high_pairs[0], high_pairs[1], low_pairs[1], low_pairs[0]}));
+  EXPECT_EQ(pairs_of(broken[1]), (std::vector<std::string>{high_pairs[3], high_pairs[4], low_pairs[4], low_pairs[3]}));
+  EXPECT_EQ(occurrences(svg(chart), "nan"), 0u);
+  // A lone point between gaps is no area.
+  chart.bands[0].high[0] = NAN, chart.bands[0].high[4] = NAN;
+  chart.bands[0].low[3] = NAN;
+  EXPECT_EQ(points_of(svg(chart), "polygon").size(), 0u);
+}
+
+TEST(Chart, ABandOfMismatchedLengthsIsRefused) {
+  Chart chart("stresses", Axis("x"), Axis("y"));
+  chart.bands.push_back({"band", {1, 2, 3}, {1, 1}, {2, 2, 2}, 0});
+  try {
+    svg(chart);
+    FAIL() << "accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(std::string(e.what()), "chart 'stresses': band 'band' has 3 x, 2 low and 3 high values");
+  }
+  chart.bands[0] = {"band", {1, 2, 3}, {1, 1, 1}, {2, 2}, 0};
   EXPECT_THROW(svg(chart), InvalidParameter);
 }
 
