@@ -25,7 +25,7 @@ Span example() { return stockbridge::io::load_span_file(std::string(STOCKBRIDGE_
 Span with_dampers_at(const std::vector<double>& positions) {
   const Span base = example();
   std::vector<SpanDamper> dampers;
-  for (const double a : positions) dampers.push_back({base.dampers().front().damper, a, true, "sauter2003", nullptr});
+  for (const double a : positions) dampers.push_back({base.dampers().front().damper, a, true, "sauter2003", nullptr, std::nullopt});
   return Span(base.conductor(), base.length(), base.tension(), base.wind(), base.self_damping(), dampers, base.fatigue());
 }
 

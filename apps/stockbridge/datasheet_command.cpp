@@ -53,7 +53,9 @@ span::Span span_with_datasheet_damper(const io::SpanFile& file, const std::strin
                                        path, name));
   }
   std::vector<span::SpanDamper> dampers;
-  for (const span::SpanDamper& d : file.span.dampers()) dampers.push_back({damper, d.position, d.both_ends, name, nullptr});
+  for (const span::SpanDamper& d : file.span.dampers()) {
+    dampers.push_back({damper, d.position, d.both_ends, name, nullptr, std::nullopt});
+  }
   return file.span.with_dampers(std::move(dampers));
 }
 

@@ -385,7 +385,10 @@ ScheduleCounts schedule_counts(const std::vector<ScheduleRow>& rows) {
     c.not_converged += !converged;
     c.worse_than_undamped += converged && r.per_end > 0 && r.max_stress > r.undamped_max_stress;
     ++c.per_end[r.per_end];
-    if (converged && (!c.governing || r.stress_ratio() > c.governing->stress_ratio())) c.governing = &r;
+    // A span TB 273's rule spares dampers keeps its undamped balance's stress beside
+    // it: it is not what governs the schedule's margin.
+    const bool judged = converged && r.no_damper_basis != "tb273";
+    if (judged && (!c.governing || r.stress_ratio() > c.governing->stress_ratio())) c.governing = &r;
   }
   return c;
 }

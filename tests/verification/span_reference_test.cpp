@@ -37,7 +37,8 @@ namespace ref = stockbridge::testing::reference_span;
 Span example_with_dampers_at(const std::vector<double>& positions, const damper::Damper* damper = nullptr) {
   const Span base = io::load_span_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/aster570_400m.toml").span;
   std::vector<SpanDamper> dampers;
-  for (const double a : positions) dampers.push_back({damper ? std::optional<damper::Damper>(*damper) : base.dampers().front().damper, a, true, "d", nullptr});
+  const std::optional<damper::Damper> model = damper ? std::optional<damper::Damper>(*damper) : base.dampers().front().damper;
+  for (const double a : positions) dampers.push_back({model, a, true, "d", nullptr, std::nullopt});
   return Span(base.conductor(), base.length(), base.tension(), base.wind(), base.self_damping(), dampers, base.fatigue());
 }
 

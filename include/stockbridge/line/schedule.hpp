@@ -113,7 +113,8 @@ std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<Sche
 
 /// What a schedule comes to: spans by verdict, spans not converged throughout, spans
 /// whose dampers raise the stress above the undamped one, spans by dampers per end,
-/// and the governing span (the largest stress ratio among those converged throughout).
+/// and the governing span (the largest stress ratio among those converged throughout
+/// and judged by their balance: not a span TB 273's rule spares dampers).
 struct ScheduleCounts {
   int safe = 0, unsafe = 0, unknown = 0, uncertain = 0;
   int not_converged = 0;

@@ -78,6 +78,10 @@ TEST(LineSchedule, TheTb273RuleLeavesASpanWithinItsTerrainsLimitUndamped) {
   EXPECT_EQ(b.row.no_damper_basis, "");
   EXPECT_EQ(b.row.verdict, span::Verdict::safe);
   EXPECT_LT(b.row.max_stress, b.row.endurance_limit);
+  // Span A's undamped stress, beside it, does not govern the schedule: B does.
+  const std::vector<ScheduleRow> rows{a.row, b.row};
+  ASSERT_NE(schedule_counts(rows).governing, nullptr);
+  EXPECT_EQ(schedule_counts(rows).governing->id, b.row.id);
 
   // By the default rule, its balance: span A gets the dampers B gets.
   const io::LineFile by_balance = load_sheet_line(sheet_line(kVendor, "max_per_end = 2\nposition_max = 4.0\n", kTwoShortSpans));
