@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -17,6 +18,13 @@ std::string positions(const line::ScheduleRow& r) {
   std::string out;
   for (const double x : r.positions) out += (out.empty() ? "" : "; ") + parts::number(x, 4);
   return out.empty() ? "-" : out;
+}
+
+/// The span's terrain category and whether its H/w is within CIGRE TB 273's limit for it: "4, within".
+std::string terrain_cell(const line::ScheduleRow& r) {
+  if (r.terrain <= 0) return "-";
+  if (r.terrain_within < 0) return std::to_string(r.terrain);
+  return fmt::format("{}, {}", r.terrain, r.terrain_within == 1 ? "within" : "above");
 }
 
 /// A stress of a balance that did not converge throughout is not shown.
@@ -135,24 +143,31 @@ std::string line_report(const io::LineFile& file, const std::vector<line::Schedu
                                       "not converged throughout has no damped mark.");
   page.figure(svg(dampers_chart(rows)), "The dampers each span gets at each end.");
   page.section("Schedule");
+  // A band column only where a span's dampers come from a measured sheet; terrain and TB 273's judgement share one
+  // (the page must fit an A4 print).
+  const bool any_band =
+      std::any_of(rows.begin(), rows.end(), [](const line::ScheduleRow& r) { return std::isfinite(r.max_stress_high); });
   std::vector<std::vector<std::string>> table;
   std::vector<Tone> tones;
   for (const line::ScheduleRow& r : rows) {
     const bool trusted = r.converged == r.points;
-    const std::string tb273 = r.terrain_within < 0 ? "-" : r.terrain_within == 1 ? "within" : "above";
-    table.push_back({r.id, parts::number(r.length), parts::number(100.0 * r.tension_fraction, 3), parts::number(r.catenary_parameter),
-                     r.terrain > 0 ? std::to_string(r.terrain) : "-", tb273,
-                     arrangement(r), positions(r), parts::number(r.undamped_max_stress / 1e6, 3),
-                     r.per_end > 0 ? stress_cell(r.max_stress, trusted) : "-",
-                     std::isfinite(r.max_stress_high) && trusted ? parts::number(r.max_stress_high / 1e6, 3) : "-",
-                     trusted ? parts::number(100.0 * (1.0 - r.stress_ratio()), 3) : "-",
-                     std::isnan(r.life_years) ? "-" : std::isinf(r.life_years) ? "unlimited" : parts::number(r.life_years, 3),
-                     std::string(span::verdict_name(r.verdict))});
+    std::vector<std::string> cells{r.id, parts::number(r.length), parts::number(100.0 * r.tension_fraction, 3),
+                                   parts::number(r.catenary_parameter), terrain_cell(r), arrangement(r), positions(r),
+                                   parts::number(r.undamped_max_stress / 1e6, 3),
+                                   r.per_end > 0 ? stress_cell(r.max_stress, trusted) : "-"};
+    if (any_band)
+      cells.push_back(std::isfinite(r.max_stress_high) && trusted ? parts::number(r.max_stress_high / 1e6, 3) : "-");
+    cells.push_back(trusted ? parts::number(100.0 * (1.0 - r.stress_ratio()), 3) : "-");
+    cells.push_back(std::isnan(r.life_years) ? "-" : std::isinf(r.life_years) ? "unlimited" : parts::number(r.life_years, 3));
+    cells.emplace_back(span::verdict_name(r.verdict));
+    table.push_back(std::move(cells));
     tones.push_back(parts::verdict_tone(r.verdict));
   }
-  page.table({"span", "length (m)", "tension (% RTS)", "H/w (m)", "terrain", "TB 273", "dampers per end", "positions (m)",
-              "undamped max (MPa)", "max (MPa)", "band top (MPa)", "margin (%)", "life (years)", "verdict"},
-             table, tones);
+  std::vector<std::string> header{"span", "length (m)", "tension (% RTS)", "H/w (m)", "terrain (TB 273)", "dampers per end",
+                                  "positions (m)", "undamped max (MPa)", "max (MPa)"};
+  if (any_band) header.emplace_back("band top (MPa)");
+  for (const char* name : {"margin (%)", "life (years)", "verdict"}) header.emplace_back(name);
+  page.table(header, table, tones);
   page.section("Bill of materials");
   std::vector<std::vector<std::string>> bill_rows;
   for (const line::BillLine& b : bill) {

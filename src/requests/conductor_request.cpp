@@ -18,13 +18,8 @@ std::string toml_line(const std::string& assignment, const std::string& comment)
 
 }  // namespace
 
-io::JsonObject conductor_summary(const span::StrandedConductor& conductor) {
-  const span::Conductor c = span::conductor_of(conductor);
-  return io::JsonObject()
-      .add("type", conductor.type)
-      .add("stranding", span::stranding_label(conductor))
-      .add("source", conductor.source)
-      .add("mass_per_length_kg_m", c.mass_per_length)
+void add_conductor_figures(io::JsonObject& json, const span::Conductor& c) {
+  json.add("mass_per_length_kg_m", c.mass_per_length)
       .add("diameter_m", c.diameter)
       .add("rated_tensile_strength_n", c.rated_tensile_strength)
       .add("ei_min_n_m2", c.ei_min)
@@ -32,6 +27,13 @@ io::JsonObject conductor_summary(const span::StrandedConductor& conductor) {
       .add("outer_wire_diameter_m", c.outer_wire_diameter)
       .add("outer_wire_modulus_pa", c.outer_wire_modulus)
       .add("aluminium_layers", c.aluminium_layers);
+}
+
+io::JsonObject conductor_summary(const span::StrandedConductor& conductor) {
+  io::JsonObject json;
+  json.add("type", conductor.type).add("stranding", span::stranding_label(conductor)).add("source", conductor.source);
+  add_conductor_figures(json, span::conductor_of(conductor));
+  return json;
 }
 
 io::JsonObject conductors_summary(const std::vector<span::StrandedConductor>& conductors) {

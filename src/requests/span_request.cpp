@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/requests/conductor_request.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 
 namespace stockbridge::requests {
@@ -350,17 +351,8 @@ void add_field_figures(io::JsonObject& json, const span::SpanAnalysis& a) {
 io::JsonObject span_inputs(const span::Span& span) {
   const span::Conductor& c = span.conductor();
   io::JsonObject conductor;
-  conductor.add("name", c.name)
-      .add("source", c.source)
-      .add("stranding", c.stranding)
-      .add("mass_per_length_kg_m", c.mass_per_length)
-      .add("diameter_m", c.diameter)
-      .add("rated_tensile_strength_n", c.rated_tensile_strength)
-      .add("ei_min_n_m2", c.ei_min)
-      .add("ei_max_n_m2", c.ei_max)
-      .add("outer_wire_diameter_m", c.outer_wire_diameter)
-      .add("outer_wire_modulus_pa", c.outer_wire_modulus)
-      .add("aluminium_layers", c.aluminium_layers);
+  conductor.add("name", c.name).add("source", c.source).add("stranding", c.stranding);
+  add_conductor_figures(conductor, c);
   const span::TensionFigures t = span::tension_figures(span);
   const span::WindModel& w = span.wind();
   io::JsonObject wind;

@@ -15,6 +15,9 @@ namespace stockbridge::requests {
 /// "ei_min_n_m2", "ei_max_n_m2", "outer_wire_diameter_m", "outer_wire_modulus_pa",
 /// "aluminium_layers"} (ei_min and the rest derived from the stranding).
 io::JsonObject conductor_summary(const span::StrandedConductor& conductor);
+/// The [conductor] table's values with units, as conductor_summary names them (the
+/// span JSON's inputs restate the conductor as used with them).
+void add_conductor_figures(io::JsonObject& json, const span::Conductor& conductor);
 
 /// {"conductors": [conductor_summary of each]}.
 io::JsonObject conductors_summary(const std::vector<span::StrandedConductor>& conductors);
