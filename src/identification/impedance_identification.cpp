@@ -149,7 +149,10 @@ std::vector<DamperNumber> fixed_numbers(const damper::DamperDescription& start, 
   std::vector<DamperNumber> out;
   for (std::size_t k = 0; k < start.arms.size(); ++k) {
     const damper::ArmDescription& a = start.arms[k];
-    for (const auto& [field, unit] : kFields) {
+    for (const auto& entry : kFields) {
+      // Not a structured binding: clang before 16 cannot capture one in the lambda.
+      const char* const field = entry.first;
+      const char* const unit = entry.second;
       auto same = [&](const DamperNumber& n) { return n.arm == k && n.field == field; };
       if (std::any_of(free.begin(), free.end(), same)) continue;
       DamperNumber n;
