@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One libFuzzer target as a test: first every past finding (regressions/<name>/,
 # each must now pass), then a fixed-seed run of SECONDS from the checked-in seeds
-# (seeds/<name>/), with toml.dict for the file readers and csv.dict for the CSV reader.
+# (seeds/<name>/), with toml.dict for the file readers and csv.dict for the CSV readers.
 # New corpus entries and any crashing input go to the build directory
 # (fuzz-work/<name>/), never to the source tree. Any crash, leak, timeout,
 # out-of-memory or sanitizer report fails the test and names the saved input.
@@ -18,7 +18,7 @@ mkdir -p "$work/corpus" "$work/artifacts"
 options=(-seed=1 -timeout=20 -rss_limit_mb=2048 -max_len=4096 "-artifact_prefix=$work/artifacts/")
 case "$name" in
   *_file) options+=("-dict=$here/toml.dict") ;;
-  csv_reader|measured_impedance) options+=("-dict=$here/csv.dict") ;;
+  csv_reader|measured_impedance|spans_csv) options+=("-dict=$here/csv.dict") ;;
 esac
 
 if compgen -G "$here/regressions/$name/*" > /dev/null; then

@@ -74,6 +74,16 @@ std::string printable(std::string_view text, std::size_t max_bytes) {
   return out;
 }
 
+std::size_t first_non_utf8(std::string_view text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (static_cast<unsigned char>(text[i]) < 0x80) continue;
+    const std::size_t length = utf8_length(text, i);
+    if (length == 0) return i;
+    i += length - 1;
+  }
+  return std::string_view::npos;
+}
+
 void throw_invalid(std::string_view name, double value, std::string_view expected) {
   throw InvalidParameter(std::string(name), fmt::format(" = {}: expected {}", format_value(value), expected));
 }

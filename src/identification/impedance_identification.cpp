@@ -149,7 +149,10 @@ std::vector<DamperNumber> fixed_numbers(const damper::DamperDescription& start, 
   std::vector<DamperNumber> out;
   for (std::size_t k = 0; k < start.arms.size(); ++k) {
     const damper::ArmDescription& a = start.arms[k];
-    for (const auto& [field, unit] : kFields) {
+    for (const auto& entry : kFields) {
+      // Not a structured binding: clang before 16 cannot capture one in the lambda.
+      const char* const field = entry.first;
+      const char* const unit = entry.second;
       auto same = [&](const DamperNumber& n) { return n.arm == k && n.field == field; };
       if (std::any_of(free.begin(), free.end(), same)) continue;
       DamperNumber n;
@@ -897,11 +900,18 @@ void ImpedanceMeasurement::validate() const {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const MeasuredImpedance& p = points[i];
     const std::string at = fmt::format("point {}: ", i + 1);
-    require_positive(at + "frequency_hz", p.excitation.frequency_hz, "Hz");
+    require_plausible(at + "frequency_hz", p.excitation.frequency_hz, "Hz");
     require_positive(at + "displacement_m", p.excitation.displacement_amplitude, "m");
     if (!std::isfinite(p.impedance.real()) || !std::isfinite(p.impedance.imag()) || p.impedance == 0.0) {
       throw InvalidParameter(at + "Z", fmt::format(" = {} + {} i N s/m: expected finite and nonzero",
                                                    format_value(p.impedance.real()), format_value(p.impedance.imag())));
+    }
+    // The misfit divides by |Z|: a magnitude no damper has (a unit mistake) would
+    // overflow it (|Z| = 1e-310 made every residual infinite).
+    if (const double magnitude = std::abs(p.impedance); magnitude < smallest_magnitude || magnitude > largest_magnitude) {
+      throw InvalidParameter(at + "|Z|", fmt::format(" = {} N s/m: expected a value from {:g} to {:g}; one outside is a "
+                                                     "unit mistake",
+                                                     format_value(magnitude), smallest_magnitude, largest_magnitude));
     }
   }
 }
@@ -981,13 +991,15 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
   ImpedanceProblem problem(variables, measurement, converged);
 
   // Each start explored briefly on coarse cables, the best polished to convergence.
+  // The first start's run is kept whatever its misfit, so that a misfit that is not
+  // finite at every start (no run better than another) still polishes a start rather
+  // than an empty point.
   least_squares::Run best;
-  best.sum_of_squares = kInfinity;
   int starts = 0;
   for (const Eigen::VectorXd& x : variables.starts()) {
     least_squares::Run run = least_squares::levenberg_marquardt(coarse, x, std::min(kExploreJacobians, options.max_jacobians));
     ++starts;
-    if (run.sum_of_squares < best.sum_of_squares) best = std::move(run);
+    if (starts == 1 || run.sum_of_squares < best.sum_of_squares) best = std::move(run);
     if (std::sqrt(best.sum_of_squares / measurement.points.size()) < kReproducedError) break;
   }
   best = least_squares::levenberg_marquardt(problem, best.x, options.max_jacobians);

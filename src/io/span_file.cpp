@@ -98,6 +98,18 @@ span::Conductor read_conductor(const TomlTable& table, const std::filesystem::pa
   }
   span::Conductor c;
   if (!type && !file) {
+    // Without type or file every key is given: a key missing names the two
+    // alternatives too (a deleted type line leaves a table of overrides).
+    constexpr std::string_view kRequired[] = {"mass_per_length", "diameter", "rated_tensile_strength", "ei_min",
+                                              "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers"};
+    for (const std::string_view key : kRequired) {
+      if (table.present(key)) continue;
+      throw InputError(fmt::format("{}missing key '{}' in [{}]: expected type = a conductor of the catalogue (e.g. "
+                                   "\"ACSR Drake\"), file = a conductor file, or every one of mass_per_length, diameter, "
+                                   "rated_tensile_strength, ei_min, outer_wire_diameter, outer_wire_modulus and "
+                                   "aluminium_layers",
+                                   table.location(key), key, table.key_path()));
+    }
     c.name = table.optional_string("name").value_or("");
     c.mass_per_length = table.number("mass_per_length");
     c.diameter = table.number("diameter");

@@ -1,10 +1,36 @@
 #include "toml_reader.hpp"
 
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::io {
+
+namespace {
+
+/// A syntax error's description; where the text is not UTF-8, the line of its first
+/// such byte as a message quotes it (printable: that byte as \xNN), which the
+/// parser's description does not show.
+std::string toml_syntax_error(const toml::parse_error& e, std::string_view text) {
+  const std::string what = printable(e.description(), 200);
+  const std::size_t bad = first_non_utf8(text);
+  if (what.find("utf-8") == std::string::npos || bad == std::string_view::npos) return what;
+  const std::size_t newline = text.rfind('\n', bad);
+  const std::size_t start = newline == std::string_view::npos ? 0 : newline + 1;
+  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + start, '\n'));
+  // A long line from a little before the byte, at a character's start.
+  std::size_t from = bad - start > 40 ? bad - 20 : start;
+  while (from > start && (static_cast<unsigned char>(text[from]) & 0xC0) == 0x80) --from;
+  const std::string_view rest = text.substr(from);
+  return fmt::format("{}: line {} reads '{}{}'", what, line, from > start ? "..." : "",
+                     printable(rest.substr(0, rest.find('\n'))));
+}
+
+}  // namespace
 
 toml::table parse_toml_file(const std::filesystem::path& path) {
   std::error_code ec;
@@ -18,8 +44,10 @@ toml::table parse_toml_file(const std::filesystem::path& path) {
     return toml::parse_file(path.string());
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
-    const std::string what = printable(e.description(), 200);
-    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", path.string(), where.line, where.column, what));
+    std::ifstream in(path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    throw InputError(
+        fmt::format("{}:{}:{}: TOML syntax error: {}", path.string(), where.line, where.column, toml_syntax_error(e, text)));
   }
 }
 
@@ -27,7 +55,7 @@ toml::table parse_toml_text(std::string_view text, std::string_view source) {
   try {
     return toml::parse(text, source);
   } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}: TOML syntax error: {}", source, printable(e.description(), 200)));
+    throw InputError(fmt::format("{}: TOML syntax error: {}", source, toml_syntax_error(e, text)));
   }
 }
 

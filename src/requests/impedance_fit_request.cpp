@@ -111,8 +111,15 @@ identification::ImpedanceMeasurement measurement_from_arrays(const std::vector<d
   identification::ImpedanceMeasurement m;
   m.held = velocity ? damper::HeldAmplitude::velocity : damper::HeldAmplitude::displacement;
   for (std::size_t i = 0; i < frequency.size(); ++i) {
-    require_positive(fmt::format("frequency[{}]", i), frequency[i], "Hz");
-    require_positive(fmt::format("{}[{}]", velocity ? "velocity" : "displacement", i), amplitude[i], velocity ? "m/s" : "m");
+    require_plausible(fmt::format("frequency[{}]", i), frequency[i], "Hz");
+    require_plausible(fmt::format("{}[{}]", velocity ? "velocity" : "displacement", i), amplitude[i], velocity ? "m/s" : "m");
+    if (const double magnitude = std::abs(z[i]); !(magnitude >= smallest_magnitude && magnitude <= largest_magnitude)) {
+      throw InvalidParameter(fmt::format("z[{}]", i),
+                             fmt::format(" = {} + {} i N s/m: expected finite, with |Z| from {:g} to {:g}; one outside "
+                                         "is a unit mistake",
+                                         format_value(z[i].real()), format_value(z[i].imag()), smallest_magnitude,
+                                         largest_magnitude));
+    }
     const damper::Excitation e =
         velocity ? damper::Excitation::from_velocity(frequency[i], amplitude[i]) : damper::Excitation{frequency[i], amplitude[i]};
     m.points.push_back({e, z[i]});

@@ -3,7 +3,9 @@
 
 Each case is a folder: `args` (the command line after `stockbridge`, where INPUT
 stands for the case's input file), `expect` (text the one error line must contain)
-and the input file. Run once; the folders are committed.
+and the input file; a case whose input comes with other files (a line file's damper
+file and spans CSV, a design file's damper and span files) has them too, and
+`named`: the file the error line must name. Run once; the folders are committed.
 """
 import os
 import shutil
@@ -36,6 +38,22 @@ DESIGN = ("damper = \"nope.toml\"\nspans = [\"span.toml\"]\n"
 IMPEDANCE_FIT_CMD = "identify impedance --damper nope.toml --input INPUT -o out.toml"
 MEASURED_Z = "frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.05,5.1,80.2\n20,0.05,12.5,150.3\n"
 LOOP_CMD = "loop --ei 2.8 --jenkin 20:0.7 --amplitude 0.05 -o out.csv"
+# Issue 49's mutations: a sheet of two curves, each value checked where it is read.
+SHEET = ("frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m\n10,0.05,5.1,80.2\n20,0.05,12.5,150.3\n30,0.05,20.1,210.7\n"
+         "10,0.2,15.2,70.4\n20,0.2,40.8,130.9\n30,0.2,60.3,190.2\n")
+SHEET_POLAR = ("frequency_hz,velocity_m_s,abs_z_n_s_m,phase_deg\n10,0.05,80.4,86.4\n20,0.05,150.8,85.2\n30,0.05,211.7,84.5\n"
+               "10,0.2,72.0,77.8\n20,0.2,137.1,72.7\n30,0.2,199.5,72.4\n")
+LINE = ("[conductor]\ntype = \"AAAC ASTER570\"\n[wind]\nlaw = \"cigre\"\n[self_damping]\nlaw = \"noiseux-1991\"\n"
+        "[fatigue]\ncycles = 5e8\n[dampers]\ntypes = [ { name = \"sb1\", file = \"damper.toml\" } ]\nposition_max = 6.0\n")
+LINE_SPANS = "[[span]]\nid = \"T01-T02\"\nlength = 300\ntension_fraction = 0.18\n[[span]]\nid = \"T02-T03\"\nlength = 350\ntension = 28000\n"
+LINE_CSV = "spans = \"spans.csv\"\n" + LINE
+SPANS_CSV = "id,length_m,tension_fraction,catenary_parameter_m,terrain\nT01-T02,300,0.18,,1\nT02-T03,350,,1600,2\n"
+LINE_CMD = "line line.toml -o schedule.csv"
+SPAN_WITH_DAMPER = SPAN + "[[damper]]\nfile = \"damper.toml\"\nposition = 1.0\n"
+DESIGN_OK = ("damper = \"damper.toml\"\nspans = [\"span.toml\"]\n"
+             "[[variable]]\nname = \"arm.a.mass\"\nmin = 0.5\nmax = 1.5\n"
+             "[[tie]]\nname = \"arm.a.inertia\"\nequals = \"arm.a.mass\"\n")
+DESIGN_FILES = {"damper.toml": DAMPER, "span.toml": SPAN_WITH_DAMPER}
 
 cases = {
     # cable files
@@ -203,6 +221,55 @@ cases = {
     "cycle_wrong_experiment_columns": ("identify global --experiment b --length 0.3 --input INPUT -o out.toml", "cycle.csv", CYCLE_A, "'phi_rad'"),
     "cycle_non_numeric": (GLOBAL_CMD, "cycle.csv", CYCLE_A.replace("5.000000\n", "5.0abc\n", 1), "'5.0abc'"),
     "cycle_too_short": (GLOBAL_CMD, "cycle.csv", "x_m,force_n\n0,0\n0.01,1\n", "data rows"),
+    # Issue 49, hostile input end to end: each mutation of a valid file named by its
+    # file, line (row) and column (key), refused before anything is computed.
+    "measured_z_velocity_one_row_curve": (IMPEDANCE_FIT_CMD, "z.csv", SHEET.replace("20,0.2,", "20, 1 ,"),
+                                          "z.csv:6: column 'velocity_m_s' = 1: the only row at this amplitude"),
+    "measured_z_decimal_comma": (IMPEDANCE_FIT_CMD, "z.csv", SHEET.replace("12.5", "12,5"), "z.csv:3: 5 cells: expected 4, as the header has (a decimal comma?"),
+    "measured_z_frequency_1e-300": (IMPEDANCE_FIT_CMD, "z.csv", SHEET.replace("\n20,0.05", "\n1e-300,0.05"),
+                                    "z.csv:3: column 'frequency_hz' = 1e-300: expected a value from 1e-12 to 1e+12"),
+    "measured_z_abs_1e-310": (IMPEDANCE_FIT_CMD, "z.csv", SHEET_POLAR.replace("150.8", "1e-310"),
+                              "z.csv:3: column 'abs_z_n_s_m' = 1e-310: expected a value from 1e-12 to 1e+12"),
+    "measured_z_columns_swapped": (IMPEDANCE_FIT_CMD, "z.csv", SHEET.replace("frequency_hz,velocity_m_s", "velocity_m_s,frequency_hz"),
+                                   "z.csv:2: column 'frequency_hz' = 0.05: outside the typical 0.5 to 500 Hz"),
+    "measured_z_phase_1e300": (IMPEDANCE_FIT_CMD, "z.csv", SHEET_POLAR.replace("85.2", "1e300"),
+                               "z.csv:3: column 'phase_deg' = 1e+300: expected a phase in degrees"),
+    "span_sheet_frequency_bad": ("span span.toml --frequencies 10,20 -o out.csv", "sheet.csv", SHEET.replace("\n20,0.2,", "\n-20,0.2,"),
+                                 "sheet.csv:6: column 'frequency_hz' = -20: expected > 0",
+                                 {"span.toml": SPAN + "[[damper]]\nimpedance = \"sheet.csv\"\nposition = 1.0\n"}),
+    "span_tension_kn": (SPAN_CMD, "span.toml", SPAN.replace("tension_fraction = 0.15", "tension = 30.3"), "span.tension = 30.3: outside the typical 1000 to 500000 N of the conductor tension (in kN?"),
+    "span_rts_kn": (SPAN_CMD, "span.toml", SPAN.replace("rated_tensile_strength = 185300", "rated_tensile_strength = 140.1"),
+                    "conductor.rated_tensile_strength = 140.1: outside the typical 5000 to 1.5e+06 N of the conductor rated "
+                    "tensile strength (in kN?"),
+    "span_damper_position_mm": (SPAN_CMD, "span.toml", SPAN_WITH_DAMPER.replace("position = 1.0", "position = 1200"),
+                                "damper[0].position = 1200: outside the typical 0.1 to 10 m of the damper position from the span "
+                                "clamp (in mm?", {"damper.toml": DAMPER}),
+    "span_conductor_type_deleted": (SPAN_CMD, "span.toml", SPAN.split("[span]")[0].split("\n")[0] + "\n[span]" + SPAN.split("[span]")[1],
+                                    "in [conductor]: expected type = a conductor of the catalogue"),
+    "line_spans_csv_row_short": (LINE_CMD, "spans.csv", SPANS_CSV.replace("T02-T03,350,,1600,2", "T02-T03,350,,1600"),
+                                 "spans.csv:3: 4 cells: expected 5, as the header has", {"line.toml": LINE_CSV, "damper.toml": DAMPER}),
+    "line_spans_csv_tension_kn": (LINE_CMD, "spans.csv", "id,length_m,tension_n\nT01-T02,300,30.3\n", "spans.csv:2: span \"T01-T02\": tension_n = 30.3: outside the typical 1000 to 500000 N",
+                                  {"line.toml": LINE_CSV, "damper.toml": DAMPER}),
+    "line_position_max_2147483648": (LINE_CMD, "line.toml", LINE.replace("position_max = 6.0", "position_max = 2147483648") + LINE_SPANS,
+                                     "dampers.position_max = 2147483648: expected less than half of every span", {"damper.toml": DAMPER}),
+    "line_type_name_empty": (LINE_CMD, "line.toml", LINE.replace('name = "sb1"', 'name = ""') + LINE_SPANS, "dampers.types[0].name: empty",
+                             {"damper.toml": DAMPER}),
+    "line_span_id_empty": (LINE_CMD, "line.toml", LINE + LINE_SPANS.replace('id = "T02-T03"', 'id = ""'), "span[1].id: empty",
+                           {"damper.toml": DAMPER}),
+    "line_spans_empty_array": (LINE_CMD, "line.toml", "spans = []\n" + LINE, "expected the path of a spans CSV file",
+                               {"damper.toml": DAMPER}),
+    "line_diameter_mm": (LINE_CMD, "line.toml", LINE.replace('type = "AAAC ASTER570"', 'type = "AAAC ASTER570"\ndiameter = 28.14')
+                         + LINE_SPANS, "conductor.diameter = 28.14: outside the typical 0.004 to 0.08 m of the conductor diameter (in mm?", {"damper.toml": DAMPER}),
+    "design_tie_repeated": (DESIGN_CMD, "design.toml", DESIGN_OK + "[[tie]]\nname = \"arm.a.inertia\"\nequals = \"arm.a.mass\"\n",
+                            "already tie[0]", DESIGN_FILES),
+    "design_variable_max_inf": (DESIGN_CMD, "design.toml", DESIGN_OK.replace("max = 1.5", "max = inf"), "variable[0].max = inf: expected a finite bound",
+                                DESIGN_FILES),
+    "design_objective_10kb": (DESIGN_CMD, "design.toml", DESIGN_OK.replace("spans =", "objective = \"" + "x" * 10000 + "\"\nspans ="),
+                              "...': expected max_stress or life", DESIGN_FILES),
+    "design_variable_name_bad_utf8": (DESIGN_CMD, "design.toml", DESIGN_OK.replace("arm.a.mass\"\nmin", "arm.a.\udcffmass\"\nmin"),
+                                      "line 4 reads 'name = \"arm.a.\\xffmass\"'", DESIGN_FILES),
+    "option_line_output_missing_folder": ("line line.toml -o missing/schedule.csv", "line.toml", LINE + LINE_SPANS,
+                                          "-o missing/schedule.csv: the folder missing does not exist", {"damper.toml": DAMPER}),
     # options
     "option_loop_ei_negative": ("loop --ei -2.8 --amplitude 0.05 -o out.csv", None, None, "ei = -2.8"),
     "option_loop_jenkin_format": ("loop --ei 2.8 --jenkin 20/0.7 --amplitude 0.05 -o out.csv", None, None, "c:h"),
@@ -269,13 +336,21 @@ accepted = {
 
 for folder in ("cases", "accepted"):
     shutil.rmtree(os.path.join(HERE, folder), ignore_errors=True)
-for name, (args, file_name, contents, expect) in cases.items():
+for name, (args, file_name, contents, expect, *others) in cases.items():
     d = os.path.join(HERE, "cases", name)
     os.makedirs(d)
     if file_name:
         args = args.replace("INPUT", file_name)
-        with open(os.path.join(d, file_name), "w", newline="") as f:
+        with open(os.path.join(d, file_name), "w", newline="", encoding="utf-8", errors="surrogateescape") as f:
             f.write(contents)
+    # Files beside the input (a line's damper file, a design's span file): the one
+    # error line must name the input (`named`), not them.
+    for other, text in (others[0] if others else {}).items():
+        with open(os.path.join(d, other), "w", newline="") as f:
+            f.write(text)
+    if others and file_name:
+        with open(os.path.join(d, "named"), "w") as f:
+            f.write(file_name + "\n")
     with open(os.path.join(d, "args"), "w") as f:
         f.write(args + "\n")
     with open(os.path.join(d, "expect"), "w") as f:

@@ -85,6 +85,9 @@ std::string format_value(double value);
 /// line: control characters as escapes (\n, \r, \t, \x1b, ...), and at most
 /// `max_bytes` bytes kept (then "...", never cutting a UTF-8 character).
 std::string printable(std::string_view text, std::size_t max_bytes = 60);
+/// The offset of the first byte of `text` that is not part of well-formed UTF-8 (a
+/// byte printable() shows as \xNN), or std::string_view::npos where all of it is.
+std::size_t first_non_utf8(std::string_view text);
 
 /// Throws InvalidParameter "<name> = <value>: expected <expected>".
 [[noreturn]] void throw_invalid(std::string_view name, double value, std::string_view expected);

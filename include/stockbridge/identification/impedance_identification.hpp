@@ -54,7 +54,9 @@ struct ImpedanceMeasurement {
   std::vector<MeasuredImpedance> points;
   /// What each curve holds constant: the points are grouped into curves by it.
   damper::HeldAmplitude held = damper::HeldAmplitude::velocity;
-  /// Throws InvalidParameter naming the point ("point 3: frequency_hz = -1: expected > 0").
+  /// Throws InvalidParameter naming the point ("point 3: frequency_hz = -1: expected > 0"):
+  /// a frequency or |Z| outside the magnitudes a description may hold (1e-12 to 1e12,
+  /// core/error.hpp), a displacement not > 0, Z not finite or zero.
   void validate() const;
 };
 

@@ -39,8 +39,9 @@ identification::ImpedanceIdentificationOptions fit_options(const ImpedanceFitReq
 
 /// A measured impedance from arrays (Python's identify_impedance; the CSV reader
 /// builds it from a file): frequencies (Hz), one amplitude per point (a velocity in
-/// m/s where `velocity`, else a displacement in m) and complex Z (N s/m);
-/// InvalidParameter naming the array and index ("frequency[2]") otherwise.
+/// m/s where `velocity`, else a displacement in m) and complex Z (N s/m), each within
+/// the magnitudes a description may hold (1e-12 to 1e12: core/error.hpp);
+/// InvalidParameter naming the array and index ("frequency[2]", "z[3]") otherwise.
 identification::ImpedanceMeasurement measurement_from_arrays(const std::vector<double>& frequency,
                                                              const std::vector<double>& amplitude, bool velocity,
                                                              const std::vector<std::complex<double>>& z);

@@ -14,6 +14,7 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/identification/impedance_identification.hpp"
+#include "stockbridge/requests/impedance_fit_request.hpp"
 #include "support/damper_fixtures.hpp"
 #include "support/test_scale.hpp"
 
@@ -220,6 +221,61 @@ TEST(ImpedanceIdentification, RefusesProfilesAndTooFewPointsNamingThem) {
   EXPECT_THROW(identify_impedance(impedance_test_damper(2.8, {{20.0, 0.7}}), one, {}), InvalidParameter);
   one.points[0].impedance = 0.0;
   EXPECT_THROW(one.validate(), InvalidParameter);
+}
+
+// Issue 49: a |Z| of 1e-310 (a unit mistake, or a cell mistyped) made every residual
+// (divided by |Z|) infinite, no start better than another, and the polish ran from an
+// empty point: identify impedance segfaulted. A measurement is now refused at the
+// point whose |Z| or frequency lies outside the magnitudes a description may hold,
+// however it was given (a sheet read under --allow-unusual, Python's arrays).
+TEST(ImpedanceIdentification, RefusesAMagnitudeNoDamperHasNamingThePointInsteadOfCrashing) {
+  ImpedanceMeasurement m;
+  for (const double v : {0.05, 0.2}) {
+    for (const double f : {10.0, 20.0, 30.0}) m.points.push_back({damper::Excitation::from_velocity(f, v), {5.0, 100.0}});
+  }
+  const DamperDescription start = impedance_test_damper(2.8, {{20.0, 0.7}});
+  const auto refusal = [&](const ImpedanceMeasurement& bad) {
+    try {
+      identify_impedance(start, bad, {});
+    } catch (const InvalidParameter& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  ImpedanceMeasurement tiny = m;
+  tiny.points[3].impedance = {1e-310, 0.0};
+  EXPECT_EQ(refusal(tiny), "point 4: |Z| = 1e-310 N s/m: expected a value from 1e-12 to 1e+12; one outside is a unit "
+                           "mistake");
+  // Python's arrays (identify_impedance(frequency=, velocity=, z=)) are refused as they are taken.
+  std::vector<double> f, v;
+  std::vector<std::complex<double>> z;
+  for (const MeasuredImpedance& p : tiny.points) {
+    f.push_back(p.excitation.frequency_hz);
+    v.push_back(p.excitation.velocity_amplitude());
+    z.push_back(p.impedance);
+  }
+  try {
+    requests::measurement_from_arrays(f, v, true, z);
+    ADD_FAILURE() << "z[3] = 1e-310 accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_NE(std::string(e.what()).find("z[3] = 1e-310 + 0 i N s/m: expected finite, with |Z| from 1e-12"),
+              std::string::npos) << e.what();
+  }
+  ImpedanceMeasurement huge = m;
+  huge.points[1].impedance = {0.0, 1e13};
+  EXPECT_NE(refusal(huge).find("point 2: |Z| = 1e+13 N s/m"), std::string::npos) << refusal(huge);
+  ImpedanceMeasurement slow = m;
+  slow.points[0].excitation = {1e-300, 1e-3};
+  EXPECT_NE(refusal(slow).find("point 1: frequency_hz = 1e-300: expected a value from 1e-12"), std::string::npos)
+      << refusal(slow);
+  // The smallest magnitude admitted fits (its residuals are large but finite).
+  ImpedanceMeasurement smallest = m;
+  smallest.points[3].impedance = {smallest_magnitude, 0.0};
+  ImpedanceIdentificationOptions bounded;
+  bounded.max_jacobians = 1;
+  const ImpedanceIdentification fit = identify_impedance(start, smallest, bounded);
+  EXPECT_TRUE(std::isfinite(fit.misfit));
+  EXPECT_EQ(fit.fitted.size(), m.points.size());
 }
 
 /// The test damper with Bouc-Wen cables (12 sections) of ei_min, ei_max, chi0.

@@ -104,6 +104,12 @@ TEST(CableFile, EachMistakeGetsOnePreciseLine) {
   EXPECT_EQ(cable_error_of("length = 0.3\n"), file + ":1: missing key 'cable' in the top level: expected a table");
   EXPECT_EQ(cable_error_of("[cable\nlength = 0.3\n"), file + ":1:7: TOML syntax error: Error while parsing table header: expected ']', saw '\\n'");
   EXPECT_EQ(cable_error_of(""), file + ":1: missing key 'cable' in the top level: expected a table");
+  // Bytes that are not UTF-8 (issue 49): the parser names a position (not always the
+  // byte's: here the end of the line before); the message quotes the byte's line.
+  EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\n\xff = 1\n"),
+            file + ":2:13: TOML syntax error: Encountered invalid utf-8 sequence: line 3 reads '\\xff = 1'");
+  const std::string long_line = cable_error_of("[cable]\nname = \"" + std::string(50, 'a') + "\xfe\"\n");
+  EXPECT_NE(long_line.find(": line 2 reads '..." + std::string(20, 'a') + "\\xfe\"'"), std::string::npos) << long_line;
   // Control characters the user's text brings in (quoted keys, strings) are escaped: one line.
   EXPECT_EQ(cable_error_of("[cable]\nlength = 0.3\nsections = 40\nei = 2.8\n\"a\\nb\" = 3\n").rfind(file + ":5: unknown key 'cable.a\\nb'", 0), 0u);
   EXPECT_EQ(cable_error_of("[cable]\nlength = \"0.3\\r\"\nsections = 40\nei = 2.8\n"),

@@ -213,6 +213,20 @@ INSTANTIATE_TEST_SUITE_P(
                       MissingKey{"position = 1.0", "damper", "position"},
                       MissingKey{"aeolian_fraction = 0.3", "fatigue", "aeolian_fraction"}));
 
+// Issue 49: a [conductor] table whose `type` line was deleted (its overrides left)
+// was refused as "missing key 'mass_per_length' ...: expected a number", which does
+// not say that a type or a file would do.
+TEST(SpanFile, AConductorWithoutTypeOrFileNamesThemAsAlternatives) {
+  const std::string conductor = kSpan.substr(0, kSpan.find("[span]"));
+  const std::string text = replaced(kSpan, conductor, "[conductor]\ndiameter = 0.02814\n\n");
+  EXPECT_EQ(span_error_of(text),
+            ":1: missing key 'mass_per_length' in [conductor]: expected type = a conductor of the catalogue (e.g. "
+            "\"ACSR Drake\"), file = a conductor file, or every one of mass_per_length, diameter, "
+            "rated_tensile_strength, ei_min, outer_wire_diameter, outer_wire_modulus and aluminium_layers");
+  EXPECT_EQ(span_error_of(replaced(kSpan, conductor, "[conductor]\ntype = \"ACSR Drake\"\ndiameter = 0.02814\n\n")),
+            "accepted");
+}
+
 TEST(SpanFile, AMissingTableIsNamed) {
   for (const std::string table : {"conductor", "span", "wind", "self_damping", "fatigue"}) {
     std::string text = replaced(kSpan, "[" + table + "]", "[" + table + "_]");
