@@ -28,7 +28,7 @@ damper::DamperDescription two_arm_damper(int sections = 40) {
 DesignSpan aster_span(const damper::DamperDescription& d, double position = 1.0) {
   span::FatigueSpec fatigue;
   fatigue.cycles = 5e8;
-  std::vector<span::SpanDamper> dampers{{damper::Damper(d), position, true, "damper", nullptr}};
+  std::vector<span::SpanDamper> dampers{{damper::Damper(d), position, true, "damper", nullptr, std::nullopt}};
   return {span::Span(span::testing::aster570(), 400.0, span::testing::aster570_tension, span::WindModel{},
                      span::SelfDampingModel{}, std::move(dampers), fatigue),
           "aster", span::BalanceOptions{}};

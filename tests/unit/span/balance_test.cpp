@@ -56,7 +56,7 @@ TEST(SpanBalance, WithoutDampersItIsTheUndampedBalanceOfTheCheckNumbers) {
 class NonlinearSpan : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    span_ = new Span(aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}}));
+    span_ = new Span(aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}}));
     // Half the frequencies of the same band under the sanitizers (STOCKBRIDGE_TEST_SCALE=short).
     frequencies_ = damper::log_spaced(6.0, 40.0, stockbridge::testing::scaled(8, 4));
     tables_ = new SpanTables(*span_, frequencies_, fast_options().table);
@@ -125,7 +125,7 @@ TEST_F(NonlinearSpan, TheFixedPointAgreesWithHarmonicBalanceSolvedDirectly) {
 // A band finer than the table's columns (every other frequency solved, the others
 // interpolated in log f): the polish still ends on the direct solution.
 TEST(SpanBalance, InterpolatedColumnsArePolishedToTheDirectSolution) {
-  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}});
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}});
   const std::vector<double> f = damper::log_spaced(6.0, 30.0, 15);
   BalanceOptions options = fast_options();
   options.table.column_ratio = 1.3;  // 15 frequencies 1.12 apart: every other one solved
@@ -144,7 +144,7 @@ Span design_candidate_span(double mass, double cable_length, double position) {
   arm.inertia *= mass / arm.mass;
   arm.mass = mass;
   arm.cable = cable::CableDescription::uniform(cable_length, 40, 2.8, {{20.0, 0.7}});
-  return aster_span({{stockbridge::testing::damper_of({arm, arm}), position, true, "candidate", nullptr}});
+  return aster_span({{stockbridge::testing::damper_of({arm, arm}), position, true, "candidate", nullptr, std::nullopt}});
 }
 
 // A candidate of examples/design_aster570.toml (heavier masses on longer cables, far
@@ -197,7 +197,7 @@ TEST(SpanBalance, TheWeakFormIsTheLimitOfTheTravellingWavesForSmallDampers) {
   double last_gap = std::numeric_limits<double>::infinity();
   for (const double scale : {0.2, 0.05, 0.0125}) {
     SCOPED_TRACE(scale);
-    const Span span = aster_span({{scaled_damper(scale), 1.0, true, "small", nullptr}});
+    const Span span = aster_span({{scaled_damper(scale), 1.0, true, "small", nullptr, std::nullopt}});
     BalanceOptions travelling = fast_options(), weak = fast_options();
     weak.damper_model = DamperModel::weak;
     const SpanTables tables(span, f, travelling.table);
@@ -227,7 +227,7 @@ TEST(SpanBalance, TheWeakFormIsTheLimitOfTheTravellingWavesForSmallDampers) {
 // dampers' clamp velocities became one system (commit 1de6bc3, the example span,
 // 8 frequencies): the same self-consistent state, to 1e-6.
 TEST(SpanBalance, OneDamperPerEndIsAsBeforeTheSystemSolve) {
-  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}});
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}});
   const std::vector<double> f = damper::log_spaced(6.0, 40.0, 8);
   const double amplitude[] = {0.021436744074653284, 0.007034530159752719, 0.002025640277516735, 0.0006025901457516682,
                               0.0006447120287117451, 0.0008462400705875818, 0.0013321856570961707, 0.0010393696066111238};
@@ -305,9 +305,9 @@ TEST(SpanBalance, TheLifeUsesThePoffenbergerSwartStress) {
 // Several [[damper]] of one file have one impedance: its table is solved once.
 TEST(SpanTables, DampersAlikeShareOneTable) {
   const std::vector<double> f{8.0, 12.0};
-  const SpanTables one(aster_span({{sauter_damper(), 1.0, true, "a", nullptr}}), f, {});
-  const SpanTables alike(aster_span({{sauter_damper(), 1.0, true, "a", nullptr}, {sauter_damper(), 2.0, true, "b", nullptr}}), f, {});
-  const SpanTables apart(aster_span({{sauter_damper(), 1.0, true, "a", nullptr}, {scaled_damper(0.5), 2.0, true, "b", nullptr}}), f, {});
+  const SpanTables one(aster_span({{sauter_damper(), 1.0, true, "a", nullptr, std::nullopt}}), f, {});
+  const SpanTables alike(aster_span({{sauter_damper(), 1.0, true, "a", nullptr, std::nullopt}, {sauter_damper(), 2.0, true, "b", nullptr, std::nullopt}}), f, {});
+  const SpanTables apart(aster_span({{sauter_damper(), 1.0, true, "a", nullptr, std::nullopt}, {scaled_damper(0.5), 2.0, true, "b", nullptr, std::nullopt}}), f, {});
   ASSERT_EQ(alike.tables().size(), 2u);
   EXPECT_EQ(alike.nodes(), one.nodes());
   EXPECT_EQ(apart.nodes(), 2 * one.nodes());
@@ -319,7 +319,7 @@ TEST(SpanTables, DampersAlikeShareOneTable) {
 }
 
 TEST(SpanBalance, ThePositionSearchFindsTheBestOfAFineScan) {
-  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}});
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}});
   const std::vector<double> f{12.0, 25.0};
   BalanceOptions options = fast_options();
   options.polish = false;  // as the search balances
@@ -345,7 +345,7 @@ TEST(SpanBalance, ThePositionSearchFindsTheBestOfAFineScan) {
 // 0.1 m grid of both positions (some 350 balances against its 100), and keeps the
 // spacing.
 TEST(SpanBalance, TwoDampersPositionsSearchedTogetherNearlyMatchAGrid) {
-  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}, {sauter_damper(), 2.0, true, "sauter", nullptr}});
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}, {sauter_damper(), 2.0, true, "sauter", nullptr, std::nullopt}});
   const std::vector<double> f = band_frequencies(span, 20);
   BalanceOptions options = fast_options();
   options.polish = false;
@@ -387,7 +387,7 @@ TEST(SpanBalance, ThePositionSearchMinimisesTheObjectiveItIsGiven) {
   fatigue.life->wind_weibull = {2.0, 4.0};
   fatigue.life->aeolian_fraction = 0.3;
   const Span span(aster570(), 400.0, aster570_tension, WindModel{}, SelfDampingModel{},
-                  {{sauter_damper(), 1.0, true, "sauter", nullptr}}, fatigue);
+                  {{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}}, fatigue);
   BalanceOptions options = fast_options();
   options.polish = false;
   const SpanTables tables(span, band_frequencies(span, 12), options.table);
@@ -407,7 +407,7 @@ TEST(SpanBalance, ThePositionSearchMinimisesTheObjectiveItIsGiven) {
 }
 
 TEST(SpanBalance, ThePositionSearchStopsWhenAsked) {
-  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr}, {sauter_damper(), 2.0, true, "sauter", nullptr}});
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}, {sauter_damper(), 2.0, true, "sauter", nullptr, std::nullopt}});
   const std::vector<double> f{12.0, 25.0};
   BalanceOptions options = fast_options();
   const SpanTables tables(span, f, options.table);
@@ -425,7 +425,7 @@ TEST(SpanBalance, ASpanIsCheckedWhereItsFileSpellsIt) {
     }
     return std::string("accepted");
   };
-  EXPECT_NE(error_of([] { aster_span({{sauter_damper(), 250.0, true, "", nullptr}}); }).find("damper[0].position = 250"),
+  EXPECT_NE(error_of([] { aster_span({{sauter_damper(), 250.0, true, "", nullptr, std::nullopt}}); }).find("damper[0].position = 250"),
             std::string::npos);
   FatigueSpec both;
   both.cycles = 5e8;
