@@ -21,6 +21,7 @@ void add_strand_command(CLI::App& app, int& exit_code);
 void add_conductors_command(CLI::App& app, int& exit_code);
 void add_modes_command(CLI::App& app, int& exit_code);
 void add_span_command(CLI::App& app, int& exit_code);
+void add_recorder_command(CLI::App& app, int& exit_code);
 void add_design_command(CLI::App& app, int& exit_code);
 void add_line_command(CLI::App& app, int& exit_code);
 void add_datasheet_command(CLI::App& app, int& exit_code);

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   cli::add_conductors_command(app, exit_code);
   cli::add_modes_command(app, exit_code);
   cli::add_span_command(app, exit_code);
+  cli::add_recorder_command(app, exit_code);
   cli::add_design_command(app, exit_code);
   cli::add_line_command(app, exit_code);
   cli::add_datasheet_command(app, exit_code);

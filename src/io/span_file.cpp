@@ -169,7 +169,7 @@ void read_span_table(const TomlTable& table, SpanReading& reading) {
 }
 
 void read_wind(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading) {
-  table.accept_only({"law", "strouhal", "speed_min", "speed_max", "turbulence_intensity", "table"});
+  table.accept_only({"law", "strouhal", "speed_min", "speed_max", "turbulence_intensity", "table", "power_scale"});
   span::WindModel& wind = reading.wind;
   const std::string law =
       table.required_string("law", "a string: cigre, foti, diana-falco, rawlins-1983, brika-laneville or table");
@@ -177,6 +177,7 @@ void read_wind(const TomlTable& table, const std::filesystem::path& base_directo
   if (const auto v = table.optional_number("strouhal")) wind.strouhal = *v;
   if (const auto v = table.optional_number("speed_min")) wind.speed_min = *v;
   if (const auto v = table.optional_number("speed_max")) wind.speed_max = *v;
+  if (const auto v = table.optional_number("power_scale")) wind.power_scale = *v;
   if (const auto v = table.optional_number("turbulence_intensity")) {
     wind.turbulence_intensity = *v;
     reading.turbulence_given = true;

@@ -237,6 +237,31 @@ std::vector<double> ticks(double lo, double hi, bool log) {
   return out;
 }
 
+/// A colour of the heat map's scale at t in [0, 1]: from pale yellow through orange
+/// and red to dark purple (readable on white, printable in grey).
+std::string heat_colour(double t) {
+  static constexpr double stops[][3] = {{255, 247, 188}, {254, 196, 79}, {236, 112, 20}, {204, 34, 41}, {90, 12, 90}};
+  t = std::clamp(t, 0.0, 1.0) * 4.0;
+  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(t), 3);
+  const double f = t - static_cast<double>(i);
+  const auto c = [&](int k) { return static_cast<int>(std::lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k]))); };
+  return fmt::format("#{:02x}{:02x}{:02x}", c(0), c(1), c(2));
+}
+
+/// The heat map's value range (log10 where log), over its shown cells.
+Range heat_range(const HeatMap& h) {
+  Range r{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (const HeatCell& c : h.cells) {
+    if (!std::isfinite(c.value) || (h.log && c.value <= 0.0)) continue;
+    const double v = h.log ? std::log10(c.value) : c.value;
+    r.lo = std::min(r.lo, v);
+    r.hi = std::max(r.hi, v);
+  }
+  if (!(r.hi >= r.lo)) return {0.0, 1.0};
+  if (r.hi == r.lo) r.hi = r.lo + 1.0;
+  return r;
+}
+
 std::string svg(const Chart& chart) {
   std::vector<double> xs, ys;
   for (const Series& s : chart.series) {
@@ -256,6 +281,12 @@ std::string svg(const Chart& chart) {
     ys.insert(ys.end(), b.high.begin(), b.high.end());
   }
   for (const ReferenceLine& r : chart.references) ys.push_back(r.y);
+  if (chart.heat) {
+    for (const HeatCell& c : chart.heat->cells) {
+      xs.insert(xs.end(), {c.x_low, c.x_high});
+      ys.insert(ys.end(), {c.y_low, c.y_high});
+    }
+  }
   const bool categories = !chart.x_categories.empty();
   Axis x_axis = chart.x;
   if (categories) {
@@ -297,7 +328,8 @@ std::string svg(const Chart& chart) {
   for (std::size_t i = 0; i < chart.series.size(); ++i) add_entry(i, false, chart.series[i].label);
   for (std::size_t i = 0; i < chart.bands.size(); ++i) add_entry(i, true, chart.bands[i].label);
   const double legend_top = bottom + tick_band + 34.0;
-  const double height = legend_top + (entries.empty() ? 0.0 : 18.0 * (row + 1)) + 6.0;
+  const double colour_bar_top = legend_top + (entries.empty() ? 0.0 : 18.0 * (row + 1)) + 6.0;
+  const double height = colour_bar_top + (chart.heat ? 34.0 : 0.0);
 
   const Scale x{xr, x_axis.log, kLeft, right};
   const Scale y{yr, chart.y.log, bottom, top};
@@ -372,7 +404,34 @@ std::string svg(const Chart& chart) {
                      bottom + tick_band + 20, escape(chart.x.label));
   out += fmt::format("<text transform=\"translate(16,{:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
                      0.5 * (top + bottom), escape(chart.y.label));
-  // Bands, reference lines, then the curves on top.
+  // The heat map, bands, reference lines, then the curves on top.
+  bool shown = false;
+  if (chart.heat) {
+    const HeatMap& h = *chart.heat;
+    const Range hr = heat_range(h);
+    for (const HeatCell& c : h.cells) {
+      if (!std::isfinite(c.value) || (h.log && c.value <= 0.0)) continue;
+      if (!x.shows(c.x_low) || !x.shows(c.x_high) || !y.shows(c.y_low) || !y.shows(c.y_high)) continue;
+      const double v = h.log ? std::log10(c.value) : c.value;
+      const double px0 = x(c.x_low), px1 = x(c.x_high), py0 = y(c.y_high), py1 = y(c.y_low);
+      out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"{}\" "
+                         "stroke=\"#ffffff\" stroke-width=\"0.5\"><title>{}</title></rect>",
+                         px0, py0, px1 - px0, py1 - py0, heat_colour((v - hr.lo) / (hr.hi - hr.lo)),
+                         escape(fmt::format("{:.4g}", c.value)));
+      shown = true;
+    }
+    // The colour bar: ten steps from the least to the most.
+    const double bar_y = colour_bar_top + 4.0, bar_w = 300.0;
+    for (int k = 0; k < 10; ++k) {
+      out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"10\" fill=\"{}\"/>",
+                         kLeft + 30.0 * k, bar_y, 30.0, heat_colour((k + 0.5) / 10.0));
+    }
+    const auto value_at = [&](double v) { return tick_label(h.log ? std::pow(10.0, v) : v); };
+    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text><text x=\"{:.1f}\" y=\"{:.1f}\" "
+                       "text-anchor=\"end\">{}</text><text x=\"{:.1f}\" y=\"{:.1f}\">{}{}</text>",
+                       kLeft, bar_y + 24, value_at(hr.lo), kLeft + bar_w, bar_y + 24, value_at(hr.hi),
+                       kLeft + bar_w + 12, bar_y + 10, escape(h.label), h.log ? " (colour: log scale)" : "");
+  }
   for (const Band& b : chart.bands) out += band_area(b, x, y);
   for (const ReferenceLine& r : chart.references) {
     if (!y.shows(r.y)) continue;
@@ -380,7 +439,6 @@ std::string svg(const Chart& chart) {
                        "stroke-dasharray=\"9 3 2 3\"/><text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\" font-size=\"11\">{}</text>",
                        kLeft, y(r.y), right, y(r.y), right - 4, y(r.y) - 4, escape(r.label));
   }
-  bool shown = false;
   for (std::size_t i = 0; i < chart.series.size(); ++i) {
     out += curve(chart.series[i], colour_of(chart.series[i], i), x, y);
     const Series& s = chart.series[i];

@@ -116,6 +116,8 @@ void WindModel::validate() const {
   if (!(speed_max > speed_min)) {
     throw_invalid("speed_max", speed_max, fmt::format("more than speed_min = {} m/s", format_value(speed_min)));
   }
+  require_positive("power_scale", power_scale, "");
+  if (!(power_scale <= 100.0)) throw_invalid("power_scale", power_scale, "a factor on the wind's power, > 0 and <= 100");
   require_non_negative("turbulence_intensity", turbulence_intensity, "");
   if (!(turbulence_intensity <= 1.0)) throw_invalid("turbulence_intensity", turbulence_intensity, "a fraction from 0 to 1");
   if (turbulence_intensity != 0.0 && law != WindLaw::foti) {
@@ -143,7 +145,7 @@ double WindModel::fnc(double y_over_d) const {
 
 double WindModel::power(double amplitude, double frequency, double diameter, double span_length) const {
   const double d2 = diameter * diameter;
-  return span_length * frequency * frequency * frequency * d2 * d2 * fnc(amplitude / diameter);
+  return power_scale * span_length * frequency * frequency * frequency * d2 * d2 * fnc(amplitude / diameter);
 }
 
 Interval WindModel::frequency_band(double diameter) const {

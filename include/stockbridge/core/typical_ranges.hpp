@@ -91,6 +91,10 @@ inline constexpr TypicalRange weibull_scale{"Weibull scale of the wind speed", 1
 inline constexpr TypicalRange aeolian_fraction{"share of the year with aeolian vibration", 0.01, 1.0, "", {1e-2, "%"}};
 inline constexpr TypicalRange yb_distance{"distance x_b of the bending amplitude Yb from the clamp", 0.05, 0.15, "m",
                                           {1e-3, "mm"}};
+/// A vibration recorder's Yb bin edge (peak-to-peak at x_b), in mm as recorder files
+/// give it; a value in um is the usual slip, one in m the other (measurements/recorder.hpp).
+inline constexpr TypicalRange recorder_yb{"recorder bending amplitude Yb (peak-to-peak)", 0.005, 5.0, "mm",
+                                          {1e-3, "um"}};
 
 /// Every range above, in the order of the docs' table.
 const std::vector<TypicalRange>& all();

@@ -14,6 +14,7 @@
 #include "stockbridge/design/search.hpp"
 #include "stockbridge/io/line_file.hpp"
 #include "stockbridge/line/schedule.hpp"
+#include "stockbridge/measurements/recorder.hpp"
 #include "stockbridge/report/html_page.hpp"
 #include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
@@ -32,6 +33,17 @@ struct ReportContext {
 /// the amplitude, stress (with microstrain) and power curves with and without the
 /// dampers against the endurance limit, the life and its caveats.
 std::string span_report(const requests::SpanResult& result, const ReportContext& context);
+
+/// `stockbridge recorder`: the verdict (the measured damage per year and life
+/// against the predicted), the recorded matrix as a picture (Yb against frequency,
+/// cycles as colour) with the predicted Yb(f) over it before and after calibration,
+/// the bands side by side, the calibration, and the damage table of the bins.
+struct RecorderReportInput {
+  const measurements::RecorderResult* result = nullptr;
+  const span::Span* span = nullptr;
+  std::string counts;  ///< the counts file as named
+};
+std::string recorder_report(const RecorderReportInput& input, const ReportContext& context);
 
 /// A damper's impedance sweep (`stockbridge impedance`): the damper's numbers, |Z|,
 /// phase and power at each amplitude, and its linear modes.

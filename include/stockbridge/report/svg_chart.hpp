@@ -38,6 +38,21 @@ struct ReferenceLine {
   double y = 0.0;
 };
 
+/// A cell of a heat map: a rectangle in data coordinates and its value.
+struct HeatCell {
+  double x_low = 0.0, x_high = 0.0, y_low = 0.0, y_high = 0.0;
+  double value = 0.0;
+};
+
+/// Rectangles coloured by their value (a recorder's count matrix), drawn under the
+/// curves, with a colour bar below the plot; cells of value <= 0 (on a log scale)
+/// or NaN are left out.
+struct HeatMap {
+  std::string label;  ///< the colour bar's ("cycles")
+  std::vector<HeatCell> cells;
+  bool log = true;    ///< colours by log10 of the value
+};
+
 struct Axis {
   Axis(std::string label_ = {}, bool log_ = false) : label(std::move(label_)), log(log_) {}
   std::string label;  ///< with its unit: "frequency (Hz)"
@@ -59,6 +74,7 @@ struct Chart {
   std::vector<Series> series;
   std::vector<Band> bands;
   std::vector<ReferenceLine> references;
+  std::optional<HeatMap> heat;         ///< under everything else
   std::optional<SecondaryAxis> top;    ///< proportional to x
   std::optional<SecondaryAxis> right;  ///< proportional to y
   /// Tick labels for x = 0, 1, 2, ... (span ids); empty: numbers.

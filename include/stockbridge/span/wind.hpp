@@ -63,6 +63,9 @@ struct WindModel {
   /// terrain_wind): the TB 273 category; none where given.
   std::optional<int> turbulence_terrain;
   std::vector<WindPoint> table;       ///< law table only: at least 2 points
+  /// A factor on the wind's power input, any law (> 0; 1: the law as published): a
+  /// line's own record calibrates it (stockbridge recorder --calibrate wind.power_scale).
+  double power_scale = 1.0;
 
   /// Throws InvalidParameter naming the field ("strouhal", "speed_max",
   /// "turbulence_intensity", "table", "table[2].y_over_d", ...). A setting the law
@@ -72,7 +75,7 @@ struct WindModel {
 
   /// The reduced power at y = Y / D >= 0, W / (m Hz^3 m^4).
   double fnc(double y_over_d) const;
-  /// P_w = L f^3 D^4 fnc(Y / D), W: amplitude Y (m, antinode, zero-to-peak), frequency f
+  /// P_w = power_scale L f^3 D^4 fnc(Y / D), W: amplitude Y (m, antinode, zero-to-peak), frequency f
   /// (Hz), diameter D (m), span length L (m).
   double power(double amplitude, double frequency, double diameter, double span_length) const;
   /// The frequencies the wind band excites: St speed_min / D to St speed_max / D, Hz.
