@@ -51,6 +51,7 @@
 #include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/response_request.hpp"
 #include "stockbridge/requests/section_loop.hpp"
+#include "stockbridge/requests/recorder_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
 #include "stockbridge/requests/strand_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
@@ -391,6 +392,36 @@ std::vector<std::string> measured_impedance_warnings(const std::string& path) {
 
 /// The span command's CSV columns as arrays (one value per frequency) and its --json
 /// summary as JSON text (the package's span() parses it into a dict).
+/// A recorder's counts against a span (stockbridge.recorder wraps it): the bins
+/// CSV's columns as arrays, the --json summary as 'summary_json'.
+py::dict recorder_counts(const std::string& span_path, const std::string& counts_path, double days,
+                         const std::vector<std::string>& calibrate, int points_per_band, bool allow_unusual) {
+  requests::RecorderRequest request;
+  request.days = days;
+  request.calibrate = calibrate;
+  request.points_per_band = points_per_band;
+  requests::recorder_options(request);
+  io::SpanFile file = io::load_span_file(span_path, slip_policy(allow_unusual));
+  measurements::RecorderCounts counts;
+  try {
+    counts = requests::read_recorder_input(counts_path, file, request, slip_policy(allow_unusual));
+  } catch (const InvalidParameter& e) {
+    throw InputError(span_path + ": " + e.what());
+  }
+  warn(file.warnings);
+  warn(counts.warnings);
+  std::optional<measurements::RecorderResult> result;
+  {
+    py::gil_scoped_release release;
+    result.emplace(requests::run_recorder(counts, file, request));
+  }
+  const requests::TableValues columns = requests::recorder_bins_table().values(result->bins);
+  py::dict out = table_arrays(columns, {result->bins.size()});
+  out["columns"] = columns.names();
+  out["summary_json"] = requests::recorder_summary(*result).str();
+  return out;
+}
+
 py::dict span_balance(const std::optional<std::string>& path, const std::optional<std::string>& text,
                       const std::optional<std::string>& base,
                       const std::optional<std::vector<double>>& frequencies, int points, bool no_dampers,
@@ -756,6 +787,11 @@ PYBIND11_MODULE(_core, m) {
         "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
         "'converged', 'termination', 'messages', 'dampers', 'columns', the --json summary as 'summary_json' and "
         "with report the HTML report's text as 'report_html'.");
+  m.def("_recorder", &recorder_counts, py::arg("span"), py::arg("counts"), py::arg("days"),
+        py::arg("calibrate") = std::vector<std::string>{},
+        py::arg("points_per_band") = measurements::RecorderOptions{}.points_per_band, py::arg("allow_unusual") = false,
+        "A vibration recorder's counts against a span (stockbridge.recorder wraps it): the bins CSV's columns "
+        "as arrays, 'columns', and the --json summary as 'summary_json'.");
   m.def("_line", &line_schedule, py::arg("file") = py::none(), py::arg("text") = py::none(),
         py::arg("base") = py::none(), py::arg("threads") = 1, py::arg("report") = false, py::arg("allow_unusual") = false,
         "A line's damper schedule (stockbridge.line wraps it): 'schedule' and 'bill', the schedule and bill CSVs' "

@@ -35,7 +35,8 @@ try:
                         UnusualValueError, conductor,
                         conductors, cycle, identify_global, identify_local, impedance, load_cable, load_conductor,
                         load_damper, load_strand, loop, modes, response, strand_bounds)
-    from ._core import _cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _line, _span
+    from ._core import (_cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _line,  # noqa: F401
+                        _recorder, _span)
 except ImportError:  # the plots work from the source tree without the compiled module
     _defaults = {}  # the library's defaults come with it
 
@@ -213,6 +214,29 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
                     allow_unusual=allow_unusual)
     out["summary"] = json.loads(out.pop("summary_json"))
     _write_report(report, out)
+    return out
+
+
+def recorder(span, counts, days, calibrate=(), allow_unusual=False, points_per_band=3):
+    """A vibration recorder's counts against a span, as ``stockbridge recorder``.
+
+    `span` a span file's path (with [fatigue] wind_weibull and aeolian_fraction),
+    `counts` the recorder's CSV (the neutral form, one row per bin, or the matrix
+    form: docs/measurements.md), `days` the record's length. `calibrate`: keys to fit
+    on the record ("wind.turbulence_intensity", "wind.power_scale",
+    "self_damping.k"; one, or one of the wind's with self_damping.k).
+    `points_per_band` balance frequencies per frequency band of the record. A Yb a
+    unit slip explains (m or um for mm) is refused (UnusualValueError) unless
+    `allow_unusual`.
+
+    Returns a dict: the --json summary's keys ('measured', 'predicted' with its
+    'bands', 'calibrated' or None, 'failed_points', 'seconds_per_balance'), one array
+    per column of the bins CSV by its names (yb_pp_mm_low, ..., stress_ps_mpa,
+    microstrain_pp, cycles_to_failure, damage), and 'columns' (the CSV's order)."""
+    if isinstance(calibrate, str):
+        calibrate = [calibrate]
+    out = _recorder(str(span), str(counts), float(days), list(calibrate), int(points_per_band), bool(allow_unusual))
+    out.update(json.loads(out.pop("summary_json")))
     return out
 
 

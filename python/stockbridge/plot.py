@@ -37,6 +37,8 @@ import textwrap
 import warnings
 
 import matplotlib
+import matplotlib.cm
+import matplotlib.colors
 import matplotlib.patches
 import matplotlib.pyplot as plt
 import numpy
@@ -1470,6 +1472,89 @@ def line(result, output=None, *, label=None):
     return finish(schedule_figure(Schedule(table)), output)
 
 
+# ---------------------------------------------------------------- recorder
+
+def recorder_years(value):
+    """A life from a JSON summary: null (no damage) is unlimited."""
+    return "unlimited" if value is None or not math.isfinite(value) else years(value) + " years"
+
+
+def recorder_figure(table, summary=None, name="recorder"):
+    """The recorded matrix (Yb against frequency, cycles as colour, log scales) with
+    the predicted Yb(f) over it (and the calibrated, where the summary has one)."""
+    low, high = table.required("yb_pp_mm_low"), table.required("yb_pp_mm_high")
+    f_low, f_high = table.required("frequency_hz_low"), table.required("frequency_hz_high")
+    cycles = table.required("cycles")
+    figure, axis = plt.subplots(1, 1, figsize=FIGURE_SIZE, layout="constrained")
+    shown = [i for i in range(len(cycles)) if cycles[i] > 0 and high[i] > 0]
+    if not shown:
+        raise PlotError(f"{name}: no bin with cycles to draw")
+    norm = matplotlib.colors.LogNorm(vmin=min(cycles[i] for i in shown), vmax=max(max(cycles[i] for i in shown),
+                                                                             1.0001 * min(cycles[i] for i in shown)))
+    colours = plt.get_cmap("YlOrRd")
+    for i in shown:
+        bottom = low[i] if low[i] > 0 else 0.5 * high[i]  # a bin from Yb = 0: drawn from half its upper edge
+        axis.add_patch(matplotlib.patches.Rectangle((f_low[i], bottom), f_high[i] - f_low[i], high[i] - bottom,
+                                                    facecolor=colours(norm(cycles[i])), edgecolor="white",
+                                                    linewidth=0.5))
+    bar = figure.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=colours), ax=axis)
+    bar.set_label("cycles recorded")
+    ys = [low[i] if low[i] > 0 else 0.5 * high[i] for i in shown] + [high[i] for i in shown]
+    xs = [f_low[i] for i in shown] + [f_high[i] for i in shown]
+    title = name
+    if summary is not None:
+        for key, label, style in (("predicted", "predicted Yb(f), the span file", "-"),
+                                  ("calibrated", "calibrated", "--")):
+            part = summary.get(key)
+            if key == "calibrated" and part is not None:
+                part = part.get("predicted")
+            if not part:
+                continue
+            f = numpy.asarray(part.get("frequency_hz", []), dtype=float)
+            yb = numpy.asarray([numpy.nan if v is None else v for v in part.get("yb_pp_mm", [])], dtype=float)
+            if len(f) and len(f) == len(yb):
+                axis.plot(f, yb, style, color="#1f77b4" if key == "predicted" else "#2ca02c", linewidth=2,
+                          marker="o", markersize=3, label=label)
+                ys += [v for v in yb if math.isfinite(v) and v > 0]
+        measured, predicted = summary.get("measured") or {}, summary.get("predicted") or {}
+        title = f"{name}: measured life {recorder_years(measured.get('life_years'))}, predicted " \
+                f"{recorder_years(predicted.get('life_years'))}"
+        calibrated = summary.get("calibrated")
+        if calibrated and calibrated.get("predicted"):
+            title += f", calibrated {recorder_years(calibrated['predicted'].get('life_years'))}"
+        if axis.get_legend_handles_labels()[0]:
+            axis.legend(loc="upper right")
+    axis.set_xscale("log")
+    axis.set_yscale("log")
+    axis.set_xlim(min(xs) / 1.05, max(xs) * 1.05)
+    axis.set_ylim(min(ys) / 1.2, max(ys) * 1.2)
+    axis.set_xlabel("frequency (Hz)")
+    axis.set_ylabel("Yb, peak-to-peak at 89 mm (mm)")
+    axis.set_title("\n".join(textwrap.wrap(title, 80)), fontsize="medium")
+    return figure
+
+
+def plot_recorder(path, output, summary_path=None):
+    summary = None
+    if summary_path is not None:
+        try:
+            with open(summary_path, encoding="utf-8") as handle:
+                summary = json.load(handle)
+        except (OSError, ValueError) as error:
+            raise PlotError(f"{summary_path}: cannot read the JSON summary ({error})") from error
+    save(recorder_figure(Table(path), summary, os.path.splitext(os.path.basename(path))[0]), output)
+
+
+def recorder(result, output=None, *, label=None):
+    """plot recorder's figure of what stockbridge.recorder() returns: the recorded
+    matrix (Yb against frequency, cycles as colour, log scales) with the predicted
+    Yb(f) over it before and after calibration; the title gives the measured,
+    predicted and calibrated lives. Returns the matplotlib Figure; with `output` (a
+    path: .png, .pdf, .svg) also saves it there."""
+    table = result_table(result, "recorder", "cycles", label or "recorder")
+    return finish(recorder_figure(table, result, label or "recorder"), output)
+
+
 # ---------------------------------------------------------------- command line
 
 class Parser(argparse.ArgumentParser):
@@ -1499,6 +1584,12 @@ def parser():
     span.add_argument("--summary", action="append", metavar="FILE.json",
                       help="the JSON summary stockbridge span --json printed for a file (once per file, in order): "
                       "the dampers' positions and the life in the title")
+    rec = commands.add_parser("recorder", help="a recorder's matrix (Yb against frequency, cycles as colour) from "
+                              "the bins CSV of stockbridge recorder, with the predicted Yb(f)")
+    rec.add_argument("csv", help="the bins CSV (stockbridge recorder -o)")
+    rec.add_argument("-o", "--output", required=True)
+    rec.add_argument("--summary", metavar="FILE.json", help="what stockbridge recorder --json printed: the "
+                     "predicted and calibrated Yb(f) and the lives")
     for name, text in (("loop", "hysteresis loops of a cycle, response or loop file"),
                        ("fit", "measured and fitted loops or impedance (identify ... --fitted)"),
                        ("design", "objective over each variable of a design CSV: feasible, infeasible, polished, "
@@ -1524,6 +1615,8 @@ def run(args):
                 raise PlotError(f"{len(values)} {option} for {len(args.csv)} span CSV files: expected one per file, "
                                 "in their order")
         plot_span(args.csv, args.output, args.label, args.summary)
+    elif args.command == "recorder":
+        plot_recorder(args.csv, args.output, args.summary)
     elif args.command == "design":
         plot_design(args.csv, args.output)
     elif args.command == "line":

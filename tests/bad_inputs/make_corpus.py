@@ -24,6 +24,10 @@ SPAN = ("[conductor]\nname = \"ASTER570\"\nmass_per_length = 1.571\ndiameter = 0
         "ei_min = 28.28\nouter_wire_diameter = 0.00345\nouter_wire_modulus = 68e9\naluminium_layers = 4\n"
         "[span]\nlength = 400\ntension_fraction = 0.15\n[wind]\nlaw = \"cigre\"\nspeed_min = 1.0\nspeed_max = 7.0\n"
         "[self_damping]\nlaw = \"noiseux-1991\"\n[fatigue]\ncycles = 5e8\n")
+SPAN_CLIMATE = SPAN + "wind_weibull = { shape = 2.0, scale = 4.0 }\naeolian_fraction = 0.3\n"
+RECORDER_CMD = "recorder span.toml INPUT --days 30 -o out.csv"
+RECORDER_HEAD = "yb_pp_mm_low,yb_pp_mm_high,frequency_hz_low,frequency_hz_high,cycles\n"
+RECORDER_FILES = {"span.toml": SPAN_CLIMATE}
 SPAN_DAMPER = "[[damper]]\nfile = \"nope.toml\"\nposition = 1.0\nends = \"both\"\n"
 
 CYCLE_CMD = "cycle INPUT --experiment a --amplitude 0.01 --cycles 1 --points 8 -o out.csv"
@@ -322,6 +326,28 @@ cases = {
                                             DAMPER, "item 2 ('') is not a number"),
     "option_impedance_unused_setting": ("impedance INPUT --velocity 0.1 --frequencies 10 --steps 64 -o out.csv", "damper.toml",
                                         DAMPER, "steps = 64: not used by this method"),
+    # vibration recorders (issue 50)
+    "recorder_inverted_yb": (RECORDER_CMD, "counts.csv", RECORDER_HEAD + "0.1,0.2,10,15,5\n0.4,0.3,10,15,5\n",
+                             "counts.csv:3: yb_pp_mm_low, yb_pp_mm_high = 0.4 to 0.3 mm", RECORDER_FILES),
+    "recorder_overlapping_bins": (RECORDER_CMD, "counts.csv", RECORDER_HEAD + "0.1,0.3,10,15,5\n0.2,0.4,12,14,5\n",
+                                  "counts.csv:3: the bin Yb 0.2 to 0.4 mm, 12 to 14 Hz overlaps the bin of line 2",
+                                  RECORDER_FILES),
+    "recorder_negative_count": (RECORDER_CMD, "counts.csv", RECORDER_HEAD + "0.1,0.2,10,15,-3\n",
+                                "counts.csv:2: cycles = -3: a negative count", RECORDER_FILES),
+    "recorder_count_not_a_number": (RECORDER_CMD, "counts.csv", RECORDER_HEAD + "0.1,0.2,10,15,lots\n",
+                                    "counts.csv:2", RECORDER_FILES),
+    "recorder_outside_wind_band": (RECORDER_CMD, "counts.csv", RECORDER_HEAD + "0.1,0.2,50,60,5\n",
+                                   "counts.csv:2: frequency bin 50 to 60 Hz: outside the span's wind band", RECORDER_FILES),
+    "recorder_yb_in_metres": (RECORDER_CMD, "counts.csv", RECORDER_HEAD + "0.0001,0.0002,10,15,5\n",
+                              "counts.csv:2: yb_pp_mm_low = 0.0001", RECORDER_FILES),
+    "recorder_yb_in_micrometres": (RECORDER_CMD, "counts.csv", RECORDER_HEAD + "100,200,10,15,5\n",
+                                   "counts.csv:2: yb_pp_mm_low = 100", RECORDER_FILES),
+    "recorder_matrix_cell": (RECORDER_CMD, "counts.csv", "yb_pp_mm,10-15 hz,15-20 hz\n0.1-0.2,4,x\n",
+                             "counts.csv:2, column '15-20 hz': 'x'", RECORDER_FILES),
+    "recorder_matrix_header": (RECORDER_CMD, "counts.csv", "yb_pp_mm,10 to 15\n0.1-0.2,4\n",
+                               "counts.csv: header, column 2 '10 to 15'", RECORDER_FILES),
+    "recorder_no_cycles": (RECORDER_CMD, "counts.csv", RECORDER_HEAD + "0.1,0.2,10,15,0\n",
+                           "counts.csv: no cycles counted", RECORDER_FILES),
 }
 
 accepted = {

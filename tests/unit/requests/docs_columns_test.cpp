@@ -24,6 +24,7 @@
 #include "stockbridge/requests/line_request.hpp"
 #include "stockbridge/requests/impedance_fit_request.hpp"
 #include "stockbridge/requests/modes_request.hpp"
+#include "stockbridge/requests/recorder_request.hpp"
 #include "stockbridge/requests/response_request.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/span_request.hpp"
@@ -64,6 +65,7 @@ std::map<std::string, std::string> documented_output_tables() {
       {"identify_impedance_fitted", documented_table(fitted_table())},
       {"schedule", documented_table(schedule_table())},
       {"bill", documented_table(bill_table())},
+      {"recorder_bins", documented_table(recorder_bins_table())},
   };
 }
 
