@@ -727,9 +727,13 @@ std::string calibrated_span_text(const std::filesystem::path& source, const std:
     }
     if (const toml::node* node = table->get(key)) {
       const std::size_t line = node->source().begin.line;
-      std::string& l = lines.at(line - 1);
+      if (line == 0 || line > lines.size()) {
+        throw InputError(fmt::format("{}: {}.{}: its line is not known; expected 'key = value' on one line", file,
+                                     table_name, key));
+      }
+      std::string& l = lines[line - 1];
       const std::size_t eq = l.find('=');
-      if (line == 0 || eq == std::string::npos) {
+      if (eq == std::string::npos) {
         throw InputError(fmt::format("{}:{}: {}.{}: expected 'key = value' on one line", file, line, table_name, key));
       }
       const bool crlf = l.ends_with("\r\n");
