@@ -93,7 +93,7 @@ inline constexpr TypicalRange yb_distance{"distance x_b of the bending amplitude
                                           {1e-3, "mm"}};
 /// A vibration recorder's Yb bin edge (peak-to-peak at x_b), in mm as recorder files
 /// give it; a value in um is the usual slip, one in m the other (measurements/recorder.hpp).
-inline constexpr TypicalRange recorder_yb{"recorder bending amplitude Yb (peak-to-peak)", 0.005, 5.0, "mm",
+inline constexpr TypicalRange recorder_yb{"recorder bending amplitude Yb (peak-to-peak)", 0.005, 10.0, "mm",
                                           {1e-3, "um"}};
 
 /// Every range above, in the order of the docs' table.
