@@ -91,6 +91,12 @@ inline constexpr TypicalRange weibull_scale{"Weibull scale of the wind speed", 1
 inline constexpr TypicalRange aeolian_fraction{"share of the year with aeolian vibration", 0.01, 1.0, "", {1e-2, "%"}};
 inline constexpr TypicalRange yb_distance{"distance x_b of the bending amplitude Yb from the clamp", 0.05, 0.15, "m",
                                           {1e-3, "mm"}};
+/// A self-damping test's antinode amplitude (single peak) and dissipated power per
+/// length (IEEE 563, IEC 62567; measurements/self_damping_tests.hpp).
+inline constexpr TypicalRange self_damping_amplitude{"antinode amplitude of a self-damping test", 1e-5, 0.05, "m",
+                                                     {1e-3, "mm"}};
+inline constexpr TypicalRange self_damping_power{"self-damping power per length of a test", 1e-6, 50.0, "W/m",
+                                                 {1e-3, "mW/m"}};
 
 /// Every range above, in the order of the docs' table.
 const std::vector<TypicalRange>& all();
