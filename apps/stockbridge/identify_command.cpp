@@ -117,7 +117,9 @@ int run_global(const GlobalOptions& options) {
 }  // namespace
 
 void add_identify_command(CLI::App& app, int& exit_code) {
-  CLI::App* identify = app.add_subcommand("identify", "Identify cable parameters from measured hysteresis or impedance, or a conductor's self-damping from its tests");
+  CLI::App* identify = app.add_subcommand(
+      "identify",
+      "Identify cable parameters from measured hysteresis or impedance, or a conductor's self-damping from its tests");
   identify->require_subcommand(1);
   auto local = std::make_shared<LocalOptions>();
   CLI::App* sub = identify->add_subcommand(
