@@ -92,7 +92,7 @@ TEST(ConductorsCli, AnUnknownTypeIsExitTwoAndOneLine) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(r.stderr_lines(), 1) << r.err;
-  EXPECT_TRUE(r.err.starts_with("stockbridge: type = \"ACSR Drak\": expected a conductor of the catalogue: AAAC ASTER570, "))
+  EXPECT_TRUE(r.err.starts_with("stockbridge: type = \"ACSR Drak\": expected a conductor of the catalogue: AAAC 1055, "))
       << r.err;
 }
 
