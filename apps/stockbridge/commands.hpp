@@ -15,6 +15,8 @@ void add_cycle_command(CLI::App& app, int& exit_code);
 void add_identify_command(CLI::App& app, int& exit_code);
 /// `identify impedance`, registered on the identify command.
 void add_identify_impedance_command(CLI::App& identify, int& exit_code);
+/// `identify self-damping`, registered on the identify command.
+void add_identify_self_damping_command(CLI::App& identify, int& exit_code);
 void add_impedance_command(CLI::App& app, int& exit_code);
 void add_response_command(CLI::App& app, int& exit_code);
 void add_strand_command(CLI::App& app, int& exit_code);

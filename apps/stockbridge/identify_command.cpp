@@ -117,7 +117,9 @@ int run_global(const GlobalOptions& options) {
 }  // namespace
 
 void add_identify_command(CLI::App& app, int& exit_code) {
-  CLI::App* identify = app.add_subcommand("identify", "Identify cable parameters from measured hysteresis or impedance");
+  CLI::App* identify = app.add_subcommand(
+      "identify",
+      "Identify cable parameters from measured hysteresis or impedance, or a conductor's self-damping from its tests");
   identify->require_subcommand(1);
   auto local = std::make_shared<LocalOptions>();
   CLI::App* sub = identify->add_subcommand(
@@ -166,6 +168,7 @@ void add_identify_command(CLI::App& app, int& exit_code) {
   g->callback([global, &exit_code] { exit_code = run_global(*global); });
 
   add_identify_impedance_command(*identify, exit_code);
+  add_identify_self_damping_command(*identify, exit_code);
 }
 
 }  // namespace stockbridge::cli

@@ -40,6 +40,7 @@
 #include "stockbridge/io/span_file.hpp"
 #include "stockbridge/io/strand_file.hpp"
 #include "stockbridge/line/schedule.hpp"
+#include "stockbridge/measurements/self_damping_tests.hpp"
 #include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/conductor_request.hpp"
 #include "stockbridge/requests/cycle_request.hpp"
@@ -50,6 +51,7 @@
 #include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/response_request.hpp"
+#include "stockbridge/requests/self_damping_request.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/recorder_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
@@ -381,6 +383,37 @@ py::dict identify_impedance(const damper::Damper& start, const std::optional<std
   out["cable"] = cable::Cable(fit.damper.arms.front().cable);
   out["damper"] = damper::Damper(fit.damper);
   out["damper_file"] = requests::fitted_damper_file(fit, input ? *input : std::string("arrays"));
+  return out;
+}
+
+/// The self-damping law fitted to tests (stockbridge.identify_self_damping wraps
+/// it): the --json summary as a dict and 'table', the [self_damping] table -o writes.
+py::dict identify_self_damping(const std::optional<std::string>& file, const std::optional<std::vector<double>>& tension,
+                               const std::optional<std::vector<double>>& frequency,
+                               const std::optional<std::vector<double>>& amplitude,
+                               const std::optional<std::vector<double>>& power, const std::optional<double>& n,
+                               bool allow_unusual) {
+  const bool arrays = tension || frequency || amplitude || power;
+  if (file.has_value() == arrays) {
+    throw InvalidParameter("give either file (a test CSV's path) or tension, frequency, amplitude and power");
+  }
+  if (arrays && !(tension && frequency && amplitude && power)) {
+    throw InvalidParameter("give tension, frequency, amplitude and power (arrays of one value per test)");
+  }
+  const measurements::SelfDampingTests tests =
+      file ? measurements::load_self_damping_tests(*file, slip_policy(allow_unusual))
+           : measurements::self_damping_tests_from_arrays(*tension, *frequency, *amplitude, *power,
+                                                          slip_policy(allow_unusual));
+  warn(tests.warnings);
+  measurements::SelfDampingFit fit;
+  try {
+    fit = measurements::fit_self_damping(tests.tests, n);
+  } catch (const InvalidParameter& e) {
+    if (file && e.field() != "n") throw InputError(fmt::format("{}: {}", *file, e.what()));
+    throw;
+  }
+  py::dict out = from_json(requests::self_damping_summary(fit, tests.warnings));
+  out["table"] = requests::self_damping_table(fit, file ? *file : std::string("arrays"));
   return out;
 }
 
@@ -826,6 +859,10 @@ PYBIND11_MODULE(_core, m) {
         py::arg("free") = fit.free, py::arg("rms_limit") = fit.rms_limit, py::arg("threads") = fit.threads,
         py::arg("scatter") = py::none(), py::arg("allow_unusual") = false,
         "The identification from a measured impedance (stockbridge.identify_impedance wraps it).");
+  m.def("_identify_self_damping", &identify_self_damping, py::arg("file") = py::none(),
+        py::arg("tension") = py::none(), py::arg("frequency") = py::none(), py::arg("amplitude") = py::none(),
+        py::arg("power") = py::none(), py::arg("n") = py::none(), py::arg("allow_unusual") = false,
+        "The self-damping law fitted to tests (stockbridge.identify_self_damping wraps it).");
   m.def("_measured_impedance_warnings", &measured_impedance_warnings, py::arg("path"),
         "A measured impedance CSV's warnings (values outside the typical ranges, phases in radians), as lines; "
         "InputError for a file identify impedance refuses.");

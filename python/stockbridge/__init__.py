@@ -36,7 +36,7 @@ try:
                         conductors, cycle, identify_global, identify_local, impedance, load_cable, load_conductor,
                         load_damper, load_strand, loop, modes, response, strand_bounds)
     from ._core import (_cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _line,  # noqa: F401
-                        _recorder, _span)
+                        _identify_self_damping, _recorder, _span)
 except ImportError:  # the plots work from the source tree without the compiled module
     _defaults = {}  # the library's defaults come with it
 
@@ -350,3 +350,25 @@ def identify_impedance(damper, input=None, *, frequency=None, velocity=None, dis
     summary = json.loads(out.pop("summary_json"))
     summary.update(out)
     return summary
+
+
+def identify_self_damping(file=None, tension=None, frequency=None, amplitude=None, power=None, n=None,
+                          allow_unusual=False):
+    """The power law P = k Y^l f^m / (T/1000)^n (W/m) of a conductor's self-damping
+    fitted to its tests, as ``stockbridge identify self-damping``: a test CSV's path
+    (`file`: tension_n, frequency_hz, amplitude_m, power_w_per_m) or arrays of one
+    value per test: `tension` (N), `frequency` (Hz), `amplitude` (m, antinode, single
+    peak) and `power` (W/m). Least squares on the logs. `n` fixes the tension
+    exponent (needed when every test is at one tension: InvalidParameter naming n
+    otherwise). A value a unit slip explains (a tension in kN, an amplitude in mm, a
+    power in mW/m) is refused (UnusualValueError) unless `allow_unusual`.
+
+    Returns a dict: the --json summary's keys (k, ln_k, l, m, n as {"value",
+    "standard_error"}, n_given, points, residual_rms_ln_p, r_squared, tensions_n,
+    notes, ...) and 'table', the [self_damping] table (law "power") a span file
+    takes as it is, as -o writes it."""
+    def values(array):
+        return None if array is None else [float(v) for v in numpy.ravel(numpy.asarray(array, dtype=float))]
+    return _identify_self_damping(file=None if file is None else str(file), tension=values(tension),
+                                  frequency=values(frequency), amplitude=values(amplitude), power=values(power),
+                                  n=None if n is None else float(n), allow_unusual=allow_unusual)

@@ -17,7 +17,8 @@ const std::vector<TypicalRange>& typical::all() {
                                                 wind_speed, turbulence_intensity, self_damping_l, self_damping_m,
                                                 self_damping_n, fatigue_cycles, endurance_limit, endurance_limit_mpa,
                                                 limit_pp_microstrain, weibull_shape,
-                                                weibull_scale, aeolian_fraction, yb_distance, recorder_yb};
+                                                weibull_scale, aeolian_fraction, yb_distance, recorder_yb,
+                                                self_damping_amplitude, self_damping_power};
   return ranges;
 }
 

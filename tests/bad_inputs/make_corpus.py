@@ -59,6 +59,13 @@ DESIGN_OK = ("damper = \"damper.toml\"\nspans = [\"span.toml\"]\n"
              "[[tie]]\nname = \"arm.a.inertia\"\nequals = \"arm.a.mass\"\n")
 DESIGN_FILES = {"damper.toml": DAMPER, "span.toml": SPAN_WITH_DAMPER}
 
+# Self-damping tests (identify self-damping): three tensions, two frequencies, two amplitudes.
+SD_CMD = "identify self-damping INPUT -o out.toml"
+SD_HEADER = "tension_n,frequency_hz,amplitude_m,power_w_per_m\n"
+SD = SD_HEADER + "".join(f"{t},{f},{y},{0.02 * (y / 0.002) ** 2.4 * (f / 20) ** 5.5 / (t / 28000) ** 2.5:.5g}\n"
+                         for t in (20000, 28000, 35000) for f in (20, 30) for y in (0.001, 0.002))
+SD_ROW = "28000,20,0.002,0.02\n"
+
 cases = {
     # cable files
     "cable_syntax": (CYCLE_CMD, "cable.toml", "[cable\nlength = 0.3\n", "syntax error"),
@@ -348,6 +355,18 @@ cases = {
                                "counts.csv: header, column 2 '10 to 15'", RECORDER_FILES),
     "recorder_no_cycles": (RECORDER_CMD, "counts.csv", RECORDER_HEAD + "0.1,0.2,10,15,0\n",
                            "counts.csv: no cycles counted", RECORDER_FILES),
+    # self-damping tests: bad cells, unit slips, designs that leave an exponent open
+    "sd_tension_kn": (SD_CMD, "sd.csv", SD + "28,20,0.002,0.02\n", "column 'tension_n' = 28: outside"),
+    "sd_amplitude_mm": (SD_CMD, "sd.csv", SD + "28000,20,2,0.02\n", "column 'amplitude_m' = 2: outside"),
+    "sd_power_mw": (SD_CMD, "sd.csv", SD + "28000,20,0.002,120\n", "column 'power_w_per_m' = 120: outside"),
+    "sd_power_negative": (SD_CMD, "sd.csv", SD + "28000,20,0.002,-0.02\n", "column 'power_w_per_m' = -0.02: expected > 0"),
+    "sd_cell_text": (SD_CMD, "sd.csv", SD + "28000,20,abc,0.02\n", "amplitude_m"),
+    "sd_missing_column": (SD_CMD, "sd.csv", SD.replace(",power_w_per_m", ""), "power_w_per_m"),
+    "sd_one_frequency": (SD_CMD, "sd.csv", SD_HEADER + "".join(r.replace(",30,", ",20,") + "\n" for r in SD.split("\n")[1:] if r),
+                         "m is not determined"),
+    "sd_one_tension": (SD_CMD, "sd.csv", SD_HEADER + SD_ROW + "28000,30,0.002,0.09\n28000,20,0.001,0.004\n28000,30,0.001,0.02\n",
+                       "--n: not determined"),
+    "sd_too_few": (SD_CMD, "sd.csv", SD_HEADER + SD_ROW + "35000,30,0.002,0.09\n20000,20,0.001,0.004\n", "points = 3"),
 }
 
 accepted = {
@@ -357,6 +376,7 @@ accepted = {
     "cycle_bom_crlf": (GLOBAL_CMD.replace("-o out.toml", "--method four-step -o out.toml"), "cycle.csv",
                        "\ufeff" + open(os.path.join(HERE, "..", "..", "examples", "cycle_measured_a.csv")).read().replace("\n", "\r\n")),
     "span_crlf": (SPAN_CMD, "span.toml", SPAN.replace("\n", "\r\n")),
+    "sd_bom_crlf": (SD_CMD, "sd.csv", "\ufeff" + SD.replace("\n", "\r\n")),
     "velocity_list_with_spaces": ('impedance INPUT --velocity "0.1, 0.05" --frequencies "10, 20" -o out.csv', "damper.toml", DAMPER),
 }
 

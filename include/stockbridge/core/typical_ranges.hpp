@@ -95,6 +95,12 @@ inline constexpr TypicalRange yb_distance{"distance x_b of the bending amplitude
 /// give it; a value in um is the usual slip, one in m the other (measurements/recorder.hpp).
 inline constexpr TypicalRange recorder_yb{"recorder bending amplitude Yb (peak-to-peak)", 0.005, 10.0, "mm",
                                           {1e-3, "um"}};
+/// A self-damping test's antinode amplitude (single peak) and dissipated power per
+/// length (IEEE 563, IEC 62567; measurements/self_damping_tests.hpp).
+inline constexpr TypicalRange self_damping_amplitude{"antinode amplitude of a self-damping test", 1e-5, 0.05, "m",
+                                                     {1e-3, "mm"}};
+inline constexpr TypicalRange self_damping_power{"self-damping power per length of a test", 1e-6, 50.0, "W/m",
+                                                 {1e-3, "mW/m"}};
 
 /// Every range above, in the order of the docs' table.
 const std::vector<TypicalRange>& all();

@@ -103,7 +103,8 @@ TEST(SpanConductorType, TheTableTheCatalogueCommandPrintsGivesTheSameConductor) 
 TEST(SpanConductorType, AnUnknownTypeIsOneLineWithTheKnownTypes) {
   const std::string message = span_file_error(span_with("[conductor]\ntype = \"ACSR Drak\"\n"));
   EXPECT_NE(message.find("span.toml:2: conductor.type = \"ACSR Drak\": expected a conductor of the catalogue: "
-                         "AAAC ASTER570, AAC Arbutus, ACSR Cardinal, ACSR Drake, ACSR Falcon, ACSR Linnet"),
+                         "AAAC 1055, AAAC 823, AAAC 900, AAAC ASTER570, AAC Arbutus, AAC Orchid, ACSR Bersfort, "
+                         "ACSR Bersimis, ACSR Cardinal, ACSR Drake, ACSR Falcon, ACSR Ibis, ACSR Linnet, ACSR Tern"),
             std::string::npos)
       << message;
   EXPECT_NE(message.find("or file = a conductor file"), std::string::npos) << message;
