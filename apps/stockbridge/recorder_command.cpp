@@ -117,7 +117,8 @@ int run_recorder_command(const RecorderCommandOptions& options) {
   print_warnings(counts.warnings);
   const measurements::RecorderResult result = requests::run_recorder(counts, file, request);
   std::string calibrated_text;
-  if (options.calibrated_span && result.calibration) {
+  const bool calibrated = result.calibration && result.calibration->converged;
+  if (options.calibrated_span && calibrated) {
     calibrated_text = measurements::calibrated_span_text(options.span_file, result.calibration->values);
   }
   const std::string report = options.report
@@ -125,17 +126,23 @@ int run_recorder_command(const RecorderCommandOptions& options) {
                                  : std::string();
   io::write_file_atomically(options.output, requests::recorder_bins_table().values(result.bins).csv());
   if (options.report) io::write_file_atomically(*options.report, report);
-  if (options.calibrated_span) io::write_file_atomically(*options.calibrated_span, calibrated_text);
+  // A calibration that did not converge writes no span file: its values are not a fit.
+  if (options.calibrated_span && calibrated) io::write_file_atomically(*options.calibrated_span, calibrated_text);
   if (options.json) {
     fmt::print("{}\n", requests::recorder_summary(result).str());
   } else if (!options.quiet) {
     print_recorder_report(result);
   }
   const int failed = result.predicted.failed_points + (result.calibration ? result.calibration->prediction.failed_points : 0);
-  if (failed == 0) return kSuccess;
-  fmt::print(stderr, "recorder: {} balance points did not converge; their bands are flagged and left out of the sums\n",
-             failed);
-  return kNotConverged;
+  if (result.calibration && !result.calibration->converged) {
+    fmt::print(stderr, "recorder: the calibration did not converge: {}{}\n", result.calibration->message,
+               options.calibrated_span ? fmt::format("; {} not written", *options.calibrated_span) : "");
+  }
+  if (failed > 0) {
+    fmt::print(stderr, "recorder: {} balance points did not converge; their bands are flagged and left out of the sums\n",
+               failed);
+  }
+  return failed == 0 && (!result.calibration || result.calibration->converged) ? kSuccess : kNotConverged;
 }
 
 }  // namespace

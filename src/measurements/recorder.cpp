@@ -438,6 +438,16 @@ RecorderCalibration calibrate_record(const RecorderCounts& counts, const span::S
   }
   if (!c.converged && c.message.empty()) c.message = fmt::format("{} iterations without convergence", c.iterations);
   if (c.converged) c.message = fmt::format("converged in {} iterations", c.iterations);
+  // A value held at its bound is no fit: the record asks for more than the key can give.
+  for (std::size_t i = 0; i < p; ++i) {
+    if (options.calibrate[i] == "wind.turbulence_intensity" && (u[i] <= 0.0 || u[i] >= 1.0)) {
+      c.converged = false;
+      c.message = fmt::format("{} ran to its bound, {}: the record lies beyond what it can explain (the weighted RMS "
+                              "of ln Yb is still {:.3g}); check the record's units and days, the dampers, or calibrate "
+                              "another key",
+                              options.calibrate[i], u[i], std::sqrt(cost / weight_sum));
+    }
+  }
   if (!j_at_u) j_at_u = jacobian(u);
   if (j_at_u && nb > p) {
     std::vector<double> w(nb);

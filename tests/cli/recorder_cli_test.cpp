@@ -21,7 +21,15 @@ const std::string kRecorderSpan =
     "[span]\nlength = 400\ntension_fraction = 0.15\n[wind]\nlaw = \"foti\"\nturbulence_intensity = 0.15\n"
     "[self_damping]\nlaw = \"noiseux-1991\"\n[fatigue]\ncycles = 5e8\n"
     "wind_weibull = { shape = 2.0, scale = 4.0 }\naeolian_fraction = 0.3\n";
+// Counts near the undamped span's own amplitudes (0.3 to 2.8 mm), so that a turbulence
+// intensity can meet them.
 const std::string kRecorderCounts =
+    "yb_pp_mm_low,yb_pp_mm_high,frequency_hz_low,frequency_hz_high,cycles\n"
+    "0.8,1.2,8,12,20000\n1.2,1.8,8,12,50000\n1.8,2.8,8,12,9000\n0.4,0.6,12,18,30000\n0.6,1,12,18,60000\n"
+    "0.2,0.4,18,27,80000\n0.4,0.6,18,27,20000\n0.08,0.2,27,40,90000\n";
+// A record a quarter of those amplitudes: far below what the undamped span does in any
+// turbulence (the dampers forgotten in the span file, say).
+const std::string kFarBelowCounts =
     "yb_pp_mm_low,yb_pp_mm_high,frequency_hz_low,frequency_hz_high,cycles\n"
     "0.2,0.3,8,12,20000\n0.3,0.45,8,12,50000\n0.45,0.7,8,12,9000\n0.1,0.15,12,18,30000\n0.15,0.25,12,18,60000\n"
     "0.05,0.1,18,27,80000\n0.1,0.15,18,27,20000\n0.02,0.05,27,40,90000\n";
@@ -55,6 +63,23 @@ TEST(RecorderCli, BinsJsonAndTheCalibratedSpanFile) {
   // The calibrated file is a span file the program reads.
   const CliResult again = run_cli("recorder calibrated.toml counts.csv --days 30 --quiet -o again.csv", dir);
   EXPECT_EQ(again.exit_code, 0) << again.err;
+}
+
+// A record no value of the key can meet: the fit runs to the bound. That is no
+// calibration: exit 3, the reason on stderr, the JSON's converged false, and no
+// calibrated span file (the bins and the measured figures are still written).
+TEST(RecorderCli, ACalibrationAtItsBoundIsNotAFitAndWritesNoSpanFile) {
+  const std::filesystem::path dir = recorder_case("recorder-cli-bound");
+  std::ofstream(dir / "below.csv") << kFarBelowCounts;
+  const CliResult r = run_cli("recorder span.toml below.csv --days 30 --calibrate wind.turbulence_intensity "
+                              "--calibrated-span calibrated.toml --json -o bins.csv",
+                              dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("wind.turbulence_intensity ran to its bound, 1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("calibrated.toml not written"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("\"converged\": false"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "bins.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "calibrated.toml"));
 }
 
 TEST(RecorderCli, BadInputIsOneLineAndWritesNothing) {

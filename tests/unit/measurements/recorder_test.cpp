@@ -177,7 +177,7 @@ std::string recorder_made_record(const io::SpanFile& made, const RecorderCounts&
     const RecorderBand& band = p.bands[k];
     const double centre = band.predicted_mean_ln_yb + shift[k % 6];
     for (int j = -8; j <= 8; ++j) {
-      const double lo = std::exp(std::log(1.5) * j), hi = lo * 1.5;  // mm
+      const double lo = std::pow(1.5, j), hi = std::pow(1.5, j + 1);  // mm: each edge written once, the same on both sides
       const auto cdf = [&](double yb) { return 0.5 * std::erfc(-(std::log(yb) - centre) / (0.35 * std::sqrt(2.0))); };
       const double n = std::round(band.predicted_cycles * (cdf(hi) - cdf(lo)));
       if (n > 0) text += fmt::format("{},{},{},{},{}\n", lo, hi, band.frequency_low, band.frequency_high, n);
@@ -192,7 +192,8 @@ TEST(Recorder, CalibrationRecoversTheTurbulenceIntensityOfTheRecord) {
   for (const double f : {7.0, 10.0, 14.0, 20.0, 28.0, 40.0}) bands += fmt::format("0.1,0.2,{},{},1\n", f, f * 1.4 < 41.7 ? f * 1.4 : 41.7);
   const RecorderCounts layout = read_recorder_counts(recorder_write("bands.csv", bands));
   const auto path = recorder_write("made.csv", recorder_made_record(recorder_span(truth), layout, 2));
-  const RecorderCounts counts = read_recorder_counts(path);
+  // (the undamped span's record reaches past 10 mm, a Yb the reader otherwise refuses as um)
+  const RecorderCounts counts = read_recorder_counts(path, SlipPolicy::warn);
   const io::SpanFile assumed = recorder_span(0.2);
   RecorderOptions options;
   options.days = 30.0;
