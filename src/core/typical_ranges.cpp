@@ -17,7 +17,7 @@ const std::vector<TypicalRange>& typical::all() {
                                                 wind_speed, turbulence_intensity, self_damping_l, self_damping_m,
                                                 self_damping_n, fatigue_cycles, endurance_limit, endurance_limit_mpa,
                                                 limit_pp_microstrain, weibull_shape,
-                                                weibull_scale, aeolian_fraction, yb_distance};
+                                                weibull_scale, aeolian_fraction, yb_distance, yb_pp_mm};
   return ranges;
 }
 

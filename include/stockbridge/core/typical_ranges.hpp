@@ -91,6 +91,8 @@ inline constexpr TypicalRange weibull_scale{"Weibull scale of the wind speed", 1
 inline constexpr TypicalRange aeolian_fraction{"share of the year with aeolian vibration", 0.01, 1.0, "", {1e-2, "%"}};
 inline constexpr TypicalRange yb_distance{"distance x_b of the bending amplitude Yb from the clamp", 0.05, 0.15, "m",
                                           {1e-3, "mm"}};
+/// A fatigue test's Yb (fatigue-test files give it in mm; measurements/fatigue_tests_file.hpp).
+inline constexpr TypicalRange yb_pp_mm{"peak-to-peak bending amplitude Yb of a fatigue test", 0.01, 5.0, "mm", {1e3, "m"}};
 
 /// Every range above, in the order of the docs' table.
 const std::vector<TypicalRange>& all();
