@@ -276,7 +276,7 @@ def fatigue_tests(file, conductor=None, allow_unusual=False, report=None, curve=
     'table', the output CSV's columns as arrays by name (test and conductor lists of
     str; failed and below_sbl bool; the rest float), 'curve_toml' (the S-N curve
     file's text, None where the slope is not negative) and 'warnings'. Fewer than 3
-    failures at 2 stresses raise InvalidParameter naming 'failed'."""
+    failures at 2 stresses raise InputError naming the file."""
     out = _fatigue_tests(file=str(file), conductor=conductor, allow_unusual=allow_unusual, report=report is not None)
     summary = json.loads(out.pop("summary_json"))
     summary.update(out)

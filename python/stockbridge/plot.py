@@ -1536,10 +1536,10 @@ def fatigue_figure(table, summary=None):
                       linewidth=1.6, label=line["name"])
         below_sbl = fit.get("below_sbl", {})
         title += (f", {fit['failures']} failures, {fit['runouts']} runouts; "
-                  f"{below_sbl.get('count', 0)} failures below the Safe Border Line "
+                  f"{below_sbl.get('count', 0)} of the failures below the Safe Border Line "
                   f"({100 * below_sbl.get('fraction', 0):.3g} %)")
     axis.set_xscale("log")
-    axis.set_yscale("log")
+    log_scale(axis, "y")  # stresses over a decade or two: labelled at 1, 2 and 5 times the powers of ten
     axis.set_xlabel("cycles N")
     axis.set_ylabel("Poffenberger-Swart stress, zero-to-peak (MPa)")
     axis.grid(True, which="major", alpha=0.3)

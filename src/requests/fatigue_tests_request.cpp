@@ -45,7 +45,12 @@ FatigueTestsOutcome run_fatigue_tests(const FatigueTestsRequest& request) {
     throw InvalidParameter("conductor", fmt::format(" = '{}': no test of {} is of that conductor: expected one of {}",
                                                     printable(*request.conductor), out.file, list));
   }
-  out.result = measurements::analyse_fatigue_tests(std::move(tests));
+  try {
+    out.result = measurements::analyse_fatigue_tests(std::move(tests));
+  } catch (const InvalidParameter& e) {  // too few failures: the file's (or the rows kept)
+    throw InputError(fmt::format("{}: {}{}", out.file, e.what(),
+                                 request.conductor ? fmt::format(" (the rows of {})", printable(*request.conductor)) : ""));
+  }
   return out;
 }
 

@@ -70,8 +70,8 @@ SafeBorderLine safe_border_line(int aluminium_layers) {
 }
 
 SnCurve::SnCurve(const SafeBorderLine& line, std::string name)
-    : SnCurve({{line.a_low, line.b_low, line.knee},
-               {line.a_high, line.b_high, std::numeric_limits<double>::infinity()}},
+    : SnCurve({{line.a_low, line.b_low, line.knee, 1.0},
+               {line.a_high, line.b_high, std::numeric_limits<double>::infinity(), 1.0}},
               std::move(name)) {}
 
 SnCurve::SnCurve(std::vector<SnBranch> branches, std::string name, std::string source)
@@ -81,10 +81,12 @@ SnCurve::SnCurve(std::vector<SnBranch> branches, std::string name, std::string s
   for (std::size_t i = 0; i < branches_.size(); ++i) {
     const SnBranch& branch = branches_[i];
     const bool last = i + 1 == branches_.size();
-    if (!(branch.a > 0.0 && std::isfinite(branch.a)) || !(branch.b < 0.0 && std::isfinite(branch.b))) {
+    if (!(branch.a > 0.0 && std::isfinite(branch.a)) || !(branch.b < 0.0 && std::isfinite(branch.b)) ||
+        !(branch.anchor > 0.0 && std::isfinite(branch.anchor))) {
       throw InvalidParameter(fmt::format("branches[{}]", i),
-                             fmt::format(": a = {}, b = {}: expected a > 0 (MPa) and b < 0 (the stress falls with N)",
-                                         format_value(branch.a), format_value(branch.b)));
+                             fmt::format(": a = {}, b = {}, anchor = {}: expected a > 0 (MPa), b < 0 (the stress falls "
+                                         "with N) and anchor > 0 (cycles)",
+                                         format_value(branch.a), format_value(branch.b), format_value(branch.anchor)));
     }
     if (last ? !std::isinf(branch.until) : !(branch.until > before && std::isfinite(branch.until))) {
       throw InvalidParameter(fmt::format("branches[{}].until", i),
@@ -117,19 +119,18 @@ SnCurve SnCurve::from_table(const std::vector<double>& stress_mpa, const std::ve
   std::vector<SnBranch> branches;
   for (std::size_t i = 0; i + 1 < stress_mpa.size(); ++i) {
     const double b = std::log(stress_mpa[i + 1] / stress_mpa[i]) / std::log(cycles[i + 1] / cycles[i]);
-    const double a = stress_mpa[i] / std::pow(cycles[i], b);
     const bool last = i + 2 == stress_mpa.size();
-    branches.push_back({a, b, last ? std::numeric_limits<double>::infinity() : cycles[i + 1]});
+    branches.push_back({stress_mpa[i], b, last ? std::numeric_limits<double>::infinity() : cycles[i + 1], cycles[i]});
   }
   return SnCurve(std::move(branches), std::move(name), std::move(source));
 }
 
 double SnCurve::endurance_limit(double cycles) const {
   for (const SnBranch& branch : branches_) {
-    if (cycles <= branch.until) return fatigue_pa_per_mpa * branch.a * std::pow(cycles, branch.b);
+    if (cycles <= branch.until) return fatigue_pa_per_mpa * branch.a * std::pow(cycles / branch.anchor, branch.b);
   }
   const SnBranch& last = branches_.back();
-  return fatigue_pa_per_mpa * last.a * std::pow(cycles, last.b);
+  return fatigue_pa_per_mpa * last.a * std::pow(cycles / last.anchor, last.b);
 }
 
 double SnCurve::cycles_to_failure(double stress) const {
@@ -139,8 +140,8 @@ double SnCurve::cycles_to_failure(double stress) const {
   for (const SnBranch& branch : branches_) {
     // The branch's stress at its end (0 for the last, b < 0): above it, N lies on the branch or,
     // inside a step down at the branch's start, at that start.
-    const double end = std::isinf(branch.until) ? 0.0 : branch.a * std::pow(branch.until, branch.b);
-    if (mpa > end) return std::max(std::pow(mpa / branch.a, 1.0 / branch.b), start);
+    const double end = std::isinf(branch.until) ? 0.0 : branch.a * std::pow(branch.until / branch.anchor, branch.b);
+    if (mpa > end) return std::max(branch.anchor * std::pow(mpa / branch.a, 1.0 / branch.b), start);
     start = branch.until;
   }
   return std::numeric_limits<double>::infinity();

@@ -38,14 +38,14 @@ TEST(FatigueTestsCli, TheDesignCurveIsASpansSnCurve) {
   const auto dir = scratch_directory("fatigue-tests-curve");
   ASSERT_EQ(run_cli("fatigue-tests " + kTests + " --conductor Drake --curve curve.toml -o out.csv", dir).exit_code, 0);
   const std::string curve = read_text(dir / "curve.toml");
-  EXPECT_NE(curve.find("name = \"Drake fatigue tests, mean - 2 s\""), std::string::npos) << curve;
+  EXPECT_NE(curve.find("name = \"ACSR Drake fatigue tests, mean - 2 s\""), std::string::npos) << curve;
   std::filesystem::copy_file(kExamples + "sauter2003.toml", dir / "sauter2003.toml");
   std::string span = read_text(kExamples + "drake_300m.toml");
   span.replace(span.find("cycles = 5e8"), 12, "cycles = 5e8\ncurve = \"curve.toml\"");
   write(dir / "span.toml", span);
   const CliResult r = run_cli("span span.toml --points 4 --json -o span.csv", dir);
   ASSERT_LE(r.exit_code, 3) << r.err;
-  EXPECT_NE(r.out.find("\"criterion_description\": \"the S-N curve 'Drake fatigue tests, mean - 2 s' (curve.toml) at 5e+08 "
+  EXPECT_NE(r.out.find("\"criterion_description\": \"the S-N curve 'ACSR Drake fatigue tests, mean - 2 s' (curve.toml) at 5e+08 "
                        "cycles\""),
             std::string::npos)
       << r.out;
@@ -54,7 +54,7 @@ TEST(FatigueTestsCli, TheDesignCurveIsASpansSnCurve) {
   write(dir / "bad.toml", span);
   const CliResult bad = run_cli("span bad.toml --points 4 -o bad.csv", dir);
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_TRUE(std::regex_search(bad.err, std::regex(R"(^stockbridge: bad\.toml:\d+: fatigue\.curve = "none\.toml": expected an existing S-N curve file)")))
+  EXPECT_TRUE(std::regex_search(bad.err, std::regex(R"(^stockbridge: bad\.toml:\d+: fatigue\.curve: "none\.toml": expected an existing S-N curve file)")))
       << bad.err;
 }
 

@@ -81,13 +81,18 @@ def test_the_function_is_the_command(tmp_path):
 
 
 def test_too_few_failures_and_unit_slips_are_refused(tmp_path):
-    path = tmp_path / "t.csv"
-    path.write_text("test,conductor,tension_n,yb_pp_mm,cycles,failed\n"
-                    "a,ACSR Drake,35,0.8,3e6,true\nb,ACSR Drake,35,0.6,3e7,true\n")
-    with pytest.raises(sb.UnusualValueError, match=r"t\.csv:2: column tension_n = 35: .*in kN\?"):
-        sb.fatigue_tests(path)
-    with pytest.warns(sb.UnusualValueWarning), pytest.raises(sb.InvalidParameter, match="the fit needs 3 failures"):
-        sb.fatigue_tests(path, allow_unusual=True)
+    header = "test,conductor,tension_n,yb_pp_mm,cycles,failed\n"
+    slip = tmp_path / "slip.csv"
+    slip.write_text(header + "a,ACSR Drake,35,0.8,3e6,true\nb,ACSR Drake,35,0.6,3e7,true\n"
+                    "c,ACSR Drake,35,0.7,1e7,true\nd,ACSR Drake,35,0.5,1e8,false\n")
+    with pytest.raises(sb.UnusualValueError, match=r"slip\.csv:2: column tension_n = 35: .*in kN\?"):
+        sb.fatigue_tests(slip)
+    with pytest.warns(sb.UnusualValueWarning, match=r"slip\.csv:2: column tension_n = 35"):
+        assert sb.fatigue_tests(slip, allow_unusual=True)["fit"]["failures"] == 3
+    few = tmp_path / "few.csv"
+    few.write_text(header + "a,ACSR Drake,35000,0.8,3e6,true\nb,ACSR Drake,35000,0.6,3e7,true\n")
+    with pytest.raises(sb.InputError, match=r"few\.csv: failed: 2 failure\(s\) at 2 stress\(es\): the fit needs 3"):
+        sb.fatigue_tests(few)
 
 
 def test_the_plot_from_the_csv_and_from_the_result(tmp_path):

@@ -30,9 +30,10 @@ struct FatigueTestsOutcome {
   std::vector<std::string> warnings;
 };
 
-/// Reads, filters, evaluates and fits. Throws InputError for the file's bad cells,
-/// InvalidParameter naming "conductor" where the filter keeps no row, and "failed"
-/// where the tests kept do not determine a fit (fewer than 3 failures at 2 stresses).
+/// Reads, filters, evaluates and fits. Throws InputError for the file's bad cells and,
+/// naming the file, where the tests kept do not determine a fit (fewer than 3
+/// failures at 2 stresses); InvalidParameter naming "conductor" where the filter
+/// keeps no row.
 FatigueTestsOutcome run_fatigue_tests(const FatigueTestsRequest& request);
 
 /// One test with its stress, as the table reads it.

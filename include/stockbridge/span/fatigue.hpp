@@ -89,12 +89,15 @@ struct SafeBorderLine {
 /// multi-layer one); throws InvalidParameter naming "aluminium_layers" below 1.
 SafeBorderLine safe_border_line(int aluminium_layers);
 
-/// One branch of an S-N curve: sigma [MPa] = a N^b for N up to `until` cycles
-/// (the last branch: infinity), from where the branch before it ends.
+/// One branch of an S-N curve: sigma [MPa] = a (N / anchor)^b for N up to `until`
+/// cycles (the last branch: infinity), from where the branch before it ends. The
+/// anchor keeps a steep segment of a table (a step sampled) in range: a is the
+/// stress at the anchor (the Safe Border Line's: anchor 1, a as published).
 struct SnBranch {
-  double a = 0.0;      ///< MPa
-  double b = 0.0;      ///< < 0
-  double until = 0.0;  ///< cycles
+  double a = 0.0;       ///< MPa
+  double b = 0.0;       ///< < 0
+  double until = 0.0;   ///< cycles
+  double anchor = 1.0;  ///< cycles
 };
 
 /// An S-N curve: the zero-to-peak stress a conductor survives N cycles of, on

@@ -70,7 +70,7 @@ TEST(FatigueTests, WithoutRunoutsTheFitIsLeastSquares) {
   const BasquinFit fit = fit_basquin(stress, n, std::vector<bool>(6, true));
   expect_relative(fit.a, a, 1e-9);
   expect_relative(fit.b, b, 1e-9);
-  expect_relative(fit.scatter, s, 1e-9);
+  expect_relative(fit.scatter, s, 1e-7);
   // The observed information of the normal model at its maximum: var(b) = s^2 / Sxx, var(s) = s^2 / (2 n).
   expect_relative(fit.b_standard_error, s / std::sqrt(sxx), 1e-7);
   expect_relative(fit.scatter_standard_error, s / std::sqrt(12.0), 1e-7);
@@ -130,7 +130,8 @@ TEST(FatigueTests, TooFewFailuresAreRefused) {
   EXPECT_EQ(invalid_parameter_message([&] { fit_basquin(stress, cycles, {true, true, false, false}); }),
             "failed: 2 failure(s) at 2 stress(es): the fit needs 3 failures or more at 2 stresses or more");
   const std::vector<double> one{20e6, 20e6, 20e6};
-  EXPECT_EQ(invalid_parameter_message([&] { fit_basquin(one, {1e7, 5e6, 2e6}, {true, true, true}); }),
+  const std::vector<double> three{1e7, 5e6, 2e6};
+  EXPECT_EQ(invalid_parameter_message([&] { fit_basquin(one, three, {true, true, true}); }),
             "failed: 3 failure(s) at 1 stress(es): the fit needs 3 failures or more at 2 stresses or more");
 }
 
