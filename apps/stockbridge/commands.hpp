@@ -27,5 +27,6 @@ void add_recorder_command(CLI::App& app, int& exit_code);
 void add_design_command(CLI::App& app, int& exit_code);
 void add_line_command(CLI::App& app, int& exit_code);
 void add_datasheet_command(CLI::App& app, int& exit_code);
+void add_fatigue_tests_command(CLI::App& app, int& exit_code);
 
 }  // namespace stockbridge::cli

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   cli::add_design_command(app, exit_code);
   cli::add_line_command(app, exit_code);
   cli::add_datasheet_command(app, exit_code);
+  cli::add_fatigue_tests_command(app, exit_code);
   try {
     cli::reject_misspellings(app, argc, argv);
     app.parse(argc, argv);

@@ -41,10 +41,12 @@
 #include "stockbridge/io/strand_file.hpp"
 #include "stockbridge/line/schedule.hpp"
 #include "stockbridge/measurements/self_damping_tests.hpp"
+#include "stockbridge/report/fatigue_tests_report.hpp"
 #include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/conductor_request.hpp"
 #include "stockbridge/requests/cycle_request.hpp"
 #include "stockbridge/requests/design_request.hpp"
+#include "stockbridge/requests/fatigue_tests_request.hpp"
 #include "stockbridge/requests/identify_request.hpp"
 #include "stockbridge/requests/impedance_fit_request.hpp"
 #include "stockbridge/requests/line_request.hpp"
@@ -661,6 +663,33 @@ py::dict modes(const damper::Damper& d) {
   return from_json(requests::modes_summary(*result));
 }
 
+/// `stockbridge fatigue-tests` (stockbridge.fatigue_tests wraps it): the output CSV's
+/// columns as arrays ('table'), the --json summary as 'summary_json', the design
+/// curve's S-N file text ('curve_toml', None where the fit's slope gives no curve),
+/// the file's 'warnings' and with report the HTML page's text.
+void bind_fatigue_tests(py::module_& m) {
+  m.def(
+      "_fatigue_tests",
+      [](const std::string& file, const std::optional<std::string>& conductor, bool allow_unusual, bool report) {
+        requests::FatigueTestsRequest request;
+        request.file = file;
+        request.conductor = conductor;
+        request.policy = slip_policy(allow_unusual);
+        const requests::FatigueTestsOutcome outcome = requests::run_fatigue_tests(request);
+        warn(outcome.warnings);
+        py::dict out;
+        out["table"] = table_arrays(requests::fatigue_tests_values(outcome.result), {outcome.result.tests.size()});
+        out["summary_json"] = requests::fatigue_tests_summary(outcome).str();
+        out["curve_toml"] = outcome.result.fit.b < 0.0 ? py::object(py::str(requests::fatigue_tests_curve_toml(outcome)))
+                                                       : py::object(py::none());
+        out["warnings"] = outcome.warnings;
+        if (report) out["report_html"] = report::fatigue_tests_report(outcome, {report::utc_now(), "", outcome.warnings});
+        return out;
+      },
+      py::arg("file"), py::arg("conductor") = py::none(), py::arg("allow_unusual") = false, py::arg("report") = false,
+      "A conductor's fatigue tests (stockbridge.fatigue_tests wraps it).");
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -825,6 +854,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("points_per_band") = measurements::RecorderOptions{}.points_per_band, py::arg("allow_unusual") = false,
         "A vibration recorder's counts against a span (stockbridge.recorder wraps it): the bins CSV's columns "
         "as arrays, 'columns', and the --json summary as 'summary_json'.");
+  bind_fatigue_tests(m);
   m.def("_line", &line_schedule, py::arg("file") = py::none(), py::arg("text") = py::none(),
         py::arg("base") = py::none(), py::arg("threads") = 1, py::arg("report") = false, py::arg("allow_unusual") = false,
         "A line's damper schedule (stockbridge.line wraps it): 'schedule' and 'bill', the schedule and bill CSVs' "

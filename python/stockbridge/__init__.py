@@ -36,7 +36,7 @@ try:
                         conductors, cycle, identify_global, identify_local, impedance, load_cable, load_conductor,
                         load_damper, load_strand, loop, modes, response, strand_bounds)
     from ._core import (_cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _line,  # noqa: F401
-                        _identify_self_damping, _recorder, _span)
+                        _fatigue_tests, _identify_self_damping, _recorder, _span)
 except ImportError:  # the plots work from the source tree without the compiled module
     _defaults = {}  # the library's defaults come with it
 
@@ -279,6 +279,38 @@ def line(file=None, text=None, base=None, threads=1, report=None, allow_unusual=
     out["summary"] = json.loads(out.pop("summary_json"))
     _write_report(report, out)
     return out
+
+
+def fatigue_tests(file, conductor=None, allow_unusual=False, report=None, curve=None):
+    """A conductor's fatigue tests, as ``stockbridge fatigue-tests``: a fatigue-test
+    CSV (`file`: test, conductor, tension_n, yb_pp_mm, cycles, failed; its conductor
+    files relative to it), the rows of `conductor` alone where given (a catalogue
+    type or the file's name). Each test's Poffenberger-Swart stress and its place
+    against the Safe Border Line; Basquin's curve log10 N = a + b log10 sigma_MPa with
+    normal scatter s in log10 N, the runouts right-censored, by maximum likelihood.
+    A value a unit slip explains (a tension in kN, a Yb in m) is refused
+    (UnusualValueError) unless `allow_unusual`. `report` a path: also write the HTML
+    report there (as ``--report``); `curve` a path: write the design curve (mean - 2 s)
+    as an S-N curve file there (as ``--curve``).
+
+    Returns a dict: the --json summary's keys ('file', 'conductor', 'tests', 'fit'
+    with a, b, scatter, their standard errors, failures, runouts, log_likelihood,
+    design_a, design_b and below_sbl {count, fraction, tests}; 'safe_border_lines'),
+    'table', the output CSV's columns as arrays by name (test and conductor lists of
+    str; failed and below_sbl bool; the rest float), 'curve_toml' (the S-N curve
+    file's text, None where the slope is not negative) and 'warnings'. Fewer than 3
+    failures at 2 stresses raise InputError naming the file."""
+    out = _fatigue_tests(file=str(file), conductor=conductor, allow_unusual=allow_unusual, report=report is not None)
+    summary = json.loads(out.pop("summary_json"))
+    summary.update(out)
+    _write_report(report, summary)
+    if curve is not None:
+        if summary["curve_toml"] is None:
+            raise InvalidParameter("curve: the fit's slope b = %g is not negative: the tests give no S-N curve"
+                                   % summary["fit"]["b"])
+        with open(curve, "w", encoding="utf-8") as handle:
+            handle.write(summary["curve_toml"])
+    return summary
 
 
 def design(file, samples=None, polish=None, threads=_defaults.get("design_threads"),

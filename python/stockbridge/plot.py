@@ -8,6 +8,8 @@
                                 (span: damped and undamped, the verdict; --summary: positions, life)
     python3 -m stockbridge.plot design designs.csv -o design.png (design: objective per variable)
     python3 -m stockbridge.plot line schedule.csv -o schedule.png (line: stresses and dampers per span)
+    python3 -m stockbridge.plot fatigue-tests out.csv [--summary s.json] -o sn.png
+                                (fatigue-tests: S-N, runouts marked; --summary: the fit, its design curve, the SBL)
 
 Errors (a missing file or column, a cell that is not a number, nothing to plot, an
 output that cannot be written) print one line on stderr and exit with status 2,
@@ -1555,6 +1557,97 @@ def recorder(result, output=None, *, label=None):
     return finish(recorder_figure(table, result, label or "recorder"), output)
 
 
+# ---------------------------------------------------------------- fatigue tests
+
+FATIGUE_SUMMARY_HINT = "expected the JSON summary that stockbridge fatigue-tests --json prints"
+
+
+def read_fatigue_summary(path):
+    """The summary stockbridge fatigue-tests --json printed (a dict with 'fit')."""
+    try:
+        with open(path, encoding="utf-8") as handle:
+            summary = json.load(handle)
+    except OSError as error:
+        raise PlotError(f"{path}: cannot read ({error.strerror or error})") from error
+    except ValueError as error:
+        raise PlotError(f"{path}: not JSON ({error}): {FATIGUE_SUMMARY_HINT}") from error
+    if not isinstance(summary, dict) or not isinstance(summary.get("fit"), dict):
+        raise PlotError(f"{path}: no 'fit': {FATIGUE_SUMMARY_HINT}")
+    return summary
+
+
+def safe_border_stress(branches, cycles):
+    """The Safe Border Line's stress (MPa) at `cycles`, from the summary's branches."""
+    for branch in branches:
+        until = branch["until"]
+        if until is None or cycles <= until:
+            return branch["a"] * cycles ** branch["b"]
+    return branches[-1]["a"] * cycles ** branches[-1]["b"]
+
+
+def fatigue_figure(table, summary=None):
+    """The S-N plot of a fatigue-tests table: failures as dots, runouts as
+    right-pointing triangles (censored: they would have lasted longer), failures
+    below the Safe Border Line ringed red; with the summary the censored Basquin fit,
+    its design curve (mean - 2 s) and the Safe Border Line of each layer count."""
+    stress = table.required("stress_ps_mpa")
+    cycles = table.required("cycles")
+    failed = [v == 1 for v in table.required("failed")]
+    below = [v == 1 for v in table.column("below_sbl")] if "below_sbl" in table else [False] * len(stress)
+    figure, axis = plt.subplots(figsize=FIGURE_SIZE, layout="constrained")
+    pick = lambda values, keep: [v for v, k in zip(values, keep) if k]  # noqa: E731
+    runout = [not f for f in failed]
+    axis.plot(pick(cycles, failed), pick(stress, failed), "o", color="C0", markersize=5,
+              label=f"failures ({sum(failed)})")
+    axis.plot(pick(cycles, runout), pick(stress, runout), ">", color="C0", markerfacecolor="none", markersize=7,
+              label=f"runouts ({sum(runout)}, censored)")
+    if any(below):
+        axis.plot(pick(cycles, below), pick(stress, below), "o", color="C3", markerfacecolor="none", markersize=10,
+                  label=f"failures below the Safe Border Line ({sum(below)})")
+    low, high = min(cycles), max(cycles)
+    n_low, n_high = 10 ** math.floor(math.log10(low)), 10 ** math.ceil(math.log10(high))
+    grid = [n_low * (n_high / n_low) ** (k / 60) for k in range(61)]
+    title = f"{table.path}: {len(stress)} tests"
+    if summary is not None:
+        fit = summary["fit"]
+        a, b, s = fit["a"], fit["b"], fit["scatter"]
+        if b < 0:
+            axis.plot(grid, [10 ** ((math.log10(n) - a) / b) for n in grid], "-", color="C1",
+                      label=f"Basquin fit: log10 N = {a:.3f} {b:+.3f} log10 σ")
+            axis.plot(grid, [10 ** ((math.log10(n) - fit["design_a"]) / b) for n in grid], "--", color="C1",
+                      label=f"design curve: mean - 2 s (s = {s:.3f})")
+        for k, line in enumerate(summary.get("safe_border_lines", [])):
+            axis.plot(grid, [safe_border_stress(line["branches"], n) for n in grid], ":", color=f"C{2 + k}",
+                      linewidth=1.6, label=line["name"])
+        below_sbl = fit.get("below_sbl", {})
+        title += (f", {fit['failures']} failures, {fit['runouts']} runouts; "
+                  f"{below_sbl.get('count', 0)} of the failures below the Safe Border Line "
+                  f"({100 * below_sbl.get('fraction', 0):.3g} %)")
+    axis.set_xscale("log")
+    log_scale(axis, "y")  # stresses over a decade or two: labelled at 1, 2 and 5 times the powers of ten
+    axis.set_xlabel("cycles N")
+    axis.set_ylabel("Poffenberger-Swart stress, zero-to-peak (MPa)")
+    axis.grid(True, which="major", alpha=0.3)
+    axis.legend(fontsize="small", loc="lower left")
+    axis.set_title(textwrap.fill(title, TITLE_WIDTH, subsequent_indent="    "), fontsize="medium")
+    return figure
+
+
+def plot_fatigue_tests(path, output, summary=None):
+    save(fatigue_figure(Table(path), read_fatigue_summary(summary) if summary else None), output)
+
+
+def fatigue_tests(result, output=None, *, label=None):
+    """plot fatigue-tests' figure of what stockbridge.fatigue_tests() returns: the tests
+    on S-N axes (failures, runouts, those below the Safe Border Line), the fit, its
+    design curve and the Safe Border Line of each layer count present; the title
+    names the tests (`label`, default "fatigue_tests"). Returns the matplotlib
+    Figure; with `output` (a path: .png, .pdf, .svg) also saves it there."""
+    check_result(result, "fatigue_tests", "table", "fit")
+    table = result_table(result["table"], "fatigue_tests", "stress_ps_mpa", label or "fatigue_tests")
+    return finish(fatigue_figure(table, result), output)
+
+
 # ---------------------------------------------------------------- command line
 
 class Parser(argparse.ArgumentParser):
@@ -1590,6 +1683,13 @@ def parser():
     rec.add_argument("-o", "--output", required=True)
     rec.add_argument("--summary", metavar="FILE.json", help="what stockbridge recorder --json printed: the "
                      "predicted and calibrated Yb(f) and the lives")
+    fatigue = commands.add_parser("fatigue-tests", help="S-N plot of a fatigue-tests CSV: failures, runouts, the "
+                                  "fit, its design curve and the Safe Border Line")
+    fatigue.add_argument("csv", help="the CSV stockbridge fatigue-tests -o wrote")
+    fatigue.add_argument("-o", "--output", required=True)
+    fatigue.add_argument("--summary", metavar="FILE.json",
+                         help="the JSON summary stockbridge fatigue-tests --json printed: the fit, its design curve "
+                         "and the Safe Border Lines")
     for name, text in (("loop", "hysteresis loops of a cycle, response or loop file"),
                        ("fit", "measured and fitted loops or impedance (identify ... --fitted)"),
                        ("design", "objective over each variable of a design CSV: feasible, infeasible, polished, "
@@ -1621,6 +1721,8 @@ def run(args):
         plot_design(args.csv, args.output)
     elif args.command == "line":
         plot_line(args.csv, args.output)
+    elif args.command == "fatigue-tests":
+        plot_fatigue_tests(args.csv, args.output, args.summary)
     else:
         plot_fit(args.csv, args.output)
 

@@ -18,7 +18,7 @@ const std::vector<TypicalRange>& typical::all() {
                                                 self_damping_n, fatigue_cycles, endurance_limit, endurance_limit_mpa,
                                                 limit_pp_microstrain, weibull_shape,
                                                 weibull_scale, aeolian_fraction, yb_distance, recorder_yb,
-                                                self_damping_amplitude, self_damping_power};
+                                                self_damping_amplitude, self_damping_power, yb_pp_mm};
   return ranges;
 }
 

@@ -326,7 +326,7 @@ LineFile build_line(toml::table document, const TomlSource& source, const std::f
   shared.conductor = span_reading::read_conductor(top.table("conductor"), base, shared);
   span_reading::read_wind(top.table("wind"), base, shared);
   shared.self_damping = span_reading::read_self_damping(top.table("self_damping"));
-  shared.fatigue = span_reading::read_fatigue(top.table("fatigue"));
+  shared.fatigue = span_reading::read_fatigue(top.table("fatigue"), base, shared);
   shared.balance = span_reading::read_balance(top.optional_table("balance"));
   build_from_file(document, source, [&] {
     within_field("balance", [&] { shared.balance.validate(); });

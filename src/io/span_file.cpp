@@ -16,6 +16,7 @@
 #include "stockbridge/io/csv_reader.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/measured_impedance_file.hpp"
+#include "stockbridge/io/sn_curve_file.hpp"
 #include "stockbridge/span/stranded_conductor.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 #include "sheet_fit.hpp"
@@ -361,10 +362,16 @@ span::FatigueCriterion read_criterion(const TomlTable& table, const span::Fatigu
   return span::FatigueCriterion::safe_border_line;
 }
 
-span::FatigueSpec read_fatigue(const TomlTable& table) {
+span::FatigueSpec read_fatigue(const TomlTable& table, const std::filesystem::path& base_directory,
+                               SpanReading& reading) {
   table.accept_only({"criterion", "cycles", "endurance_limit", "endurance_limit_mpa", "limit_pp_microstrain",
-                     "wind_weibull", "aeolian_fraction", "yb_distance"});
+                     "wind_weibull", "aeolian_fraction", "yb_distance", "curve"});
   span::FatigueSpec fatigue;
+  if (const auto curve = table.optional_string("curve")) {
+    const std::filesystem::path path = span_input_file(table, "curve", *curve, base_directory, "S-N curve file");
+    fatigue.curve = read_sn_curve_file(path);
+    reading.inputs.push_back(path);
+  }
   fatigue.cycles = table.optional_number("cycles");
   fatigue.endurance_limit = table.optional_number("endurance_limit");
   const std::optional<double> mpa = table.optional_number("endurance_limit_mpa");
@@ -442,7 +449,7 @@ SpanReading read_span_document(const TomlTable& top, const std::filesystem::path
   for (const TomlTable& table : top.table_array("damper", false)) {
     reading.dampers.push_back(read_span_damper(table, base_directory, reading));
   }
-  reading.fatigue = read_fatigue(top.table("fatigue"));
+  reading.fatigue = read_fatigue(top.table("fatigue"), base_directory, reading);
   reading.balance = read_balance(top.optional_table("balance"));
   return reading;
 }

@@ -52,7 +52,10 @@ span::StrandedConductor span_conductor_file(const TomlTable& table, const std::s
 span::Conductor read_conductor(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading);
 void read_wind(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading);
 span::SelfDampingModel read_self_damping(const TomlTable& table);
-span::FatigueSpec read_fatigue(const TomlTable& table);
+/// The [fatigue] table; its `curve` (an S-N curve file, relative to `base_directory`)
+/// read and listed among the inputs.
+span::FatigueSpec read_fatigue(const TomlTable& table, const std::filesystem::path& base_directory,
+                               SpanReading& reading);
 span::BalanceOptions read_balance(const std::optional<TomlTable>& table);
 /// A measured sheet named at the table's `impedance` key (one per file).
 std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, const std::string& file,

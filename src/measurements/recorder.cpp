@@ -517,7 +517,7 @@ void check_recorder_band(const RecorderCounts& counts, const span::Span& span) {
 }
 
 double sn_cycles_to_failure(const span::Span& span, double stress) {
-  return span::safe_border_line(span.conductor().aluminium_layers).cycles_to_failure(stress);
+  return span.sn_curve().cycles_to_failure(stress);
 }
 
 void RecorderOptions::validate() const {

@@ -56,7 +56,7 @@ std::optional<LifeEstimate> life_of(const Span& span, const std::vector<double>&
   if (!span.fatigue().life || frequencies.empty()) return std::nullopt;
   if (std::any_of(stresses.begin(), stresses.end(), [](double s) { return !std::isfinite(s); })) return std::nullopt;
   return estimate_life(frequencies, stresses, span.wind(), span.conductor().diameter, *span.fatigue().life,
-                       safe_border_line(span.conductor().aluminium_layers));
+                       span.sn_curve());
 }
 
 }  // namespace
@@ -67,7 +67,8 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
   s.endurance_limit = span.endurance_limit();
   Largest damped, undamped, judged, undamped_judged;
   double high = std::numeric_limits<double>::quiet_NaN();
-  // The Safe Border Line is stated for the Poffenberger-Swart stress: the lives use it.
+  // The S-N curves (the Safe Border Line, a fitted table) are stated for the Poffenberger-Swart
+  // stress: the lives use it.
   std::vector<double> frequencies, stresses, undamped_stresses;
   for (const BalancePoint& p : points) {
     frequencies.push_back(p.frequency_hz);

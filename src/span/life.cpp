@@ -72,7 +72,7 @@ std::vector<LifeBin> life_bins(std::span<const double> frequencies, const WindMo
 
 LifeEstimate estimate_life(std::span<const double> frequencies, std::span<const double> stresses,
                            const WindModel& wind, double diameter, const LifeModel& life,
-                           const SafeBorderLine& line) {
+                           const SnCurve& line) {
   if (stresses.size() != frequencies.size()) {
     throw InvalidParameter("stresses", fmt::format(": {} given for {} frequencies; expected one per frequency",
                                                    stresses.size(), frequencies.size()));

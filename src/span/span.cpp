@@ -106,7 +106,7 @@ Span::Span(Conductor conductor, double length, double tension, WindModel wind, S
 double Span::endurance_limit() const {
   switch (fatigue_.criterion) {
     case FatigueCriterion::safe_border_line:
-      return safe_border_line(conductor_.aluminium_layers).endurance_limit(*fatigue_.cycles);
+      return sn_curve().endurance_limit(*fatigue_.cycles);
     case FatigueCriterion::microstrain:
       return 0.5e-6 * fatigue_.limit_pp_microstrain.value_or(ieee_limit_pp_microstrain) * conductor_.outer_wire_modulus;
     case FatigueCriterion::stress: return *fatigue_.endurance_limit;
@@ -114,10 +114,15 @@ double Span::endurance_limit() const {
   return *fatigue_.endurance_limit;
 }
 
+SnCurve Span::sn_curve() const {
+  return fatigue_.curve ? *fatigue_.curve : safe_border_curve(conductor_.aluminium_layers);
+}
+
 std::string Span::criterion_description() const {
   switch (fatigue_.criterion) {
     case FatigueCriterion::safe_border_line:
-      return fmt::format("the CIGRE Safe Border Line at {:.3g} cycles", *fatigue_.cycles);
+      return fatigue_.curve ? fmt::format("the S-N curve {} at {:.3g} cycles", fatigue_.curve->description(), *fatigue_.cycles)
+                            : fmt::format("the CIGRE Safe Border Line at {:.3g} cycles", *fatigue_.cycles);
     case FatigueCriterion::microstrain:
       return fatigue_.limit_pp_microstrain
                  ? fmt::format("{:.4g} microstrain peak-to-peak (given)", *fatigue_.limit_pp_microstrain)

@@ -53,6 +53,13 @@ LINE_SPANS = "[[span]]\nid = \"T01-T02\"\nlength = 300\ntension_fraction = 0.18\
 LINE_CSV = "spans = \"spans.csv\"\n" + LINE
 SPANS_CSV = "id,length_m,tension_fraction,catenary_parameter_m,terrain\nT01-T02,300,0.18,,1\nT02-T03,350,,1600,2\n"
 LINE_CMD = "line line.toml -o schedule.csv"
+FATIGUE_CMD = "fatigue-tests INPUT -o out.csv"
+FATIGUE_TESTS = ("test,conductor,tension_n,yb_pp_mm,cycles,failed\n"
+                 "d1,ACSR Drake,35000,0.8272,3412811,true\n"
+                 "d2,ACSR Drake,35000,0.6,14130145,true\n"
+                 "d3,ACSR Drake,35000,1.34,8518680,true\n"
+                 "d4,ACSR Drake,35000,0.529,20917000,true\n"
+                 "d5,ACSR Drake,35000,0.8,102063666,false\n")
 SPAN_WITH_DAMPER = SPAN + "[[damper]]\nfile = \"damper.toml\"\nposition = 1.0\n"
 DESIGN_OK = ("damper = \"damper.toml\"\nspans = [\"span.toml\"]\n"
              "[[variable]]\nname = \"arm.a.mass\"\nmin = 0.5\nmax = 1.5\n"
@@ -331,6 +338,21 @@ cases = {
                                            "--frequencies = '': expected a comma-separated list of numbers"),
     "option_impedance_velocity_malformed": ("impedance INPUT --velocity 0.1,,0.2 --frequencies 10 -o out.csv", "damper.toml",
                                             DAMPER, "item 2 ('') is not a number"),
+    # Fatigue tests (docs/measurements.md): every bad cell named by file, line and column.
+    "fatigue_tests_tension_kn": (FATIGUE_CMD, "tests.csv", FATIGUE_TESTS.replace("35000,0.6,", "35,0.6,"),
+                                 "tests.csv:3: column tension_n = 35: outside the typical"),
+    "fatigue_tests_yb_in_m": (FATIGUE_CMD, "tests.csv", FATIGUE_TESTS.replace(",1.34,", ",0.00134,"),
+                              "tests.csv:4: column yb_pp_mm = 0.00134"),
+    "fatigue_tests_failed_word": (FATIGUE_CMD, "tests.csv", FATIGUE_TESTS.replace("3412811,true", "3412811,broken"),
+                                  "tests.csv:2: column 'failed' = 'broken'"),
+    "fatigue_tests_cycles_negative": (FATIGUE_CMD, "tests.csv", FATIGUE_TESTS.replace("14130145", "-14130145"),
+                                      "tests.csv:3: column 'cycles' = -14130145: expected a number > 0"),
+    "fatigue_tests_unknown_conductor": (FATIGUE_CMD, "tests.csv", FATIGUE_TESTS.replace("ACSR Drake", "ACSR Dreak", 1),
+                                        "tests.csv:2: column 'conductor'"),
+    "fatigue_tests_missing_column": (FATIGUE_CMD, "tests.csv", FATIGUE_TESTS.replace("yb_pp_mm", "yb_mm"),
+                                     "missing column 'yb_pp_mm'"),
+    "fatigue_tests_runouts_only": (FATIGUE_CMD, "tests.csv", FATIGUE_TESTS.replace(",true", ",false"),
+                                   "0 failure(s) at 0 stress(es)"),
     "option_impedance_unused_setting": ("impedance INPUT --velocity 0.1 --frequencies 10 --steps 64 -o out.csv", "damper.toml",
                                         DAMPER, "steps = 64: not used by this method"),
     # vibration recorders (issue 50)
@@ -377,6 +399,7 @@ accepted = {
                        "\ufeff" + open(os.path.join(HERE, "..", "..", "examples", "cycle_measured_a.csv")).read().replace("\n", "\r\n")),
     "span_crlf": (SPAN_CMD, "span.toml", SPAN.replace("\n", "\r\n")),
     "sd_bom_crlf": (SD_CMD, "sd.csv", "\ufeff" + SD.replace("\n", "\r\n")),
+    "fatigue_tests_bom_crlf": (FATIGUE_CMD, "tests.csv", "\ufeff" + FATIGUE_TESTS.replace("\n", "\r\n")),
     "velocity_list_with_spaces": ('impedance INPUT --velocity "0.1, 0.05" --frequencies "10, 20" -o out.csv', "damper.toml", DAMPER),
 }
 

@@ -101,6 +101,8 @@ inline constexpr TypicalRange self_damping_amplitude{"antinode amplitude of a se
                                                      {1e-3, "mm"}};
 inline constexpr TypicalRange self_damping_power{"self-damping power per length of a test", 1e-6, 50.0, "W/m",
                                                  {1e-3, "mW/m"}};
+/// A fatigue test's Yb (fatigue-test files give it in mm; measurements/fatigue_tests_file.hpp).
+inline constexpr TypicalRange yb_pp_mm{"peak-to-peak bending amplitude Yb of a fatigue test", 0.01, 5.0, "mm", {1e3, "m"}};
 
 /// Every range above, in the order of the docs' table.
 const std::vector<TypicalRange>& all();

@@ -75,8 +75,9 @@ RecorderCounts read_recorder_counts(const std::filesystem::path& path, SlipPolic
 void check_recorder_band(const RecorderCounts& counts, const span::Span& span);
 
 /// The span's S-N curve as the recorder uses it: the cycles to failure at a
-/// zero-to-peak stress (Pa). Today the CIGRE Safe Border Line of the conductor's
-/// aluminium layers, as the span life inverts it (span/fatigue.hpp).
+/// zero-to-peak stress (Pa), by the curve in force (Span::sn_curve: the CIGRE Safe
+/// Border Line of the conductor's aluminium layers, or the span file's `[fatigue]
+/// curve`), as the span life inverts it (span/fatigue.hpp).
 double sn_cycles_to_failure(const span::Span& span, double stress);
 
 /// A bin as judged.

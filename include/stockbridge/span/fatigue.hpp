@@ -27,7 +27,17 @@
 // to 24.68 MPa (one layer) and from 16.39 to 15.74 MPa (several). cycles_to_failure
 // inverts it piecewise; a stress inside the step fails at the knee.
 //
+// An S-N curve (SnCurve) generalises the line: power-law branches sigma = a N^b,
+// each up to its cycles, the last to every N. The Safe Border Line is one (two
+// branches and the step); an S-N table (io/sn_curve_file.hpp: a curve fitted to a
+// conductor's own fatigue tests, measurements/fatigue_tests.hpp) is another, read
+// log-log piecewise linear between its points and extrapolated along its end
+// segments. A span's `[fatigue] curve` puts a table in the line's place.
+//
 // Units: SI (Pa, m, N, Hz); the Safe Border Line's a in MPa as published.
+
+#include <string>
+#include <vector>
 
 #include "stockbridge/span/conductor.hpp"
 
@@ -78,5 +88,58 @@ struct SafeBorderLine {
 /// CIGRE's line for `aluminium_layers` (1: the single-layer line; 2 or more: the
 /// multi-layer one); throws InvalidParameter naming "aluminium_layers" below 1.
 SafeBorderLine safe_border_line(int aluminium_layers);
+
+/// One branch of an S-N curve: sigma [MPa] = a (N / anchor)^b for N up to `until`
+/// cycles (the last branch: infinity), from where the branch before it ends. The
+/// anchor keeps a steep segment of a table (a step sampled) in range: a is the
+/// stress at the anchor (the Safe Border Line's: anchor 1, a as published).
+struct SnBranch {
+  double a = 0.0;       ///< MPa
+  double b = 0.0;       ///< < 0
+  double until = 0.0;   ///< cycles
+  double anchor = 1.0;  ///< cycles
+};
+
+/// An S-N curve: the zero-to-peak stress a conductor survives N cycles of, on
+/// power-law branches in order of N (each b < 0; a branch may step down at its
+/// start, as the Safe Border Line does at its knee).
+class SnCurve {
+ public:
+  /// The Safe Border Line as a curve (two branches), named as reports name it.
+  SnCurve(const SafeBorderLine& line, std::string name = "the CIGRE Safe Border Line");  // NOLINT: a line is a curve
+  /// Branches in order (`until` strictly increasing, the last infinite; b < 0):
+  /// InvalidParameter naming "branches" otherwise.
+  SnCurve(std::vector<SnBranch> branches, std::string name, std::string source = {});
+
+  /// A table: stresses (MPa, zero-to-peak) strictly decreasing against cycles strictly
+  /// increasing, the same number >= 2 of each, read log-log piecewise linear and
+  /// extrapolated along the end segments. InvalidParameter naming "stress_mpa" or
+  /// "cycles" (with the index) otherwise.
+  static SnCurve from_table(const std::vector<double>& stress_mpa, const std::vector<double>& cycles,
+                            std::string name, std::string source = {});
+
+  /// The stress (Pa, zero-to-peak) the conductor survives `cycles` (> 0) of.
+  double endurance_limit(double cycles) const;
+  /// The cycles to failure at `stress` (Pa): the inverse of endurance_limit, a
+  /// branch's start for a stress inside a step there, infinite for a stress <= 0.
+  double cycles_to_failure(double stress) const;
+
+  const std::vector<SnBranch>& branches() const { return branches_; }
+  /// "the CIGRE Safe Border Line (one aluminium layer)", or a table's own name.
+  const std::string& name() const { return name_; }
+  /// Where the curve comes from: the table's file (empty for the Safe Border Line).
+  const std::string& source() const { return source_; }
+  /// The name, with the file where there is one: "'Drake tests, mean - 2 s' (curve.toml)".
+  std::string description() const;
+
+ private:
+  std::vector<SnBranch> branches_;
+  std::string name_;
+  std::string source_;
+};
+
+/// The Safe Border Line for `aluminium_layers` as a curve, named by its layers
+/// ("the CIGRE Safe Border Line (one aluminium layer)", "(several aluminium layers)").
+SnCurve safe_border_curve(int aluminium_layers);
 
 }  // namespace stockbridge::span

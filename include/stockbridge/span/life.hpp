@@ -15,7 +15,8 @@
 //     the same for every speed of the band);
 //   * one cycle per period: n_i = f_i * aeolian_fraction * p_i * 365.25 days per year;
 //   * every cycle at the balance's amplitude (no spectrum of amplitudes);
-//   * Miner's rule against the Safe Border Line: damage per year D = sum n_i / N(sigma_i),
+//   * Miner's rule against the span's S-N curve (Span::sn_curve: the Safe Border Line, or
+//     the [fatigue] curve given): damage per year D = sum n_i / N(sigma_i),
 //     life = 1 / D years (infinite when D = 0).
 
 #include <span>
@@ -76,6 +77,6 @@ std::vector<LifeBin> life_bins(std::span<const double> frequencies, const WindMo
 /// InvalidParameter naming "stresses" otherwise). Models valid (validated).
 LifeEstimate estimate_life(std::span<const double> frequencies, std::span<const double> stresses,
                            const WindModel& wind, double diameter, const LifeModel& life,
-                           const SafeBorderLine& line);
+                           const SnCurve& line);
 
 }  // namespace stockbridge::span

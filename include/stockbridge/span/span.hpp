@@ -52,7 +52,8 @@ struct SpanDamper {
 };
 
 /// The criterion a span's verdict judges by (docs/span.md, "Criteria"):
-///  * safe_border_line: the fymax stress against CIGRE's Safe Border Line at `cycles`;
+///  * safe_border_line: the fymax stress against the S-N curve at `cycles`: CIGRE's
+///    Safe Border Line, or the span's own `curve` where one is given;
 ///  * microstrain: the peak-to-peak bending strain of the Poffenberger-Swart stress
 ///    (from Yb, as a recorder measures it) against `limit_pp_microstrain` (the IEEE
 ///    committee's 150 by default);
@@ -72,6 +73,9 @@ struct FatigueSpec {
   std::optional<double> endurance_limit;  ///< stress: the endurance limit, Pa (zero-to-peak)
   std::optional<double> limit_pp_microstrain;  ///< microstrain: the limit (none: the IEEE's 150)
   std::optional<LifeModel> life;
+  /// The S-N curve in the Safe Border Line's place (the endurance limit at `cycles`,
+  /// N(sigma) in the life), e.g. one fitted to the conductor's own fatigue tests.
+  std::optional<SnCurve> curve;
   /// x_b of the bending amplitude Yb and the Poffenberger-Swart stress, m from the
   /// clamp's last point of contact (IEEE 1966: 89 mm).
   double yb_distance = poffenberger_swart_distance;
@@ -103,11 +107,14 @@ class Span {
   /// The endurance limit the verdict uses, as a zero-to-peak stress, Pa (under the
   /// microstrain criterion the Poffenberger-Swart stress of that strain, E_a eps / 2).
   double endurance_limit() const;
+  /// The S-N curve in force: the fatigue's `curve`, or the Safe Border Line of the
+  /// conductor's aluminium layers.
+  SnCurve sn_curve() const;
   /// Whether the verdict judges the Poffenberger-Swart stress (the microstrain
   /// criterion: Yb as measured) rather than the fymax stress.
   bool judges_poffenberger_swart() const { return fatigue_.criterion == FatigueCriterion::microstrain; }
   /// The criterion in words, as reports name it ("the CIGRE Safe Border Line at 5e+08
-  /// cycles", "150 microstrain peak-to-peak (the IEEE committee's limit)", "a given
+  /// cycles", "the S-N curve 'Drake tests' (curve.toml) at 5e+08 cycles", "150 microstrain peak-to-peak (the IEEE committee's limit)", "a given
   /// endurance limit").
   std::string criterion_description() const;
   /// The same span with every damper moved to `position` + (its position - the first's).

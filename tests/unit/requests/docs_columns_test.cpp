@@ -20,6 +20,7 @@
 #include "stockbridge/io/span_file.hpp"
 #include "stockbridge/requests/cycle_request.hpp"
 #include "stockbridge/requests/design_request.hpp"
+#include "stockbridge/requests/fatigue_tests_request.hpp"
 #include "stockbridge/requests/identify_request.hpp"
 #include "stockbridge/requests/line_request.hpp"
 #include "stockbridge/requests/impedance_fit_request.hpp"
@@ -66,6 +67,7 @@ std::map<std::string, std::string> documented_output_tables() {
       {"schedule", documented_table(schedule_table())},
       {"bill", documented_table(bill_table())},
       {"recorder_bins", documented_table(recorder_bins_table())},
+      {"fatigue_tests", documented_table(fatigue_tests_table())},
   };
 }
 
