@@ -17,7 +17,7 @@ namespace {
 const std::string kExamples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
 const std::string kTests = "'" + kExamples + "fatigue_tests.csv'";
 
-void write(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
+void write_fatigue_file(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
 
 TEST(FatigueTestsCli, TheExamplesTableAndJson) {
   const auto dir = scratch_directory("fatigue-tests-example");
@@ -42,7 +42,7 @@ TEST(FatigueTestsCli, TheDesignCurveIsASpansSnCurve) {
   std::filesystem::copy_file(kExamples + "sauter2003.toml", dir / "sauter2003.toml");
   std::string span = read_text(kExamples + "drake_300m.toml");
   span.replace(span.find("cycles = 5e8"), 12, "cycles = 5e8\ncurve = \"curve.toml\"");
-  write(dir / "span.toml", span);
+  write_fatigue_file(dir / "span.toml", span);
   const CliResult r = run_cli("span span.toml --points 4 --json -o span.csv", dir);
   ASSERT_LE(r.exit_code, 3) << r.err;
   EXPECT_NE(r.out.find("\"criterion_description\": \"the S-N curve 'ACSR Drake fatigue tests, mean - 2 s' (curve.toml) at 5e+08 "
@@ -51,7 +51,7 @@ TEST(FatigueTestsCli, TheDesignCurveIsASpansSnCurve) {
       << r.out;
   // A missing curve file is named at the span file's line.
   span.replace(span.find("curve.toml"), 10, "none.toml");
-  write(dir / "bad.toml", span);
+  write_fatigue_file(dir / "bad.toml", span);
   const CliResult bad = run_cli("span bad.toml --points 4 -o bad.csv", dir);
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_TRUE(std::regex_search(bad.err, std::regex(R"(^stockbridge: bad\.toml:\d+: fatigue\.curve: "none\.toml": expected an existing S-N curve file)")))
@@ -60,27 +60,27 @@ TEST(FatigueTestsCli, TheDesignCurveIsASpansSnCurve) {
 
 TEST(FatigueTestsCli, BadCellsAreNamedAndNothingIsWritten) {
   const auto dir = scratch_directory("fatigue-tests-bad");
-  write(dir / "out.csv", "kept\n");
+  write_fatigue_file(dir / "out.csv", "kept\n");
   const std::string header = "test,conductor,tension_n,yb_pp_mm,cycles,failed\n";
-  write(dir / "kn.csv", header + "a,ACSR Drake,35000,0.8,3e6,true\nb,ACSR Drake,35,0.8,3e6,true\n");
+  write_fatigue_file(dir / "kn.csv", header + "a,ACSR Drake,35000,0.8,3e6,true\nb,ACSR Drake,35,0.8,3e6,true\n");
   CliResult r = run_cli("fatigue-tests kn.csv -o out.csv", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "stockbridge: kn.csv:3: column tension_n = 35: outside the typical 1000 to 500000 N of the conductor "
                    "tension (in kN? 35 kN = 35000 N) (--allow-unusual takes it as given)\n");
   EXPECT_EQ(read_text(dir / "out.csv"), "kept\n");
-  write(dir / "m.csv", header + "a,ACSR Drake,35000,0.0008,3e6,true\n");
+  write_fatigue_file(dir / "m.csv", header + "a,ACSR Drake,35000,0.0008,3e6,true\n");
   r = run_cli("fatigue-tests m.csv -o out.csv", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("m.csv:2: column yb_pp_mm = 0.0008: outside the typical 0.01 to 5 mm"), std::string::npos) << r.err;
-  write(dir / "yes.csv", header + "a,ACSR Drake,35000,0.8,3e6,yes\n");
+  write_fatigue_file(dir / "yes.csv", header + "a,ACSR Drake,35000,0.8,3e6,yes\n");
   r = run_cli("fatigue-tests yes.csv -o out.csv", dir);
   EXPECT_EQ(r.err, "stockbridge: yes.csv:2: column 'failed' = 'yes': expected true (the conductor broke) or false (a runout)\n");
-  write(dir / "few.csv", header + "a,ACSR Drake,35000,0.8,3e6,true\nb,ACSR Drake,35000,0.6,3e7,true\nc,ACSR Drake,35000,0.5,1e8,false\n");
+  write_fatigue_file(dir / "few.csv", header + "a,ACSR Drake,35000,0.8,3e6,true\nb,ACSR Drake,35000,0.6,3e7,true\nc,ACSR Drake,35000,0.5,1e8,false\n");
   r = run_cli("fatigue-tests few.csv -o out.csv", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("2 failure(s) at 2 stress(es): the fit needs 3 failures or more at 2 stresses or more"),
             std::string::npos) << r.err;
-  write(dir / "who.csv", header + "a,ACSR Tern,35000,0.8,3e6,true\n");
+  write_fatigue_file(dir / "who.csv", header + "a,ACSR Tern,35000,0.8,3e6,true\n");
   r = run_cli("fatigue-tests who.csv -o out.csv", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err.rfind("stockbridge: who.csv:2: column 'conductor'", 0), 0u) << r.err;
