@@ -80,7 +80,7 @@ TEST(FatigueTestsCli, BadCellsAreNamedAndNothingIsWritten) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("2 failure(s) at 2 stress(es): the fit needs 3 failures or more at 2 stresses or more"),
             std::string::npos) << r.err;
-  write_fatigue_file(dir / "who.csv", header + "a,ACSR Tern,35000,0.8,3e6,true\n");
+  write_fatigue_file(dir / "who.csv", header + "a,ACSR Nonesuch,35000,0.8,3e6,true\n");
   r = run_cli("fatigue-tests who.csv -o out.csv", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err.rfind("stockbridge: who.csv:2: column 'conductor'", 0), 0u) << r.err;
