@@ -88,7 +88,7 @@ void use_in_a_span(const identification::ImpedanceMeasurement& measurement) {
   }
   static const span::Span undamped = io::load_span_text(kSpan, "span.toml").span;
   try {
-    const span::Span damped = undamped.with_dampers({span::SpanDamper{std::nullopt, 1.0, true, "sheet", sheet}});
+    const span::Span damped = undamped.with_dampers({span::SpanDamper{std::nullopt, 1.0, true, "sheet", sheet, std::nullopt}});
     const span::SpanAnalysis a = span::analyse_span(damped, frequencies, {});
     fuzz::require(a.balance.points.size() == frequencies.size(), "a balance point per frequency");
     for (const span::BalancePoint& p : a.balance.points) {
