@@ -40,15 +40,24 @@ std::string_view trimmed(std::string_view text) {
 }
 }  // namespace
 
+std::vector<std::string> split_list(std::string_view text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    items.emplace_back(trimmed(text.substr(start, comma - start)));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return items;
+}
+
 std::vector<double> parse_number_list(std::string_view text, std::string_view what) {
   if (trimmed(text).empty()) {
     throw InvalidParameter(fmt::format("{} = '{}': expected a comma-separated list of numbers, such as 0.2,0.05", what, text));
   }
   std::vector<double> values;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::string_view item = trimmed(text.substr(start, comma - start));
+  for (const std::string& item : split_list(text)) {
     try {
       values.push_back(parse_number(item, what));
     } catch (const InvalidParameter&) {
@@ -56,8 +65,6 @@ std::vector<double> parse_number_list(std::string_view text, std::string_view wh
                                          "of numbers, such as 0.2,0.05",
                                          what, text, values.size() + 1, item));
     }
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
   }
   return values;
 }

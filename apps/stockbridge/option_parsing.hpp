@@ -16,6 +16,9 @@ section::Jenkin parse_jenkin_pair(std::string_view text, std::string_view what);
 /// Parses a comma-separated list of numbers ("0.2,0.05", "0.2, 0.05"); an empty or
 /// malformed list is an error naming `what`.
 std::vector<double> parse_number_list(std::string_view text, std::string_view what);
+/// Splits a comma-separated list into its items, each without the spaces and tabs
+/// around it ("a, b" -> {"a", "b"}; "" -> {""}).
+std::vector<std::string> split_list(std::string_view text);
 
 /// A file a command reads or writes, with how the user named it (flag or argument).
 struct CommandFile {

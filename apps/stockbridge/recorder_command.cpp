@@ -40,21 +40,6 @@ struct RecorderCommandOptions {
   std::optional<std::string> report;
 };
 
-std::vector<std::string> recorder_keys(const std::string& text) {
-  std::vector<std::string> keys;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = text.find(',', start);
-    std::string key = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const std::size_t a = key.find_first_not_of(' ');
-    const std::size_t b = key.find_last_not_of(' ');
-    keys.push_back(a == std::string::npos ? std::string() : key.substr(a, b - a + 1));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return keys;
-}
-
 std::string recorder_years(double years) {
   return std::isfinite(years) ? fmt::format("{:.3g} years", years) : "unlimited (no damage)";
 }
@@ -90,7 +75,7 @@ void print_recorder_report(const measurements::RecorderResult& r) {
 int run_recorder_command(const RecorderCommandOptions& options) {
   requests::RecorderRequest request;
   request.days = options.days;
-  if (options.calibrate) request.calibrate = recorder_keys(*options.calibrate);
+  if (options.calibrate) request.calibrate = split_list(*options.calibrate);
   request.points_per_band = options.points_per_band;
   try {
     requests::recorder_options(request);

@@ -666,6 +666,20 @@ TITLE_WIDTH = 100  # characters of a title line before it wraps
 LIVES_NOTE = ("Lives are comparative: they rest on the assumed climate (the span file's wind_weibull, "
               "aeolian_fraction) and the Safe Border Line.")
 SUMMARY_HINT = "expected the JSON summary that stockbridge span --json prints"
+
+
+def read_json_summary(path, hint):
+    """What a command's --json printed, read from `path`; a PlotError naming the file (and
+    the line) and `hint`, what was expected, where it cannot be read."""
+    try:
+        with open(path, encoding="utf-8") as handle:
+            return json.load(handle)
+    except OSError as error:
+        raise PlotError(f"{path}: cannot read ({error.strerror or error})") from error
+    except UnicodeDecodeError as error:
+        raise PlotError(f"{path}: not UTF-8 text: {hint}") from error
+    except json.JSONDecodeError as error:
+        raise PlotError(f"{path}:{error.lineno}: not JSON ({error.msg}): {hint}") from error
 VERDICTS = ("safe", "unsafe", "unknown")  # what a span CSV tells by itself: its stresses against the limit
 PROGRAM_VERDICTS = ("safe", "unsafe", "uncertain", "unknown")  # uncertain: a measured sheet's band reaches the limit
 
@@ -810,16 +824,7 @@ class SpanSummary:
     @classmethod
     def read(cls, path):
         """The summary in a JSON file (stockbridge span --json > path)."""
-        try:
-            with open(path, encoding="utf-8") as handle:
-                data = json.load(handle)
-        except OSError as error:
-            raise PlotError(f"{path}: cannot read ({error.strerror or error})") from error
-        except UnicodeDecodeError as error:
-            raise PlotError(f"{path}: not UTF-8 text: {SUMMARY_HINT}") from error
-        except json.JSONDecodeError as error:
-            raise PlotError(f"{path}:{error.lineno}: not JSON ({error.msg}): {SUMMARY_HINT}") from error
-        return cls(data, path)
+        return cls(read_json_summary(path, SUMMARY_HINT), path)
 
     @staticmethod
     def _is_number(value):
@@ -1536,14 +1541,11 @@ def recorder_figure(table, summary=None, name="recorder"):
     return figure
 
 
+RECORDER_SUMMARY_HINT = "expected the JSON summary that stockbridge recorder --json prints"
+
+
 def plot_recorder(path, output, summary_path=None):
-    summary = None
-    if summary_path is not None:
-        try:
-            with open(summary_path, encoding="utf-8") as handle:
-                summary = json.load(handle)
-        except (OSError, ValueError) as error:
-            raise PlotError(f"{summary_path}: cannot read the JSON summary ({error})") from error
+    summary = None if summary_path is None else read_json_summary(summary_path, RECORDER_SUMMARY_HINT)
     save(recorder_figure(Table(path), summary, os.path.splitext(os.path.basename(path))[0]), output)
 
 
@@ -1564,13 +1566,7 @@ FATIGUE_SUMMARY_HINT = "expected the JSON summary that stockbridge fatigue-tests
 
 def read_fatigue_summary(path):
     """The summary stockbridge fatigue-tests --json printed (a dict with 'fit')."""
-    try:
-        with open(path, encoding="utf-8") as handle:
-            summary = json.load(handle)
-    except OSError as error:
-        raise PlotError(f"{path}: cannot read ({error.strerror or error})") from error
-    except ValueError as error:
-        raise PlotError(f"{path}: not JSON ({error}): {FATIGUE_SUMMARY_HINT}") from error
+    summary = read_json_summary(path, FATIGUE_SUMMARY_HINT)
     if not isinstance(summary, dict) or not isinstance(summary.get("fit"), dict):
         raise PlotError(f"{path}: no 'fit': {FATIGUE_SUMMARY_HINT}")
     return summary

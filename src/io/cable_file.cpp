@@ -11,38 +11,14 @@ namespace stockbridge::io {
 
 namespace {
 
-std::vector<double> number_array(const TomlTable& table, std::string_view key) {
-  const toml::node* n = table.node(key);
-  if (!n) {
-    throw InputError(fmt::format("{}missing key '{}' in [{}]: expected an array of numbers",
-                                 table.location(key), key, table.key_path()));
-  }
-  const toml::array* array = n->as_array();
-  if (!array || array->empty()) {
-    table.fail(key, fmt::format("{}: expected a non-empty array of numbers", describe_type(*n)));
-  }
-  std::vector<double> values;
-  for (std::size_t i = 0; i < array->size(); ++i) {
-    const toml::node& element = *array->get(i);
-    if (element.is_floating_point()) {
-      values.push_back(*element.value<double>());
-    } else if (element.is_integer()) {
-      values.push_back(static_cast<double>(*element.value<long long>()));
-    } else {
-      table.fail(key, fmt::format("element {} is {}: expected a number", i, describe_type(element)));
-    }
-  }
-  return values;
-}
-
 /// A parameter that is a number or a profile table { s = [...], value = [...] }
 /// (its values are the model's to check).
 cable::Profile read_profile(const TomlTable& table, std::string_view key) {
   const toml::node* n = table.node(key);
   if (n && n->is_table()) {
     const TomlTable profile = table.table(key);
-    std::vector<double> s = number_array(profile, "s");
-    std::vector<double> value = number_array(profile, "value");
+    std::vector<double> s = profile.number_array("s");
+    std::vector<double> value = profile.number_array("value");
     profile.reject_unknown_keys();
     return cable::Profile::table(std::move(s), std::move(value), table.qualified(key));
   }

@@ -8,35 +8,6 @@
 
 namespace stockbridge::io {
 
-namespace {
-
-/// The key's non-empty array of numbers (integers accepted).
-std::vector<double> sn_number_array(const TomlTable& table, std::string_view key) {
-  const toml::node* n = table.node(key);
-  if (!n) {
-    throw InputError(fmt::format("{}missing key '{}' in [{}]: expected an array of numbers", table.location(key), key,
-                                 table.key_path()));
-  }
-  const toml::array* array = n->as_array();
-  if (!array || array->empty()) {
-    table.fail(key, fmt::format("{}: expected a non-empty array of numbers", describe_type(*n)));
-  }
-  std::vector<double> values;
-  for (std::size_t i = 0; i < array->size(); ++i) {
-    const toml::node& element = *array->get(i);
-    if (element.is_floating_point()) {
-      values.push_back(*element.value<double>());
-    } else if (element.is_integer()) {
-      values.push_back(static_cast<double>(*element.value<long long>()));
-    } else {
-      table.fail(key, fmt::format("element {} is {}: expected a number", i, describe_type(element)));
-    }
-  }
-  return values;
-}
-
-}  // namespace
-
 span::SnCurve read_sn_curve_file(const std::filesystem::path& path) {
   const toml::table document = parse_toml_file(path);
   const TomlSource source{path.string()};
@@ -46,8 +17,8 @@ span::SnCurve read_sn_curve_file(const std::filesystem::path& path) {
   table.accept_only({"name", "source", "stress_mpa", "cycles"});
   const std::string name = table.required_string("name", "the curve's name, as reports show it");
   (void)table.optional_string("source");
-  const std::vector<double> stress = sn_number_array(table, "stress_mpa");
-  const std::vector<double> cycles = sn_number_array(table, "cycles");
+  const std::vector<double> stress = table.number_array("stress_mpa");
+  const std::vector<double> cycles = table.number_array("cycles");
   return build_from_file(document, source, [&] {
     return within_field("sn_curve", [&] { return span::SnCurve::from_table(stress, cycles, name, path.string()); });
   });

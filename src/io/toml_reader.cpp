@@ -192,6 +192,30 @@ std::optional<std::string> TomlTable::optional_string(std::string_view key) cons
   return text;
 }
 
+std::vector<double> TomlTable::number_array(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (!n) {
+    throw InputError(fmt::format("{}missing key '{}' in [{}]: expected an array of numbers",
+                                 location(key), key, key_path()));
+  }
+  const toml::array* array = n->as_array();
+  if (!array || array->empty()) {
+    fail(key, fmt::format("{}: expected a non-empty array of numbers", describe_type(*n)));
+  }
+  std::vector<double> values;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& element = *array->get(i);
+    if (element.is_floating_point()) {
+      values.push_back(*element.value<double>());
+    } else if (element.is_integer()) {
+      values.push_back(static_cast<double>(*element.value<long long>()));
+    } else {
+      fail(key, fmt::format("element {} is {}: expected a number", i, describe_type(element)));
+    }
+  }
+  return values;
+}
+
 std::optional<std::vector<std::string>> TomlTable::optional_string_array(std::string_view key) const {
   const toml::node* n = node(key);
   if (!n) return std::nullopt;

@@ -54,6 +54,8 @@ class TomlTable {
   std::optional<long long> optional_integer(std::string_view key, long long lo, long long hi) const;
   std::optional<bool> optional_boolean(std::string_view key) const;
   std::optional<std::string> optional_string(std::string_view key) const;
+  /// A required non-empty array of numbers (integers accepted); its values are the model's to check.
+  std::vector<double> number_array(std::string_view key) const;
   /// An array of strings (each one line of printable text); none if absent.
   std::optional<std::vector<std::string>> optional_string_array(std::string_view key) const;
 
