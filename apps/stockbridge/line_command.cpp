@@ -28,6 +28,7 @@
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/line_file.hpp"
 #include "stockbridge/requests/line_request.hpp"
+#include "stockbridge/requests/line_run.hpp"
 #include "stockbridge/requests/span_request.hpp"
 #include "journal_file.hpp"
 #include "task_runner.hpp"
@@ -84,8 +85,8 @@ std::map<std::size_t, line::ScheduleRow> read_line_journal(const std::filesystem
   std::map<std::size_t, line::ScheduleRow> rows;
   for (const std::string& record : journal.records) {
     try {
-      line::ScheduleRow row = requests::parse_schedule_record(record);
-      if (row.index < spans) rows.insert_or_assign(row.index, std::move(row));
+      requests::SpanOutcome outcome = requests::parse_span_outcome(record);
+      if (outcome.index < spans) rows.insert_or_assign(outcome.index, std::move(*outcome.row));
     } catch (const InvalidParameter&) {
       ++cut_short;
     }
@@ -110,14 +111,15 @@ std::string line_duration(double seconds) {
   return fmt::format("{:.1f} h", seconds / 3600);
 }
 
-void print_line_report(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows) {
+void print_line_report(const io::LineFile& file, const requests::LineSchedule& schedule) {
+  const std::vector<line::ScheduleRow>& rows = schedule.rows;
   const line::ScheduleCounts counts = line::schedule_counts(rows);
   const line::ScheduleRow* governing = counts.governing;
   fmt::print("line {}: {} spans, {} safe, {} unsafe, {} unknown, {} uncertain (criterion {})\n", file.name, rows.size(),
              counts.safe, counts.unsafe, counts.unknown, counts.uncertain,
              span::fatigue_criterion_name(file.line.spans().front().span.fatigue().criterion));
   for (const auto& [n, spans] : counts.per_end) fmt::print("  {} damper(s) per end: {} spans\n", n, spans);
-  for (const line::BillLine& b : line::bill_of_materials(file.line, rows)) {
+  for (const line::BillLine& b : schedule.bill) {
     fmt::print("bill: {} x {}{}{}\n", b.dampers, b.damper_type,
                b.mass ? fmt::format(" ({:.4g} kg)", *b.mass) : std::string(),
                b.price ? fmt::format(", price {:.6g}", *b.price) : std::string());
@@ -173,13 +175,13 @@ void prepare_line_details(const std::string& folder, const io::LineFile& file) {
 }
 
 /// The schedule, the bill and the report (or JSON); the exit status.
-int write_line_outputs(const LineOptions& options, const io::LineFile& file, const std::vector<line::ScheduleRow>& schedule,
+int write_line_outputs(const LineOptions& options, const io::LineFile& file, const requests::LineSchedule& schedule,
                        const Processes& processes, double seconds, std::size_t computed) {
   const std::string report = options.report ? report::line_report(file, schedule, report_context()) : std::string();
-  io::write_file_atomically(options.output, requests::schedule_table().values(schedule).csv());
+  io::write_file_atomically(options.output, requests::schedule_table().values(schedule.rows).csv());
   if (options.report) io::write_file_atomically(*options.report, report);
   io::write_file_atomically(line_bill_path(options),
-                            requests::bill_table().values(line::bill_of_materials(file.line, schedule)).csv());
+                            requests::bill_table().values(schedule.bill).csv());
   if (options.json) {
     fmt::print("{}\n", requests::line_summary(file, schedule)
                            .add("ranks", processes.size())
@@ -190,9 +192,9 @@ int write_line_outputs(const LineOptions& options, const io::LineFile& file, con
     print_line_report(file, schedule);
   }
   int not_converged = 0;
-  for (const line::ScheduleRow& r : schedule) not_converged += r.converged < r.points;
+  for (const line::ScheduleRow& r : schedule.rows) not_converged += r.converged < r.points;
   if (!options.quiet) {
-    fmt::print(stderr, "line: {} spans ({} computed now) in {:.1f} s on {} rank(s) x {} thread(s)\n", schedule.size(),
+    fmt::print(stderr, "line: {} spans ({} computed now) in {:.1f} s on {} rank(s) x {} thread(s)\n", schedule.rows.size(),
                computed, seconds, processes.size(), options.threads);
   }
   if (not_converged == 0) return kSuccess;
@@ -235,52 +237,51 @@ int run_line_command(const LineOptions& options) {
 
   std::optional<InterruptRequest> interrupt(std::in_place);
   line::TableCache cache;
-  const auto stop = [] { return InterruptRequest::requested(); };
   const auto start = std::chrono::steady_clock::now();
-  const auto run = [&](std::size_t i) -> std::string {
-    try {
-      const line::SpanSchedule s = line::schedule_span(file.line, i, cache, stop);
-      if (!options.details.empty()) write_line_details(options.details, file, s.row, s.analysis);
-      return requests::schedule_record(s.row);
-    } catch (const Interrupted&) {
-      return {};
-    } catch (const InvalidParameter& e) {
-      return requests::schedule_record(requests::failed_row(file, i, e.what()));
-    } catch (const NumericalError& e) {
-      return requests::schedule_record(requests::failed_row(file, i, e.what()));
-    }
-  };
   std::size_t done_now = 0;
-  const auto done = [&](std::size_t i, const std::string& record) {
+  requests::LineRunOptions run;
+  run.threads = options.threads;
+  run.todo = todo;
+  run.stop = &InterruptRequest::flag();
+  if (!options.details.empty()) {
+    run.on_scheduled = [&](const line::ScheduleRow& row, const span::SpanAnalysis& analysis) {
+      write_line_details(options.details, file, row, analysis);
+    };
+  }
+  run.on_outcome = [&](const requests::SpanOutcome& outcome, const std::string& record) {
     journal->write(record);
-    line::ScheduleRow row = requests::parse_schedule_record(record);
     ++done_now;
     if (!options.quiet) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const std::size_t left = todo.size() - done_now;
-      fmt::print(stderr, "line: {}/{} {}: {}, {}{}\n", rows.size() + 1, spans, row.id, line_arrangement(row),
-                 span::verdict_name(row.verdict),
+      fmt::print(stderr, "line: {}/{} {}: {}, {}{}\n", rows.size() + 1, spans, outcome.row->id,
+                 line_arrangement(*outcome.row), span::verdict_name(outcome.row->verdict),
                  left == 0 ? std::string() : fmt::format("; {} left, about {}", left,
                                                          line_duration(seconds / static_cast<double>(done_now) *
                                                                        static_cast<double>(left))));
     }
-    rows.insert_or_assign(i, std::move(row));
+    rows.insert_or_assign(outcome.index, *outcome.row);
   };
-  processes.deal(options.threads, todo, run, done, InterruptRequest::flag());
-  const bool interrupted = InterruptRequest::requested();
+  run.dealer = [&processes](int threads, const std::vector<std::size_t>& tasks,
+                            const std::function<std::string(std::size_t)>& compute,
+                            const std::function<void(std::size_t, const std::string&)>& pass_on,
+                            const std::function<void()>&, const std::atomic<bool>& stop) {
+    processes.deal(threads, tasks, compute, pass_on, stop);
+  };
+  const requests::LineRun result = requests::run_line(file, cache, run);
+  const bool interrupted = result.termination == Termination::interrupted;
   interrupt.reset();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!root) return kSuccess;
-  if (interrupted || rows.size() < spans) {
+  if (interrupted) {
     fmt::print(stderr, "line: interrupted after {} of {} spans; {} keeps them: run again with --resume to compute the "
                        "rest (nothing else written)\n",
                rows.size(), spans, journal_path);
     return kInterrupted;
   }
-  std::vector<line::ScheduleRow> schedule;
-  for (auto& [i, row] : rows) schedule.push_back(std::move(row));
+  const requests::LineSchedule schedule = requests::line_schedule(file, std::move(rows));
   if (!options.details.empty()) {  // spans from the journal whose details are missing: balanced again
-    for (const line::ScheduleRow& row : schedule) {
+    for (const line::ScheduleRow& row : schedule.rows) {
       const std::filesystem::path csv = std::filesystem::path(options.details) / (line_file_stem(row.id) + ".csv");
       if (std::filesystem::exists(csv) || std::isnan(row.endurance_limit)) continue;  // a span not scheduled has none
       write_line_details(options.details, file, row, line::analyse_arrangement(file.line, row, cache));

@@ -7,7 +7,6 @@
 #include <deque>
 #include <mutex>
 #include <optional>
-#include <thread>
 #include <utility>
 #include <cstdlib>
 #include <cstring>
@@ -17,6 +16,8 @@
 #ifdef STOCKBRIDGE_WITH_MPI
 #include <mpi.h>
 #endif
+
+#include "stockbridge/core/parallel.hpp"
 
 namespace stockbridge::cli {
 
@@ -271,17 +272,6 @@ class DealState {
   int free_ = 0;
 };
 
-std::vector<std::thread> start_threads(int threads, DealState& state, const std::function<std::string(std::size_t)>& run) {
-  std::vector<std::thread> workers;
-  for (int k = 0; k < threads; ++k) {
-    workers.emplace_back([&state, &run] {
-      while (const std::optional<std::size_t> t = state.next_task()) state.finish(*t, run(*t));
-      state.thread_exited();
-    });
-  }
-  return workers;
-}
-
 /// How often a rank's dealing thread looks for messages and finished tasks: seldom
 /// enough not to take the core from a computing thread that shares it (mpirun binds
 /// each rank to one core), often enough next to tasks of a second or more.
@@ -295,7 +285,8 @@ enum DealTag : int { kDealRequest = 11, kDealTask = 12, kDealRecord = 13, kDealD
 void deal_as_worker(int threads, const std::function<std::string(std::size_t)>& run) {
   DealState state;
   state.set_free(threads);
-  std::vector<std::thread> workers = start_threads(threads, state, run);
+  Workers workers(threads, [&state] { return state.next_task(); },
+                  [&state, &run](std::size_t t) { state.finish(t, run(t)); }, nullptr, [&state] { state.thread_exited(); });
   bool no_more = false;
   while (true) {
     for (auto& [t, record] : state.take_records(kDealPoll, threads)) {
@@ -317,9 +308,9 @@ void deal_as_worker(int threads, const std::function<std::string(std::size_t)>& 
         state.add_task(static_cast<std::size_t>(task));
       }
     }
-    if (no_more && state.all_exited(threads)) break;
+    if (state.all_exited(threads)) break;  // no more tasks, or a task threw (join rethrows it)
   }
-  for (std::thread& w : workers) w.join();
+  workers.join();
   const int done = 0;
   MPI_Send(&done, 1, MPI_INT, 0, kDealDone, MPI_COMM_WORLD);
 }
@@ -379,13 +370,8 @@ void Processes::deal(int threads, const std::vector<std::size_t>& todo,
   };
   // Rank 0's own threads take their tasks straight from the deal.
   DealState state;
-  std::vector<std::thread> workers;
-  for (int k = 0; k < threads; ++k) {
-    workers.emplace_back([&] {
-      while (const std::optional<std::size_t> t = take()) state.finish(*t, run(*t));
-      state.thread_exited();
-    });
-  }
+  Workers workers(threads, take, [&](std::size_t t) { state.finish(t, run(t)); }, nullptr,
+                  [&state] { state.thread_exited(); });
   int ranks_open = mpi_ ? size_ - 1 : 0;
   const auto pass_on = [&](std::size_t t, const std::string& record) {
     if (!record.empty()) done(t, record);
@@ -398,7 +384,7 @@ void Processes::deal(int threads, const std::vector<std::size_t>& todo,
 #endif
     if (ranks_open == 0 && state.all_exited(threads)) break;
   }
-  for (std::thread& w : workers) w.join();
+  workers.join();
 }
 
 std::unique_ptr<design::TaskRunner> Processes::runner(int threads) const {

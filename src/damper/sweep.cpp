@@ -1,14 +1,13 @@
 #include "stockbridge/damper/sweep.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <mutex>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/core/parallel.hpp"
 #include "stockbridge/damper/tracker.hpp"
 
 namespace stockbridge::damper {
@@ -121,7 +120,6 @@ std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, con
   // Progress in points (amplitude x frequency), not arm solves: a point is counted
   // once as many arm solves as it needs have been done in all.
   const int total_points = static_cast<int>(spec.amplitudes.size() * spec.frequencies.size());
-  std::atomic<std::size_t> next_block{0};
   std::mutex progress_mutex;
   std::size_t solves = 0;
   int reported = 0;
@@ -131,25 +129,11 @@ std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, con
     const int points = static_cast<int>(++solves / distinct.size());
     while (reported < points) progress(++reported, total_points);
   };
-  std::exception_ptr failure;
-  auto worker = [&] {
-    try {
-      for (std::size_t b = next_block++; b < blocks.size(); b = next_block++) {
-        const Block& block = blocks[b];
-        continue_arm(damper.arms()[distinct[block.task_column]], spec, block,
-                     results[block.amplitude * distinct.size() + block.task_column], tick);
-      }
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(progress_mutex);
-      if (!failure) failure = std::current_exception();
-    }
-  };
-  const int n_threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(spec.threads), blocks.size()));
-  std::vector<std::thread> pool;
-  for (int i = 1; i < n_threads; ++i) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  parallel_for(blocks.size(), spec.threads, [&](std::size_t b) {
+    const Block& block = blocks[b];
+    continue_arm(damper.arms()[distinct[block.task_column]], spec, block,
+                 results[block.amplitude * distinct.size() + block.task_column], tick);
+  });
 
   // Each arm's solutions: those of its representative among the distinct arms.
   std::vector<std::size_t> task_column(damper.arms().size());

@@ -1,12 +1,10 @@
 #include "stockbridge/design/search.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <exception>
 #include <mutex>
 #include <random>
-#include <thread>
 
 #include <boost/random/sobol.hpp>
 #include <fmt/format.h>
@@ -14,6 +12,7 @@
 
 #include "../numerics/nlopt_termination.hpp"
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/core/parallel.hpp"
 
 namespace stockbridge::design {
 
@@ -28,23 +27,7 @@ ThreadRunner::ThreadRunner(int threads) : threads_(threads) { require_in_range("
 
 std::vector<TaskOutput> ThreadRunner::run(int tasks, const std::function<TaskOutput(int)>& task) {
   std::vector<TaskOutput> results(static_cast<std::size_t>(std::max(tasks, 0)));
-  std::atomic<int> next{0};
-  std::mutex failure_mutex;
-  std::exception_ptr failure;
-  const auto worker = [&] {
-    try {
-      for (int t = next++; t < tasks; t = next++) results[static_cast<std::size_t>(t)] = task(t);
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next = tasks;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < std::min(threads_, tasks); ++i) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  parallel_for(results.size(), threads_, [&](std::size_t t) { results[t] = task(static_cast<int>(t)); });
   return results;
 }
 

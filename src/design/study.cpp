@@ -211,17 +211,6 @@ std::string broken_constraint(const DesignConstraints& c, const Evaluation& e) {
 
 }  // namespace
 
-std::shared_ptr<const span::SpanTables> TableCache::get(std::size_t k, const std::vector<double>& key, const Make& make) {
-  const auto id = std::make_pair(k, key);
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    if (const auto found = tables_.find(id); found != tables_.end()) return found->second;
-  }
-  auto made = make();  // outside the lock: other threads go on
-  const std::lock_guard<std::mutex> lock(mutex_);
-  return tables_.emplace(id, std::move(made)).first->second;
-}
-
 Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, TableCache* cache) {
   Evaluation e;
   e.x = x;
@@ -253,7 +242,10 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
     const span::TableSource tables = [&](const span::Span& with, const std::vector<double>& f,
                                          const span::ImpedanceTableOptions& table) {
       const auto make = [&] { return std::make_shared<const span::SpanTables>(with, f, table); };
-      return cache ? cache->get(k, damper_key, make) : make();
+      if (!cache) return make();
+      TableCache::Key key{static_cast<double>(k)};
+      key.insert(key.end(), damper_key.begin(), damper_key.end());
+      return cache->get(key, make);
     };
     const span::SpanAnalysis a = span::analyse_span(*s, span::band_frequencies(*s, study.points()), options, {}, tables);
     const span::BalanceSummary& b = a.balance.summary;

@@ -3,17 +3,15 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <numeric>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "fit_core.hpp"
 #include "least_squares.hpp"
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/core/parallel.hpp"
 #include "stockbridge/design/damper_numbers.hpp"
 
 namespace stockbridge::identification {
@@ -669,29 +667,7 @@ class ImpedanceProblem : public least_squares::Problem {
 
   template <class Task>
   void run_in_parallel(std::size_t count, Task task) const {
-    const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(options_.threads), count);
-    if (workers <= 1) {
-      for (std::size_t k = 0; k < count; ++k) task(k);
-      return;
-    }
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failure_mutex;
-    auto work = [&] {
-      for (std::size_t k = next++; k < count; k = next++) {
-        try {
-          task(k);
-        } catch (...) {
-          const std::lock_guard lock(failure_mutex);
-          if (!failure) failure = std::current_exception();
-        }
-      }
-    };
-    std::vector<std::thread> threads;
-    for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work);
-    work();
-    for (std::thread& t : threads) t.join();
-    if (failure) std::rethrow_exception(failure);
+    parallel_for(count, options_.threads, task);
   }
 
   const FitVariables& variables_;

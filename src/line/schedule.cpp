@@ -12,47 +12,6 @@
 
 namespace stockbridge::line {
 
-std::shared_ptr<const span::ImpedanceTable> TableCache::get(const std::vector<DamperType>& types, std::size_t type,
-                                                             const std::vector<double>& frequencies,
-                                                             const span::ImpedanceTableOptions& options) {
-  Key key{type, frequencies, options.velocities, options.velocity_min, options.velocity_max, options.column_ratio};
-  std::promise<std::shared_ptr<const span::ImpedanceTable>> promise;
-  std::shared_future<std::shared_ptr<const span::ImpedanceTable>> made;
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    if (const auto found = tables_.find(key); found != tables_.end()) {
-      made = found->second;
-    } else {
-      tables_.emplace(key, promise.get_future().share());
-    }
-  }
-  if (made.valid()) return made.get();  // made, or being made by another thread: waited for outside the lock
-  try {
-    const span::SpanDamper& d = types.at(type).damper;
-    auto table = d.measured() ? std::make_shared<const span::ImpedanceTable>(*d.sheet, frequencies)
-                              : std::make_shared<const span::ImpedanceTable>(*d.damper, frequencies, options);
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      nodes_ += table->nodes();
-    }
-    promise.set_value(table);
-    return table;
-  } catch (...) {
-    promise.set_exception(std::current_exception());
-    throw;
-  }
-}
-
-int TableCache::tables() const {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  return static_cast<int>(tables_.size());
-}
-
-long long TableCache::nodes() const {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  return nodes_;
-}
-
 namespace {
 
 /// Positions (increasing) rounded to the rules' step, their range and spacing kept
@@ -113,7 +72,7 @@ double life_years_of(const std::optional<span::LifeEstimate>& life) {
 std::shared_ptr<const span::SpanTables> type_tables(const Line& line, std::size_t type, std::size_t count,
                                                      const std::vector<double>& frequencies,
                                                      const span::ImpedanceTableOptions& options, TableCache& cache) {
-  const auto table = cache.get(line.types(), type, frequencies, options);
+  const auto table = type_table(line, type, frequencies, options, cache);
   return std::make_shared<const span::SpanTables>(frequencies, std::vector<span::ImpedanceTable>(count, *table));
 }
 
@@ -232,6 +191,19 @@ void fill_arrangement(ScheduleRow& row, const Line& line, const Candidate* c, co
 }
 
 }  // namespace
+
+std::shared_ptr<const span::ImpedanceTable> type_table(const Line& line, std::size_t type,
+                                                     const std::vector<double>& frequencies,
+                                                     const span::ImpedanceTableOptions& options, TableCache& cache) {
+  TableCache::Key key{static_cast<double>(type), static_cast<double>(options.velocities), options.velocity_min,
+                      options.velocity_max, options.column_ratio};
+  key.insert(key.end(), frequencies.begin(), frequencies.end());
+  return cache.get(key, [&] {
+    const span::SpanDamper& d = line.types().at(type).damper;
+    return d.measured() ? std::make_shared<const span::ImpedanceTable>(*d.sheet, frequencies)
+                        : std::make_shared<const span::ImpedanceTable>(*d.damper, frequencies, options);
+  });
+}
 
 SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cache, const std::function<bool()>& stop) {
   const LineSpan& s = line.spans().at(index);

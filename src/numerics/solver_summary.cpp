@@ -19,6 +19,7 @@ std::string_view termination_name(Termination termination) {
     case Termination::inner_failure: return "inner_failure";
     case Termination::no_progress: return "no_progress";
     case Termination::no_root: return "no_root";
+    case Termination::interrupted: return "interrupted";
   }
   return "unknown";
 }
@@ -55,6 +56,7 @@ std::string what_happened(const SolverSummary& s) {
       return fmt::format("no progress after {} evaluations{}", s.evaluations,
                          std::isnan(s.residual) ? "" : fmt::format(" (residual {:.3g})", s.residual));
     case Termination::no_root: return "no root in the range searched";
+    case Termination::interrupted: return "interrupted (a stop was asked for)";
   }
   return "unknown termination";
 }

@@ -102,10 +102,11 @@ Chart dampers_chart(const std::vector<line::ScheduleRow>& rows) {
 
 }  // namespace
 
-std::string line_report(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows, const ReportContext& context) {
+std::string line_report(const io::LineFile& file, const requests::LineSchedule& schedule, const ReportContext& context) {
   HtmlPage page({"Damper schedule: line " + file.name, context.generated_at, context.command});
+  const std::vector<line::ScheduleRow>& rows = schedule.rows;
   const line::ScheduleCounts counts = line::schedule_counts(rows);
-  const std::vector<line::BillLine> bill = line::bill_of_materials(file.line, rows);
+  const std::vector<line::BillLine>& bill = schedule.bill;
   int dampers = 0;
   double mass = 0.0;
   bool mass_known = true;

@@ -262,7 +262,11 @@ Range heat_range(const HeatMap& h) {
   return r;
 }
 
-std::string svg(const Chart& chart) {
+namespace {
+
+/// Every value the chart shows along x and along y (series, bands, reference lines,
+/// heat cells); InvalidParameter for a series or band whose columns differ in length.
+std::pair<std::vector<double>, std::vector<double>> shown_values(const Chart& chart) {
   std::vector<double> xs, ys;
   for (const Series& s : chart.series) {
     if (s.x.size() != s.y.size()) {
@@ -287,33 +291,19 @@ std::string svg(const Chart& chart) {
       ys.insert(ys.end(), {c.y_low, c.y_high});
     }
   }
-  const bool categories = !chart.x_categories.empty();
-  Axis x_axis = chart.x;
-  if (categories) {
-    x_axis.log = false;
-    x_axis.min = -0.5;
-    x_axis.max = static_cast<double>(chart.x_categories.size()) - 0.5;
-  }
-  const Range xr = axis_range(x_axis, xs, "x");
-  const Range yr = axis_range(chart.y, ys, "y");
+  return {std::move(xs), std::move(ys)};
+}
 
-  const std::vector<std::string> title = wrap(chart.title, 76);
-  const double title_height = 8.0 + 18.0 * static_cast<double>(title.size());
-  const double top = title_height + (chart.top ? 44.0 : 10.0);
-  const double right = chart.right ? kWidth - 74.0 : kWidth - 24.0;
-  const double bottom = top + kPlotHeight;
-  const bool rotated = categories && chart.x_categories.size() > 12;
-  std::size_t longest = 0;
-  for (const std::string& c : chart.x_categories) longest = std::max(longest, c.size());
-  const double tick_band = rotated ? 12.0 + 0.72 * kCharWidth * static_cast<double>(std::min<std::size_t>(longest, 16)) : 18.0;
+/// A legend entry: a series' or a band's, where it goes (x, and the row below the axis).
+struct LegendEntry {
+  std::size_t index;
+  bool band;
+  double x, row;
+};
 
-  // The legend below the axis label, wrapped to the chart's width.
-  struct Entry {
-    std::size_t index;  ///< a series', or (band) a band's
-    bool band;
-    double x, row;
-  };
-  std::vector<Entry> entries;
+/// The legend's entries, wrapped to the chart's width.
+std::vector<LegendEntry> legend_entries(const Chart& chart) {
+  std::vector<LegendEntry> entries;
   double lx = kLeft, row = 0;
   const auto add_entry = [&](std::size_t i, bool band, const std::string& label) {
     if (label.empty()) return;
@@ -327,130 +317,159 @@ std::string svg(const Chart& chart) {
   };
   for (std::size_t i = 0; i < chart.series.size(); ++i) add_entry(i, false, chart.series[i].label);
   for (std::size_t i = 0; i < chart.bands.size(); ++i) add_entry(i, true, chart.bands[i].label);
-  const double legend_top = bottom + tick_band + 34.0;
-  const double colour_bar_top = legend_top + (entries.empty() ? 0.0 : 18.0 * (row + 1)) + 6.0;
-  const double height = colour_bar_top + (chart.heat ? 34.0 : 0.0);
+  return entries;
+}
 
-  const Scale x{xr, x_axis.log, kLeft, right};
-  const Scale y{yr, chart.y.log, bottom, top};
-  std::string out = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {:.0f} {:.0f}\" width=\"100%\" role=\"img\" "
-      "font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">",
-      kWidth, height);
-  out += fmt::format("<title>{}</title>", escape(chart.title));
-  for (std::size_t i = 0; i < title.size(); ++i) {
-    out += fmt::format("<text x=\"{:.0f}\" y=\"{:.0f}\" font-size=\"14\" font-weight=\"bold\">{}</text>", kLeft,
-                       20.0 + 18.0 * static_cast<double>(i), escape(title[i]));
+/// Where everything goes: the plot's frame, the title's lines, the tick labels'
+/// band, the legend and the colour bar, and the scales of the two axes.
+struct Layout {
+  std::vector<std::string> title;
+  bool categories = false;
+  bool rotated = false;  ///< category labels turned (many of them)
+  double top = 0, right = 0, bottom = 0, tick_band = 0;
+  double legend_top = 0, colour_bar_top = 0, height = 0;
+  Range xr, yr;
+  Axis x_axis;
+  std::vector<LegendEntry> entries;
+};
+
+Layout layout_of(const Chart& chart) {
+  Layout l;
+  const auto [xs, ys] = shown_values(chart);
+  l.categories = !chart.x_categories.empty();
+  l.x_axis = chart.x;
+  if (l.categories) {
+    l.x_axis.log = false;
+    l.x_axis.min = -0.5;
+    l.x_axis.max = static_cast<double>(chart.x_categories.size()) - 0.5;
   }
-  // Grid and ticks.
-  out += "<g stroke=\"#e3e3e3\" stroke-width=\"1\">";
+  l.xr = axis_range(l.x_axis, xs, "x");
+  l.yr = axis_range(chart.y, ys, "y");
+  l.title = wrap(chart.title, 76);
+  const double title_height = 8.0 + 18.0 * static_cast<double>(l.title.size());
+  l.top = title_height + (chart.top ? 44.0 : 10.0);
+  l.right = chart.right ? kWidth - 74.0 : kWidth - 24.0;
+  l.bottom = l.top + kPlotHeight;
+  l.rotated = l.categories && chart.x_categories.size() > 12;
+  std::size_t longest = 0;
+  for (const std::string& c : chart.x_categories) longest = std::max(longest, c.size());
+  l.tick_band = l.rotated ? 12.0 + 0.72 * kCharWidth * static_cast<double>(std::min<std::size_t>(longest, 16)) : 18.0;
+  l.entries = legend_entries(chart);
+  const double rows = l.entries.empty() ? 0.0 : l.entries.back().row + 1;
+  l.legend_top = l.bottom + l.tick_band + 34.0;
+  l.colour_bar_top = l.legend_top + 18.0 * rows + 6.0;
+  l.height = l.colour_bar_top + (chart.heat ? 34.0 : 0.0);
+  return l;
+}
+
+/// The grid lines and the tick labels of both primary axes (categories along x where given).
+std::string grid_and_ticks(const Chart& chart, const Layout& l, const Scale& x, const Scale& y) {
+  std::string out = "<g stroke=\"#e3e3e3\" stroke-width=\"1\">";
   std::string labels;
-  if (categories) {
+  if (l.categories) {
     const std::size_t n = chart.x_categories.size();
     const std::size_t every = n > 60 ? (n + 59) / 60 : 1;
     for (std::size_t k = 0; k < n; k += every) {
       const double px = x(static_cast<double>(k));
-      out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\"/>", px, top, bottom);
-      if (rotated) {
+      out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\"/>", px, l.top, l.bottom);
+      if (l.rotated) {
         labels += fmt::format("<text transform=\"translate({:.1f},{:.1f}) rotate(-50)\" text-anchor=\"end\" font-size=\"10\">{}</text>",
-                              px + 3, bottom + 12, escape(chart.x_categories[k]));
+                              px + 3, l.bottom + 12, escape(chart.x_categories[k]));
       } else {
-        labels += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", px, bottom + 16,
+        labels += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", px, l.bottom + 16,
                               escape(chart.x_categories[k]));
       }
     }
   } else {
-    for (const double t : ticks(xr.lo, xr.hi, x_axis.log)) {
+    for (const double t : ticks(l.xr.lo, l.xr.hi, l.x_axis.log)) {
       const double px = x(t);
-      out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\"/>", px, top, bottom);
-      labels += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", px, bottom + 16, tick_label(t));
+      out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\"/>", px, l.top, l.bottom);
+      labels += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", px, l.bottom + 16, tick_label(t));
     }
   }
-  for (const double t : ticks(yr.lo, yr.hi, chart.y.log)) {
+  for (const double t : ticks(l.yr.lo, l.yr.hi, chart.y.log)) {
     if (chart.y.integer && t != std::round(t)) continue;
     const double py = y(t);
-    out += fmt::format("<line x1=\"{1:.1f}\" y1=\"{0:.1f}\" x2=\"{2:.1f}\" y2=\"{0:.1f}\"/>", py, kLeft, right);
+    out += fmt::format("<line x1=\"{1:.1f}\" y1=\"{0:.1f}\" x2=\"{2:.1f}\" y2=\"{0:.1f}\"/>", py, kLeft, l.right);
     labels += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{}</text>", kLeft - 6, py + 4, tick_label(t));
   }
-  out += "</g>" + labels;
-  // Secondary axes: their own nice ticks, placed by the primary scale.
-  if (chart.top && !categories) {
+  return out + "</g>" + labels;
+}
+
+/// The secondary axes, top and right: their own nice ticks, placed by the primary scale.
+std::string secondary_axes(const Chart& chart, const Layout& l, const Scale& x, const Scale& y) {
+  std::string out;
+  if (chart.top && !l.categories) {
     const double s = chart.top->scale;
-    out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#444\"/>", kLeft, top, right, top);
-    for (const double t : ticks(s * xr.lo, s * xr.hi, x_axis.log)) {
+    out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#444\"/>", kLeft, l.top,
+                       l.right, l.top);
+    for (const double t : ticks(s * l.xr.lo, s * l.xr.hi, l.x_axis.log)) {
       const double px = x(t / s);
       out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"#444\"/>"
                          "<text x=\"{0:.1f}\" y=\"{3:.1f}\" text-anchor=\"middle\">{4}</text>",
-                         px, top, top - 5, top - 9, tick_label(t));
+                         px, l.top, l.top - 5, l.top - 9, tick_label(t));
     }
-    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", 0.5 * (kLeft + right), top - 27,
-                       escape(chart.top->label));
+    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", 0.5 * (kLeft + l.right),
+                       l.top - 27, escape(chart.top->label));
   }
   if (chart.right) {
     const double s = chart.right->scale;
-    for (const double t : ticks(s * yr.lo, s * yr.hi, chart.y.log)) {
+    for (const double t : ticks(s * l.yr.lo, s * l.yr.hi, chart.y.log)) {
       const double py = y(t / s);
       out += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#444\"/>"
                          "<text x=\"{3:.1f}\" y=\"{4:.1f}\">{5}</text>",
-                         right, py, right + 5, right + 8, py + 4, tick_label(t));
+                         l.right, py, l.right + 5, l.right + 8, py + 4, tick_label(t));
     }
     out += fmt::format("<text transform=\"translate({:.1f},{:.1f}) rotate(90)\" text-anchor=\"middle\">{}</text>",
-                       kWidth - 14, 0.5 * (top + bottom), escape(chart.right->label));
+                       kWidth - 14, 0.5 * (l.top + l.bottom), escape(chart.right->label));
   }
-  // The frame and the axis labels.
-  out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"#444\"/>",
-                     kLeft, top, right - kLeft, kPlotHeight);
-  out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", 0.5 * (kLeft + right),
-                     bottom + tick_band + 20, escape(chart.x.label));
-  out += fmt::format("<text transform=\"translate(16,{:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
-                     0.5 * (top + bottom), escape(chart.y.label));
-  // The heat map, bands, reference lines, then the curves on top.
-  bool shown = false;
-  if (chart.heat) {
-    const HeatMap& h = *chart.heat;
-    const Range hr = heat_range(h);
-    for (const HeatCell& c : h.cells) {
-      if (!std::isfinite(c.value) || (h.log && c.value <= 0.0)) continue;
-      if (!x.shows(c.x_low) || !x.shows(c.x_high) || !y.shows(c.y_low) || !y.shows(c.y_high)) continue;
-      const double v = h.log ? std::log10(c.value) : c.value;
-      const double px0 = x(c.x_low), px1 = x(c.x_high), py0 = y(c.y_high), py1 = y(c.y_low);
-      out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"{}\" "
-                         "stroke=\"#ffffff\" stroke-width=\"0.5\"><title>{}</title></rect>",
-                         px0, py0, px1 - px0, py1 - py0, heat_colour((v - hr.lo) / (hr.hi - hr.lo)),
-                         escape(fmt::format("{:.4g}", c.value)));
-      shown = true;
-    }
-    // The colour bar: ten steps from the least to the most.
-    const double bar_y = colour_bar_top + 4.0, bar_w = 300.0;
-    for (int k = 0; k < 10; ++k) {
-      out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"10\" fill=\"{}\"/>",
-                         kLeft + 30.0 * k, bar_y, 30.0, heat_colour((k + 0.5) / 10.0));
-    }
-    const auto value_at = [&](double v) { return tick_label(h.log ? std::pow(10.0, v) : v); };
-    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text><text x=\"{:.1f}\" y=\"{:.1f}\" "
-                       "text-anchor=\"end\">{}</text><text x=\"{:.1f}\" y=\"{:.1f}\">{}{}</text>",
-                       kLeft, bar_y + 24, value_at(hr.lo), kLeft + bar_w, bar_y + 24, value_at(hr.hi),
-                       kLeft + bar_w + 12, bar_y + 10, escape(h.label), h.log ? " (colour: log scale)" : "");
+  return out;
+}
+
+/// The frame and the two axis labels.
+std::string frame_and_labels(const Chart& chart, const Layout& l) {
+  return fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"#444\"/>",
+                     kLeft, l.top, l.right - kLeft, kPlotHeight) +
+         fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>", 0.5 * (kLeft + l.right),
+                     l.bottom + l.tick_band + 20, escape(chart.x.label)) +
+         fmt::format("<text transform=\"translate(16,{:.1f}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
+                     0.5 * (l.top + l.bottom), escape(chart.y.label));
+}
+
+/// The heat map's cells within the axes (`shown` set if any), and its colour bar:
+/// ten steps from the least to the most.
+std::string heat_map(const HeatMap& h, const Layout& l, const Scale& x, const Scale& y, bool& shown) {
+  std::string out;
+  const Range hr = heat_range(h);
+  for (const HeatCell& c : h.cells) {
+    if (!std::isfinite(c.value) || (h.log && c.value <= 0.0)) continue;
+    if (!x.shows(c.x_low) || !x.shows(c.x_high) || !y.shows(c.y_low) || !y.shows(c.y_high)) continue;
+    const double v = h.log ? std::log10(c.value) : c.value;
+    const double px0 = x(c.x_low), px1 = x(c.x_high), py0 = y(c.y_high), py1 = y(c.y_low);
+    out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"{}\" "
+                       "stroke=\"#ffffff\" stroke-width=\"0.5\"><title>{}</title></rect>",
+                       px0, py0, px1 - px0, py1 - py0, heat_colour((v - hr.lo) / (hr.hi - hr.lo)),
+                       escape(fmt::format("{:.4g}", c.value)));
+    shown = true;
   }
-  for (const Band& b : chart.bands) out += band_area(b, x, y);
-  for (const ReferenceLine& r : chart.references) {
-    if (!y.shows(r.y)) continue;
-    out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#000\" stroke-width=\"1.2\" "
-                       "stroke-dasharray=\"9 3 2 3\"/><text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\" font-size=\"11\">{}</text>",
-                       kLeft, y(r.y), right, y(r.y), right - 4, y(r.y) - 4, escape(r.label));
+  const double bar_y = l.colour_bar_top + 4.0, bar_w = 300.0;
+  for (int k = 0; k < 10; ++k) {
+    out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"10\" fill=\"{}\"/>",
+                       kLeft + 30.0 * k, bar_y, 30.0, heat_colour((k + 0.5) / 10.0));
   }
-  for (std::size_t i = 0; i < chart.series.size(); ++i) {
-    out += curve(chart.series[i], colour_of(chart.series[i], i), x, y);
-    const Series& s = chart.series[i];
-    for (std::size_t k = 0; k < s.x.size() && !shown; ++k) shown = x.shows(s.x[k]) && y.shows(s.y[k]);
-  }
-  if (!shown) {
-    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"14\" fill=\"#8a3b00\">"
-                       "no point to show: none converged</text>",
-                       0.5 * (kLeft + right), 0.5 * (top + bottom));
-  }
-  for (const Entry& e : entries) {
-    const double ey = legend_top + 18.0 * e.row;
+  const auto value_at = [&](double v) { return tick_label(h.log ? std::pow(10.0, v) : v); };
+  out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text><text x=\"{:.1f}\" y=\"{:.1f}\" "
+                     "text-anchor=\"end\">{}</text><text x=\"{:.1f}\" y=\"{:.1f}\">{}{}</text>",
+                     kLeft, bar_y + 24, value_at(hr.lo), kLeft + bar_w, bar_y + 24, value_at(hr.hi),
+                     kLeft + bar_w + 12, bar_y + 10, escape(h.label), h.log ? " (colour: log scale)" : "");
+  return out;
+}
+
+/// The legend: a sample of each series' line or band's fill, and its label.
+std::string legend(const Chart& chart, const Layout& l) {
+  std::string out;
+  for (const LegendEntry& e : l.entries) {
+    const double ey = l.legend_top + 18.0 * e.row;
     if (e.band) {
       const Band& b = chart.bands[e.index];
       out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"24\" height=\"10\" fill=\"{}\" fill-opacity=\"0.2\"/>",
@@ -462,6 +481,48 @@ std::string svg(const Chart& chart) {
     out += legend_sample(s, colour_of(s, e.index), e.x, ey - 4);
     out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>", e.x + 30, ey, escape(s.label));
   }
+  return out;
+}
+
+}  // namespace
+
+std::string svg(const Chart& chart) {
+  const Layout l = layout_of(chart);
+  const Scale x{l.xr, l.x_axis.log, kLeft, l.right};
+  const Scale y{l.yr, chart.y.log, l.bottom, l.top};
+  std::string out = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {:.0f} {:.0f}\" width=\"100%\" role=\"img\" "
+      "font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">",
+      kWidth, l.height);
+  out += fmt::format("<title>{}</title>", escape(chart.title));
+  for (std::size_t i = 0; i < l.title.size(); ++i) {
+    out += fmt::format("<text x=\"{:.0f}\" y=\"{:.0f}\" font-size=\"14\" font-weight=\"bold\">{}</text>", kLeft,
+                       20.0 + 18.0 * static_cast<double>(i), escape(l.title[i]));
+  }
+  out += grid_and_ticks(chart, l, x, y);
+  out += secondary_axes(chart, l, x, y);
+  out += frame_and_labels(chart, l);
+  // The heat map, bands, reference lines, then the curves on top.
+  bool shown = false;
+  if (chart.heat) out += heat_map(*chart.heat, l, x, y, shown);
+  for (const Band& b : chart.bands) out += band_area(b, x, y);
+  for (const ReferenceLine& r : chart.references) {
+    if (!y.shows(r.y)) continue;
+    out += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#000\" stroke-width=\"1.2\" "
+                       "stroke-dasharray=\"9 3 2 3\"/><text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\" font-size=\"11\">{}</text>",
+                       kLeft, y(r.y), l.right, y(r.y), l.right - 4, y(r.y) - 4, escape(r.label));
+  }
+  for (std::size_t i = 0; i < chart.series.size(); ++i) {
+    out += curve(chart.series[i], colour_of(chart.series[i], i), x, y);
+    const Series& s = chart.series[i];
+    for (std::size_t k = 0; k < s.x.size() && !shown; ++k) shown = x.shows(s.x[k]) && y.shows(s.y[k]);
+  }
+  if (!shown) {
+    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"14\" fill=\"#8a3b00\">"
+                       "no point to show: none converged</text>",
+                       0.5 * (kLeft + l.right), 0.5 * (l.top + l.bottom));
+  }
+  out += legend(chart, l);
   out += "</svg>";
   return out;
 }

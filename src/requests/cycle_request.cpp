@@ -64,11 +64,10 @@ using CycleQuantity = Quantity<CycleSample>;
 /// A number of a converged sample (NaN otherwise).
 CycleQuantity solved(std::string name, std::string unit, std::string meaning,
                       double cable::ExperimentSample::*field) {
-  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
-          [field](const CycleSample& s, std::size_t) {
-            return s.sample->solve.converged() ? s.sample->*field : std::numeric_limits<double>::quiet_NaN();
-          },
-          {}};
+  return masked_quantity<CycleSample>(
+      std::move(name), std::move(unit), std::move(meaning),
+      [](const CycleSample& s) { return s.sample->solve.converged(); },
+      [field](const CycleSample& s, std::size_t) { return s.sample->*field; });
 }
 
 }  // namespace

@@ -121,13 +121,29 @@ Table<line::BillLine> bill_table() {
   });
 }
 
-io::JsonObject line_summary(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows) {
+LineSchedule line_schedule(const io::LineFile& file, std::map<std::size_t, line::ScheduleRow> rows) {
+  LineSchedule s;
+  const std::size_t spans = file.line.spans().size();
+  s.rows.reserve(spans);
+  for (std::size_t i = 0; i < spans; ++i) {
+    const auto found = rows.find(i);
+    if (found == rows.end()) {
+      throw InvalidParameter("rows", fmt::format(": span {} ({}) has no row", i, file.line.spans()[i].id));
+    }
+    s.rows.push_back(std::move(found->second));
+  }
+  s.bill = line::bill_of_materials(file.line, s.rows);
+  return s;
+}
+
+io::JsonObject line_summary(const io::LineFile& file, const LineSchedule& schedule) {
+  const std::vector<line::ScheduleRow>& rows = schedule.rows;
   const line::ScheduleCounts c = line::schedule_counts(rows);
   const Row* governing = c.governing;
   std::vector<io::JsonObject> counts;
   for (const auto& [n, spans] : c.per_end) counts.push_back(io::JsonObject().add("dampers_per_end", n).add("spans", spans));
   std::vector<io::JsonObject> bill;
-  const TableValues values = bill_table().values(line::bill_of_materials(file.line, rows));
+  const TableValues values = bill_table().values(schedule.bill);
   for (std::size_t r = 0; r < values.rows; ++r) bill.push_back(values.json_row(r));
   io::JsonObject json;
   json.add("line", file.name)

@@ -166,23 +166,22 @@ SpanQuantity span_given(std::string name, std::string unit, std::string meaning,
 /// A number computed by the balance: NaN where the point did not converge.
 SpanQuantity span_solved(std::string name, std::string unit, std::string meaning,
                          std::function<double(const span::BalancePoint&)> value) {
-  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
-          [value = std::move(value)](const span::BalancePoint& p, std::size_t) {
-            return p.converged() ? value(p) : kSpanNoValue;
-          },
-          {}};
+  return masked_quantity<span::BalancePoint>(
+      std::move(name), std::move(unit), std::move(meaning), [](const span::BalancePoint& p) { return p.converged(); },
+      [value = std::move(value)](const span::BalancePoint& p, std::size_t) { return value(p); });
 }
 
 /// A number of each damper and end: NaN where the point did not converge.
 SpanQuantity span_per_damper(std::string name, std::string unit, std::string meaning,
                              std::shared_ptr<const SpanTableContext> context,
                              std::function<double(const span::DamperAtBalance&)> value) {
-  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
-          [context, value = std::move(value)](const span::BalancePoint& p, std::size_t member) {
-            const std::size_t i = context->entry_of_member[member];
-            return p.converged() && i < p.dampers.size() ? value(p.dampers[i]) : kSpanNoValue;
-          },
-          {}};
+  return masked_quantity<span::BalancePoint>(
+      std::move(name), std::move(unit), std::move(meaning),
+      [context](const span::BalancePoint& p) { return p.converged(); },
+      [context, value = std::move(value)](const span::BalancePoint& p, std::size_t member) {
+        const std::size_t i = context->entry_of_member[member];
+        return i < p.dampers.size() ? value(p.dampers[i]) : kSpanNoValue;
+      });
 }
 
 double span_megapascal_of(double pascal) { return pascal / kPascalPerMegapascal; }

@@ -42,8 +42,6 @@ namespace {
 using Point = damper::ImpedancePoint;
 using PointQuantity = Quantity<Point>;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 /// A value that is round-off of zero relative to `scale` (|value| < 1e-12 scale) as 0.
 double without_round_off(double value, double scale) { return std::abs(value) < 1e-12 * scale ? 0.0 : value; }
 
@@ -57,8 +55,9 @@ std::complex<double> cleaned_impedance(const Point& p) {
 
 /// A quantity of a converged point (NaN otherwise).
 PointQuantity computed(std::string name, std::string unit, std::string meaning, std::function<double(const Point&)> value) {
-  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
-          [value = std::move(value)](const Point& p, std::size_t) { return p.converged() ? value(p) : kNaN; }, {}};
+  return masked_quantity<Point>(std::move(name), std::move(unit), std::move(meaning),
+                               [](const Point& p) { return p.converged(); },
+                               [value = std::move(value)](const Point& p, std::size_t) { return value(p); });
 }
 
 /// A quantity every point has.
@@ -97,23 +96,23 @@ std::vector<PointQuantity> design_figures() {
                "the largest, over the arms, of the curvature amplitude of the arm's clamp section (<arm>_clamp_curvature_per_m "
                "of response, the integration point nearest the clamp): the damper cable's own fatigue load, where it bends most",
                [](const Point& p) { return p.messenger_curvature_max; }),
-      {"<arm>_power_w", "W",
-       "the mean power that arm takes from the clamp, V^2 Re(Z_k) / 2 with Z_k = F1_k / V the arm's part of Z; it equals "
-       "what the arm's sliders dissipate per period / T, and the arms' powers add up to power_w. An arm that does not slip "
-       "shows 0 (round-off), as power_w does",
-       ColumnKind::number,
-       [](const Point& p, std::size_t k) {
-         if (!p.converged()) return kNaN;
-         const damper::ArmFigures& arm = p.arms.at(k);
-         // An arm that does not slip takes no power but for round-off of its own |Z_k|: 0, as the damper's.
-         return without_round_off(arm.power, apparent_power(p.velocity_amplitude, arm.impedance));
-       },
-       {}},
-      {"<arm>_mass_amplitude_m", "m",
-       "the amplitude of x - b phi: how far the mass's centre of gravity moves relative to the clamp, the clearance its "
-       "motion needs",
-       ColumnKind::number, [](const Point& p, std::size_t k) { return p.converged() ? p.arms.at(k).mass_amplitude : kNaN; },
-       {}},
+      masked_quantity<Point>(
+          "<arm>_power_w", "W",
+          "the mean power that arm takes from the clamp, V^2 Re(Z_k) / 2 with Z_k = F1_k / V the arm's part of Z; it "
+          "equals what the arm's sliders dissipate per period / T, and the arms' powers add up to power_w. An arm that "
+          "does not slip shows 0 (round-off), as power_w does",
+          [](const Point& p) { return p.converged(); },
+          [](const Point& p, std::size_t k) {
+            const damper::ArmFigures& arm = p.arms.at(k);
+            // An arm that does not slip takes no power but for round-off of its own |Z_k|: 0, as the damper's.
+            return without_round_off(arm.power, apparent_power(p.velocity_amplitude, arm.impedance));
+          }),
+      masked_quantity<Point>(
+          "<arm>_mass_amplitude_m", "m",
+          "the amplitude of x - b phi: how far the mass's centre of gravity moves relative to the clamp, the clearance "
+          "its motion needs",
+          [](const Point& p) { return p.converged(); },
+          [](const Point& p, std::size_t k) { return p.arms.at(k).mass_amplitude; }),
   };
 }
 

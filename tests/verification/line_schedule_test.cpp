@@ -56,7 +56,7 @@ conductor = "ACSR Drake"
 double best_one_damper_stress(const Line& line, std::size_t index, TableCache& cache) {
   const LineSpan& s = line.spans()[index];
   const std::vector<double> f = span::band_frequencies(s.span, line.rules().search_points);
-  const auto table = cache.get(line.types(), 0, f, s.balance.table.for_position_search());
+  const auto table = type_table(line, 0, f, s.balance.table.for_position_search(), cache);
   const span::SpanTables tables(f, {*table});
   span::BalanceOptions on_tables = s.balance;
   on_tables.polish = false;

@@ -8,9 +8,7 @@
 
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,6 +17,7 @@
 
 #include "stockbridge/numerics/solver_summary.hpp"
 #include "stockbridge/span/analysis.hpp"
+#include "stockbridge/span/table_cache.hpp"
 
 namespace stockbridge::design {
 
@@ -144,20 +143,11 @@ struct Evaluation {
   bool feasible() const { return converged() && infeasibility.empty(); }
 };
 
-/// The dampers' impedance tables of the candidates evaluated so far, by the values
-/// of their damper variables and the span: candidates that differ only in the
-/// position share them (a table depends on the damper and the span's band alone,
-/// so sharing changes no result). Safe to use from several threads.
-class TableCache {
- public:
-  using Make = std::function<std::shared_ptr<const span::SpanTables>()>;
-  /// The tables of span k for a damper made by `key`, made by `make` if not there yet.
-  std::shared_ptr<const span::SpanTables> get(std::size_t k, const std::vector<double>& key, const Make& make);
-
- private:
-  std::mutex mutex_;
-  std::map<std::pair<std::size_t, std::vector<double>>, std::shared_ptr<const span::SpanTables>> tables_;
-};
+/// The dampers' impedance tables of the candidates evaluated so far, by the span and
+/// the values of their damper variables: candidates that differ only in the
+/// position share them (a table depends on the damper and the span's band alone, so
+/// sharing changes no result). Safe to use from several threads.
+using TableCache = span::TableCache<span::SpanTables>;
 
 /// A candidate as it can be built: each value rounded to `digits` significant digits
 /// (masses, lengths and the rest alike), rounded toward the inside of its variable's

@@ -9,40 +9,23 @@
 // threads and MPI ranks; the impedance tables come from a TableCache shared by all.
 
 #include <functional>
-#include <future>
 #include <limits>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "stockbridge/line/line.hpp"
 #include "stockbridge/span/analysis.hpp"
+#include "stockbridge/span/table_cache.hpp"
 
 namespace stockbridge::line {
 
-/// The damper types' impedance tables by type and frequencies: a table depends on
-/// the damper and the frequencies alone (not the span), so spans of one conductor
-/// and wind share it. Each made once, whichever thread asks first (the others wait
-/// for it). Safe to use from several threads.
-class TableCache {
- public:
-  std::shared_ptr<const span::ImpedanceTable> get(const std::vector<DamperType>& types, std::size_t type,
-                                                   const std::vector<double>& frequencies,
-                                                   const span::ImpedanceTableOptions& options);
-  /// Tables made so far, and the (frequency, velocity) nodes solved for them.
-  int tables() const;
-  long long nodes() const;
-
- private:
-  using Key = std::tuple<std::size_t, std::vector<double>, int, double, double, double>;
-  mutable std::mutex mutex_;
-  std::map<Key, std::shared_future<std::shared_ptr<const span::ImpedanceTable>>> tables_;
-  long long nodes_ = 0;
-};
+/// The damper types' impedance tables by type, frequencies and table options: a
+/// table depends on the damper and the frequencies alone (not the span), so spans of
+/// one conductor and wind share it, whichever thread asks first.
+using TableCache = span::TableCache<span::ImpedanceTable>;
 
 /// One span's line of the schedule. Stresses in Pa; NaN where nothing converged.
 struct ScheduleRow {
@@ -91,6 +74,12 @@ struct SpanSchedule {
   ScheduleRow row;
   span::SpanAnalysis analysis;
 };
+
+/// The impedance table of damper type `type` at `frequencies` with `options`, from
+/// the cache (made there once, by whichever thread asks first).
+std::shared_ptr<const span::ImpedanceTable> type_table(const Line& line, std::size_t type,
+                                                     const std::vector<double>& frequencies,
+                                                     const span::ImpedanceTableOptions& options, TableCache& cache);
 
 /// Schedules span `index` of `line`. `stop` (when given) is asked between balances:
 /// true throws Interrupted. Non-convergence is in the row (verdict unknown,

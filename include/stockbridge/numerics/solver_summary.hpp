@@ -25,6 +25,7 @@ enum class Termination {
   inner_failure,       ///< a nested solve failed (e.g. a cable state determination); `where` says which
   no_progress,         ///< the iteration stopped making progress (the residual stopped falling, the step shrank to round-off)
   no_root,             ///< the function keeps its sign over the whole range searched: no root there
+  interrupted,         ///< a stop was asked for (Ctrl-C, a caller's stop flag): ended early, nothing wrong
 };
 
 /// snake_case name, as in JSON output and Python ("line_search_failed").

@@ -16,6 +16,7 @@
 #include "stockbridge/line/schedule.hpp"
 #include "stockbridge/measurements/recorder.hpp"
 #include "stockbridge/report/html_page.hpp"
+#include "stockbridge/requests/line_request.hpp"
 #include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
 
@@ -58,7 +59,7 @@ std::string impedance_report(const ImpedanceReportInput& input, const ReportCont
 
 /// A line's damper schedule (`stockbridge line`): the rules, the verdicts, the
 /// schedule table, the stress ratio (margin) per span, the bill of materials.
-std::string line_report(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows,
+std::string line_report(const io::LineFile& file, const requests::LineSchedule& schedule,
                         const ReportContext& context);
 
 /// A design search (`stockbridge design`): the study, the best design (the optimum

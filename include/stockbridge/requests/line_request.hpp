@@ -5,6 +5,7 @@
 // gives the row back bit for bit: what MPI ranks send and --resume reads).
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,11 +28,21 @@ Table<line::ScheduleRow> schedule_table();
 /// The bill of materials: damper_type, dampers, spans, mass_kg.
 Table<line::BillLine> bill_table();
 
+/// A line's schedule: a row for every span in the line's order, and its bill of
+/// materials (built once, for the CSV, the summary and the report).
+struct LineSchedule {
+  std::vector<line::ScheduleRow> rows;
+  std::vector<line::BillLine> bill;
+};
+/// The schedule of `rows` (a row per span of the line, by index; InvalidParameter
+/// naming the first span without one).
+LineSchedule line_schedule(const io::LineFile& file, std::map<std::size_t, line::ScheduleRow> rows);
+
 /// The JSON summary of a schedule: the line's name, spans, spans_safe, spans_unsafe,
 /// spans_unknown, spans_not_converged, spans_worse_than_undamped, dampers_per_end
 /// (spans with 0, 1, 2, ...), the bill, the governing span (the largest stress
 /// ratio), and `seconds` where given.
-io::JsonObject line_summary(const io::LineFile& file, const std::vector<line::ScheduleRow>& rows);
+io::JsonObject line_summary(const io::LineFile& file, const LineSchedule& schedule);
 
 /// A row as one line of text (no line break): tab-separated fields, numbers in their
 /// shortest round-trip form, text escaped.

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -37,6 +38,19 @@ struct Quantity {
   /// The text of a row, for a label.
   std::function<std::string(const Row&, std::size_t member)> label;
 };
+
+/// A number only a converged row has: `value` where `converged(row)`, NaN (an empty
+/// cell, null) elsewhere: a number the program cannot stand behind is never shown.
+template <class Row>
+Quantity<Row> masked_quantity(std::string name, std::string unit, std::string meaning,
+                              std::function<bool(const Row&)> converged,
+                              std::function<double(const Row&, std::size_t member)> value) {
+  return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
+          [converged = std::move(converged), value = std::move(value)](const Row& row, std::size_t member) {
+            return converged(row) ? value(row, member) : std::numeric_limits<double>::quiet_NaN();
+          },
+          {}};
+}
 
 /// How the docs list a quantity.
 struct QuantityDoc {

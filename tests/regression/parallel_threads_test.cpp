@@ -1,0 +1,136 @@
+// parallel_for and Workers (core/parallel.hpp): every task once, the first exception carried, a stop
+// honoured, the dealer's exits counted; under ThreadSanitizer too (the tsan preset runs "Threads").
+#include "stockbridge/core/parallel.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace stockbridge {
+namespace {
+
+TEST(ParallelForThreads, RunsEveryIndexExactlyOnceOnAnyNumberOfThreads) {
+  for (const int threads : {1, 2, 4, 16}) {
+    for (const std::size_t count : {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{1000}}) {
+      std::vector<std::atomic<int>> runs(count);
+      parallel_for(count, threads, [&](std::size_t i) { ++runs[i]; });
+      for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(runs[i].load(), 1) << threads << " threads, index " << i;
+    }
+  }
+}
+
+TEST(ParallelForThreads, OneThreadRunsTheIndicesInOrderOnTheCallersThread) {
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<std::size_t> order;
+  parallel_for(5, 1, [&](std::size_t i) {
+    EXPECT_EQ(std::this_thread::get_id(), caller);
+    order.push_back(i);
+  });
+  EXPECT_EQ(order, (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+}
+
+TEST(ParallelForThreads, TheFirstExceptionIsRethrownAndNoIndexIsHandedOutAfterIt) {
+  std::vector<std::size_t> ran;
+  EXPECT_THROW(parallel_for(10, 1,
+                            [&](std::size_t i) {
+                              ran.push_back(i);
+                              if (i == 3) throw std::runtime_error("index 3");
+                            }),
+               std::runtime_error);
+  EXPECT_EQ(ran, (std::vector<std::size_t>{0, 1, 2, 3}));
+
+  // On several threads: the message of the one that threw first, and every thread joined.
+  std::atomic<int> started{0};
+  try {
+    parallel_for(1000, 4, [&](std::size_t i) {
+      ++started;
+      if (i == 0) throw std::invalid_argument("index 0");
+    });
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "index 0");
+  }
+  EXPECT_LT(started.load(), 1000);
+}
+
+TEST(ParallelForThreads, AStopSetHandsOutNoFurtherIndex) {
+  std::atomic<bool> stop{false};
+  std::vector<std::size_t> ran;
+  parallel_for(
+      10, 1,
+      [&](std::size_t i) {
+        ran.push_back(i);
+        if (i == 4) stop = true;
+      },
+      &stop);
+  EXPECT_EQ(ran, (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+
+  std::atomic<int> runs{0};
+  parallel_for(10, 4, [&](std::size_t) { ++runs; }, &stop);  // already set: nothing runs
+  EXPECT_EQ(runs.load(), 0);
+}
+
+/// A source whose tasks arrive from elsewhere, as the command line's ranks deal them.
+class DealtTasks {
+ public:
+  void add(std::size_t t) {
+    { const std::lock_guard lock(mutex_); tasks_.push_back(t); }
+    changed_.notify_all();
+  }
+  void close() {
+    { const std::lock_guard lock(mutex_); closed_ = true; }
+    changed_.notify_all();
+  }
+  std::optional<std::size_t> next() {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return !tasks_.empty() || closed_; });
+    if (tasks_.empty()) return std::nullopt;
+    const std::size_t t = tasks_.front();
+    tasks_.pop_front();
+    return t;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::size_t> tasks_;
+  bool closed_ = false;
+};
+
+TEST(WorkersThreads, TakeTasksAsTheyArriveAndEachThreadSaysWhenItLeaves) {
+  DealtTasks queue;
+  std::vector<std::atomic<int>> runs(50);
+  std::atomic<int> exits{0};
+  Workers workers(3, [&] { return queue.next(); }, [&](std::size_t t) { ++runs[t]; }, nullptr, [&] { ++exits; });
+  for (std::size_t t = 0; t < runs.size(); ++t) queue.add(t);
+  queue.close();
+  workers.join();
+  for (const std::atomic<int>& r : runs) EXPECT_EQ(r.load(), 1);
+  EXPECT_EQ(exits.load(), 3);
+}
+
+TEST(WorkersThreads, ATaskThatThrowsStopsTheOthersTakingAndJoinRethrowsIt) {
+  DealtTasks queue;
+  for (std::size_t t = 0; t < 100; ++t) queue.add(t);
+  queue.close();
+  std::atomic<int> exits{0};
+  Workers workers(2, [&] { return queue.next(); },
+                  [](std::size_t t) {
+                    if (t == 1) throw std::out_of_range("task 1");
+                    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                  },
+                  nullptr, [&] { ++exits; });
+  EXPECT_THROW(workers.join(), std::out_of_range);
+  EXPECT_EQ(exits.load(), 2);
+  EXPECT_TRUE(queue.next().has_value());  // tasks were left in the source
+}
+
+}  // namespace
+}  // namespace stockbridge
