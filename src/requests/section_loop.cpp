@@ -67,20 +67,28 @@ section::LoopRecord section_loop(const cable::LoopNumbers& given, const section:
   }
   if (!given.jenkin.empty() && !law->jenkin_elements()) foreign.push_back("jenkin");
   if (!foreign.empty()) {
-    std::vector<std::string> spelled;
-    for (std::string_view k : foreign) spelled.push_back(spelling.key(k));
-    throw InvalidParameter(fmt::format("{} takes {}, not {}", spelling.law(given.law), spelled_list(own, spelling),
-                                       fmt::join(spelled, " or ")));
+    // The other law's keys, all of them: "--ei-min, --ei-max and --chi0 are the Bouc-Wen law's".
+    const std::vector<const cable::SectionLawDescriptor*> owners = cable::owners_of(foreign.front(), law);
+    std::vector<std::string_view> theirs;
+    if (!owners.empty()) {
+      for (const cable::LawNumber& n : owners.front()->numbers()) theirs.push_back(n.key);
+      if (owners.front()->jenkin_elements()) theirs.push_back("jenkin");
+    } else {
+      theirs = foreign;
+    }
+    throw InvalidParameter(fmt::format("{} {} the {} law's: {} takes {}", spelled_list(theirs, spelling),
+                                       theirs.size() > 1 ? "are" : "is",
+                                       owners.empty() ? std::string("no") : std::string(owners.front()->title()),
+                                       spelling.law(given.law), spelled_list(own, spelling)));
   }
   if (!missing.empty()) {
-    // Each run of keys of one unit followed by the unit: "--ei-min, --ei-max (N m^2) and --chi0 (1/m)".
+    // The law's numbers, each run of one unit followed by it: "--ei-min, --ei-max (N m^2) and --chi0 (1/m)".
+    const auto numbers = law->numbers();
     std::vector<std::string> items;
-    for (std::size_t k = 0; k < missing.size(); ++k) {
-      const cable::LawNumber& n = law->numbers()[static_cast<std::size_t>(cable::number_index(*law, missing[k]))];
-      const bool last_of_unit =
-          k + 1 == missing.size() ||
-          law->numbers()[static_cast<std::size_t>(cable::number_index(*law, missing[k + 1]))].unit != n.unit;
-      items.push_back(spelling.key(n.key) + (last_of_unit && !n.unit.empty() ? fmt::format(" ({})", n.unit) : ""));
+    for (std::size_t k = 0; k < numbers.size(); ++k) {
+      const bool last_of_unit = k + 1 == numbers.size() || numbers[k + 1].unit != numbers[k].unit;
+      items.push_back(spelling.key(numbers[k].key) +
+                      (last_of_unit && !numbers[k].unit.empty() ? fmt::format(" ({})", numbers[k].unit) : ""));
     }
     throw InvalidParameter(fmt::format("{} needs {}", spelling.law(given.law), cable::joined_with_and(items)));
   }

@@ -230,7 +230,7 @@ def test_a_bouc_wen_loop_equals_the_program_and_its_closed_form(tmp_path):
     # 4 (EI_max - EI_min) chi0 (chi_a - chi0 tanh(chi_a / chi0)) per steady cycle (MODEL.md 13)
     assert loop["last_cycle_dissipation_j_per_m"] == pytest.approx(4 * 35 * 0.15 * (0.5 - 0.15 * np.tanh(0.5 / 0.15)),
                                                                   rel=1e-9)
-    with pytest.raises(sb.InvalidParameter, match="not ei or jenkin"):
+    with pytest.raises(sb.InvalidParameter, match="ei and jenkin are the Masing law's"):
         sb.loop(2.8, law="bouc-wen", ei_min=5.0, ei_max=40.0, chi0=0.15, amplitude=0.5)
     with pytest.raises(sb.InvalidParameter, match="are the Bouc-Wen law's"):
         sb.loop(2.8, chi0=0.15, amplitude=0.5)
