@@ -78,9 +78,6 @@ class LogParameters {
   double offset_scale_;
 };
 
-/// The Bouc-Wen law's numbers as the optimiser's variables: log EI_min,
-/// log (EI_max - EI_min) (so that EI_max >= EI_min), log chi0, then the offset in
-/// units of offset_scale.
 /// A law of numbers' variables (SectionLawDescriptor::pack) and the offset, in units of `offset_scale`.
 struct LawLogParameters {
   const cable::SectionLawDescriptor* law = nullptr;
