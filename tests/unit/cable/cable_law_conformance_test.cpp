@@ -25,46 +25,46 @@
 namespace stockbridge::cable {
 namespace {
 
-constexpr double kLength = 0.1875;
+constexpr double kConformanceLength = 0.1875;
 
 /// A law's cable of the damper's size: constant numbers slipping within the tests'
 /// amplitudes (tip deflections of a few mm, rotations of a few hundredths).
-struct LawCase {
+struct ConformanceCase {
   std::string law;
   std::function<CableDescription(int sections)> cable;
 };
 
-const std::vector<LawCase>& law_cases() {
-  static const std::vector<LawCase> cases{
-      {"masing", [](int n) { return CableDescription::uniform(kLength, n, 2.8, {{20.0, 0.7}}); }},
+const std::vector<ConformanceCase>& conformance_cases() {
+  static const std::vector<ConformanceCase> cases{
+      {"masing", [](int n) { return CableDescription::uniform(kConformanceLength, n, 2.8, {{20.0, 0.7}}); }},
       {"bouc-wen",
-       [](int n) { return CableDescription::uniform(*find_section_law("bouc-wen"), kLength, n, {2.5, 25.0, 0.03}); }},
+       [](int n) { return CableDescription::uniform(*find_section_law("bouc-wen"), kConformanceLength, n, {2.5, 25.0, 0.03}); }},
       {"iwan",
        [](int n) {
-         return CableDescription::uniform(*find_section_law("iwan"), kLength, n, {2.8, 0.7, 20.0, -0.5, 0.2});
+         return CableDescription::uniform(*find_section_law("iwan"), kConformanceLength, n, {2.8, 0.7, 20.0, -0.5, 0.2});
        }},
   };
   return cases;
 }
 
-std::vector<std::string> registered_laws() {
+std::vector<std::string> conformance_laws() {
   std::vector<std::string> names;
   for (const SectionLawDescriptor* law : section_laws()) names.push_back(std::string(law->name()));
   return names;
 }
 
-CableDescription cable_of(const std::string& law, int sections = 40) {
-  for (const LawCase& c : law_cases()) {
+CableDescription conformance_cable(const std::string& law, int sections = 40) {
+  for (const ConformanceCase& c : conformance_cases()) {
     if (c.law == law) return c.cable(sections);
   }
   ADD_FAILURE() << "no conformance case for the registered law " << law;
-  return CableDescription::uniform(kLength, sections, 2.8, {{20.0, 0.7}});
+  return CableDescription::uniform(kConformanceLength, sections, 2.8, {{20.0, 0.7}});
 }
 
 class CableLawConformance : public ::testing::TestWithParam<std::string> {};
 
 /// Loading, a reversal and part of the way back.
-void drive_through_a_reversal(Cantilever& cantilever) {
+void conformance_reversal(Cantilever& cantilever) {
   for (const auto& [x, phi] : std::vector<std::pair<double, double>>{{0.004, 0.03}, {0.006, 0.05}, {0.001, 0.01}}) {
     ASSERT_TRUE(cantilever.set_trial_tip(x, phi).converged());
     cantilever.commit();
@@ -74,8 +74,8 @@ void drive_through_a_reversal(Cantilever& cantilever) {
 // The flexibility (the tangents' integral) is the derivative of the tip's kinematics
 // by the loads, along a continued loading (the tangent is one-sided).
 TEST_P(CableLawConformance, TangentMatchesFiniteDifferences) {
-  Cantilever cantilever{Cable(cable_of(GetParam()))};
-  ASSERT_NO_FATAL_FAILURE(drive_through_a_reversal(cantilever));
+  Cantilever cantilever{Cable(conformance_cable(GetParam()))};
+  ASSERT_NO_FATAL_FAILURE(conformance_reversal(cantilever));
   const CableState base = cantilever.committed();
   const double dT = -0.05, dF = -0.3;
   cantilever.set_trial_loads(base.clamp_moment + dT, base.tip_force + dF);
@@ -97,7 +97,7 @@ TEST_P(CableLawConformance, TangentMatchesFiniteDifferences) {
 // The law is odd: from the mirror image of a state, the negative path gives the
 // negative loads and internal variables.
 TEST_P(CableLawConformance, TheMirroredStateAnswersTheNegativePath) {
-  Cantilever a{Cable(cable_of(GetParam()))};
+  Cantilever a{Cable(conformance_cable(GetParam()))};
   for (const auto& [x, phi] : std::vector<std::pair<double, double>>{{0.01, 0.05}, {-0.003, 0.02}}) {
     ASSERT_TRUE(a.set_trial_tip(x, phi).converged());
     a.commit();
@@ -114,7 +114,7 @@ TEST_P(CableLawConformance, TheMirroredStateAnswersTheNegativePath) {
 }
 
 /// One cycle of a sinusoidal tip path in `steps` steps: the work done at the tip.
-double drive_cycle(Cantilever& cantilever, int steps) {
+double conformance_cycle(Cantilever& cantilever, int steps) {
   const double x_amplitude = 0.006, phi_amplitude = 0.05;
   double work = 0.0;
   for (int j = 1; j <= steps; ++j) {
@@ -123,7 +123,7 @@ double drive_cycle(Cantilever& cantilever, int steps) {
     EXPECT_TRUE(cantilever.set_trial_tip(x_amplitude * std::sin(t), phi_amplitude * std::sin(t + 0.4)).converged());
     const CableState& to = cantilever.trial();
     const double f = 0.5 * (from.tip_force + to.tip_force);
-    const double q = 0.5 * (from.tip_moment(kLength) + to.tip_moment(kLength));
+    const double q = 0.5 * (from.tip_moment(kConformanceLength) + to.tip_moment(kConformanceLength));
     work += f * (to.deflection - from.deflection) + q * (to.rotation - from.rotation);
     cantilever.commit();
   }
@@ -133,10 +133,10 @@ double drive_cycle(Cantilever& cantilever, int steps) {
 // A periodic path settles: the state at the end of a cycle is the state at the end
 // of the one before (the law's internal change and the loads).
 TEST_P(CableLawConformance, ASteadyCycleSettles) {
-  Cantilever cantilever{Cable(cable_of(GetParam()))};
-  for (int cycle = 0; cycle < 6; ++cycle) drive_cycle(cantilever, 400);
+  Cantilever cantilever{Cable(conformance_cable(GetParam()))};
+  for (int cycle = 0; cycle < 6; ++cycle) conformance_cycle(cantilever, 400);
   const CableState before = cantilever.committed();
-  drive_cycle(cantilever, 400);
+  conformance_cycle(cantilever, 400);
   const CableState& after = cantilever.committed();
   EXPECT_LT(cantilever.cable().law().internal_change(before, after), 1e-8);
   EXPECT_NEAR(after.clamp_moment, before.clamp_moment, 1e-9);
@@ -146,11 +146,11 @@ TEST_P(CableLawConformance, ASteadyCycleSettles) {
 
 // Over a steady cycle the energy dissipated in the cable is the work done at its tip.
 TEST_P(CableLawConformance, DissipationOverASteadyCycleIsTheWorkDoneAtTheTip) {
-  Cantilever cantilever{Cable(cable_of(GetParam(), 60))};
+  Cantilever cantilever{Cable(conformance_cable(GetParam(), 60))};
   const int steps = 4000;
-  for (int cycle = 0; cycle < 4; ++cycle) drive_cycle(cantilever, steps);
+  for (int cycle = 0; cycle < 4; ++cycle) conformance_cycle(cantilever, steps);
   const double dissipated_before = cantilever.committed().dissipated;
-  const double work = drive_cycle(cantilever, steps);
+  const double work = conformance_cycle(cantilever, steps);
   const double dissipated = cantilever.committed().dissipated - dissipated_before;
   EXPECT_GT(dissipated, 0.0);
   EXPECT_NEAR(work, dissipated, 1e-5 * dissipated);
@@ -162,7 +162,7 @@ TEST_P(CableLawConformance, DissipationOverASteadyCycleIsTheWorkDoneAtTheTip) {
 TEST_P(CableLawConformance, SensitivitiesMatchFiniteDifferences) {
   for (const bool half_wave : {false, true}) {
     damper::ArmDescription description = testing::sauter_arm();
-    description.cable = cable_of(GetParam());
+    description.cable = conformance_cable(GetParam());
     const damper::Arm arm(description);
     damper::HarmonicBalanceOptions options;
     options.half_wave = half_wave;
@@ -199,7 +199,7 @@ TEST_P(CableLawConformance, SensitivitiesMatchFiniteDifferences) {
 // of |Z| below and above the arm's first mode.
 TEST_P(CableLawConformance, HarmonicBalanceEqualsTimeIntegration) {
   damper::ArmDescription arm = testing::sauter_arm();
-  arm.cable = cable_of(GetParam());
+  arm.cable = conformance_cable(GetParam());
   const damper::Damper damper = testing::damper_of({arm});
   for (const double f : {12.0, 40.0}) {
     const damper::Excitation e = damper::Excitation::from_velocity(f, 0.1);
@@ -216,7 +216,7 @@ TEST_P(CableLawConformance, HarmonicBalanceEqualsTimeIntegration) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryLaw, CableLawConformance, ::testing::ValuesIn(registered_laws()),
+INSTANTIATE_TEST_SUITE_P(EveryLaw, CableLawConformance, ::testing::ValuesIn(conformance_laws()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            std::string name = info.param;
                            std::replace(name.begin(), name.end(), '-', '_');
