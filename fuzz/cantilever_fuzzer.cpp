@@ -33,8 +33,8 @@ cable::CableDescription random_cable(FuzzedDataProvider& in) {
   const double ei = in.ConsumeFloatingPointInRange(0.05, 50.0);
   if (in.ConsumeBool()) {
     const double ei_max = ei * (1.0 + in.ConsumeFloatingPointInRange(0.0, 20.0));
-    return cable::CableDescription::uniform_bouc_wen(length, sections, ei, ei_max,
-                                                     in.ConsumeFloatingPointInRange(1e-3, 1.0));
+    return cable::CableDescription::uniform(*cable::find_section_law("bouc-wen"), length, sections, {ei, ei_max,
+                                                     in.ConsumeFloatingPointInRange(1e-3, 1.0)});
   }
   std::vector<std::pair<double, double>> elements;
   const int count = in.ConsumeIntegralInRange(0, 2);

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "stockbridge/cable/section_law_descriptor.hpp"
 #include "input_files.hpp"
 #include "option_parsing.hpp"
 #include "stockbridge/core/error.hpp"
@@ -24,6 +25,22 @@
 namespace stockbridge::cli {
 
 namespace {
+
+/// The section laws' names, for --law.
+std::vector<std::string> law_names() {
+  std::vector<std::string> names;
+  for (const cable::SectionLawDescriptor* law : cable::section_laws()) names.push_back(std::string(law->name()));
+  return names;
+}
+
+/// "masing (ei and jenkin), bouc-wen (ei_min, ei_max and chi0)".
+std::string laws_taking() {
+  std::string text;
+  for (const cable::SectionLawDescriptor* law : cable::section_laws()) {
+    text += fmt::format("{}{} ({})", text.empty() ? "" : ", ", law->name(), law->takes());
+  }
+  return text;
+}
 
 /// What the summary line adds where the optimiser's run did not meet its tolerance.
 std::string optimiser_note(Termination termination) {
@@ -59,8 +76,8 @@ int run_local(const LocalOptions& options) {
   }
   if (options.json) fmt::print("{}\n", requests::local_summary(result).str());
   std::string summary;
-  if (fit.bouc_wen) {
-    summary = "identify local (Bouc-Wen): " + requests::bouc_wen_text(*fit.bouc_wen);
+  if (fit.numbers) {
+    summary = fmt::format("identify local ({}): {}", fit.numbers->law->title(), requests::law_numbers_text(*fit.numbers));
   } else {
     summary = fmt::format("identify local: ei = {:.6g} N m^2", fit.parameters.ei);
     for (const section::Jenkin& e : fit.parameters.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c, e.h);
@@ -101,9 +118,9 @@ int run_global(const GlobalOptions& options) {
   if (options.json) fmt::print("{}\n", requests::global_summary(request, result).str());
   const cable::CableDescription& c = result.fit.cable;
   std::string summary;
-  if (c.law == cable::SectionLawKind::bouc_wen) {
-    summary = fmt::format("identify global ({}, Bouc-Wen): {}", request.method,
-                          requests::bouc_wen_text(requests::bouc_wen_numbers(c)));
+  if (!c.law->jenkin_elements()) {
+    summary = fmt::format("identify global ({}, {}): {}", request.method, c.law->title(),
+                          requests::law_numbers_text(c.values()));
   } else {
     summary = fmt::format("identify global ({}): ei = {:.6g} N m^2", request.method, c.ei.at(0.0));
     for (const cable::JenkinProfile& e : c.jenkin) summary += fmt::format(", c = {:.6g} N m^2, h = {:.6g} N m", e.c.at(0.0), e.h.at(0.0));
@@ -126,9 +143,8 @@ void add_identify_command(CLI::App& app, int& exit_code) {
       "local",
       "Masing (or Bouc-Wen) parameters of a cross-section from a moment-curvature record (curvature_per_m, moment_n_m)");
   sub->add_option("--input", local->input, "Measured record (CSV with curvature_per_m and moment_n_m, time order)")->required();
-  sub->add_option("--law", local->request.law, "Section law to fit: masing (ei and Jenkin elements) or bouc-wen (ei_min, "
-                                               "ei_max, chi0)")
-      ->check(CLI::IsMember({"masing", "bouc-wen"}))
+  sub->add_option("--law", local->request.law, "Section law to fit: " + laws_taking())
+      ->check(CLI::IsMember(law_names()))
       ->capture_default_str();
   sub->add_option("--elements", local->request.elements, "Jenkin elements to fit (the Masing law)")->capture_default_str();
   sub->add_option("--optimizer", local->request.optimizer, "NLopt algorithm: subplex or nelder-mead (the dissertation's)")
@@ -148,8 +164,8 @@ void add_identify_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"a", "b"}))
       ->required();
   g->add_option("--length", global->request.length, "Length of the measured cable, m")->required();
-  g->add_option("--law", global->request.law, "Section law to fit: masing or bouc-wen (with --method fit)")
-      ->check(CLI::IsMember({"masing", "bouc-wen"}))
+  g->add_option("--law", global->request.law, "Section law to fit: " + cable::section_law_names() + " (the laws of numbers with --method fit)")
+      ->check(CLI::IsMember(law_names()))
       ->capture_default_str();
   g->add_option("--input", global->input, "Measured cycle (CSV)")->required();
   g->add_option("--method", global->request.method, "four-step (the dissertation's formulas) or fit (model-based, from four-step)")

@@ -1,6 +1,8 @@
-// stockbridge loop: drive one cable section (the exact Masing law, the regularised
-// one, or Bouc-Wen) with a sinusoidal curvature and write its moment-curvature loop.
+// stockbridge loop: drive one cable section of any section law (the Masing law exact
+// or regularised, Bouc-Wen, ...) with a sinusoidal curvature and write its
+// moment-curvature loop. The options are the laws' numbers (section_law_descriptor.hpp).
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -10,6 +12,7 @@
 
 #include "commands.hpp"
 #include "option_parsing.hpp"
+#include "stockbridge/cable/section_law_descriptor.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/requests/section_loop.hpp"
@@ -19,40 +22,25 @@ namespace stockbridge::cli {
 namespace {
 
 struct LoopOptions {
-  std::optional<double> ei;
+  /// Each law's numbers by key (and the extras of its variants: the regularised law's exponent).
+  std::vector<std::pair<std::string, std::optional<double>>> numbers;
   std::vector<std::string> jenkin;
-  std::optional<double> ei_min, ei_max, chi0;
   section::SinusoidalDrive drive;
-  std::string law{requests::default_section_law};
-  double exponent = requests::default_regularised_exponent;
+  std::string law{requests::default_loop_law};
   std::string output;
 };
 
 /// The loop of the law asked for, each law given its own numbers only.
 section::LoopRecord loop_of(const LoopOptions& options) {
-  const bool bouc_wen = options.law == "bouc-wen";
-  const bool masing_numbers = options.ei || !options.jenkin.empty();
-  const bool bouc_wen_numbers = options.ei_min || options.ei_max || options.chi0;
-  if (bouc_wen) {
-    if (masing_numbers) {
-      throw InvalidParameter("--law bouc-wen takes --ei-min, --ei-max and --chi0, not --ei or --jenkin");
-    }
-    if (!options.ei_min || !options.ei_max || !options.chi0) {
-      throw InvalidParameter("--law bouc-wen needs --ei-min, --ei-max (N m^2) and --chi0 (1/m)");
-    }
-    return requests::bouc_wen_loop({*options.ei_min, *options.ei_max, *options.chi0}, options.drive);
+  cable::LoopNumbers given{options.law, {}, {}};
+  for (const auto& [key, value] : options.numbers) {
+    if (value) given.numbers.emplace_back(key, *value);
   }
-  if (bouc_wen_numbers) {
-    throw InvalidParameter(fmt::format("--ei-min, --ei-max and --chi0 are the Bouc-Wen law's: --law {} takes --ei and "
-                                       "--jenkin",
-                                       options.law));
-  }
-  if (!options.ei) throw InvalidParameter(fmt::format("--law {} needs --ei (N m^2)", options.law));
-  section::MasingParameters parameters{*options.ei, {}};
   for (std::size_t j = 0; j < options.jenkin.size(); ++j) {
-    parameters.jenkin.push_back(parse_jenkin_pair(options.jenkin[j], fmt::format("--jenkin #{}", j + 1)));
+    const section::Jenkin e = parse_jenkin_pair(options.jenkin[j], fmt::format("--jenkin #{}", j + 1));
+    given.jenkin.emplace_back(e.c, e.h);
   }
-  return requests::section_loop(parameters, options.drive, options.law, options.exponent);
+  return requests::section_loop(given, options.drive, requests::command_line_spelling());
 }
 
 int run_loop_command(const LoopOptions& options) {
@@ -70,19 +58,48 @@ void add_loop_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<LoopOptions>();
   CLI::App* sub = app.add_subcommand(
       "loop", "Drive one cable section with kappa = A sin(2 pi k / points) and write its moment-curvature loop");
-  sub->add_option("--ei", options->ei, "Elastic (minimum) bending stiffness, N m^2 (exact and regularised laws)");
-  sub->add_option("--jenkin", options->jenkin, "A Jenkin element as c:h (N m^2 : N m); repeat for more");
-  sub->add_option("--ei-min", options->ei_min, "Bouc-Wen: the free wires' (asymptotic) stiffness EI_min, N m^2");
-  sub->add_option("--ei-max", options->ei_max, "Bouc-Wen: the no-slip (initial) stiffness EI_max, N m^2");
-  sub->add_option("--chi0", options->chi0, "Bouc-Wen: the curvature scale chi0 of the transition, 1/m");
+  // Every law's numbers, each key once (the first law's words; "ei" is the Masing and Iwan laws').
+  for (const cable::SectionLawDescriptor* law : cable::section_laws()) {
+    std::vector<cable::LawNumber> keys(law->numbers().begin(), law->numbers().end());
+    for (const cable::LawNumber& extra : law->loop_extras()) keys.push_back(extra);
+    for (const cable::LawNumber& n : keys) {
+      const std::string key(n.key);
+      if (std::any_of(options->numbers.begin(), options->numbers.end(), [&](const auto& e) { return e.first == key; })) {
+        continue;
+      }
+      options->numbers.emplace_back(key, std::nullopt);
+    }
+  }
+  for (auto& [key, value] : options->numbers) {
+    std::string help;
+    for (const cable::SectionLawDescriptor* law : cable::section_laws()) {
+      std::vector<cable::LawNumber> keys(law->numbers().begin(), law->numbers().end());
+      for (const cable::LawNumber& extra : law->loop_extras()) keys.push_back(extra);
+      for (const cable::LawNumber& n : keys) {
+        if (n.key != key) continue;
+        help += fmt::format("{}{}: {}{}", help.empty() ? "" : "; ", law->title(), n.description,
+                            n.unit.empty() ? "" : fmt::format(", {}", n.unit));
+      }
+    }
+    sub->add_option(requests::command_line_spelling().key(key), value, help);
+  }
+  sub->add_option("--jenkin", options->jenkin, "Masing: a Jenkin element as c:h (N m^2 : N m); repeat for more");
   sub->add_option("--amplitude", options->drive.amplitude, "Curvature amplitude A, 1/m")->required();
   sub->add_option("--cycles", options->drive.cycles, "Number of cycles")->capture_default_str();
   sub->add_option("--points", options->drive.points, "Samples per cycle")->capture_default_str();
+  std::string laws;
+  for (const cable::SectionLawDescriptor* law : cable::section_laws()) {
+    std::vector<std::string> keys;
+    for (const cable::LawNumber& n : law->numbers()) keys.push_back(requests::command_line_spelling().key(n.key));
+    if (law->jenkin_elements()) keys.push_back("--jenkin");
+    std::string variants;
+    for (std::string_view v : law->loop_variants()) variants += fmt::format(", {}", v);
+    laws += fmt::format("{}{}{} ({})", laws.empty() ? "" : "; ", law->name(), variants, cable::joined_with_and(keys));
+  }
   sub->add_option("--law", options->law,
-                  "Section law: exact (Masing), regularised (3.15) or bouc-wen (MODEL.md 13: --ei-min, --ei-max, --chi0)")
-      ->check(CLI::IsMember({"exact", "regularised", "bouc-wen"}))
+                  "Section law: " + laws + " (exact is masing; regularised its rate law (3.15) with --exponent)")
+      ->check(CLI::IsMember(requests::loop_law_names()))
       ->capture_default_str();
-  sub->add_option("--exponent", options->exponent, "Exponent n of the regularised law (3.15)")->capture_default_str();
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   sub->callback([options, &exit_code] { exit_code = run_loop_command(*options); });
 }

@@ -1,6 +1,7 @@
 // Cables and dampers: the Cable and Damper classes, their files, a section's loop, a cable's cycle, strands and the conductor catalogue.
 #include "binding_support.hpp"
 
+#include <algorithm>
 #include <complex>
 #include <optional>
 #include <string>
@@ -43,27 +44,20 @@ py::dict cycle(const cable::Cable& cable, const std::string& experiment, double 
 }
 
 py::dict loop(std::optional<double> ei, const std::vector<std::pair<double, double>>& jenkin, double amplitude,
-              int cycles, int points, const std::string& law, double exponent, std::optional<double> ei_min,
-              std::optional<double> ei_max, std::optional<double> chi0) {
+              int cycles, int points, const std::string& law, std::optional<double> exponent, const py::kwargs& numbers) {
   const section::SinusoidalDrive drive{amplitude, cycles, points};
-  const bool bouc_wen = law == "bouc-wen";
-  if (bouc_wen && (ei || !jenkin.empty())) {
-    throw InvalidParameter("law = 'bouc-wen' takes ei_min, ei_max and chi0, not ei or jenkin");
+  cable::LoopNumbers given{law, {}, jenkin};
+  if (ei) given.numbers.emplace_back("ei", *ei);
+  if (exponent) given.numbers.emplace_back("exponent", *exponent);
+  for (const auto& [key, value] : numbers) {
+    if (!value.is_none()) given.numbers.emplace_back(py::cast<std::string>(key), py::cast<double>(value));
   }
-  if (bouc_wen && (!ei_min || !ei_max || !chi0)) {
-    throw InvalidParameter("law = 'bouc-wen' needs ei_min, ei_max (N m^2) and chi0 (1/m)");
-  }
-  if (!bouc_wen && (ei_min || ei_max || chi0)) {
-    throw InvalidParameter("ei_min, ei_max and chi0 are the Bouc-Wen law's: law = '" + law + "' takes ei and jenkin");
-  }
-  if (!bouc_wen && !ei) throw InvalidParameter("law = '" + law + "' needs ei (N m^2)");
-  section::MasingParameters parameters{ei.value_or(0.0), {}};
-  for (const auto& [c, h] : jenkin) parameters.jenkin.push_back({c, h});
+  const requests::LoopSpelling spelling{[](std::string_view key) { return std::string(key); },
+                                        [](std::string_view name) { return "law = '" + std::string(name) + "'"; }};
   section::LoopRecord record;
   {
     py::gil_scoped_release release;
-    record = bouc_wen ? requests::bouc_wen_loop({*ei_min, *ei_max, *chi0}, drive)
-                      : requests::section_loop(parameters, drive, law, exponent);
+    record = requests::section_loop(given, drive, spelling);
   }
   py::dict out = table_arrays(requests::loop_table().values(requests::loop_samples(record)), {record.curvature.size()});
   out["last_cycle_dissipation_j_per_m"] = record.last_cycle_dissipation();
@@ -73,30 +67,37 @@ py::dict loop(std::optional<double> ei, const std::vector<std::pair<double, doub
 }  // namespace
 
 void expose_cable(py::module_& m) {
-  const auto bouc_wen_number = [](cable::Profile cable::BoucWenProfiles::*number) {
-    return [number](const cable::Cable& c) -> std::optional<double> {
-      if (c.description().law != cable::SectionLawKind::bouc_wen) return std::nullopt;
-      return (c.description().bouc_wen.*number).at(0.0);
-    };
-  };
-  py::class_<cable::Cable>(m, "Cable", "A cable (length, sections, section law and its numbers), validated and discretised")
-      .def_property_readonly("length", &cable::Cable::length, "m")
+  py::class_<cable::Cable> cable_class(m, "Cable",
+                                       "A cable (length, sections, section law and its numbers), validated and discretised");
+  cable_class.def_property_readonly("length", &cable::Cable::length, "m")
       .def_property_readonly("sections", [](const cable::Cable& c) { return c.description().sections; })
-      .def_property_readonly("law", [](const cable::Cable& c) { return std::string(cable::section_law_name(c.description().law)); },
-                             "'masing' or 'bouc-wen'")
-      .def_property_readonly(
-          "ei",
-          [](const cable::Cable& c) -> std::optional<double> {
-            if (c.description().law != cable::SectionLawKind::masing) return std::nullopt;
-            return c.description().ei.at(0.0);
+      .def_property_readonly("law", [](const cable::Cable& c) { return std::string(c.description().law->name()); },
+                             ("the section law: " + cable::section_law_names(true)).c_str());
+  // Every law's numbers as properties, each key once: its value at the clamp, None
+  // under a law without it.
+  std::vector<std::string> number_keys;
+  for (const cable::SectionLawDescriptor* law : cable::section_laws()) {
+    for (const cable::LawNumber& n : law->numbers()) {
+      const std::string key(n.key);
+      if (std::find(number_keys.begin(), number_keys.end(), key) != number_keys.end()) continue;
+      number_keys.push_back(key);
+      std::vector<std::string> owners;
+      for (const cable::SectionLawDescriptor* o : cable::section_laws()) {
+        if (cable::number_index(*o, key) >= 0) owners.push_back(std::string(o->title()));
+      }
+      cable_class.def_property_readonly(
+          key.c_str(),
+          [key](const cable::Cable& c) -> std::optional<double> {
+            if (cable::number_index(*c.description().law, key) < 0) return std::nullopt;
+            return c.description().number(key).at(0.0);
           },
-          "N m^2 (at the clamp; None under the Bouc-Wen law)")
-      .def_property_readonly("ei_min", bouc_wen_number(&cable::BoucWenProfiles::ei_min),
-                             "Bouc-Wen: N m^2 (at the clamp; None under the Masing law)")
-      .def_property_readonly("ei_max", bouc_wen_number(&cable::BoucWenProfiles::ei_max),
-                             "Bouc-Wen: N m^2 (at the clamp; None under the Masing law)")
-      .def_property_readonly("chi0", bouc_wen_number(&cable::BoucWenProfiles::chi0),
-                             "Bouc-Wen: 1/m (at the clamp; None under the Masing law)")
+          fmt::format("{}{}{} (at the clamp; None under a law without it: the {} law{} take{} it)", n.unit,
+                      n.unit.empty() ? "" : ", ", n.description, cable::joined_with_and(owners),
+                      owners.size() > 1 ? "s" : "", owners.size() > 1 ? "" : "s")
+              .c_str());
+    }
+  }
+  cable_class
       .def_property_readonly(
           "jenkin",
           [](const cable::Cable& c) {
@@ -166,12 +167,11 @@ void expose_cable(py::module_& m) {
         "Experiment 'a' (tip force) or 'b' (tip rotation) on a cable.");
   m.def("loop", &loop, py::arg("ei") = py::none(), py::arg("jenkin") = std::vector<std::pair<double, double>>{},
         py::arg("amplitude"), py::arg("cycles") = section::SinusoidalDrive{}.cycles,
-        py::arg("points") = section::SinusoidalDrive{}.points, py::arg("law") = std::string(requests::default_section_law),
-        py::arg("exponent") = requests::default_regularised_exponent, py::arg("ei_min") = py::none(),
-        py::arg("ei_max") = py::none(), py::arg("chi0") = py::none(),
-        "One section driven by kappa = amplitude sin(2 pi k / points), as the loop command: ei and jenkin = [(c, h), "
-        "...] in N m^2 and N m for law 'exact' or 'regularised' (with exponent); ei_min, ei_max (N m^2) and chi0 "
-        "(1/m) for law 'bouc-wen'.");
+        py::arg("points") = section::SinusoidalDrive{}.points, py::arg("law") = std::string(requests::default_loop_law),
+        py::arg("exponent") = py::none(),
+        "One section driven by kappa = amplitude sin(2 pi k / points), as the loop command: the law's numbers by key "
+        "(Cable's properties; ei and jenkin = [(c, h), ...] in N m^2 and N m for law 'masing', its variants 'exact' "
+        "and 'regularised' (with exponent, default 10); ei_min, ei_max (N m^2) and chi0 (1/m) for law 'bouc-wen').");
   m.def(
       "load_strand",
       [](const std::string& path) {

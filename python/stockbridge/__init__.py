@@ -62,8 +62,9 @@ def make_cable(length, sections=40, ei=None, jenkin=(), law=None, allow_unusual=
     """A cable with the keys of a cable file's [cable] table: length (m), sections,
     and the section law's numbers. The Masing law (the default): ei (N m^2),
     jenkin = [(c, h), ...] or [{"c": ..., "h": ..., "k0": ...}, ...] (N m^2, N m),
-    optionally lever_arm_cap. The Bouc-Wen law (law="bouc-wen"): ei_min, ei_max
-    (N m^2) and chi0 (1/m). Optionally mirror_length; any value may be a profile
+    optionally lever_arm_cap. Another law (law="bouc-wen", ...): its numbers by key,
+    as its cable files name them and Cable's properties give them (Bouc-Wen: ei_min,
+    ei_max (N m^2) and chi0 (1/m)). Optionally mirror_length; any value may be a profile
     {"s": [...], "value": [...]}. Checked exactly as a cable file is (a misspelt or
     missing key, a key of the other law, a bad value: InvalidParameter naming it; a
     value a unit slip explains, a length of 187.5 for 0.1875 m: UnusualValueError,

@@ -34,10 +34,10 @@ bool avx2_available() {
 BoucWenCableLaw::BoucWenCableLaw(const CableDescription& description, std::span<const double> positions) {
   for (double position : positions) {
     const double s = description.profile_position(position);
-    const double ei_min = description.bouc_wen.ei_min.at(s);
+    const double ei_min = description.number("ei_min").at(s);
     ei_min_.push_back(ei_min);
-    hysteretic_.push_back(description.bouc_wen.ei_max.at(s) - ei_min);
-    chi0_.push_back(description.bouc_wen.chi0.at(s));
+    hysteretic_.push_back(description.number("ei_max").at(s) - ei_min);
+    chi0_.push_back(description.number("chi0").at(s));
     inverse_chi0_.push_back(1.0 / chi0_.back());
   }
   // Padded to whole groups of four sections with empty steps (apply_loads).
@@ -562,6 +562,135 @@ class BoucWenLoadSensitivity final : public LoadSensitivity {
 
 std::unique_ptr<LoadSensitivity> BoucWenCableLaw::load_sensitivity(const Cable& cable) const {
   return std::make_unique<BoucWenLoadSensitivity>(cable, *this);
+}
+
+}  // namespace stockbridge::cable
+
+// The Bouc-Wen law's descriptor (section_law_descriptor.hpp).
+
+#include <fmt/format.h>
+
+#include "stockbridge/cable/cable_description.hpp"
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/section/bouc_wen_section.hpp"
+
+namespace stockbridge::cable {
+
+namespace {
+
+constexpr LawNumber kBoucWenNumbers[] = {
+    {"ei_min", "N m^2", "the free wires' (asymptotic) stiffness EI_min", typical::ei, 3, StartRole::stiffness,
+     FitScale::logarithmic},
+    {"ei_max", "N m^2", "the no-slip (initial) stiffness EI_max", typical::ei, 3, StartRole::stiffness,
+     FitScale::logarithmic},
+    {"chi0", "1/m", "the curvature scale chi0 of the transition", typical::bouc_wen_chi0, -2, StartRole::slip,
+     FitScale::logarithmic},
+};
+
+/// ei_max >= ei_min everywhere: both piecewise linear and held beyond their ends, so
+/// their difference is too, with its corners at either table's points.
+void require_ei_max_at_least_ei_min(const Profile& ei_min, const Profile& ei_max) {
+  std::vector<double> corners(ei_min.positions().begin(), ei_min.positions().end());
+  corners.insert(corners.end(), ei_max.positions().begin(), ei_max.positions().end());
+  for (double s : corners) {
+    if (ei_max.at(s) < ei_min.at(s)) {
+      throw InvalidParameter("ei_max", fmt::format(" = {} at s = {} m: below ei_min = {} N m^2 there (EI_max is the "
+                                                   "no-slip stiffness, EI_min the free wires')",
+                                                   ei_max.at(s), s, ei_min.at(s)));
+    }
+  }
+}
+
+section::BoucWenParameters bouc_wen_parameters(const std::vector<double>& values) {
+  return {values.at(0), values.at(1), values.at(2)};
+}
+
+struct BoucWenLaw final : SectionLawDescriptor {
+  std::string_view name() const override { return "bouc-wen"; }
+  std::string_view title() const override { return "Bouc-Wen"; }
+  int order() const override { return 1; }
+  std::span<const LawNumber> numbers() const override { return kBoucWenNumbers; }
+
+  void validate(const CableDescription& d) const override {
+    SectionLawDescriptor::validate(d);
+    require_ei_max_at_least_ei_min(d.number("ei_min"), d.number("ei_max"));
+  }
+
+  std::string summary(const CableDescription& c, std::string (*number)(double)) const override {
+    return fmt::format("Bouc-Wen law, EI at the clamp {} N m² slipping, {} N m² sticking, chi0 {} 1/m",
+                       number(c.number("ei_min").at(0.0)), number(c.number("ei_max").at(0.0)),
+                       number(c.number("chi0").at(0.0)));
+  }
+
+  std::shared_ptr<const CableLaw> make(const CableDescription& d, std::span<const double> positions,
+                                       std::span<const double>) const override {
+    return std::make_shared<BoucWenCableLaw>(d, positions);
+  }
+
+  std::unique_ptr<section::SectionLaw> section(const std::vector<double>& values) const override {
+    return std::make_unique<section::BoucWenSection>(bouc_wen_parameters(values));
+  }
+
+  std::vector<double> moments(const std::vector<double>& values, std::span<const double> curvature) const override {
+    const section::BoucWenParameters parameters = bouc_wen_parameters(values);
+    section::BoucWenState state = section::BoucWenState::virgin(parameters);
+    std::vector<double> out;
+    out.reserve(curvature.size());
+    for (const double kappa : curvature) {
+      state = section::bouc_wen_update(parameters, state, kappa);
+      out.push_back(state.moment);
+    }
+    return out;
+  }
+
+  /// Local: EI_min from the slope at the extremes, EI_max from the slope after the
+  /// reversals, chi0 from the half-height of the loop about the EI_min line over
+  /// EI_max - EI_min; the hysteretic stiffness and chi0 scaled. Global, from the
+  /// four-step Masing cable: EI_min its ei (slipping), EI_max its ei + c (sticking),
+  /// chi0 its slip curvature h / c (where the hysteretic moment (EI_max - EI_min)
+  /// chi0 tanh(chi_a / chi0) levels off at about h); EI_min and chi0 varied.
+  std::vector<std::vector<double>> starts(const MasingEstimate& e, FitKind kind) const override {
+    std::vector<std::vector<double>> x;
+    if (kind == FitKind::local) {
+      const double ei_min = e.ei, hysteretic = e.c;
+      for (const auto& [b_factor, chi0_factor] :
+           {std::pair{1.0, 1.0}, std::pair{0.5, 1.0}, std::pair{2.0, 1.0}, std::pair{1.0, 0.5}, std::pair{1.0, 2.0}}) {
+        const double b = b_factor * hysteretic;
+        x.push_back({ei_min, ei_min + b, chi0_factor * e.h / hysteretic});
+      }
+      return x;
+    }
+    for (const auto& [ei_factor, chi0_factor] : {std::pair{1.0, 1.0}, std::pair{1.0, 0.5}, std::pair{1.0, 2.0},
+                                                 std::pair{0.7, 1.0}, std::pair{1.4, 1.0}}) {
+      x.push_back({e.ei * ei_factor, e.ei * ei_factor + e.c, chi0_factor * e.h / e.c});
+    }
+    return x;
+  }
+
+  /// log EI_min, log (EI_max - EI_min), log chi0: EI_max > EI_min throughout.
+  std::vector<double> pack(const std::vector<double>& v) const override {
+    return {std::log(v.at(0)), std::log(v.at(1) - v.at(0)), std::log(v.at(2))};
+  }
+  std::vector<double> unpack(const std::vector<double>& x) const override {
+    const double ei_min = std::exp(x.at(0));
+    return {ei_min, ei_min + std::exp(x.at(1)), std::exp(x.at(2))};
+  }
+
+  /// Fitted in logarithms each: ei_max > ei_min.
+  void check_start(const std::vector<double>& v, const std::string& prefix) const override {
+    if (!(v.at(1) > v.at(0))) {
+      throw InvalidParameter(prefix + "ei_max", fmt::format(" = {} N m^2: expected a starting value above ei_min = {} "
+                                                            "N m^2 (a cable without hysteresis leaves chi0 undetermined)",
+                                                            format_value(v.at(1)), format_value(v.at(0))));
+    }
+  }
+};
+
+}  // namespace
+
+const SectionLawDescriptor& bouc_wen_section_law() {
+  static const BoucWenLaw law;
+  return law;
 }
 
 }  // namespace stockbridge::cable

@@ -1,6 +1,7 @@
 #include "stockbridge/cable/cable_description.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -8,64 +9,52 @@
 
 namespace stockbridge::cable {
 
-std::string_view section_law_name(SectionLawKind law) { return law == SectionLawKind::bouc_wen ? "bouc-wen" : "masing"; }
-
 namespace {
 
-/// A field of the other law set on a cable of this one (the words of the cable file's reader).
-[[noreturn]] void throw_other_law(std::string_view field, SectionLawKind law) {
-  throw InvalidParameter(std::string(field), law == SectionLawKind::bouc_wen
-                                                 ? ": is a number of the Masing law: law = \"bouc-wen\" takes ei_min, "
-                                                   "ei_max and chi0"
-                                                 : ": is a number of the Bouc-Wen law: set law = \"bouc-wen\"");
+void check_number_count(const CableDescription& d) {
+  const std::size_t expected = d.law->numbers().size() - (number_index(*d.law, "ei") >= 0 ? 1 : 0);
+  if (d.numbers.size() != expected) {
+    throw InvalidParameter("numbers", fmt::format(": {} profiles for the {} law, which takes {}", d.numbers.size(),
+                                                  d.law->title(), d.law->takes()));
+  }
 }
 
 bool is_unset(const Profile& p) { return p == Profile::constant(0.0); }
 
-/// ei_max >= ei_min everywhere: both piecewise linear and held beyond their ends, so
-/// their difference is too, with its corners at either table's points.
-void require_ei_max_at_least_ei_min(const BoucWenProfiles& p) {
-  std::vector<double> corners(p.ei_min.positions().begin(), p.ei_min.positions().end());
-  corners.insert(corners.end(), p.ei_max.positions().begin(), p.ei_max.positions().end());
-  for (double s : corners) {
-    if (p.ei_max.at(s) < p.ei_min.at(s)) {
-      throw InvalidParameter("ei_max", fmt::format(" = {} at s = {} m: below ei_min = {} N m^2 there (EI_max is the "
-                                                   "no-slip stiffness, EI_min the free wires')",
-                                                   p.ei_max.at(s), s, p.ei_min.at(s)));
-    }
-  }
-}
-
-void validate_bouc_wen(const CableDescription& d) {
-  if (!is_unset(d.ei)) throw_other_law("ei", d.law);
-  if (!d.jenkin.empty()) throw_other_law("jenkin", d.law);
-  if (d.lever_arm_cap) throw_other_law("lever_arm_cap", d.law);
-  const auto plausible = [](const char* unit) {
-    return [unit](std::string_view name, double v) { require_plausible(name, v, unit); };
-  };
-  d.bouc_wen.ei_min.check_values("ei_min", plausible("N m^2"));
-  d.bouc_wen.ei_max.check_values("ei_max", plausible("N m^2"));
-  d.bouc_wen.chi0.check_values("chi0", plausible("1/m"));
-  require_ei_max_at_least_ei_min(d.bouc_wen);
-}
-
 }  // namespace
+
+const Profile& CableDescription::number(std::string_view key) const {
+  const int k = number_index(*law, key);
+  if (k < 0) throw InvalidParameter(std::string(key), ": " + foreign_key_message(key, *law));
+  if (key == "ei") return ei;
+  const int ei_before = number_index(*law, "ei");
+  const std::size_t index = static_cast<std::size_t>(ei_before >= 0 && ei_before < k ? k - 1 : k);
+  if (index >= numbers.size()) {
+    throw InvalidParameter(std::string(key), fmt::format(": not given (the cable has {} of the {} law's numbers)",
+                                                         numbers.size(), law->title()));
+  }
+  return numbers[index];
+}
+
+Profile& CableDescription::number(std::string_view key) {
+  const std::size_t expected = law->numbers().size() - (number_index(*law, "ei") >= 0 ? 1 : 0);
+  if (numbers.size() < expected && number_index(*law, key) >= 0) numbers.resize(expected, Profile::constant(0.0));
+  return const_cast<Profile&>(std::as_const(*this).number(key));
+}
 
 void CableDescription::validate() const {
   require_plausible("length", length, "m");
   require_in_range("sections", sections, min_sections, max_sections);
-  if (law == SectionLawKind::bouc_wen) {
-    validate_bouc_wen(*this);
-  } else {
-    if (!(bouc_wen == BoucWenProfiles{})) throw_other_law("ei_min", law);
-    ei.check_values("ei", [](std::string_view name, double v) { require_plausible(name, v, "N m^2"); });
+  const auto foreign = [this](std::string_view field) {
+    throw InvalidParameter(std::string(field), ": " + foreign_key_message(field, *law));
+  };
+  if (number_index(*law, "ei") < 0 && !is_unset(ei)) foreign("ei");
+  if (!law->jenkin_elements()) {
+    if (!jenkin.empty()) foreign("jenkin");
+    if (lever_arm_cap) foreign("lever_arm_cap");
   }
-  for (std::size_t j = 0; j < jenkin.size(); ++j) {
-    const std::string name = fmt::format("jenkin[{}]", j);
-    jenkin[j].c.check_values(name + ".c", [](std::string_view n, double v) { require_plausible(n, v, "N m^2"); });
-    jenkin[j].h.check_values(name + ".h", [](std::string_view n, double v) { require_plausible(n, v, "N m"); });
-    require_plausible_or_zero(name + ".k0", jenkin[j].k0, "N");
-  }
+  check_number_count(*this);
+  law->validate(*this);
   if (mirror_length) {
     require_plausible("mirror_length", *mirror_length, "m");
     if (length > 2.0 * *mirror_length) {
@@ -82,13 +71,7 @@ std::vector<UnusualValue> CableDescription::unusual_values() const {
     return [&found, &range](std::string_view name, double v) { check_typical(found, std::string(name), v, range); };
   };
   check_typical(found, "length", length, typical::cable_length);
-  if (law == SectionLawKind::bouc_wen) {
-    bouc_wen.ei_min.check_values("ei_min", check(typical::ei));
-    bouc_wen.ei_max.check_values("ei_max", check(typical::ei));
-    bouc_wen.chi0.check_values("chi0", check(typical::bouc_wen_chi0));
-  } else {
-    ei.check_values("ei", check(typical::ei));
-  }
+  for (const LawNumber& n : law->numbers()) number(n.key).check_values(n.key, check(n.typical));
   for (std::size_t j = 0; j < jenkin.size(); ++j) {
     const std::string name = fmt::format("jenkin[{}]", j);
     jenkin[j].c.check_values(name + ".c", check(typical::jenkin_c));
@@ -104,13 +87,7 @@ double CableDescription::profile_position(double s) const {
 }
 
 std::vector<double> CableDescription::zone_boundaries() const {
-  std::vector<const Profile*> profiles;
-  if (law == SectionLawKind::bouc_wen) {
-    profiles = {&bouc_wen.ei_min, &bouc_wen.ei_max, &bouc_wen.chi0};
-  } else {
-    profiles.push_back(&ei);
-    for (const JenkinProfile& e : jenkin) profiles.insert(profiles.end(), {&e.c, &e.h});
-  }
+  const std::vector<const Profile*> profiles = law->profiles(*this);
   const double ramp = zone_ramp_fraction * length;
   std::vector<double> boundaries;
   auto add = [&](double s) {
@@ -155,14 +132,22 @@ CableDescription CableDescription::uniform(double length, int sections, double e
   return d;
 }
 
-CableDescription CableDescription::uniform_bouc_wen(double length, int sections, double ei_min, double ei_max,
-                                                    double chi0) {
+CableDescription CableDescription::uniform(const SectionLawDescriptor& law, double length, int sections,
+                                           const std::vector<double>& values) {
   CableDescription d;
   d.length = length;
   d.sections = sections;
-  d.law = SectionLawKind::bouc_wen;
-  d.bouc_wen = {Profile::constant(ei_min), Profile::constant(ei_max), Profile::constant(chi0)};
+  d.law = &law;
+  for (std::size_t k = 0; k < law.numbers().size() && k < values.size(); ++k) {
+    d.number(law.numbers()[k].key) = Profile::constant(values[k]);
+  }
   return d;
+}
+
+LawValues CableDescription::values() const {
+  LawValues out{law, {}};
+  for (const LawNumber& n : law->numbers()) out.values.push_back(number(n.key).at(0.0));
+  return out;
 }
 
 }  // namespace stockbridge::cable

@@ -424,3 +424,89 @@ std::unique_ptr<LoadSensitivity> MasingCableLaw::load_sensitivity(const Cable& c
 }
 
 }  // namespace stockbridge::cable
+
+// The Masing law's descriptor (section_law_descriptor.hpp).
+
+#include <fmt/format.h>
+
+#include "stockbridge/core/error.hpp"
+#include "stockbridge/section/masing_section.hpp"
+#include "stockbridge/section/regularised_section.hpp"
+
+namespace stockbridge::cable {
+
+namespace {
+
+constexpr LawNumber kMasingNumbers[] = {
+    {"ei", "N m^2", "Elastic (minimum) bending stiffness EI (Masing and Iwan laws)", typical::ei, 3, StartRole::stiffness,
+     FitScale::logarithmic},
+};
+
+struct MasingLaw final : SectionLawDescriptor {
+  std::string_view name() const override { return "masing"; }
+  std::string_view title() const override { return "Masing"; }
+  int order() const override { return 0; }
+  std::span<const LawNumber> numbers() const override { return kMasingNumbers; }
+  bool jenkin_elements() const override { return true; }
+
+  void validate(const CableDescription& d) const override {
+    SectionLawDescriptor::validate(d);
+    for (std::size_t j = 0; j < d.jenkin.size(); ++j) {
+      const std::string name = fmt::format("jenkin[{}]", j);
+      d.jenkin[j].c.check_values(name + ".c", [](std::string_view n, double v) { require_plausible(n, v, "N m^2"); });
+      d.jenkin[j].h.check_values(name + ".h", [](std::string_view n, double v) { require_plausible(n, v, "N m"); });
+      require_plausible_or_zero(name + ".k0", d.jenkin[j].k0, "N");
+    }
+  }
+
+  std::vector<const Profile*> profiles(const CableDescription& d) const override {
+    std::vector<const Profile*> out{&d.ei};
+    for (const JenkinProfile& e : d.jenkin) out.insert(out.end(), {&e.c, &e.h});
+    return out;
+  }
+
+  std::string summary(const CableDescription& c, std::string (*number)(double)) const override {
+    double stick = c.ei.at(0.0);
+    for (const JenkinProfile& j : c.jenkin) stick += j.c.at(0.0);
+    return fmt::format("{} Jenkin elements, EI at the clamp {} N m² slipping, {} N m² sticking", c.jenkin.size(),
+                       number(c.ei.at(0.0)), number(stick));
+  }
+
+  std::shared_ptr<const CableLaw> make(const CableDescription& d, std::span<const double> positions,
+                                       std::span<const double> weights) const override {
+    return std::make_shared<MasingCableLaw>(d, positions, weights);
+  }
+
+  std::vector<std::string_view> loop_variants() const override { return {"exact", "regularised"}; }
+  std::vector<LawNumber> loop_extras() const override {
+    return {{"exponent", "", "Exponent n of the regularised Masing law (3.15); default 10", {}, 0}};
+  }
+
+  std::unique_ptr<section::SectionLaw> loop_section(const LoopNumbers& given) const override {
+    section::MasingParameters parameters{*given.find("ei"), {}};
+    for (const auto& [c, h] : given.jenkin) parameters.jenkin.push_back({c, h});
+    if (given.law != "regularised") return std::make_unique<section::MasingSection>(parameters);
+    section::RegularisedOptions regularised;
+    if (const double* n = given.find("exponent")) regularised.exponent = *n;
+    return std::make_unique<section::RegularisedSection>(parameters, regularised);
+  }
+
+  std::unique_ptr<section::SectionLaw> section(const std::vector<double>& values) const override {
+    return std::make_unique<section::MasingSection>(section::MasingParameters{values.at(0), {}});
+  }
+
+  std::vector<double> moments(const std::vector<double>& values, std::span<const double> curvature) const override {
+    std::vector<double> out;
+    for (double kappa : curvature) out.push_back(values.at(0) * kappa);
+    return out;
+  }
+};
+
+}  // namespace
+
+const SectionLawDescriptor& masing_section_law() {
+  static const MasingLaw law;
+  return law;
+}
+
+}  // namespace stockbridge::cable

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "stockbridge/core/error.hpp"
 
@@ -11,17 +12,26 @@ namespace stockbridge::design {
 
 namespace {
 
-constexpr std::string_view kExpected =
-    "clamp.mass, or arm.<name or [index]>. followed by mass, inertia, offset, cable.length, cable.ei, "
-    "cable.mirror_length, cable.lever_arm_cap, cable.jenkin[<k>].c, .h, .k0, or (Bouc-Wen) cable.ei_min, "
-    "cable.ei_max, cable.chi0";
+/// What a path may name: the damper's numbers and each law's.
+std::string expected_paths() {
+  std::string laws;
+  for (const cable::SectionLawDescriptor* law : cable::section_laws()) {
+    std::vector<std::string> keys;
+    for (const cable::LawNumber& n : law->numbers()) keys.push_back(fmt::format("cable.{}", n.key));
+    if (law->jenkin_elements()) keys.insert(keys.end(), {"cable.lever_arm_cap", "cable.jenkin[<k>].c, .h, .k0"});
+    laws += fmt::format("{}({}) {}", laws.empty() ? "" : ", ", law->title(), fmt::join(keys, ", "));
+  }
+  return "clamp.mass, or arm.<name or [index]>. followed by mass, inertia, offset, cable.length, cable.mirror_length, "
+         "or a number of the cable's law: " +
+         laws;
+}
 
 [[noreturn]] void fail(std::string_view path, std::string_view why) {
   throw InvalidParameter(std::string(path), fmt::format(": {}", why));
 }
 
 [[noreturn]] void unknown(std::string_view path) {
-  fail(path, fmt::format("names no number of the damper (expected {})", kExpected));
+  fail(path, fmt::format("names no number of the damper (expected {})", expected_paths()));
 }
 
 /// "[k]" at the start of `text`: k, and the text after it.
@@ -53,13 +63,11 @@ struct CableNumber {
 
 CableNumber cable_number(cable::CableDescription& c, std::string_view field, std::string_view path) {
   if (field == "length") return {&c.length};
-  if (field == "ei") return {nullptr, &c.ei};
-  if (field == "ei_min") return {nullptr, &c.bouc_wen.ei_min};
-  if (field == "ei_max") return {nullptr, &c.bouc_wen.ei_max};
-  if (field == "chi0") return {nullptr, &c.bouc_wen.chi0};
+  if (cable::number_index(*c.law, field) >= 0) return {nullptr, &c.number(field)};
   if (field == "mirror_length") return {nullptr, nullptr, &c.mirror_length};
-  if (field == "lever_arm_cap") return {nullptr, nullptr, &c.lever_arm_cap};
-  if (field.starts_with("jenkin")) {
+  if (c.law->jenkin_elements() && field == "lever_arm_cap") return {nullptr, nullptr, &c.lever_arm_cap};
+  if (!cable::owners_of(field, c.law).empty()) fail(path, cable::foreign_key_message(field, *c.law));
+  if (c.law->jenkin_elements() && field.starts_with("jenkin")) {
     const auto index = leading_index(field.substr(6));
     if (!index || !index->second.starts_with('.')) unknown(path);
     if (index->first >= c.jenkin.size()) {

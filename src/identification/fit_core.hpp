@@ -18,6 +18,7 @@
 
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/numerics/solver_summary.hpp"
+#include "stockbridge/cable/section_law_descriptor.hpp"
 #include "stockbridge/section/bouc_wen_section.hpp"
 #include "stockbridge/section/masing_law.hpp"
 
@@ -77,19 +78,19 @@ class LogParameters {
   double offset_scale_;
 };
 
-/// The Bouc-Wen law's numbers as the optimiser's variables: log EI_min,
-/// log (EI_max - EI_min) (so that EI_max >= EI_min), log chi0, then the offset in
-/// units of offset_scale.
-struct BoucWenLogParameters {
+/// A law of numbers' variables (SectionLawDescriptor::pack) and the offset, in units of `offset_scale`.
+struct LawLogParameters {
+  const cable::SectionLawDescriptor* law = nullptr;
   double offset_scale = 1.0;
-  std::vector<double> pack(const section::BoucWenParameters& p, double offset) const {
-    return {std::log(p.ei_min), std::log(p.ei_max - p.ei_min), std::log(p.chi0), offset / offset_scale};
+  std::vector<double> pack(const std::vector<double>& values, double offset) const {
+    std::vector<double> x = law->pack(values);
+    x.push_back(offset / offset_scale);
+    return x;
   }
-  section::BoucWenParameters parameters(const std::vector<double>& x) const {
-    const double ei_min = std::exp(x[0]);
-    return {ei_min, ei_min + std::exp(x[1]), std::exp(x[2])};
+  std::vector<double> parameters(const std::vector<double>& x) const {
+    return law->unpack(std::vector<double>(x.begin(), x.end() - 1));
   }
-  double offset(const std::vector<double>& x) const { return x[3] * offset_scale; }
+  double offset(const std::vector<double>& x) const { return x.back() * offset_scale; }
 };
 
 /// One optimisation's settings (NLopt's derivative-free Subplex or Nelder-Mead).

@@ -16,10 +16,10 @@ void GlobalIdentificationOptions::validate() const {
   require_positive("length", length, "m");
   require_in_range("sections", sections, cable::min_sections, cable::max_sections);
   require_in_range("elements", elements, 1, 6);
-  if (law == cable::SectionLawKind::bouc_wen && elements != 1) {
-    throw InvalidParameter("elements", fmt::format(" = {}: Jenkin elements belong to the Masing law; the Bouc-Wen law "
-                                                   "fits ei_min, ei_max and chi0",
-                                                   elements));
+  if (!law->jenkin_elements() && elements != 1) {
+    throw InvalidParameter("elements", fmt::format(" = {}: Jenkin elements belong to the Masing law; the {} law "
+                                                   "fits {}",
+                                                   elements, law->title(), law->takes()));
   }
   require_in_range("max_evaluations", max_evaluations, 10, 100000000);
   require_positive("tolerance", tolerance, "");
@@ -48,21 +48,6 @@ std::vector<std::vector<double>> starts(const cable::CableDescription& four_step
   for (const auto& [ei_factor, h_factor] : {std::pair{1.0, 1.0}, std::pair{1.4, 0.6}, std::pair{0.7, 1.5},
                                             std::pair{1.0, 0.6}, std::pair{1.4, 1.0}}) {
     x.push_back(packing.pack(fit_core::spread_over_elements(ei * ei_factor, c, h * h_factor, elements), 0.0));
-  }
-  return x;
-}
-
-/// Bouc-Wen starts from the four-step Masing cable: EI_min its ei (slipping),
-/// EI_max its ei + c (sticking), chi0 its slip curvature h / c (where the hysteretic
-/// moment (EI_max - EI_min) chi0 tanh(chi_a / chi0) levels off at about h); EI_min and
-/// chi0 varied.
-std::vector<std::vector<double>> bouc_wen_starts(const cable::CableDescription& four_step,
-                                                 const fit_core::BoucWenLogParameters& packing) {
-  const double ei = four_step.ei.at(0.0), c = four_step.jenkin[0].c.at(0.0), h = four_step.jenkin[0].h.at(0.0);
-  std::vector<std::vector<double>> x;
-  for (const auto& [ei_factor, chi0_factor] : {std::pair{1.0, 1.0}, std::pair{1.0, 0.5}, std::pair{1.0, 2.0},
-                                               std::pair{0.7, 1.0}, std::pair{1.4, 1.0}}) {
-    x.push_back(packing.pack({ei * ei_factor, ei * ei_factor + c, chi0_factor * h / c}, 0.0));
   }
   return x;
 }
@@ -122,13 +107,14 @@ GlobalIdentification identify_four_step(const ExperimentMeasurement& m, const Gl
 
 namespace {
 
-GlobalIdentification identify_fit_bouc_wen(const ExperimentMeasurement& m, const GlobalIdentificationOptions& options,
-                                           const GlobalIdentification& four_step, double output_scale) {
+/// A law of numbers, from its starts (SectionLawDescriptor::starts) made of the four-step Masing cable.
+GlobalIdentification identify_fit_numbers(const ExperimentMeasurement& m, const GlobalIdentificationOptions& options,
+                                          const GlobalIdentification& four_step, double output_scale) {
+  const cable::SectionLawDescriptor& law = *options.law;
   const std::size_t from = checked_reversals(m).front();
-  const fit_core::BoucWenLogParameters packing{output_scale};
+  const fit_core::LawLogParameters packing{&law, output_scale};
   auto cable_of = [&](const std::vector<double>& x, int sections) {
-    const section::BoucWenParameters p = packing.parameters(x);
-    return cable::CableDescription::uniform_bouc_wen(options.length, sections, p.ei_min, p.ei_max, p.chi0);
+    return cable::CableDescription::uniform(law, options.length, sections, packing.parameters(x));
   };
   auto objective_on = [&](int sections) {
     return [&, sections](const std::vector<double>& x) {
@@ -136,11 +122,17 @@ GlobalIdentification identify_fit_bouc_wen(const ExperimentMeasurement& m, const
                                           from);
     };
   };
+  const cable::CableDescription& c = four_step.cable;
+  std::vector<std::vector<double>> starts;
+  for (const std::vector<double>& values :
+       law.starts({c.ei.at(0.0), c.jenkin[0].c.at(0.0), c.jenkin[0].h.at(0.0)}, cable::FitKind::global)) {
+    starts.push_back(packing.pack(values, 0.0));
+  }
   // As for the Masing law: the starts on a coarse cable, the best polished on the full one.
   fit_core::Search coarse(objective_on(std::min(options.sections, 12)));
   fit_core::Search fine(objective_on(options.sections));
   fit_core::SearchSettings settings{options.optimizer, options.tolerance, options.max_evaluations / 4, 0.1};
-  const fit_core::Minimum explored = coarse.from_each(bouc_wen_starts(four_step.cable, packing), settings);
+  const fit_core::Minimum explored = coarse.from_each(starts, settings);
   settings.max_evaluations = options.max_evaluations;
   const fit_core::Minimum best = fine.restarted({explored.x}, 2, settings);
   GlobalIdentification result;
@@ -159,7 +151,7 @@ GlobalIdentification identify_fit(const ExperimentMeasurement& m, const GlobalId
   const std::size_t from = checked_reversals(m).front();
   const double output_scale = std::abs(*std::max_element(
       m.measured.begin(), m.measured.end(), [](double x, double y) { return std::abs(x) < std::abs(y); }));
-  if (options.law == cable::SectionLawKind::bouc_wen) return identify_fit_bouc_wen(m, options, four_step, output_scale);
+  if (!options.law->jenkin_elements()) return identify_fit_numbers(m, options, four_step, output_scale);
   const fit_core::LogParameters packing(options.elements, output_scale);
   auto objective_on = [&](int sections) {
     return [&, sections](const std::vector<double>& x) {

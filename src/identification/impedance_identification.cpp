@@ -48,10 +48,6 @@ constexpr int kExploreSections = 12;
 constexpr double kReproducedError = 1e-6;
 /// The starts: (ei, every h) scaled from the starting values.
 constexpr std::pair<double, double> kStartFactors[] = {{1.0, 1.0}, {1.0, 0.5}, {1.0, 2.0}, {1.0, 0.25}, {0.7, 1.0}, {1.4, 1.0}};
-/// The Bouc-Wen law's variables per cable type: log ei_min, log ei_max, log chi0
-/// (a step to ei_max < ei_min is refused by the cable, as any parameters it does
-/// not accept).
-constexpr int kBoucWenVariables = 3;
 
 double held_amplitude(const damper::Excitation& e, damper::HeldAmplitude held) {
   return held == damper::HeldAmplitude::velocity ? e.velocity_amplitude() : e.displacement_amplitude;
@@ -170,7 +166,9 @@ std::vector<DamperNumber> fixed_numbers(const damper::DamperDescription& start, 
 
 /// The optimiser's variables and the damper they stand for. Per cable type: the
 /// logarithms, relative to the starting values, of its law's numbers (Masing: ei,
-/// c_0, h_0, c_1, h_1, ...; Bouc-Wen: ei_min, ei_max, chi0); then
+/// c_0, h_0, c_1, h_1, ...; a law of numbers: each number, by its logarithm or in
+/// steps of its starting value (FitScale); a step the cable does not accept, such as
+/// Bouc-Wen's ei_max < ei_min, is refused by it); then
 /// the numbers of options.free (DamperNumber); then, when fitted, the clamp mass's
 /// change in units of the damper's mass.
 class FitVariables {
@@ -185,8 +183,8 @@ class FitVariables {
     for (std::size_t t = 0; t < types; ++t) {
       const std::size_t arm = first_arm(t);
       prefixes_.push_back(types > 1 ? arm_key(arm) : "");
-      if (law_ == cable::SectionLawKind::bouc_wen) {
-        bouc_wen_reference_.push_back(starting_bouc_wen(start.arms[arm].cable, arm_key(arm)));
+      if (numbered()) {
+        number_reference_.push_back(starting_numbers(start.arms[arm].cable, arm_key(arm)));
         continue;
       }
       reference_.push_back(starting_parameters(start.arms[arm].cable, elements, arm_key(arm)));
@@ -196,11 +194,12 @@ class FitVariables {
     for (const damper::ArmDescription& a : start.arms) mass_scale_ += a.mass;
   }
 
-  cable::SectionLawKind law() const { return law_; }
-  bool bouc_wen() const { return law_ == cable::SectionLawKind::bouc_wen; }
-  /// Jenkin elements per type (none under the Bouc-Wen law).
-  int elements() const { return bouc_wen() ? 0 : static_cast<int>(reference_.front().jenkin.size()); }
-  int per_type() const { return bouc_wen() ? kBoucWenVariables : 1 + 2 * elements(); }
+  const cable::SectionLawDescriptor* law() const { return law_; }
+  /// A law of numbers (not the Masing law's Jenkin elements).
+  bool numbered() const { return !law_->jenkin_elements(); }
+  /// Jenkin elements per type (none under a law of numbers).
+  int elements() const { return numbered() ? 0 : static_cast<int>(reference_.front().jenkin.size()); }
+  int per_type() const { return numbered() ? static_cast<int>(law_->numbers().size()) : 1 + 2 * elements(); }
   int cable_variables() const { return per_type() * static_cast<int>(types()); }
   int size() const { return cable_variables() + static_cast<int>(numbers_.size()) + (fit_clamp_mass_ ? 1 : 0); }
   std::size_t types() const { return prefixes_.size(); }
@@ -230,25 +229,38 @@ class FitVariables {
     return out;
   }
 
-  /// Each type's Bouc-Wen numbers at x (none under the Masing law).
-  std::vector<section::BoucWenParameters> bouc_wen_cables(const Eigen::VectorXd& x) const {
-    std::vector<section::BoucWenParameters> out;
-    for (std::size_t t = 0; t < bouc_wen_reference_.size(); ++t) {
-      const section::BoucWenParameters& r = bouc_wen_reference_[t];
+  /// Each type's numbers at x under a law of numbers (none under the Masing law).
+  std::vector<cable::LawValues> law_cables(const Eigen::VectorXd& x) const {
+    std::vector<cable::LawValues> out;
+    for (std::size_t t = 0; t < number_reference_.size(); ++t) {
+      const std::vector<double>& r = number_reference_[t];
       const int o = per_type() * static_cast<int>(t);
-      out.push_back({r.ei_min * std::exp(x(o)), r.ei_max * std::exp(x(o + 1)), r.chi0 * std::exp(x(o + 2))});
+      cable::LawValues values{law_, {}};
+      for (int k = 0; k < per_type(); ++k) {
+        const double scale = linear_scale(o + k);
+        values.values.push_back(scale > 0.0 ? r[static_cast<std::size_t>(k)] + scale * x(o + k)
+                                            : r[static_cast<std::size_t>(k)] * std::exp(x(o + k)));
+      }
+      out.push_back(std::move(values));
     }
     return out;
+  }
+
+  /// The step of cable variable i (< cable_variables()) that moves linearly (its
+  /// starting value's size, or 1 for a start of 0); 0 for a logarithmic one.
+  double linear_scale(int i) const {
+    if (!numbered() || i >= cable_variables()) return 0.0;
+    const std::size_t k = static_cast<std::size_t>(i % per_type());
+    if (law_->numbers()[k].fit_scale == cable::FitScale::logarithmic) return 0.0;
+    const double r = std::abs(number_reference_[static_cast<std::size_t>(i / per_type())][k]);
+    return r > 0.0 ? r : 1.0;
   }
 
   /// The value of cable variable i (< cable_variables()) at x.
   double cable_value(const Eigen::VectorXd& x, int i) const {
     const std::size_t t = static_cast<std::size_t>(i / per_type());
     const int k = i % per_type();
-    if (bouc_wen()) {
-      const section::BoucWenParameters p = bouc_wen_cables(x)[t];
-      return k == 0 ? p.ei_min : k == 1 ? p.ei_max : p.chi0;
-    }
+    if (numbered()) return law_cables(x)[t][static_cast<std::size_t>(k)];
     const section::MasingParameters p = cables(x)[t];
     return k == 0 ? p.ei : (k - 1) % 2 == 0 ? p.jenkin[(k - 1) / 2].c : p.jenkin[(k - 1) / 2].h;
   }
@@ -261,7 +273,7 @@ class FitVariables {
   /// its sections (at most `max_sections`), mirror length and lever-arm cap).
   damper::DamperDescription damper(const Eigen::VectorXd& x, double clamp_mass, int max_sections = cable::max_sections) const {
     const std::vector<section::MasingParameters> fitted = cables(x);
-    const std::vector<section::BoucWenParameters> fitted_bouc_wen = bouc_wen_cables(x);
+    const std::vector<cable::LawValues> fitted_numbers = law_cables(x);
     damper::DamperDescription d = start_;
     d.clamp_mass = clamp_mass;
     for (std::size_t k = 0; k < numbers_.size(); ++k) {
@@ -271,10 +283,9 @@ class FitVariables {
       const std::size_t t = type_of_arm_[k];
       cable::CableDescription& c = d.arms[k].cable;
       c.sections = std::min(c.sections, max_sections);
-      if (bouc_wen()) {
-        const section::BoucWenParameters& p = fitted_bouc_wen[t];
-        c.bouc_wen = {cable::Profile::constant(p.ei_min), cable::Profile::constant(p.ei_max),
-                      cable::Profile::constant(p.chi0)};
+      if (numbered()) {
+        const auto keys = law_->numbers();
+        for (std::size_t n = 0; n < keys.size(); ++n) c.number(keys[n].key) = cable::Profile::constant(fitted_numbers[t][n]);
         continue;
       }
       c.ei = cable::Profile::constant(fitted[t].ei);
@@ -293,14 +304,14 @@ class FitVariables {
     if (const DamperNumber* n = number(i)) return n->path;
     const std::string& prefix = prefixes_[static_cast<std::size_t>(i / per_type())];
     const int k = i % per_type();
-    if (bouc_wen()) return prefix + (k == 0 ? "ei_min" : k == 1 ? "ei_max" : "chi0");
+    if (numbered()) return prefix + std::string(law_->numbers()[static_cast<std::size_t>(k)].key);
     if (k == 0) return prefix + "ei";
     return fmt::format("{}jenkin[{}].{}", prefix, (k - 1) / 2, (k - 1) % 2 == 0 ? "c" : "h");
   }
   std::string unit(int i) const {
     if (fit_clamp_mass_ && i == clamp_mass_index()) return "kg";
     if (const DamperNumber* n = number(i)) return n->unit;
-    if (bouc_wen()) return i % per_type() == 2 ? "1/m" : "N m^2";
+    if (numbered()) return std::string(law_->numbers()[static_cast<std::size_t>(i % per_type())].unit);
     return i % per_type() == 0 || (i % per_type() - 1) % 2 == 0 ? "N m^2" : "N m";
   }
   std::string type_prefix(std::size_t t) const { return prefixes_[t]; }
@@ -336,9 +347,8 @@ class FitVariables {
       Eigen::VectorXd g = Eigen::VectorXd::Zero(size());
       const int o = per_type() * static_cast<int>(t);
       g(o) = 3.0;
-      if (bouc_wen()) {
-        g(o + 1) = 3.0;
-        g(o + 2) = -2.0;
+      for (int k = 0; numbered() && k < per_type(); ++k) {
+        if (linear_scale(o + k) == 0.0) g(o + k) = law_->numbers()[static_cast<std::size_t>(k)].scaling_power;
       }
       for (int j = 0; j < elements(); ++j) {
         g(o + 1 + 2 * j) = 3.0;
@@ -380,9 +390,12 @@ class FitVariables {
       for (std::size_t t = 0; t < types(); ++t) {
         const int o = per_type() * static_cast<int>(t);
         x(o) = std::log(ei_factor);
-        if (bouc_wen()) {
-          x(o + 1) = std::log(ei_factor);
-          x(o + 2) = std::log(h_factor);
+        for (int k = 0; numbered() && k < per_type(); ++k) {
+          const cable::LawNumber& n = law_->numbers()[static_cast<std::size_t>(k)];
+          const double factor = n.start_role == cable::StartRole::stiffness ? ei_factor
+                                : n.start_role == cable::StartRole::slip    ? h_factor
+                                                                            : 1.0;
+          x(o + k) = linear_scale(o + k) > 0.0 ? 0.0 : std::log(factor);
         }
         for (int j = 0; j < elements(); ++j) x(o + 2 + 2 * j) = std::log(h_factor);
       }
@@ -398,35 +411,30 @@ class FitVariables {
 
   /// The law of every arm's cable (one law per fit); `elements` must be 1 (the
   /// option's default) under the Bouc-Wen law.
-  static cable::SectionLawKind common_law(const damper::DamperDescription& start, int elements) {
-    const cable::SectionLawKind law = start.arms.front().cable.law;
+  static const cable::SectionLawDescriptor* common_law(const damper::DamperDescription& start, int elements) {
+    const cable::SectionLawDescriptor* law = start.arms.front().cable.law;
     for (std::size_t k = 1; k < start.arms.size(); ++k) {
       if (start.arms[k].cable.law != law) {
         throw InvalidParameter(arm_key(k) + "law",
                                fmt::format(" = \"{}\" but arm[0]'s is \"{}\": expected one section law for every "
                                            "arm (identify impedance fits one law)",
-                                           cable::section_law_name(start.arms[k].cable.law), cable::section_law_name(law)));
+                                           start.arms[k].cable.law->name(), law->name()));
       }
     }
-    if (law == cable::SectionLawKind::bouc_wen && elements != 1) {
+    if (!law->jenkin_elements() && elements != 1) {
       throw InvalidParameter("elements", fmt::format(" = {}: Jenkin elements belong to the Masing law; the start's "
-                                                     "cables are law = \"bouc-wen\" (ei_min, ei_max and chi0 are fitted)",
-                                                     elements));
+                                                     "cables are law = \"{}\" ({} are fitted)",
+                                                     elements, law->name(), law->takes()));
     }
     return law;
   }
 
-  /// The start's Bouc-Wen numbers, constants with ei_max > ei_min (fitted in logarithms each).
-  static section::BoucWenParameters starting_bouc_wen(const cable::CableDescription& c, const std::string& key) {
-    const section::BoucWenParameters p{constant_value(c.bouc_wen.ei_min, key + "ei_min"),
-                                       constant_value(c.bouc_wen.ei_max, key + "ei_max"),
-                                       constant_value(c.bouc_wen.chi0, key + "chi0")};
-    if (!(p.ei_max > p.ei_min)) {
-      throw InvalidParameter(key + "ei_max", fmt::format(" = {} N m^2: expected a starting value above ei_min = {} N m^2 "
-                                                         "(a cable without hysteresis leaves chi0 undetermined)",
-                                                         format_value(p.ei_max), format_value(p.ei_min)));
-    }
-    return p;
+  /// The start's numbers under a law of numbers, constants the law can fit from (check_start).
+  std::vector<double> starting_numbers(const cable::CableDescription& c, const std::string& key) const {
+    std::vector<double> values;
+    for (const cable::LawNumber& n : law_->numbers()) values.push_back(constant_value(c.number(n.key), key + std::string(n.key)));
+    law_->check_start(values, key);
+    return values;
   }
 
   /// The start's elements where it has `elements` of them, otherwise their sums
@@ -472,10 +480,10 @@ class FitVariables {
   std::vector<DamperNumber> numbers_;
   bool fit_clamp_mass_ = false;
   std::vector<std::string> prefixes_;
-  cable::SectionLawKind law_;
+  const cable::SectionLawDescriptor* law_;
   std::vector<section::MasingParameters> reference_;        ///< per type, under the Masing law
   std::vector<std::vector<double>> k0_;
-  std::vector<section::BoucWenParameters> bouc_wen_reference_;  ///< per type, under the Bouc-Wen law
+  std::vector<std::vector<double>> number_reference_;  ///< per type, under a law of numbers
   double mass_scale_ = 0.0;
 };
 
@@ -678,6 +686,26 @@ class ImpedanceProblem : public least_squares::Problem {
   std::atomic<int> evaluations_{0};
 };
 
+/// How a law's numbers scale with the damper: "ei_min and ei_max times s^3, chi0 times s^-2".
+std::string scaling_words(const cable::SectionLawDescriptor& law) {
+  std::vector<int> powers;
+  for (const cable::LawNumber& n : law.numbers()) {
+    if (n.scaling_power != 0 && std::find(powers.begin(), powers.end(), n.scaling_power) == powers.end()) {
+      powers.push_back(n.scaling_power);
+    }
+  }
+  std::string out;
+  for (int p : powers) {
+    std::vector<std::string> keys;
+    for (const cable::LawNumber& n : law.numbers()) {
+      if (n.scaling_power == p) keys.push_back(std::string(n.key));
+    }
+    out += fmt::format("{}{} times s{}", out.empty() ? "" : ", ", cable::joined_with_and(keys),
+                       p == 1 ? "" : fmt::format("^{}", p));
+  }
+  return out;
+}
+
 /// Parameter i outside the null space and resolved within kUndeterminedResolution.
 bool determined_on_its_own(const std::vector<ParameterEstimate>& parameters, const least_squares::Statistics& s,
                            std::size_t i) {
@@ -718,9 +746,11 @@ std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Ei
       e.sensitivity = n->logarithmic ? s.sensitivity(i) : s.sensitivity(i) / n->scale;
     } else {
       e.value = variables.cable_value(x, i);
-      e.standard_error = e.value * s.standard_error(i);  // a log variable: relative errors
+      // A log variable: relative errors; a linear one's in units of its step.
+      const double scale = variables.linear_scale(i);
+      e.standard_error = (scale > 0.0 ? scale : e.value) * s.standard_error(i);
       e.resolution_at_1_percent = s.resolution(i);
-      e.sensitivity = s.sensitivity(i);
+      e.sensitivity = scale > 0.0 ? s.sensitivity(i) / scale : s.sensitivity(i);
     }
     if (s.in_null_space[static_cast<std::size_t>(i)]) e.standard_error = kInfinity;
     out.push_back(e);
@@ -733,7 +763,7 @@ std::vector<ParameterEstimate> estimates(const FitVariables& variables, const Ei
 }
 
 /// Each type's ei + sum c, a combination the data determine even where nothing slips
-/// (none under the Bouc-Wen law, whose stick stiffness ei_max is a parameter).
+/// (none under a law of numbers, such as Bouc-Wen's, whose stick stiffness ei_max is a parameter).
 std::vector<ParameterEstimate> stick_stiffnesses(const FitVariables& variables, const Eigen::VectorXd& x,
                                                  const least_squares::Statistics& s) {
   std::vector<ParameterEstimate> out;
@@ -921,7 +951,7 @@ std::vector<std::size_t> cable_types(const damper::DamperDescription& d) {
     const cable::CableDescription& c = d.arms[k].cable;
     auto same = [&](std::size_t f) {
       const cable::CableDescription& first = d.arms[f].cable;
-      return first.law == c.law && first.ei == c.ei && first.jenkin == c.jenkin && first.bouc_wen == c.bouc_wen;
+      return first.law == c.law && first.ei == c.ei && first.jenkin == c.jenkin && first.numbers == c.numbers;
     };
     const auto found = std::find_if(first_of_type.begin(), first_of_type.end(), same);
     type[k] = static_cast<std::size_t>(found - first_of_type.begin());
@@ -999,7 +1029,7 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
   result.cable_type = variables.type_of_arm();
   result.law = variables.law();
   result.cables = variables.cables(x);
-  result.bouc_wen_cables = variables.bouc_wen_cables(x);
+  result.law_cables = variables.law_cables(x);
   result.clamp_mass = variables.clamp_mass(x);
   result.damper = variables.damper(x, std::max(0.0, result.clamp_mass));
   result.misfit = sum_of_squares;
@@ -1020,7 +1050,7 @@ ImpedanceIdentification identify_impedance(const damper::DamperDescription& star
         "a damper scaled by any s (cable lengths and offsets times s, inertias times s^2, {}) has the same impedance: "
         "the data do not determine its size; fix one arm's inertia, cable length or (nonzero) offset at the drawing's "
         "value (leave it out of free)",
-        variables.bouc_wen() ? "ei_min and ei_max times s^3, chi0 times s^-2" : "ei and c times s^3, h times s"));
+        variables.numbered() ? scaling_words(*variables.law()) : "ei and c times s^3, h times s"));
   }
   if (result.lack_of_fit.significant) {
     const Eigen::VectorXd residuals = problem.residuals(x);

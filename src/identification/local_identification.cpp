@@ -20,10 +20,10 @@ Optimizer parse_optimizer(std::string_view name) {
 
 void LocalIdentificationOptions::validate() const {
   require_in_range("elements", elements, 1, 6);
-  if (law == cable::SectionLawKind::bouc_wen && elements != 1) {
-    throw InvalidParameter("elements", fmt::format(" = {}: Jenkin elements belong to the Masing law; the Bouc-Wen law "
-                                                   "fits ei_min, ei_max and chi0",
-                                                   elements));
+  if (!law->jenkin_elements() && elements != 1) {
+    throw InvalidParameter("elements", fmt::format(" = {}: Jenkin elements belong to the Masing law; the {} law "
+                                                   "fits {}",
+                                                   elements, law->title(), law->takes()));
   }
   require_in_range("max_evaluations", max_evaluations, 10, 100000000);
   require_positive("tolerance", tolerance, "");
@@ -110,36 +110,17 @@ std::vector<double> cycle_errors(const MomentCurvatureRecord& record, const std:
   return errors;
 }
 
-/// Starts from the record: EI_min from the slope at the extremes, EI_max from the
-/// slope after the reversals, chi0 from the half-height of the loop about the
-/// EI_min line over EI_max - EI_min; the hysteretic stiffness and chi0 scaled.
-std::vector<std::vector<double>> bouc_wen_starts(const RecordEstimates& e, const fit_core::BoucWenLogParameters& packing) {
-  std::vector<std::vector<double>> x;
-  const double ei_min = e.ei, hysteretic = e.c_total;
-  for (const auto& [b_factor, chi0_factor] :
-       {std::pair{1.0, 1.0}, std::pair{0.5, 1.0}, std::pair{2.0, 1.0}, std::pair{1.0, 0.5}, std::pair{1.0, 2.0}}) {
-    const double b = b_factor * hysteretic;
-    x.push_back(packing.pack({ei_min, ei_min + b, chi0_factor * e.h_total / hysteretic}, e.offset));
-  }
-  return x;
-}
-
 }  // namespace
 
-std::vector<double> model_moments(const section::BoucWenParameters& parameters, double moment_offset,
+std::vector<double> model_moments(const cable::LawValues& numbers, double moment_offset,
                                   const MomentCurvatureRecord& record) {
-  section::BoucWenState state = section::BoucWenState::virgin(parameters);
-  std::vector<double> moments;
-  moments.reserve(record.curvature.size());
-  for (const double kappa : record.curvature) {
-    state = section::bouc_wen_update(parameters, state, kappa);
-    moments.push_back(state.moment + moment_offset);
-  }
+  std::vector<double> moments = numbers.law->moments(numbers.values, record.curvature);
+  for (double& m : moments) m = m + moment_offset;
   return moments;
 }
 
 std::vector<double> model_moments(const LocalIdentification& fit, const MomentCurvatureRecord& record) {
-  return fit.bouc_wen ? model_moments(*fit.bouc_wen, fit.moment_offset, record)
+  return fit.numbers ? model_moments(*fit.numbers, fit.moment_offset, record)
                       : model_moments(fit.parameters, fit.moment_offset, record);
 }
 
@@ -165,17 +146,24 @@ double relative_l1_error(const section::MasingParameters& parameters, double mom
 
 namespace {
 
-LocalIdentification identify_local_bouc_wen(const MomentCurvatureRecord& record, const LocalIdentificationOptions& options,
-                                            const std::vector<std::size_t>& turns, const RecordEstimates& estimates) {
-  const fit_core::BoucWenLogParameters packing{estimates.h_total};
+/// A law of numbers, from its starts (SectionLawDescriptor::starts) made of the record's estimates.
+LocalIdentification identify_local_numbers(const MomentCurvatureRecord& record, const LocalIdentificationOptions& options,
+                                           const std::vector<std::size_t>& turns, const RecordEstimates& estimates) {
+  const cable::SectionLawDescriptor& law = *options.law;
+  const fit_core::LawLogParameters packing{&law, estimates.h_total};
   fit_core::Search search([&](const std::vector<double>& x) {
-    const std::vector<double> model = model_moments(packing.parameters(x), packing.offset(x), record);
+    const std::vector<double> model = model_moments(cable::LawValues{&law, packing.parameters(x)}, packing.offset(x), record);
     return fit_core::relative_l1_misfit(record.curvature, record.moment, model, turns.front());
   });
+  std::vector<std::vector<double>> starts;
+  for (const std::vector<double>& values :
+       law.starts({estimates.ei, estimates.c_total, estimates.h_total}, cable::FitKind::local)) {
+    starts.push_back(packing.pack(values, estimates.offset));
+  }
   const fit_core::SearchSettings settings{options.optimizer, options.tolerance, options.max_evaluations, 0.2};
-  const fit_core::Minimum best = search.restarted(search.from_each(bouc_wen_starts(estimates, packing), settings), 1, settings);
+  const fit_core::Minimum best = search.restarted(search.from_each(starts, settings), 1, settings);
   LocalIdentification fit;
-  fit.bouc_wen = packing.parameters(best.x);
+  fit.numbers = cable::LawValues{&law, packing.parameters(best.x)};
   fit.moment_offset = packing.offset(best.x);
   fit.error = best.value;
   fit.cycle_errors = cycle_errors(record, model_moments(fit, record), turns);
@@ -191,7 +179,7 @@ LocalIdentification identify_local(const MomentCurvatureRecord& record, const Lo
   options.validate();
   const std::vector<std::size_t> turns = fit_core::checked_reversals(record.curvature, record.moment, moment_curvature_names);
   const RecordEstimates estimates = record_estimates(record, turns);
-  if (options.law == cable::SectionLawKind::bouc_wen) return identify_local_bouc_wen(record, options, turns, estimates);
+  if (!options.law->jenkin_elements()) return identify_local_numbers(record, options, turns, estimates);
   const fit_core::LogParameters packing(options.elements, estimates.h_total);
   fit_core::Search search([&](const std::vector<double>& x) {
     const std::vector<double> model = model_moments(packing.parameters(x), packing.offset(x), record);

@@ -1,6 +1,6 @@
 #include "stockbridge/io/cable_file.hpp"
 
-#include <array>
+#include <algorithm>
 
 #include <fmt/format.h>
 
@@ -28,23 +28,23 @@ cable::Profile read_profile(const TomlTable& table, std::string_view key) {
   return cable::Profile::constant(table.number(key));
 }
 
-cable::SectionLawKind read_law(const TomlTable& table) {
+const cable::SectionLawDescriptor& read_law(const TomlTable& table) {
   const std::optional<std::string> law = table.optional_string("law");
-  if (!law || *law == "masing") return cable::SectionLawKind::masing;
-  if (*law == "bouc-wen") return cable::SectionLawKind::bouc_wen;
-  table.fail("law", fmt::format("\"{}\" is not a section law: expected \"masing\" or \"bouc-wen\"", *law));
+  if (!law) return cable::default_section_law();
+  if (const cable::SectionLawDescriptor* found = cable::find_section_law(*law)) return *found;
+  table.fail("law", fmt::format("\"{}\" is not a section law: expected {}", *law, cable::section_law_names(true)));
 }
 
-/// A key of one law in the table of a cable of the other: named, with what the law takes.
-void reject_keys_of_other_law(const TomlTable& table, cable::SectionLawKind law) {
-  const bool bouc_wen = law == cable::SectionLawKind::bouc_wen;
-  static constexpr std::array<std::string_view, 3> masing_keys{"ei", "jenkin", "lever_arm_cap"};
-  static constexpr std::array<std::string_view, 3> bouc_wen_keys{"ei_min", "ei_max", "chi0"};
-  for (std::string_view key : bouc_wen ? masing_keys : bouc_wen_keys) {
-    if (!table.present(key)) continue;
-    table.fail(key, bouc_wen ? "is a number of the Masing law: law = \"bouc-wen\" takes ei_min, ei_max and chi0"
-                             : fmt::format("is a number of the Bouc-Wen law: set law = \"bouc-wen\"{}",
-                                           table.present("law") ? "" : " (the default law is \"masing\": ei and jenkin)"));
+/// A key of another law in the table of a cable of this one: named, with what the law takes.
+void reject_keys_of_other_laws(const TomlTable& table, const cable::SectionLawDescriptor& law) {
+  const std::vector<std::string_view> own = cable::law_keys(law);
+  for (const cable::SectionLawDescriptor* other : cable::section_laws()) {
+    for (std::string_view key : cable::law_keys(*other)) {
+      if (!table.present(key) || std::find(own.begin(), own.end(), key) != own.end()) continue;
+      const bool default_note = &law == &cable::default_section_law() && !table.present("law");
+      table.fail(key, cable::foreign_key_message(key, law) +
+                          (default_note ? fmt::format(" (the default law is \"{}\": {})", law.name(), law.takes()) : ""));
+    }
   }
 }
 
@@ -52,29 +52,23 @@ void reject_keys_of_other_law(const TomlTable& table, cable::SectionLawKind law)
 
 cable::CableDescription read_cable_table(const TomlTable& table) {
   cable::CableDescription d;
-  d.law = read_law(table);
-  reject_keys_of_other_law(table, d.law);
+  d.law = &read_law(table);
+  reject_keys_of_other_laws(table, *d.law);
   d.length = table.number("length");
   d.sections = static_cast<int>(table.integer("sections", cable::min_sections, cable::max_sections));
-  if (d.law == cable::SectionLawKind::bouc_wen) {
-    d.bouc_wen.ei_min = read_profile(table, "ei_min");
-    d.bouc_wen.ei_max = read_profile(table, "ei_max");
-    d.bouc_wen.chi0 = read_profile(table, "chi0");
-    d.mirror_length = table.optional_number("mirror_length");
-    table.reject_unknown_keys();
-    return d;
-  }
-  d.ei = read_profile(table, "ei");
-  for (const TomlTable& element : table.table_array("jenkin", false)) {
-    cable::JenkinProfile jenkin;
-    jenkin.c = read_profile(element, "c");
-    jenkin.h = read_profile(element, "h");
-    jenkin.k0 = element.optional_number("k0").value_or(0.0);
-    element.reject_unknown_keys();
-    d.jenkin.push_back(std::move(jenkin));
+  for (const cable::LawNumber& n : d.law->numbers()) d.number(n.key) = read_profile(table, n.key);
+  if (d.law->jenkin_elements()) {
+    for (const TomlTable& element : table.table_array("jenkin", false)) {
+      cable::JenkinProfile jenkin;
+      jenkin.c = read_profile(element, "c");
+      jenkin.h = read_profile(element, "h");
+      jenkin.k0 = element.optional_number("k0").value_or(0.0);
+      element.reject_unknown_keys();
+      d.jenkin.push_back(std::move(jenkin));
+    }
   }
   d.mirror_length = table.optional_number("mirror_length");
-  d.lever_arm_cap = table.optional_number("lever_arm_cap");
+  if (d.law->jenkin_elements()) d.lever_arm_cap = table.optional_number("lever_arm_cap");
   table.reject_unknown_keys();
   return d;
 }
@@ -129,23 +123,20 @@ cable::Cable read_cable_text(std::string_view text, std::string_view source, Sli
 }
 
 std::string cable_table_toml(const cable::CableDescription& c) {
-  if (c.law == cable::SectionLawKind::bouc_wen) {
-    std::string text = fmt::format(
-        "law = \"bouc-wen\"\nlength = {}   # m\nsections = {}\nei_min = {}   # N m^2\nei_max = {}   # N m^2\n"
-        "chi0 = {}   # 1/m\n",
-        format_value(c.length), c.sections, profile_toml(c.bouc_wen.ei_min), profile_toml(c.bouc_wen.ei_max),
-        profile_toml(c.bouc_wen.chi0));
-    if (c.mirror_length) text += fmt::format("mirror_length = {}   # m\n", format_value(*c.mirror_length));
-    return text;
+  std::string text = c.law == &cable::default_section_law() ? "" : fmt::format("law = \"{}\"\n", c.law->name());
+  text += fmt::format("length = {}   # m\nsections = {}\n", format_value(c.length), c.sections);
+  for (const cable::LawNumber& n : c.law->numbers()) {
+    text += fmt::format("{} = {}   # {}\n", n.key, profile_toml(c.number(n.key)), n.unit.empty() ? "-" : n.unit);
   }
-  std::string text = fmt::format("length = {}   # m\nsections = {}\nei = {}   # N m^2\njenkin = [", format_value(c.length),
-                                 c.sections, profile_toml(c.ei));
-  for (std::size_t j = 0; j < c.jenkin.size(); ++j) {
-    const cable::JenkinProfile& e = c.jenkin[j];
-    text += fmt::format("{} {{ c = {}, h = {}{} }}", j ? "," : "", profile_toml(e.c), profile_toml(e.h),
-                        e.k0 > 0.0 ? fmt::format(", k0 = {}", format_value(e.k0)) : "");
+  if (c.law->jenkin_elements()) {
+    text += "jenkin = [";
+    for (std::size_t j = 0; j < c.jenkin.size(); ++j) {
+      const cable::JenkinProfile& e = c.jenkin[j];
+      text += fmt::format("{} {{ c = {}, h = {}{} }}", j ? "," : "", profile_toml(e.c), profile_toml(e.h),
+                          e.k0 > 0.0 ? fmt::format(", k0 = {}", format_value(e.k0)) : "");
+    }
+    text += " ]   # N m^2, N m\n";
   }
-  text += " ]   # N m^2, N m\n";
   if (c.mirror_length) text += fmt::format("mirror_length = {}   # m\n", format_value(*c.mirror_length));
   if (c.lever_arm_cap) text += fmt::format("lever_arm_cap = {}   # m\n", format_value(*c.lever_arm_cap));
   return text;

@@ -276,15 +276,7 @@ std::string amplitude_label(double amplitude, bool constant_displacement) {
 
 /// The messenger's law and its stiffness at the clamp, in words.
 std::string cable_law_summary(const cable::CableDescription& c) {
-  if (c.law == cable::SectionLawKind::bouc_wen) {
-    return fmt::format("Bouc-Wen law, EI at the clamp {} N m² slipping, {} N m² sticking, chi0 {} 1/m",
-                       number(c.bouc_wen.ei_min.at(0.0), 3), number(c.bouc_wen.ei_max.at(0.0), 3),
-                       number(c.bouc_wen.chi0.at(0.0), 3));
-  }
-  double stick = c.ei.at(0.0);
-  for (const cable::JenkinProfile& j : c.jenkin) stick += j.c.at(0.0);
-  return fmt::format("{} Jenkin elements, EI at the clamp {} N m² slipping, {} N m² sticking", c.jenkin.size(),
-                     number(c.ei.at(0.0), 3), number(stick, 3));
+  return c.law->summary(c, [](double value) { return number(value, 3); });
 }
 
 }  // namespace

@@ -11,19 +11,9 @@
 
 namespace stockbridge::requests {
 
-namespace {
-
-cable::SectionLawKind parse_law(const std::string& law) {
-  if (law == "bouc-wen") return cable::SectionLawKind::bouc_wen;
-  if (law != "masing") throw InvalidParameter("law", fmt::format(" = '{}': expected masing or bouc-wen", law));
-  return cable::SectionLawKind::masing;
-}
-
-}  // namespace
-
 identification::LocalIdentificationOptions local_options(const LocalRequest& request) {
   identification::LocalIdentificationOptions options;
-  options.law = parse_law(request.law);
+  options.law = &cable::section_law(request.law);
   options.elements = request.elements;
   options.optimizer = identification::parse_optimizer(request.optimizer);
   options.validate();
@@ -65,24 +55,32 @@ std::vector<io::JsonObject> jenkin_json(const std::vector<std::pair<double, doub
   return out;
 }
 
-/// The keys of a Bouc-Wen [cable] table, one a line with its unit in a comment.
-std::string bouc_wen_cable_keys(const section::BoucWenParameters& p) {
-  return fmt::format("law = \"bouc-wen\"\nei_min = {}   # N m^2\nei_max = {}   # N m^2\nchi0 = {}   # 1/m\n", p.ei_min,
-                     p.ei_max, p.chi0);
-}
-
 }  // namespace
 
-io::JsonObject& add_bouc_wen(io::JsonObject& json, const section::BoucWenParameters& p) {
-  return json.add("law", "bouc-wen").add("ei_min", p.ei_min).add("ei_max", p.ei_max).add("chi0", p.chi0);
+io::JsonObject& add_law_numbers(io::JsonObject& json, const cable::LawValues& numbers) {
+  json.add("law", std::string(numbers.law->name()));
+  const auto keys = numbers.law->numbers();
+  for (std::size_t k = 0; k < keys.size(); ++k) json.add(std::string(keys[k].key), numbers[k]);
+  return json;
 }
 
-std::string bouc_wen_text(const section::BoucWenParameters& p) {
-  return fmt::format("ei_min = {:.6g} N m^2, ei_max = {:.6g} N m^2, chi0 = {:.6g} 1/m", p.ei_min, p.ei_max, p.chi0);
+std::string law_numbers_text(const cable::LawValues& numbers) {
+  std::string text;
+  const auto keys = numbers.law->numbers();
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    text += fmt::format("{}{} = {:.6g}{}{}", k ? ", " : "", keys[k].key, numbers[k], keys[k].unit.empty() ? "" : " ",
+                        keys[k].unit);
+  }
+  return text;
 }
 
-section::BoucWenParameters bouc_wen_numbers(const cable::CableDescription& cable) {
-  return {cable.bouc_wen.ei_min.at(0.0), cable.bouc_wen.ei_max.at(0.0), cable.bouc_wen.chi0.at(0.0)};
+std::string law_numbers_toml(const cable::LawValues& numbers) {
+  std::string text = fmt::format("law = \"{}\"\n", numbers.law->name());
+  const auto keys = numbers.law->numbers();
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    text += fmt::format("{} = {}   # {}\n", keys[k].key, numbers[k], keys[k].unit.empty() ? "-" : keys[k].unit);
+  }
+  return text;
 }
 
 Table<FittedSample> local_fitted_table() {
@@ -92,8 +90,8 @@ Table<FittedSample> local_fitted_table() {
 io::JsonObject local_summary(const LocalResult& result) {
   const identification::LocalIdentification& fit = result.fit;
   io::JsonObject json;
-  if (fit.bouc_wen) {
-    add_bouc_wen(json, *fit.bouc_wen);
+  if (fit.numbers) {
+    add_law_numbers(json, *fit.numbers);
   } else {
     std::vector<std::pair<double, double>> c_h;
     for (const section::Jenkin& e : fit.parameters.jenkin) c_h.emplace_back(e.c, e.h);
@@ -112,7 +110,7 @@ std::string local_parameters_toml(const LocalResult& result, std::string_view so
       "# Identified by stockbridge identify local from {}: relative L1 error {:.4g}, moment offset {} N m.\n"
       "# The keys of a [cable] table: paste them into a cable or damper file.\n",
       source, fit.error, fit.moment_offset);
-  if (fit.bouc_wen) return text + bouc_wen_cable_keys(*fit.bouc_wen);
+  if (fit.numbers) return text + law_numbers_toml(*fit.numbers);
   text += fmt::format("ei = {}                 # N m^2\njenkin = [", fit.parameters.ei);
   for (std::size_t j = 0; j < fit.parameters.jenkin.size(); ++j) {
     text += fmt::format("{} {{ c = {}, h = {} }}", j ? "," : "", fit.parameters.jenkin[j].c, fit.parameters.jenkin[j].h);
@@ -122,10 +120,11 @@ std::string local_parameters_toml(const LocalResult& result, std::string_view so
 
 identification::GlobalIdentificationOptions global_options(const GlobalRequest& request) {
   identification::GlobalIdentificationOptions options;
-  options.law = parse_law(request.law);
-  if (options.law == cable::SectionLawKind::bouc_wen && request.method == "four-step") {
-    throw InvalidParameter("method", " = 'four-step': the four steps identify the Masing law; the Bouc-Wen law is "
-                                     "fitted (--method fit)");
+  options.law = &cable::section_law(request.law);
+  if (!options.law->jenkin_elements() && request.method == "four-step") {
+    throw InvalidParameter("method", fmt::format(" = 'four-step': the four steps identify the Masing law; the {} law is "
+                                                 "fitted (--method fit)",
+                                                 options.law->title()));
   }
   options.length = request.length;
   options.sections = request.sections;
@@ -204,8 +203,8 @@ Table<FittedSample> global_fitted_table(const GlobalRequest& request) {
 io::JsonObject global_summary(const GlobalRequest& request, const GlobalResult& result) {
   const cable::CableDescription& c = result.fit.cable;
   io::JsonObject json;
-  if (c.law == cable::SectionLawKind::bouc_wen) {
-    add_bouc_wen(json, bouc_wen_numbers(c));
+  if (!c.law->jenkin_elements()) {
+    add_law_numbers(json, c.values());
   } else {
     std::vector<std::pair<double, double>> c_h;
     for (const cable::JenkinProfile& e : c.jenkin) c_h.emplace_back(e.c.at(0.0), e.h.at(0.0));

@@ -176,7 +176,7 @@ std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification&
     out.push_back({fmt::format("the fit's RMS relative error of Z {:.3g} % is large (above {:g} %): the model does not "
                                "follow {} (check its units, the damper's masses and lengths or fit them with --free{})",
                                100.0 * fit.rms_relative_error, 100.0 * fit.rms_limit, source,
-                               fit.law == cable::SectionLawKind::masing ? ", --elements" : ""),
+                               fit.law->jenkin_elements() ? ", --elements" : ""),
                    false});
   }
   const identification::LackOfFit& l = fit.lack_of_fit;
@@ -210,7 +210,7 @@ std::vector<Warning> fit_warnings(const identification::ImpedanceIdentification&
                                  "remove {:.2g} % of the misfit): check the measurement's units and scatter, the "
                                  "cable's law{}",
                                  l.suspects.front().name, 100.0 * l.suspects.front().misfit_reduction,
-                                 fit.law == cable::SectionLawKind::masing ? " and --elements" : ""),
+                                 fit.law->jenkin_elements() ? " and --elements" : ""),
                      false});
     }
     for (const Warning& w : plain_warnings(l.notes)) out.push_back(w);
@@ -233,7 +233,7 @@ io::JsonObject fit_summary(const identification::ImpedanceMeasurement& measureme
   for (const identification::ParameterEstimate& e : fit.stick_stiffness) stick.push_back(estimate_json(e));
   // A cable type's law and numbers.
   auto add_cable = [&](io::JsonObject& json, std::size_t t) -> io::JsonObject& {
-    if (fit.law == cable::SectionLawKind::bouc_wen) return add_bouc_wen(json, fit.bouc_wen_cables[t]);
+    if (!fit.law->jenkin_elements()) return add_law_numbers(json, fit.law_cables[t]);
     return json.add("ei", fit.cables[t].ei).add("jenkin", jenkin_json(fit.cables[t]));
   };
   for (std::size_t t = 0; t < fit.types(); ++t) {

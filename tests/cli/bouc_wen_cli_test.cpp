@@ -133,7 +133,7 @@ TEST(BoucWenCli, AKeyOfTheOtherLawIsNamedWithItsLine) {
   const CliResult r = run_cli("impedance damper.toml --velocity 0.2 --frequencies 20 -o z.csv", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
-            "stockbridge: damper.toml:12: arm[0].cable.ei: is a number of the Masing law: law = \"bouc-wen\" takes "
+            "stockbridge: damper.toml:12: arm[0].cable.ei: is a number of the Masing and Iwan laws: law = \"bouc-wen\" takes "
             "ei_min, ei_max and chi0\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "z.csv"));
   text = uniform_bouc_wen_damper(25.0);
@@ -141,8 +141,8 @@ TEST(BoucWenCli, AKeyOfTheOtherLawIsNamedWithItsLine) {
   std::ofstream(dir / "damper.toml") << text;
   const CliResult bad_law = run_cli("impedance damper.toml --velocity 0.2 --frequencies 20 -o z.csv", dir);
   EXPECT_EQ(bad_law.exit_code, 2);
-  EXPECT_NE(bad_law.err.find("damper.toml:9: arm[0].cable.law: \"boucwen\" is not a section law: expected \"masing\" or "
-                             "\"bouc-wen\""),
+  EXPECT_NE(bad_law.err.find("damper.toml:9: arm[0].cable.law: \"boucwen\" is not a section law: expected \"masing\", "
+                             "\"bouc-wen\" or \"iwan\""),
             std::string::npos)
       << bad_law.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "z.csv"));

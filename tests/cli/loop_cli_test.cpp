@@ -76,7 +76,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"--amplitude 0.05", "--ei"},
                       BadCase{"--law bouc-wen --ei-min 5 --ei-max 40 --amplitude 0.05", "needs --ei-min, --ei-max"},
                       BadCase{"--law bouc-wen --ei 2.8 --ei-min 5 --ei-max 40 --chi0 0.15 --amplitude 0.05",
-                              "not --ei or --jenkin"},
+                              "--ei and --jenkin are the Masing law's: --law bouc-wen takes --ei-min, --ei-max and --chi0"},
                       BadCase{"--ei 2.8 --chi0 0.15 --amplitude 0.05", "are the Bouc-Wen law's"},
                       BadCase{"--law bouc-wen --ei-min 5 --ei-max 4 --chi0 0.15 --amplitude 0.05", "ei_max = 4"},
                       BadCase{"--law bouc-wen --ei-min 5 --ei-max 40 --chi0 0 --amplitude 0.05", "chi0 = 0"}),

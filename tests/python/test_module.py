@@ -230,10 +230,28 @@ def test_a_bouc_wen_loop_equals_the_program_and_its_closed_form(tmp_path):
     # 4 (EI_max - EI_min) chi0 (chi_a - chi0 tanh(chi_a / chi0)) per steady cycle (MODEL.md 13)
     assert loop["last_cycle_dissipation_j_per_m"] == pytest.approx(4 * 35 * 0.15 * (0.5 - 0.15 * np.tanh(0.5 / 0.15)),
                                                                   rel=1e-9)
-    with pytest.raises(sb.InvalidParameter, match="not ei or jenkin"):
+    with pytest.raises(sb.InvalidParameter, match="ei and jenkin are the Masing law's"):
         sb.loop(2.8, law="bouc-wen", ei_min=5.0, ei_max=40.0, chi0=0.15, amplitude=0.5)
     with pytest.raises(sb.InvalidParameter, match="are the Bouc-Wen law's"):
         sb.loop(2.8, chi0=0.15, amplitude=0.5)
+
+
+def test_an_iwan_loop_dissipates_its_closed_form_and_its_cable_has_its_numbers():
+    loop = sb.loop(law="iwan", ei=2.8, slip_moment=0.7, tangent_stiffness=20.0, exponent=-0.5, beta=0.2,
+                   amplitude=0.05, cycles=3)
+    chi = -0.5
+    c = 0.2 + (chi + 1) / (chi + 2)
+    phi_max = 0.7 * 1.2 / (20.0 * c)
+    r = 0.7 * (chi + 1) / (phi_max ** (chi + 2) * c)
+    # 4 R a^(chi+3) / ((chi+2)(chi+3)) per steady cycle (MODEL.md 17)
+    assert loop["last_cycle_dissipation_j_per_m"] == pytest.approx(4 * r * 0.05 ** (chi + 3) / ((chi + 2) * (chi + 3)),
+                                                                  rel=1e-9)
+    cable = sb.make_cable(0.1875, law="iwan", ei=2.8, slip_moment=0.7, tangent_stiffness=20.0, exponent=-0.5, beta=0.2)
+    assert (cable.law, cable.ei, cable.slip_moment, cable.exponent, cable.beta, cable.ei_min) == \
+        ("iwan", 2.8, 0.7, -0.5, 0.2, None)
+    assert 'law = "iwan"' in cable.toml()
+    with pytest.raises(sb.InvalidParameter, match="law = 'iwan' needs ei"):
+        sb.loop(law="iwan", ei=2.8, amplitude=0.05)
 
 
 ARM = {"mass": 0.856, "inertia": 0.001814, "offset": 0.0325}
@@ -934,7 +952,7 @@ def test_a_bouc_wen_cable_from_python_is_the_cable_files_law(tmp_path):
     for i, row in enumerate(rows):
         assert z["re_z_n_s_m"][0, i] == pytest.approx(float(row["re_z_n_s_m"]), rel=1e-12)
         assert z["im_z_n_s_m"][0, i] == pytest.approx(float(row["im_z_n_s_m"]), rel=1e-12)
-    with pytest.raises(sb.InvalidParameter, match=r"cable\.ei: is a number of the Masing law"):
+    with pytest.raises(sb.InvalidParameter, match=r"cable\.ei: is a number of the Masing and Iwan laws"):
         sb.make_cable(0.1875, law="bouc-wen", ei=2.5, ei_min=2.5, ei_max=25.0, chi0=0.03)
     with pytest.raises(sb.InvalidParameter, match=r"cable\.chi0: is a number of the Bouc-Wen law"):
         sb.make_cable(0.1875, ei=2.8, jenkin=[(20.0, 0.7)], chi0=0.03)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stockbridge/cable/profile.hpp"
+#include "stockbridge/cable/section_law_descriptor.hpp"
 #include "stockbridge/core/typical_ranges.hpp"
 
 namespace stockbridge::cable {
@@ -23,23 +24,6 @@ struct JenkinProfile {
   bool operator==(const JenkinProfile&) const = default;
 };
 
-/// The section law of the cable's cross-sections (section-law.md).
-enum class SectionLawKind {
-  masing,    ///< elastic beam ei plus Jenkin elements (MODEL.md sections 1-3)
-  bouc_wen,  ///< RTE's slenderpy: ei_min, ei_max, chi0 (MODEL.md section 13)
-};
-/// "masing" or "bouc-wen", as the files and options spell it.
-std::string_view section_law_name(SectionLawKind law);
-
-/// The Bouc-Wen law's numbers as profiles over s.
-struct BoucWenProfiles {
-  Profile ei_min = Profile::constant(0.0);  ///< the free wires' stiffness, N m^2, > 0
-  Profile ei_max = Profile::constant(0.0);  ///< the no-slip stiffness, N m^2, >= ei_min
-  Profile chi0 = Profile::constant(0.0);    ///< the curvature scale of the transition, 1/m, > 0
-
-  bool operator==(const BoucWenProfiles&) const = default;
-};
-
 /// Integration points along a cable: at least two, since with one Gauss point the
 /// tip's deflection is always l/2 times its rotation (the cable could not be
 /// clamped at one end and guided at the other, as in experiment (b) and the damper).
@@ -51,12 +35,14 @@ inline constexpr double zone_ramp_fraction = 1e-3;
 struct CableDescription {
   double length = 0.0;   ///< l, m
   int sections = 40;     ///< Gauss-Legendre integration points along the cable
-  SectionLawKind law = SectionLawKind::masing;
-  /// The Masing law: the elastic part, N m^2, > 0 everywhere, and the Jenkin elements.
+  /// The section law (section_law_descriptor.hpp): the Masing law unless a file says otherwise.
+  const SectionLawDescriptor* law = &default_section_law();
+  /// The elastic part, N m^2, > 0 everywhere, of a law that has one (key "ei": Masing, Iwan).
   Profile ei = Profile::constant(0.0);
+  /// The Masing law's Jenkin elements (a law with jenkin_elements()).
   std::vector<JenkinProfile> jenkin;
-  /// The Bouc-Wen law's numbers (law == bouc_wen).
-  BoucWenProfiles bouc_wen;
+  /// The law's other numbers, in the order of its keys (Bouc-Wen: ei_min, ei_max, chi0).
+  std::vector<Profile> numbers;
 
   /// Mirror method (3.6): the profiles were identified on a cable of this length
   /// l_id; the cable uses p(s) for s <= l/2 and p(l - s) beyond. Needs l <= 2 l_id.
@@ -64,6 +50,12 @@ struct CableDescription {
   /// Modified Masing model: cap of the lever arm |M|/|F| (m); default: the length.
   /// Also used where F = 0.
   std::optional<double> lever_arm_cap;
+
+  /// The profile of the law's number `key` ("ei", "ei_min"): InvalidParameter naming
+  /// `key` if the law has no such number. Writing one of a law whose `numbers` are
+  /// not yet filled fills them with zeros first.
+  const Profile& number(std::string_view key) const;
+  Profile& number(std::string_view key);
 
   /// Throws InvalidParameter naming the bad field ("length", "jenkin[0].h.value[2]",
   /// "ei_max.value[1]", ...).
@@ -87,8 +79,11 @@ struct CableDescription {
 
   /// The simplest cable: constant parameters.
   static CableDescription uniform(double length, int sections, double ei, std::vector<std::pair<double, double>> jenkin_c_h);
-  /// The simplest Bouc-Wen cable: constant ei_min, ei_max, chi0.
-  static CableDescription uniform_bouc_wen(double length, int sections, double ei_min, double ei_max, double chi0);
+  /// The simplest cable of a law of numbers: each number constant, in the law's key order.
+  static CableDescription uniform(const SectionLawDescriptor& law, double length, int sections,
+                                  const std::vector<double>& values);
+  /// The law's numbers at s = 0, in key order (a cable of constant numbers: the fits').
+  LawValues values() const;
 };
 
 }  // namespace stockbridge::cable

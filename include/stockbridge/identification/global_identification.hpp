@@ -30,10 +30,10 @@ struct ExperimentMeasurement {
 };
 
 struct GlobalIdentificationOptions {
-  cable::SectionLawKind law = cable::SectionLawKind::masing;  ///< the law to fit (Bouc-Wen: the fit only)
+  const cable::SectionLawDescriptor* law = &cable::default_section_law();  ///< the law to fit (a law of numbers: the fit only)
   double length = 0.0;    ///< l of the measured cable, m
   int sections = 40;      ///< of the model cable
-  int elements = 1;       ///< Jenkin elements (fit; four-step has one; 1 under Bouc-Wen)
+  int elements = 1;       ///< Jenkin elements (fit; four-step has one; 1 under a law of numbers)
   Optimizer optimizer = Optimizer::subplex;
   int max_evaluations = 4000;
   double tolerance = 1e-10;

@@ -195,11 +195,11 @@ struct LackOfFit {
 struct ImpedanceIdentification {
   damper::DamperDescription damper;                ///< the start's damper with the fitted parameters (and numbers)
   std::vector<std::size_t> cable_type;             ///< per arm (cable_types())
-  cable::SectionLawKind law = cable::SectionLawKind::masing;  ///< the start's cables' law (one for every arm)
+  const cable::SectionLawDescriptor* law = &cable::default_section_law();  ///< the start's cables' law (one for every arm)
   std::vector<section::MasingParameters> cables;   ///< per type under the Masing law, elements sorted by slip curvature h / c
-  std::vector<section::BoucWenParameters> bouc_wen_cables;  ///< per type under the Bouc-Wen law
-  /// Cable types fitted (of either law).
-  std::size_t types() const { return cables.size() + bouc_wen_cables.size(); }
+  std::vector<cable::LawValues> law_cables;        ///< per type under a law of numbers (Bouc-Wen)
+  /// Cable types fitted (of any law).
+  std::size_t types() const { return cables.size() + law_cables.size(); }
   double clamp_mass = 0.0;                         ///< kg (fitted, or the description's)
   double misfit = 0.0;             ///< S at the optimum
   double rms_relative_error = 0.0; ///< sqrt(S / N)
@@ -230,8 +230,8 @@ struct ImpedanceIdentification {
 /// Fits the cable parameters (and the numbers of options.free) of `start` (its values
 /// the starting values) to the measurement. Throws InvalidParameter for a start
 /// whose cables are profiles, use the modified Masing model with another element
-/// count, differ in law ("arm[1].cable.law"), or have law = "bouc-wen" with
-/// ei_max <= ei_min or elements != 1 (field "elements"), for bad options (a path of `free` named: field "free") or measurements.
+/// count, differ in law ("arm[1].cable.law"), or have a law of numbers with a start
+/// it cannot fit from (Bouc-Wen's ei_max <= ei_min) or elements != 1 (field "elements"), for bad options (a path of `free` named: field "free") or measurements.
 ImpedanceIdentification identify_impedance(const damper::DamperDescription& start, const ImpedanceMeasurement& measurement,
                                            const ImpedanceIdentificationOptions& options);
 

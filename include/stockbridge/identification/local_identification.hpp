@@ -27,6 +27,7 @@
 #include "stockbridge/cable/cable_description.hpp"
 #include "stockbridge/numerics/solver_summary.hpp"
 #include "stockbridge/section/bouc_wen_section.hpp"
+#include "stockbridge/cable/section_law_descriptor.hpp"
 #include "stockbridge/section/masing_law.hpp"
 
 namespace stockbridge::identification {
@@ -42,8 +43,8 @@ enum class Optimizer { subplex, nelder_mead };
 Optimizer parse_optimizer(std::string_view name);
 
 struct LocalIdentificationOptions {
-  cable::SectionLawKind law = cable::SectionLawKind::masing;  ///< the law to fit
-  int elements = 1;                  ///< Jenkin elements to fit, 1..6 (the Masing law; 1 under Bouc-Wen)
+  const cable::SectionLawDescriptor* law = &cable::default_section_law();  ///< the law to fit
+  int elements = 1;                  ///< Jenkin elements to fit, 1..6 (the Masing law; 1 under a law of numbers)
   Optimizer optimizer = Optimizer::subplex;  ///< NLopt's Subplex (default) or Nelder-Mead (the dissertation's)
   int max_evaluations = 40000;       ///< per start
   double tolerance = 1e-12;          ///< relative change of the parameters at which a start stops
@@ -52,7 +53,7 @@ struct LocalIdentificationOptions {
 
 struct LocalIdentification {
   section::MasingParameters parameters;  ///< elements sorted by slip curvature h / c (the Masing law)
-  std::optional<section::BoucWenParameters> bouc_wen;  ///< the Bouc-Wen law's numbers, when it was fitted
+  std::optional<cable::LawValues> numbers;  ///< the numbers of a law of numbers (Bouc-Wen), when one was fitted
   double moment_offset = 0.0;        ///< m0, N m
   double error = 0.0;                ///< relative L1 error from the first extreme on
   std::vector<double> cycle_errors;  ///< the same, per cycle (between every second reversal)
@@ -70,7 +71,7 @@ double relative_l1_error(const section::MasingParameters& parameters, double mom
 /// The model's moment (plus the offset) along the record's curvature, from the virgin state.
 std::vector<double> model_moments(const section::MasingParameters& parameters, double moment_offset,
                                   const MomentCurvatureRecord& record);
-std::vector<double> model_moments(const section::BoucWenParameters& parameters, double moment_offset,
+std::vector<double> model_moments(const cable::LawValues& numbers, double moment_offset,
                                   const MomentCurvatureRecord& record);
 /// The fit's model along the record, whichever law it fitted.
 std::vector<double> model_moments(const LocalIdentification& fit, const MomentCurvatureRecord& record);

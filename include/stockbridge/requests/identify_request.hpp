@@ -14,7 +14,6 @@
 #include "stockbridge/identification/global_identification.hpp"
 #include "stockbridge/identification/local_identification.hpp"
 #include "stockbridge/io/json_writer.hpp"
-#include "stockbridge/section/bouc_wen_section.hpp"
 #include "stockbridge/requests/output_table.hpp"
 
 namespace stockbridge::requests {
@@ -22,16 +21,17 @@ namespace stockbridge::requests {
 /// A fit whose relative L1 error exceeds this does not model its record: a warning.
 inline constexpr double large_fit_error = 0.1;
 
-/// A fitted Bouc-Wen law as every identification's summaries give it: the JSON keys
-/// law = "bouc-wen", ei_min, ei_max, chi0 (added to `json`, which is returned) ...
-io::JsonObject& add_bouc_wen(io::JsonObject& json, const section::BoucWenParameters& p);
-/// ... and the summary line's "ei_min = ... N m^2, ei_max = ... N m^2, chi0 = ... 1/m".
-std::string bouc_wen_text(const section::BoucWenParameters& p);
-/// The constant Bouc-Wen numbers of a cable (its profiles' values at s = 0).
-section::BoucWenParameters bouc_wen_numbers(const cable::CableDescription& cable);
+/// A fitted law of numbers as every identification's summaries give it: the JSON keys
+/// law = "bouc-wen", ei_min, ei_max, chi0 (the law's name and numbers; added to
+/// `json`, which is returned) ...
+io::JsonObject& add_law_numbers(io::JsonObject& json, const cable::LawValues& numbers);
+/// ... the text "ei_min = 2.5 N m^2, ei_max = 25 N m^2, chi0 = 0.03 1/m" ...
+std::string law_numbers_text(const cable::LawValues& numbers);
+/// ... and the keys of a [cable] table, one a line with its unit in a comment.
+std::string law_numbers_toml(const cable::LawValues& numbers);
 
 struct LocalRequest {
-  std::string law = "masing";       ///< masing | bouc-wen
+  std::string law = "masing";       ///< a section law's name (cable::section_law_names())
   int elements = 1;                 ///< Jenkin elements to fit (the Masing law)
   std::string optimizer = "subplex";  ///< subplex | nelder-mead
 };
@@ -67,7 +67,7 @@ io::JsonObject local_summary(const LocalResult& result);
 std::string local_parameters_toml(const LocalResult& result, std::string_view source);
 
 struct GlobalRequest {
-  std::string law = "masing";    ///< masing | bouc-wen (the fit only)
+  std::string law = "masing";    ///< a section law's name (cable::section_law_names()) (the fit only)
   std::string experiment = "a";  ///< a: columns x_m, force_n; b: phi_rad, clamp_moment_n_m
   double length = 0.0;           ///< of the measured cable, m
   std::string method = "fit";    ///< fit | four-step

@@ -3,30 +3,38 @@
 // `loop` command and Python's `loop`): the law chosen by name.
 
 #include <cstddef>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "stockbridge/requests/output_table.hpp"
-#include "stockbridge/section/bouc_wen_section.hpp"
-#include "stockbridge/section/masing_law.hpp"
+#include "stockbridge/cable/section_law_descriptor.hpp"
 #include "stockbridge/section/sinusoidal_drive.hpp"
 
 namespace stockbridge::requests {
 
-/// The law and the regularised law's exponent when none is asked for.
-inline constexpr std::string_view default_section_law = "exact";
-inline constexpr double default_regularised_exponent = 10.0;
+/// The law when none is asked for: the Masing law's exact variant.
+inline constexpr std::string_view default_loop_law = "exact";
 
-/// The loop of a section with `parameters` under `drive`, with the exact Masing
-/// law ("exact") or the regularised rate law (3.15) with `exponent`
-/// ("regularised"); InvalidParameter naming `law` otherwise ("bouc-wen" has its own
-/// parameters: bouc_wen_loop).
-section::LoopRecord section_loop(const section::MasingParameters& parameters, const section::SinusoidalDrive& drive,
-                                 std::string_view law, double exponent);
+/// How a front end spells what `loop` takes, for its messages: a key ("--ei-min" or
+/// "ei_min") and the law asked for ("--law bouc-wen" or "law = 'bouc-wen'").
+struct LoopSpelling {
+  std::string (*key)(std::string_view key);
+  std::string (*law)(std::string_view name);
+};
+/// The command line's: "--ei-min", "--law bouc-wen".
+LoopSpelling command_line_spelling();
 
-/// The loop of a Bouc-Wen section (the law "bouc-wen", MODEL.md section 13) under
-/// `drive`; InvalidParameter naming "ei_min", "ei_max" or "chi0".
-section::LoopRecord bouc_wen_loop(const section::BoucWenParameters& parameters, const section::SinusoidalDrive& drive);
+/// The names `loop` takes for a law: each law's and its variants ("masing, exact,
+/// regularised, bouc-wen").
+std::vector<std::string> loop_law_names();
+
+/// The loop of a section of the law `given.law` (a law's name or one of its
+/// variants: the Masing law's "exact" and "regularised") with the numbers given,
+/// under `drive`: InvalidParameter for an unknown law ("law"), numbers of another
+/// law, or numbers missing (in the words of `spelling`).
+section::LoopRecord section_loop(const cable::LoopNumbers& given, const section::SinusoidalDrive& drive,
+                                 const LoopSpelling& spelling);
 
 /// One sample of the loop.
 struct LoopSample {

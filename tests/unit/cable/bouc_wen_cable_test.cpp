@@ -27,17 +27,17 @@ constexpr double kMessengerLength = 0.1875;
 const section::BoucWenParameters kNumbers{2.5, 25.0, 0.03};  // slenderpy's middle zone
 
 CableDescription uniform_cable(int sections = 40) {
-  return CableDescription::uniform_bouc_wen(kMessengerLength, sections, kNumbers.ei_min, kNumbers.ei_max, kNumbers.chi0);
+  return CableDescription::uniform(*cable::find_section_law("bouc-wen"), kMessengerLength, sections, {kNumbers.ei_min, kNumbers.ei_max, kNumbers.chi0});
 }
 
 /// slenderpy's messenger: three zones with ramps of 1e-7 m between them.
 CableDescription slenderpy_cable(int sections) {
-  CableDescription d = CableDescription::uniform_bouc_wen(kMessengerLength, sections, 1.0, 1.0, 1.0);
+  CableDescription d = CableDescription::uniform(*cable::find_section_law("bouc-wen"), kMessengerLength, sections, {1.0, 1.0, 1.0});
   const double a = 0.2 * kMessengerLength, b = 0.92 * kMessengerLength, r = 1e-7;
   const std::vector<double> s{a, a + r, b - r, b};
-  d.bouc_wen.ei_max = Profile::table(s, {40.0, 25.0, 25.0, 40.0}, "ei_max");
-  d.bouc_wen.ei_min = Profile::table(s, {5.0, 2.5, 2.5, 5.0}, "ei_min");
-  d.bouc_wen.chi0 = Profile::table(s, {0.15, 0.03, 0.03, 0.15}, "chi0");
+  d.number("ei_max") = Profile::table(s, {40.0, 25.0, 25.0, 40.0}, "ei_max");
+  d.number("ei_min") = Profile::table(s, {5.0, 2.5, 2.5, 5.0}, "ei_min");
+  d.number("chi0") = Profile::table(s, {0.15, 0.03, 0.03, 0.15}, "chi0");
   return d;
 }
 
@@ -292,7 +292,7 @@ TEST(BoucWenCable, LoadsConvergeInSectionsAcrossZoneBoundaries) {
 
 TEST(BoucWenCable, TheLawsNumbersAreCheckedAndNamed) {
   CableDescription d = uniform_cable();
-  d.bouc_wen.ei_max = Profile::constant(2.0);
+  d.number("ei_max") = Profile::constant(2.0);
   try {
     Cable{d};
     FAIL() << "ei_max below ei_min was accepted";
@@ -310,7 +310,7 @@ TEST(BoucWenCable, TheLawsNumbersAreCheckedAndNamed) {
     EXPECT_NE(std::string(e.what()).find("ei_min, ei_max and chi0"), std::string::npos) << e.what();
   }
   d = uniform_cable();
-  d.bouc_wen.chi0 = Profile::constant(0.0);
+  d.number("chi0") = Profile::constant(0.0);
   EXPECT_THROW(Cable{d}, InvalidParameter);
 }
 
@@ -363,9 +363,9 @@ TEST(BoucWenCable, EverySectionCarriesItsMomentWhateverTheGroupsOfFour) {
       for (std::size_t i = 0; i < cable.sections(); ++i) {
         const double s = cable.positions()[i], w = cable.weights()[i];
         const double at = d.profile_position(s);
-        const double ei_min = d.bouc_wen.ei_min.at(at), ei_max = d.bouc_wen.ei_max.at(at);
+        const double ei_min = d.number("ei_min").at(at), ei_max = d.number("ei_max").at(at);
         const double moment =
-            ei_min * state.curvature[i] + (ei_max - ei_min) * d.bouc_wen.chi0.at(at) * state.hysteretic[i];
+            ei_min * state.curvature[i] + (ei_max - ei_min) * d.number("chi0").at(at) * state.hysteretic[i];
         const double expected = state.clamp_moment - state.tip_force * s;
         EXPECT_NEAR(moment, expected, 1e-12 * std::abs(state.clamp_moment)) << sections << " sections, section " << i;
         rotation += w * state.curvature[i];

@@ -47,7 +47,7 @@ TEST_P(HarmonicBalanceJacobian, MatchesFiniteDifferences) {
   ArmDescription description = sauter_arm();
   const bool two = GetParam().elements == 2;
   if (two) description.cable = cable::CableDescription::uniform(0.1875, 40, 2.8, {{15.0, 0.7}, {5.0, 0.15}});
-  if (GetParam().elements == 0) description.cable = cable::CableDescription::uniform_bouc_wen(0.1875, 40, 2.5, 25.0, 0.03);
+  if (GetParam().elements == 0) description.cable = cable::CableDescription::uniform(*cable::find_section_law("bouc-wen"), 0.1875, 40, {2.5, 25.0, 0.03});
   const Arm arm(description);
   HarmonicBalanceOptions options;
   options.half_wave = GetParam().half_wave;

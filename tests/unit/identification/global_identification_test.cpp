@@ -133,7 +133,7 @@ namespace {
 // a run): within 1.5e-5, 13 000 simulations.
 TEST(GlobalIdentificationBoucWen, FitRecoversABoucWenCable) {
   const Resolution r{12, 100};
-  const cable::CableDescription bouc_wen = cable::CableDescription::uniform_bouc_wen(0.3, r.sections, 2.5, 25.0, 0.03);
+  const cable::CableDescription bouc_wen = cable::CableDescription::uniform(*cable::find_section_law("bouc-wen"), 0.3, r.sections, {2.5, 25.0, 0.03});
   for (const cable::Experiment e : {cable::Experiment::a, cable::Experiment::b}) {
     cable::Cantilever cantilever{cable::Cable(bouc_wen)};
     const cable::ExperimentRecord record =
@@ -145,14 +145,14 @@ TEST(GlobalIdentificationBoucWen, FitRecoversABoucWenCable) {
       m.measured.push_back(e == cable::Experiment::a ? s.tip_force : s.clamp_moment);
     }
     GlobalIdentificationOptions o = options(r);
-    o.law = cable::SectionLawKind::bouc_wen;
+    o.law = cable::find_section_law("bouc-wen");
     o.max_evaluations = 2000;
     const GlobalIdentification fit = identify_fit(m, o);
-    ASSERT_EQ(fit.cable.law, cable::SectionLawKind::bouc_wen);
+    ASSERT_EQ(fit.cable.law, cable::find_section_law("bouc-wen"));
     const char* name = e == cable::Experiment::a ? "(a)" : "(b)";
-    EXPECT_NEAR(fit.cable.bouc_wen.ei_min.at(0.0), 2.5, 5e-3 * 2.5) << name;
-    EXPECT_NEAR(fit.cable.bouc_wen.ei_max.at(0.0), 25.0, 5e-3 * 25.0) << name;
-    EXPECT_NEAR(fit.cable.bouc_wen.chi0.at(0.0), 0.03, 5e-3 * 0.03) << name;
+    EXPECT_NEAR(fit.cable.number("ei_min").at(0.0), 2.5, 5e-3 * 2.5) << name;
+    EXPECT_NEAR(fit.cable.number("ei_max").at(0.0), 25.0, 5e-3 * 25.0) << name;
+    EXPECT_NEAR(fit.cable.number("chi0").at(0.0), 0.03, 5e-3 * 0.03) << name;
     EXPECT_LT(fit.error, 1e-3) << name;
   }
 }

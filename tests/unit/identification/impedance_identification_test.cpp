@@ -281,7 +281,7 @@ TEST(ImpedanceIdentification, RefusesAMagnitudeNoDamperHasNamingThePointInsteadO
 /// The test damper with Bouc-Wen cables (12 sections) of ei_min, ei_max, chi0.
 DamperDescription bouc_wen_test_damper(double ei_min, double ei_max, double chi0) {
   DamperDescription d = impedance_test_damper(2.8, {{20.0, 0.7}});
-  for (damper::ArmDescription& a : d.arms) a.cable = cable::CableDescription::uniform_bouc_wen(0.1875, 12, ei_min, ei_max, chi0);
+  for (damper::ArmDescription& a : d.arms) a.cable = cable::CableDescription::uniform(*cable::find_section_law("bouc-wen"), 0.1875, 12, {ei_min, ei_max, chi0});
   return d;
 }
 
@@ -290,12 +290,12 @@ TEST(ImpedanceIdentificationBoucWen, RecoversTheLawsNumbersExactlyFromNoiseFreeC
   // 20 x 0.035 = 0.7 N m), from a start 5-10 % off.
   const ImpedanceMeasurement m = measured(bouc_wen_test_damper(2.8, 22.8, 0.035), {0.05, 0.2}, 6);
   const ImpedanceIdentification fit = identify_impedance(bouc_wen_test_damper(2.95, 21.0, 0.038), m, {});
-  EXPECT_EQ(fit.law, cable::SectionLawKind::bouc_wen);
+  EXPECT_EQ(fit.law, cable::find_section_law("bouc-wen"));
   EXPECT_TRUE(fit.cables.empty());
-  ASSERT_EQ(fit.bouc_wen_cables.size(), 1u);
-  EXPECT_LT(relative_error(fit.bouc_wen_cables[0].ei_min, 2.8), 1e-5);
-  EXPECT_LT(relative_error(fit.bouc_wen_cables[0].ei_max, 22.8), 1e-5);
-  EXPECT_LT(relative_error(fit.bouc_wen_cables[0].chi0, 0.035), 1e-5);
+  ASSERT_EQ(fit.law_cables.size(), 1u);
+  EXPECT_LT(relative_error(fit.law_cables[0][0], 2.8), 1e-5);
+  EXPECT_LT(relative_error(fit.law_cables[0][1], 22.8), 1e-5);
+  EXPECT_LT(relative_error(fit.law_cables[0][2], 0.035), 1e-5);
   EXPECT_LT(fit.rms_relative_error, 1e-6);
   EXPECT_EQ(fit.fit.termination, Termination::converged) << brief_report(fit.fit);
   ASSERT_EQ(fit.parameters.size(), 3u);
@@ -307,8 +307,8 @@ TEST(ImpedanceIdentificationBoucWen, RecoversTheLawsNumbersExactlyFromNoiseFreeC
   EXPECT_TRUE(fit.stick_stiffness.empty());
   // Every arm's cable is the fitted Bouc-Wen law.
   for (const damper::ArmDescription& a : fit.damper.arms) {
-    EXPECT_EQ(a.cable.law, cable::SectionLawKind::bouc_wen);
-    EXPECT_EQ(a.cable.bouc_wen.chi0.at(0.0), fit.bouc_wen_cables[0].chi0);
+    EXPECT_EQ(a.cable.law, cable::find_section_law("bouc-wen"));
+    EXPECT_EQ(a.cable.number("chi0").at(0.0), fit.law_cables[0][2]);
   }
 }
 
@@ -375,7 +375,7 @@ TEST(ImpedanceIdentificationBoucWen, RefusesElementsMixedLawsAndAStartWithoutHys
 TEST(ImpedanceIdentificationBoucWen, ArmsOfOneLawWithOtherNumbersAreOtherTypes) {
   DamperDescription d = bouc_wen_test_damper(2.8, 22.8, 0.035);
   EXPECT_EQ(cable_types(d), (std::vector<std::size_t>{0, 0}));
-  d.arms[1].cable.bouc_wen.chi0 = cable::Profile::constant(0.04);
+  d.arms[1].cable.number("chi0") = cable::Profile::constant(0.04);
   EXPECT_EQ(cable_types(d), (std::vector<std::size_t>{0, 1}));
 }
 
