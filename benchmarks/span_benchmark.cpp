@@ -68,7 +68,7 @@ void BM_SpanMeasuredSheet(benchmark::State& state) {
   stockbridge::damper::SweepSpec spec;
   spec.frequencies = stockbridge::damper::log_spaced(4.0, 60.0, 150);
   spec.amplitudes = stockbridge::damper::log_spaced(0.01, 1.0, 13);
-  stockbridge::identification::ImpedanceMeasurement m;
+  stockbridge::damper::ImpedanceMeasurement m;
   for (const auto& run : stockbridge::damper::run_sweep(*model.dampers()[0].damper, spec)) {
     for (const auto& p : run.points) {
       if (p.converged()) m.points.push_back({stockbridge::damper::Excitation::from_velocity(p.frequency_hz, run.amplitude), p.impedance});

@@ -14,6 +14,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 // GCC notes that a function returning these types would be called differently with and
 // without AVX: these are inline, never called across files.
@@ -29,6 +30,14 @@ using LaneMask = std::int64_t __attribute__((vector_size(32)));   // a compariso
 
 /// n rounded up to whole groups of four.
 inline std::size_t lanes_padded(std::size_t n) { return (n + 3) / 4 * 4; }
+
+/// Four doubles from `p` into lanes, and back (p need not be aligned).
+[[gnu::always_inline]] inline Lanes load_lanes(const double* p) {
+  Lanes v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+[[gnu::always_inline]] inline void store_lanes(double* p, Lanes v) { std::memcpy(p, &v, sizeof v); }
 [[gnu::always_inline]] inline bool any_lane(LaneMask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 
 [[gnu::always_inline]] inline Lanes exp_minus_one_of_nonpositive(Lanes x) {

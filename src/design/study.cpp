@@ -7,9 +7,15 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
-#include "stockbridge/design/damper_numbers.hpp"
+#include "stockbridge/damper/damper_numbers.hpp"
 
 namespace stockbridge::design {
+
+// A damper file's numbers by their paths: the damper module's (the identification frees them too).
+using damper::ArmPath;
+using damper::damper_number;
+using damper::set_damper_number;
+using damper::split_arm_path;
 
 Objective parse_objective(std::string_view name) {
   if (name == "max_stress") return Objective::max_stress;

@@ -10,13 +10,13 @@
 
 namespace stockbridge::span {
 
-ImpedanceSheet::ImpedanceSheet(identification::ImpedanceMeasurement measurement, std::string name)
+ImpedanceSheet::ImpedanceSheet(damper::ImpedanceMeasurement measurement, std::string name)
     : held_(measurement.held), name_(std::move(name)) {
   measurement.validate();
-  for (const std::vector<std::size_t>& indices : identification::measured_curves(measurement)) {
+  for (const std::vector<std::size_t>& indices : damper::measured_curves(measurement)) {
     Curve curve;
     for (const std::size_t i : indices) {
-      const identification::MeasuredImpedance& p = measurement.points[i];
+      const damper::MeasuredImpedance& p = measurement.points[i];
       const double log_f = std::log(p.excitation.frequency_hz);
       if (!curve.log_f.empty() && !(log_f > curve.log_f.back())) continue;  // a repeated frequency: the first
       curve.log_f.push_back(log_f);

@@ -34,7 +34,7 @@ std::shared_ptr<const ImpedanceSheet> sheet_of(const damper::Damper& damper, con
   damper::SweepSpec spec;
   spec.frequencies = damper::log_spaced(4.0, 60.0, 150);
   spec.amplitudes = velocities;
-  identification::ImpedanceMeasurement m;
+  damper::ImpedanceMeasurement m;
   for (const damper::SweepRun& run : damper::run_sweep(damper, spec)) {
     for (const damper::ImpedancePoint& p : run.points) {
       if (p.converged()) m.points.push_back({damper::Excitation::from_velocity(p.frequency_hz, run.amplitude), p.impedance});
@@ -138,7 +138,7 @@ INSTANTIATE_TEST_SUITE_P(SevenAndFourVelocities, MeasuredSheetBand, ::testing::V
 // extrapolation), each saying the sheet's range.
 TEST(MeasuredSheet, FrequenciesOutsideTheSheetAreNotBalancedAndSaySo) {
   const Span model = example_span();
-  identification::ImpedanceMeasurement m;
+  damper::ImpedanceMeasurement m;
   for (const double v : {0.05, 0.1, 0.2}) {
     for (const double f : {10.0, 20.0, 30.0}) m.points.push_back({damper::Excitation::from_velocity(f, v), {10.0, 80.0}});
   }
@@ -156,7 +156,7 @@ TEST(MeasuredSheet, FrequenciesOutsideTheSheetAreNotBalancedAndSaySo) {
 // frequencies do not overlap (a fuzzer's finding: the frequency range came out empty).
 TEST(MeasuredSheet, ASheetWithoutTwoCurvesOverACommonBandIsRefused) {
   const auto message = [](const std::vector<std::pair<double, std::vector<double>>>& curves) {
-    identification::ImpedanceMeasurement m;
+    damper::ImpedanceMeasurement m;
     for (const auto& [v, frequencies] : curves) {
       for (const double f : frequencies) m.points.push_back({damper::Excitation::from_velocity(f, v), {10.0, 80.0}});
     }
@@ -180,7 +180,7 @@ TEST(MeasuredSheet, ASheetWithoutTwoCurvesOverACommonBandIsRefused) {
 TEST(MeasuredSheet, VelocitiesAboveTheSheetAreNotTrustedAndBelowItAreHeldAndNoted) {
   const Span model = example_span();
   const auto flat = [](double v0, double v1) {
-    identification::ImpedanceMeasurement m;
+    damper::ImpedanceMeasurement m;
     for (const double v : {v0, v1}) {
       for (const double f : {5.0, 50.0}) m.points.push_back({damper::Excitation::from_velocity(f, v), {30.0, 150.0}});
     }

@@ -37,6 +37,7 @@
 #include <Eigen/Core>
 
 #include "stockbridge/damper/impedance.hpp"
+#include "stockbridge/damper/measured_impedance.hpp"
 #include "stockbridge/damper/tracker.hpp"
 #include "stockbridge/cable/cable_description.hpp"
 #include "stockbridge/section/bouc_wen_section.hpp"
@@ -44,26 +45,11 @@
 
 namespace stockbridge::identification {
 
-/// One measured point: the clamp's excitation and the impedance there.
-struct MeasuredImpedance {
-  damper::Excitation excitation;
-  std::complex<double> impedance;  ///< Z, N s/m, nonzero
-};
-
-struct ImpedanceMeasurement {
-  std::vector<MeasuredImpedance> points;
-  /// What each curve holds constant: the points are grouped into curves by it.
-  damper::HeldAmplitude held = damper::HeldAmplitude::velocity;
-  /// Throws InvalidParameter naming the point ("point 3: frequency_hz = -1: expected > 0"):
-  /// a frequency or |Z| outside the magnitudes a description may hold (1e-12 to 1e12,
-  /// core/error.hpp), a displacement not > 0, Z not finite or zero.
-  void validate() const;
-};
-
-/// The measured curves: the points whose held amplitude lies within 10 % of the
-/// smallest of them, each curve's point indices in frequency order; curves in
-/// increasing amplitude.
-std::vector<std::vector<std::size_t>> measured_curves(const ImpedanceMeasurement& measurement);
+// What a measured impedance is sits below the identification and the span, which
+// both read it (damper/measured_impedance.hpp); here by its names of before.
+using damper::ImpedanceMeasurement;
+using damper::measured_curves;
+using damper::MeasuredImpedance;
 
 /// Arms that share one cable type (the fit gives them the same parameters): those
 /// whose cables have the same law and numbers (ei and Jenkin elements, or ei_min,
@@ -72,7 +58,7 @@ std::vector<std::vector<std::size_t>> measured_curves(const ImpedanceMeasurement
 /// numbered in the order of their first arm.
 std::vector<std::size_t> cable_types(const damper::DamperDescription& damper);
 
-/// The numbers of the damper `free` may name (design::damper_number's paths):
+/// The numbers of the damper `free` may name (damper::damper_number's paths):
 /// clamp.mass, and per arm mass, inertia, offset, cable.length.
 inline constexpr const char* free_damper_numbers =
     "clamp.mass, or arm.<name or [index]>. followed by mass, inertia, offset or cable.length";
@@ -91,7 +77,7 @@ inline constexpr double explaining_share = 0.1;
 struct ImpedanceIdentificationOptions {
   int elements = 1;              ///< Jenkin elements per cable type, 1..6 (1 under the Bouc-Wen law, which has none)
   bool fit_clamp_mass = false;   ///< also fit m_c (otherwise the description's); the same as "clamp.mass" in `free`
-  /// Numbers of the damper fitted with the cables, by the paths design::damper_number
+  /// Numbers of the damper fitted with the cables, by the paths damper::damper_number
   /// reads ("arm.left.mass", "arm[1].cable.length", "clamp.mass"; free_damper_numbers),
   /// each at most once; the start's values start them. Masses, inertias and lengths
   /// are fitted in logarithms, offsets linearly.

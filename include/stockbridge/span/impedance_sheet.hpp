@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "stockbridge/identification/impedance_identification.hpp"
+#include "stockbridge/damper/measured_impedance.hpp"
 #include "stockbridge/span/wind.hpp"
 
 namespace stockbridge::span {
@@ -42,7 +42,7 @@ class ImpedanceSheet {
   /// Throws InvalidParameter naming the sheet (`name`) unless the measurement is valid
   /// (ImpedanceMeasurement::validate) with at least two curves of at least two points
   /// measured over a common band of frequencies.
-  ImpedanceSheet(identification::ImpedanceMeasurement measurement, std::string name);
+  ImpedanceSheet(damper::ImpedanceMeasurement measurement, std::string name);
 
   const std::string& name() const { return name_; }
   int curves() const { return static_cast<int>(curves_.size()); }

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "stockbridge/core/error.hpp"
-#include "stockbridge/design/damper_numbers.hpp"
+#include "stockbridge/damper/damper_numbers.hpp"
 #include "stockbridge/design/search.hpp"
 #include "support/damper_fixtures.hpp"
 #include "support/test_scale.hpp"
@@ -17,6 +17,9 @@
 
 namespace stockbridge::design {
 namespace {
+
+using damper::damper_number;
+using damper::set_damper_number;
 
 damper::DamperDescription two_arm_damper(int sections = 40) {
   damper::ArmDescription left = stockbridge::testing::sauter_arm(sections), right = left;

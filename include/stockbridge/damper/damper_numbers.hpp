@@ -14,13 +14,13 @@
 
 #include "stockbridge/damper/damper.hpp"
 
-namespace stockbridge::design {
+namespace stockbridge::damper {
 
 /// The number at `path`; InvalidParameter naming the path and what was expected.
-double damper_number(const damper::DamperDescription& damper, std::string_view path);
+double damper_number(const DamperDescription& damper, std::string_view path);
 
 /// Sets the number at `path` (not validated here: the damper's constructor does).
-void set_damper_number(damper::DamperDescription& damper, std::string_view path, double value);
+void set_damper_number(DamperDescription& damper, std::string_view path, double value);
 
 /// The arm an "arm.<name>..." or "arm[<k>]..." path names: its index, and the rest
 /// of the path after the arm ("mass", "cable.length"); InvalidParameter otherwise.
@@ -28,6 +28,6 @@ struct ArmPath {
   std::size_t arm = 0;
   std::string field;
 };
-ArmPath split_arm_path(const damper::DamperDescription& damper, std::string_view path);
+ArmPath split_arm_path(const DamperDescription& damper, std::string_view path);
 
-}  // namespace stockbridge::design
+}  // namespace stockbridge::damper

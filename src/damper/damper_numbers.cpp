@@ -1,4 +1,4 @@
-#include "stockbridge/design/damper_numbers.hpp"
+#include "stockbridge/damper/damper_numbers.hpp"
 
 #include <charconv>
 #include <optional>
@@ -8,7 +8,7 @@
 
 #include "stockbridge/core/error.hpp"
 
-namespace stockbridge::design {
+namespace stockbridge::damper {
 
 namespace {
 
@@ -90,10 +90,10 @@ struct Located {
   std::optional<double>* optional = nullptr;
 };
 
-Located locate(damper::DamperDescription& damper, std::string_view path) {
+Located locate(DamperDescription& damper, std::string_view path) {
   if (path == "clamp.mass") return {&damper.clamp_mass};
   const ArmPath arm = split_arm_path(damper, path);
-  damper::ArmDescription& a = damper.arms[arm.arm];
+  ArmDescription& a = damper.arms[arm.arm];
   if (arm.field == "mass") return {&a.mass};
   if (arm.field == "inertia") return {&a.inertia};
   if (arm.field == "offset") return {&a.offset};
@@ -106,7 +106,7 @@ Located locate(damper::DamperDescription& damper, std::string_view path) {
 
 }  // namespace
 
-ArmPath split_arm_path(const damper::DamperDescription& damper, std::string_view path) {
+ArmPath split_arm_path(const DamperDescription& damper, std::string_view path) {
   if (!path.starts_with("arm")) unknown(path);
   std::string_view rest = path.substr(3);
   ArmPath out;
@@ -137,8 +137,8 @@ ArmPath split_arm_path(const damper::DamperDescription& damper, std::string_view
   return out;
 }
 
-double damper_number(const damper::DamperDescription& damper, std::string_view path) {
-  damper::DamperDescription copy = damper;
+double damper_number(const DamperDescription& damper, std::string_view path) {
+  DamperDescription copy = damper;
   const Located at = locate(copy, path);
   if (at.number) return *at.number;
   if (at.profile) return constant_of(*at.profile, path);
@@ -146,7 +146,7 @@ double damper_number(const damper::DamperDescription& damper, std::string_view p
   return **at.optional;
 }
 
-void set_damper_number(damper::DamperDescription& damper, std::string_view path, double value) {
+void set_damper_number(DamperDescription& damper, std::string_view path, double value) {
   const Located at = locate(damper, path);
   if (at.number) {
     *at.number = value;
@@ -158,4 +158,4 @@ void set_damper_number(damper::DamperDescription& damper, std::string_view path,
   }
 }
 
-}  // namespace stockbridge::design
+}  // namespace stockbridge::damper
