@@ -22,23 +22,24 @@ IwanBackbone::IwanBackbone(const IwanParameters& p) : chi(p.exponent), slip_mome
   phi_max = p.slip_moment * (1.0 + p.beta) / (p.tangent_stiffness * c);
   r = p.slip_moment * (chi + 1.0) / (std::pow(phi_max, chi + 2.0) * c);
   s = p.slip_moment * p.beta / (phi_max * c);
+  phi_power = std::pow(phi_max, chi + 1.0);
 }
 
 double IwanBackbone::moment(double u) const {
   if (u >= phi_max) return slip_moment;
   const double u1 = std::pow(u, chi + 1.0);
-  return r * u * u1 / (chi + 2.0) + r * u * (std::pow(phi_max, chi + 1.0) - u1) / (chi + 1.0) + s * u;
+  return r * u * u1 / (chi + 2.0) + r * u * (phi_power - u1) / (chi + 1.0) + s * u;
 }
 
 double IwanBackbone::tangent(double u) const {
   if (u >= phi_max) return 0.0;
-  return r * (std::pow(phi_max, chi + 1.0) - std::pow(u, chi + 1.0)) / (chi + 1.0) + s;
+  return r * (phi_power - std::pow(u, chi + 1.0)) / (chi + 1.0) + s;
 }
 
 double IwanBackbone::dissipation(double v) const {
   const double k = (chi + 2.0) * (chi + 3.0);
   if (v < phi_max) return r * std::pow(v, chi + 3.0) / k;
-  return r * std::pow(phi_max, chi + 3.0) / k + slip_moment * (v - phi_max);
+  return r * phi_power * phi_max * phi_max / k + slip_moment * (v - phi_max);
 }
 
 namespace {
@@ -111,8 +112,15 @@ void pop(std::span<double> memory, std::size_t n) {
 double solve_branch(const IwanBackbone& bb, double ei, double scale, double rhs, double x0) {
   double x = std::max(x0, 0.0);
   for (int iteration = 0; iteration < 200; ++iteration) {
-    const double f = ei * x + scale * bb.moment(x / scale) - rhs;
-    const double dx = -f / (ei + bb.tangent(x / scale));
+    const double u = x / scale;
+    double moment = bb.slip_moment, tangent = 0.0;
+    if (u < bb.phi_max) {  // B and B' with one power
+      const double u1 = std::pow(u, bb.chi + 1.0);
+      moment = bb.r * u * u1 / (bb.chi + 2.0) + bb.r * u * (bb.phi_power - u1) / (bb.chi + 1.0) + bb.s * u;
+      tangent = bb.r * (bb.phi_power - u1) / (bb.chi + 1.0) + bb.s;
+    }
+    const double f = ei * x + scale * moment - rhs;
+    const double dx = -f / (ei + tangent);
     x = std::max(x + dx, 0.0);
     if (!(std::abs(dx) > 1e-15 * x)) break;
   }

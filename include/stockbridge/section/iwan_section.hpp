@@ -49,6 +49,7 @@ void validate(const IwanParameters& parameters);
 /// The Iwan part's backbone and energy (MODEL.md 17) from the parameters.
 struct IwanBackbone {
   double phi_max = 0.0, r = 0.0, s = 0.0, chi = 0.0, slip_moment = 0.0;
+  double phi_power = 0.0;  ///< phi_max^(chi+1)
 
   IwanBackbone() = default;
   explicit IwanBackbone(const IwanParameters& p);
