@@ -14,8 +14,8 @@
 namespace stockbridge::testing {
 namespace {
 
-const std::string kExamples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
-const std::string kTests = "'" + kExamples + "fatigue_tests.csv'";
+const std::string kFatigueExamples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
+const std::string kTests = "'" + kFatigueExamples + "fatigue_tests.csv'";
 
 void write_fatigue_file(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
 
@@ -39,8 +39,8 @@ TEST(FatigueTestsCli, TheDesignCurveIsASpansSnCurve) {
   ASSERT_EQ(run_cli("fatigue-tests " + kTests + " --conductor Drake --curve curve.toml -o out.csv", dir).exit_code, 0);
   const std::string curve = read_text(dir / "curve.toml");
   EXPECT_NE(curve.find("name = \"ACSR Drake fatigue tests, mean - 2 s\""), std::string::npos) << curve;
-  std::filesystem::copy_file(kExamples + "sauter2003.toml", dir / "sauter2003.toml");
-  std::string span = read_text(kExamples + "drake_300m.toml");
+  std::filesystem::copy_file(kFatigueExamples + "sauter2003.toml", dir / "sauter2003.toml");
+  std::string span = read_text(kFatigueExamples + "drake_300m.toml");
   span.replace(span.find("cycles = 5e8"), 12, "cycles = 5e8\ncurve = \"curve.toml\"");
   write_fatigue_file(dir / "span.toml", span);
   const CliResult r = run_cli("span span.toml --points 4 --json -o span.csv", dir);
