@@ -325,9 +325,20 @@ DamperSource read_damper_source(const TomlTable& table, const std::filesystem::p
 /// A span damper's name in tables and messages: its damper file's (or sheet's) stem.
 span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem::path& base_directory,
                                   SpanReading& reading) {
-  table.accept_only({"file", "impedance", "fit_from", "free", "position", "ends"});
-  const double position = table.number("position");
-  bool both_ends = true;
+  table.accept_only({"file", "impedance", "fit_from", "free", "position", "ends", "positions"});
+  std::vector<double> along;
+  if (table.present("positions")) {
+    if (table.present("position")) {
+      table.fail("positions", "given beside position: expected position (m from each end's clamp, with ends) or "
+                              "positions = [..] (m from end 1, anywhere along the span), one of the two");
+    }
+    if (table.present("ends")) {
+      table.fail("ends", "given beside positions: positions are measured from end 1 along the whole span");
+    }
+    along = table.number_array("positions");
+  }
+  const double position = along.empty() ? table.number("position") : 0.0;
+  bool both_ends = along.empty();
   if (const auto ends = table.optional_string("ends")) {
     if (*ends != "both" && *ends != "one") {
       table.fail("ends", fmt::format("\"{}\": expected \"both\" (a damper at each end of the span) or \"one\" "
@@ -341,8 +352,20 @@ span::SpanDamper read_span_damper(const TomlTable& table, const std::filesystem:
       fmt::format("missing key 'file' in [{}]: expected the damper file (relative to the span file), or impedance = a "
                   "measured impedance CSV file",
                   table.key_path()));
-  return span::SpanDamper{std::move(source.damper), position, both_ends, std::move(source.name), std::move(source.sheet),
-                          std::move(source.fit)};
+  return span::SpanDamper{std::move(source.damper), position,           both_ends,
+                          std::move(source.name),   std::move(source.sheet), std::move(source.fit),
+                          std::move(along)};
+}
+
+/// A [[mass]] entry: a rigid mass at one or more positions (m from end 1).
+span::SpanMass read_span_mass(const TomlTable& table, std::size_t index) {
+  table.accept_only({"name", "mass", "positions", "stress_factor"});
+  span::SpanMass mass;
+  mass.name = table.optional_string("name").value_or(fmt::format("mass {}", index + 1));
+  mass.mass = table.number("mass");
+  mass.positions = table.number_array("positions");
+  mass.stress_factor = table.optional_number("stress_factor").value_or(mass.stress_factor);
+  return mass;
 }
 
 /// The criterion, named or told by the one limit given: cycles (the Safe Border
@@ -439,7 +462,7 @@ span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
 }
 
 SpanReading read_span_document(const TomlTable& top, const std::filesystem::path& base_directory, SlipPolicy policy) {
-  top.accept_only({"conductor", "span", "wind", "self_damping", "damper", "fatigue", "balance"});
+  top.accept_only({"conductor", "span", "wind", "self_damping", "damper", "mass", "fatigue", "balance"});
   SpanReading reading;
   reading.policy = policy;
   reading.conductor = read_conductor(top.table("conductor"), base_directory, reading);
@@ -448,6 +471,9 @@ SpanReading read_span_document(const TomlTable& top, const std::filesystem::path
   reading.self_damping = read_self_damping(top.table("self_damping"));
   for (const TomlTable& table : top.table_array("damper", false)) {
     reading.dampers.push_back(read_span_damper(table, base_directory, reading));
+  }
+  for (const TomlTable& table : top.table_array("mass", false)) {
+    reading.masses.push_back(read_span_mass(table, reading.masses.size()));
   }
   reading.fatigue = read_fatigue(top.table("fatigue"), base_directory, reading);
   reading.balance = read_balance(top.optional_table("balance"));
@@ -487,7 +513,12 @@ void add_span_warnings(const SpanReading& reading, const toml::table& document, 
   check("self_damping.m", sd.m, typical::self_damping_m);
   check("self_damping.n", sd.n, typical::self_damping_n);
   for (std::size_t j = 0; j < reading.dampers.size(); ++j) {
-    check(fmt::format("damper[{}].position", j), reading.dampers[j].position, typical::damper_position);
+    if (!reading.dampers[j].in_span()) {
+      check(fmt::format("damper[{}].position", j), reading.dampers[j].position, typical::damper_position);
+    }
+  }
+  for (std::size_t m = 0; m < reading.masses.size(); ++m) {
+    check(fmt::format("mass[{}].mass", m), reading.masses[m].mass, typical::attachment_mass);
   }
   const span::FatigueSpec& f = reading.fatigue;
   check("fatigue.cycles", f.cycles, typical::fatigue_cycles);
@@ -545,7 +576,7 @@ SpanFile build_span(const toml::table& document, const TomlSource& source, const
     });
     return span::Span(std::move(reading.conductor), reading.length, tension, std::move(reading.wind),
                       std::move(reading.self_damping), std::move(reading.dampers), std::move(reading.fatigue),
-                      reading.terrain);
+                      reading.terrain, std::move(reading.masses));
   });
   return SpanFile{std::move(built), reading.balance, std::move(reading.inputs), std::move(reading.warnings)};
 }

@@ -32,6 +32,7 @@ struct SpanReading {
   bool turbulence_given = false;     ///< [wind] turbulence_intensity given
   span::SelfDampingModel self_damping;
   std::vector<span::SpanDamper> dampers;
+  std::vector<span::SpanMass> masses;
   span::FatigueSpec fatigue;
   span::BalanceOptions balance;
   std::vector<std::filesystem::path> inputs;

@@ -1,5 +1,8 @@
 #include "stockbridge/span/span.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -16,6 +19,22 @@ std::string SheetFit::summary() const {
                      100.0 * rms_relative_error, points,
                      poor_fit || lack_of_fit ? ": it does not follow the sheet" : "");
 }
+
+namespace {
+
+/// Positions along the span, m from end 1: each strictly inside it.
+void check_along(const std::string& field, const std::vector<double>& positions, double length) {
+  if (positions.empty()) throw InvalidParameter(field, ": empty: expected at least one position (m from end 1)");
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const double x = positions[i];
+    if (!(std::isfinite(x) && x > 0.0 && x < length)) {
+      throw_invalid(fmt::format("{}[{}]", field, i), x,
+                    fmt::format("a distance from end 1 > 0 and < the span's length, {} m", format_value(length)));
+    }
+  }
+}
+
+}  // namespace
 
 FatigueCriterion parse_fatigue_criterion(std::string_view name) {
   if (name == "safe-border-line") return FatigueCriterion::safe_border_line;
@@ -67,7 +86,8 @@ void FatigueSpec::validate() const {
 }
 
 Span::Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
-           std::vector<SpanDamper> dampers, FatigueSpec fatigue, std::optional<int> terrain)
+           std::vector<SpanDamper> dampers, FatigueSpec fatigue, std::optional<int> terrain,
+           std::vector<SpanMass> masses)
     : conductor_(std::move(conductor)),
       length_(length),
       tension_(tension),
@@ -75,7 +95,8 @@ Span::Span(Conductor conductor, double length, double tension, WindModel wind, S
       self_damping_(std::move(self_damping)),
       dampers_(std::move(dampers)),
       fatigue_(std::move(fatigue)),
-      terrain_(terrain) {
+      terrain_(terrain),
+      masses_(std::move(masses)) {
   within_field("conductor", [&] { conductor_.validate(); });
   require_plausible("span.length", length_, "m");
   check_tension(conductor_, tension_, "span.tension");
@@ -85,6 +106,10 @@ Span::Span(Conductor conductor, double length, double tension, WindModel wind, S
   for (std::size_t j = 0; j < dampers_.size(); ++j) {
     if (dampers_[j].damper.has_value() == dampers_[j].measured()) {
       throw InvalidParameter(fmt::format("damper[{}]", j), ": expected a damper model or a measured sheet, one of the two");
+    }
+    if (dampers_[j].in_span()) {
+      check_along(fmt::format("damper[{}].positions", j), dampers_[j].along, length_);
+      continue;
     }
     const double a = dampers_[j].position;
     if (a > 0.0 && !(a < 0.5 * length_) && typical::damper_position.contains(a)) {
@@ -99,8 +124,22 @@ Span::Span(Conductor conductor, double length, double tension, WindModel wind, S
                                 typical::damper_position.slipped(a) ? " (a position in mm?)" : ""));
     }
   }
+  for (std::size_t m = 0; m < masses_.size(); ++m) {
+    const SpanMass& mass = masses_[m];
+    const std::string field = fmt::format("mass[{}]", m);
+    require_non_negative(field + ".mass", mass.mass, "kg");
+    if (!(std::isfinite(mass.stress_factor) && mass.stress_factor > 0.0)) {
+      throw_invalid(field + ".stress_factor", mass.stress_factor, "a factor > 0 on the clamp's stress");
+    }
+    check_along(field + ".positions", mass.positions, length_);
+  }
   within_field("fatigue", [&] { fatigue_.validate(); });
   if (terrain_) terrain_category(*terrain_, "span.terrain");
+}
+
+bool Span::has_attachments() const {
+  return !masses_.empty() ||
+         std::any_of(dampers_.begin(), dampers_.end(), [](const SpanDamper& d) { return d.in_span(); });
 }
 
 double Span::endurance_limit() const {
@@ -134,17 +173,22 @@ std::string Span::criterion_description() const {
 
 Span Span::with_dampers_at(double position) const {
   std::vector<SpanDamper> moved = dampers_;
-  const double shift = dampers_.empty() ? 0.0 : position - dampers_.front().position;
-  for (SpanDamper& d : moved) d.position += shift;
-  return Span(conductor_, length_, tension_, wind_, self_damping_, std::move(moved), fatigue_, terrain_);
+  const auto first = std::find_if(dampers_.begin(), dampers_.end(), [](const SpanDamper& d) { return !d.in_span(); });
+  const double shift = first == dampers_.end() ? 0.0 : position - first->position;
+  for (SpanDamper& d : moved) {
+    if (!d.in_span()) d.position += shift;
+  }
+  return with_dampers(std::move(moved));
 }
 
 Span Span::with_dampers(std::vector<SpanDamper> dampers) const {
-  return Span(conductor_, length_, tension_, wind_, self_damping_, std::move(dampers), fatigue_, terrain_);
+  return Span(conductor_, length_, tension_, wind_, self_damping_, std::move(dampers), fatigue_, terrain_, masses_);
 }
 
-Span Span::without_dampers() const {
-  return Span(conductor_, length_, tension_, wind_, self_damping_, {}, fatigue_, terrain_);
+Span Span::without_dampers() const { return with_dampers({}); }
+
+Span Span::with_masses(std::vector<SpanMass> masses) const {
+  return Span(conductor_, length_, tension_, wind_, self_damping_, dampers_, fatigue_, terrain_, std::move(masses));
 }
 
 }  // namespace stockbridge::span

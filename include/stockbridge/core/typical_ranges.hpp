@@ -74,6 +74,7 @@ inline constexpr TypicalRange tension_fraction{"tension as a fraction of the rat
                                                {1e-2, "%"}};
 inline constexpr TypicalRange catenary_parameter{"catenary parameter H/w", 300.0, 4000.0, "m", {}};
 inline constexpr TypicalRange damper_position{"damper position from the span clamp", 0.1, 10.0, "m", {1e-3, "mm"}};
+inline constexpr TypicalRange attachment_mass{"mass along the span (warning sphere, marker)", 0.5, 50.0, "kg", {1e-3, "g"}};
 inline constexpr TypicalRange strouhal{"Strouhal number", 0.1, 0.3, "", {}};
 inline constexpr TypicalRange wind_speed{"wind speed of aeolian vibration", 0.2, 15.0, "m/s", {1.0 / 3.6, "km/h"}};
 inline constexpr TypicalRange turbulence_intensity{"turbulence intensity", 0.0, 0.5, "", {1e-2, "%"}};

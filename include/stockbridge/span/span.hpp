@@ -38,17 +38,34 @@ struct SheetFit {
 };
 
 /// A damper on the span: at `position` (m from the span end's clamp) at one end, or
-/// at both ends (mirrored); known by its model, or by a measured impedance sheet
+/// at both ends (mirrored), or at each of `along` (m from end 1: anywhere along the
+/// span, MODEL.md section 15); known by its model, or by a measured impedance sheet
 /// (impedance_sheet.hpp) where there is no model.
 struct SpanDamper {
   std::optional<damper::Damper> damper;  ///< the model (none: the sheet)
   double position = 0.0;
   bool both_ends = true;
+  /// Positions measured from end 1 (a span file's `positions = [..]`); empty: at
+  /// `position` from the clamp of one or both ends.
+  std::vector<double> along;
   std::string name;  ///< how tables and messages call it ("damper 1" or the file's stem)
   std::shared_ptr<const ImpedanceSheet> sheet;  ///< the measured sheet, where there is no model
   std::optional<SheetFit> fit;  ///< the model is fitted to a measured sheet (fit_from)
 
   bool measured() const { return sheet != nullptr; }
+  /// Placed along the span (`along`), not at `position` from the ends.
+  bool in_span() const { return !along.empty(); }
+};
+
+/// A rigid mass clamped on the conductor (an aircraft warning sphere, a marker): a
+/// point load of impedance Z = j w M at each of its positions (MODEL.md section 15).
+struct SpanMass {
+  std::string name;              ///< how tables and reports call it ("sphere", or "mass 1")
+  double mass = 0.0;             ///< kg
+  std::vector<double> positions; ///< m from end 1, each in (0, L)
+  /// The clamp's own factor on the conductor's stress at it (the point-force formula's
+  /// stress times this; 1 for a clamp that bends the conductor as a point force does).
+  double stress_factor = 1.0;
 };
 
 /// The criterion a span's verdict judges by (docs/span.md, "Criteria"):
@@ -92,8 +109,10 @@ class Span {
   /// damper position past half the span names span.length where the position is a
   /// usual one (typical_ranges.hpp) and the span is what is short. Each damper has
   /// its model or its sheet, not both ("damper[0]").
+  /// Masses name "mass[0].positions[1]"; a damper along the span "damper[0].positions[1]".
   Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
-       std::vector<SpanDamper> dampers, FatigueSpec fatigue, std::optional<int> terrain = std::nullopt);
+       std::vector<SpanDamper> dampers, FatigueSpec fatigue, std::optional<int> terrain = std::nullopt,
+       std::vector<SpanMass> masses = {});
 
   const Conductor& conductor() const { return conductor_; }
   double length() const { return length_; }
@@ -101,6 +120,11 @@ class Span {
   const WindModel& wind() const { return wind_; }
   const SelfDampingModel& self_damping() const { return self_damping_; }
   const std::vector<SpanDamper>& dampers() const { return dampers_; }
+  /// The masses along the span (warning spheres, markers), in the file's order.
+  const std::vector<SpanMass>& masses() const { return masses_; }
+  /// Whether anything hangs along the span besides the dampers at the ends: a mass
+  /// or a damper placed by `along` (the balance then runs through the sub-spans).
+  bool has_attachments() const;
   const FatigueSpec& fatigue() const { return fatigue_; }
   /// CIGRE TB 273's terrain category (1..4, tension_figures.hpp), if given.
   std::optional<int> terrain() const { return terrain_; }
@@ -117,12 +141,15 @@ class Span {
   /// cycles", "the S-N curve 'Drake tests' (curve.toml) at 5e+08 cycles", "150 microstrain peak-to-peak (the IEEE committee's limit)", "a given
   /// endurance limit").
   std::string criterion_description() const;
-  /// The same span with every damper moved to `position` + (its position - the first's).
+  /// The same span with every damper at the ends moved to `position` + (its position -
+  /// the first's); dampers along the span stay where they are.
   Span with_dampers_at(double position) const;
-  /// The same span without dampers.
+  /// The same span without dampers (its masses kept).
   Span without_dampers() const;
-  /// The same span with other dampers (validated as the constructor does).
+  /// The same span with other dampers (validated as the constructor does; its masses kept).
   Span with_dampers(std::vector<SpanDamper> dampers) const;
+  /// The same span with other masses.
+  Span with_masses(std::vector<SpanMass> masses) const;
 
  private:
   Conductor conductor_;
@@ -133,6 +160,7 @@ class Span {
   std::vector<SpanDamper> dampers_;
   FatigueSpec fatigue_;
   std::optional<int> terrain_;
+  std::vector<SpanMass> masses_;
 };
 
 }  // namespace stockbridge::span
