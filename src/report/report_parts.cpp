@@ -38,9 +38,24 @@ Tone verdict_tone(span::Verdict verdict) {
   }
 }
 
+namespace {
+
+/// Where a damper hangs, in words: "1 m from the clamp, at both ends", "at 118, 122 m from end 1".
+std::string damper_place_text(const span::SpanDamper& d) {
+  if (!d.in_span()) return fmt::format("{} m from the clamp, {}", number(d.position, 4), d.both_ends ? "at both ends" : "at one end");
+  std::string at;
+  for (const double x : d.along) at += (at.empty() ? "" : ", ") + number(x, 4);
+  return fmt::format("at {} m from end 1", at);
+}
+
+}  // namespace
+
 std::string positions_text(const span::Span& s) {
   std::string out;
-  for (const span::SpanDamper& d : s.dampers()) out += (out.empty() ? "" : ", ") + number(d.position, 4);
+  for (const span::SpanDamper& d : s.dampers()) {
+    if (!d.in_span()) out += (out.empty() ? "" : ", ") + number(d.position, 4);
+    for (const double x : d.along) out += (out.empty() ? "" : ", ") + number(x, 4) + " from end 1";
+  }
   return out.empty() ? "none" : out + " m";
 }
 
@@ -88,11 +103,18 @@ std::vector<Fact> span_inputs(const span::Span& s, span::DamperModel model) {
     for (const span::SpanDamper& d : s.dampers()) {
       const std::string mass = d.damper ? ", " + number(d.damper->total_mass(), 3) + " kg" : std::string();
       facts.emplace_back("damper " + d.name,
-                         fmt::format("{} m from the clamp, {}{}; {} model{}{}", number(d.position, 4),
-                                     d.both_ends ? "at both ends" : "at one end", mass, span::damper_model_name(model),
+                         fmt::format("{}{}; {} model{}{}", damper_place_text(d), mass, span::damper_model_name(model),
                                      d.measured() ? ", Z from its measured sheet" : "",
                                      d.fit ? "; its model " + d.fit->summary() : std::string()));
     }
+  }
+  for (const span::SpanMass& m : s.masses()) {
+    std::string at;
+    for (const double x : m.positions) at += (at.empty() ? "" : ", ") + number(x, 4);
+    facts.emplace_back("mass " + m.name, fmt::format("{} kg at {} m from end 1{}", number(m.mass, 3), at,
+                                                     m.stress_factor != 1.0
+                                                         ? ", its clamp's stress factor " + number(m.stress_factor, 3)
+                                                         : std::string()));
   }
   const span::FatigueSpec& f = s.fatigue();
   facts.emplace_back("criterion", fmt::format("{}: {}, {} ({} microstrain peak-to-peak)",
@@ -120,6 +142,11 @@ std::vector<Fact> span_key_figures(const span::SpanAnalysis& a) {
     out.emplace_back("largest fymax stress" + partial,
                      fmt::format("{} at {} Hz", megapascal(m.max_stress_fymax), number(m.max_stress_frequency_hz, 3)));
     out.emplace_back("judged / endurance limit" + partial, number(100.0 * m.max_judged_stress / m.endurance_limit, 3) + " %");
+    if (a.span.has_attachments() || m.max_judged_stress_place != "span clamp 1") {
+      out.emplace_back("governing place" + partial,
+                       fmt::format("{}: {} at {} Hz", m.max_judged_stress_place, megapascal(m.max_judged_stress),
+                                   number(m.max_judged_stress_frequency_hz, 3)));
+    }
     if (std::isfinite(m.max_judged_stress_high)) {
       out.emplace_back("top of the measured sheets' band" + partial,
                        fmt::format("{}, {} % of the endurance limit (the sheets' error estimate {} %)",

@@ -22,32 +22,41 @@ constexpr double kSpanNoValue = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPascalPerMegapascal = 1e6;
 constexpr int kSpanMaxPoints = 100000;
 
-/// The (damper index, end) of each entry of a point's `dampers`: end 1's, then end
-/// 2's (the dampers at both ends), each end's in the order of their positions from
-/// the clamp (the travelling-wave order; equal positions in the span's order).
-std::vector<std::pair<std::size_t, int>> span_damper_slots(const span::Span& span) {
+/// One column member of the per-damper family: a damper at one of its places.
+struct SpanDamperSlot {
+  std::size_t damper = 0;
+  double position = 0.0;  ///< m from end 1
+  std::string suffix;     ///< "end1", "end2", or "at_150m" for one along the span
+};
+
+/// A place along the span in a column's name: "150m", "12.5m".
+std::string span_place_name(double position) {
+  std::string text = fmt::format("{:.4g}", position);
+  std::replace(text.begin(), text.end(), '.', 'p');
+  return text + "m";
+}
+
+/// The per-damper columns' members: each damper's end 1, then its end 2, or its places along the span.
+std::vector<SpanDamperSlot> span_column_slots(const span::Span& span) {
+  std::vector<SpanDamperSlot> slots;
   const auto& dampers = span.dampers();
-  std::vector<std::size_t> order(dampers.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return dampers[a].position < dampers[b].position; });
-  std::vector<std::pair<std::size_t, int>> slots;
-  for (const std::size_t k : order) slots.emplace_back(k, 1);
-  for (const std::size_t k : order) {
-    if (dampers[k].both_ends) slots.emplace_back(k, 2);
+  for (std::size_t k = 0; k < dampers.size(); ++k) {
+    const span::SpanDamper& d = dampers[k];
+    for (const double x : d.along) slots.push_back({k, x, "at_" + span_place_name(x)});
+    if (d.in_span()) continue;
+    slots.push_back({k, d.position, "end1"});
+    if (d.both_ends) slots.push_back({k, span.length() - d.position, "end2"});
   }
   return slots;
 }
 
-/// The slot order of the per-damper columns: each damper's end 1, then its end 2.
-std::vector<std::pair<std::size_t, int>> span_column_slots(const span::Span& span) {
-  std::vector<std::pair<std::size_t, int>> slots;
-  const auto& dampers = span.dampers();
-  for (std::size_t k = 0; k < dampers.size(); ++k) {
-    slots.emplace_back(k, 1);
-    if (dampers[k].both_ends) slots.emplace_back(k, 2);
+/// The entry of a point's `dampers` at (damper, position); `dampers.size()` if none.
+std::size_t span_damper_entry(const std::vector<span::DamperAtBalance>& dampers, std::size_t damper, double position,
+                              double length) {
+  for (std::size_t i = 0; i < dampers.size(); ++i) {
+    if (dampers[i].damper == damper && std::abs(dampers[i].position - position) <= 1e-9 * length) return i;
   }
-  return slots;
+  return dampers.size();
 }
 
 void check_span_frequencies(const std::vector<double>& frequencies) {
@@ -151,9 +160,12 @@ struct SpanTableContext {
   double endurance_limit = 0.0;
   span::Conductor conductor;
   bool dampers = false;
-  /// Per member of the per-damper family (each damper's end 1, then its end 2): its
-  /// entry in a point's `dampers` (their order: end 1's by position, then end 2's).
-  std::vector<std::size_t> entry_of_member;
+  double length = 0.0;
+  /// Per member of the per-damper family (each damper's end 1, then its end 2, or its
+  /// places along the span): the damper and its position from end 1.
+  std::vector<SpanDamperSlot> damper_slots;
+  /// Per member of the per-mass family: the mass and its position from end 1.
+  std::vector<std::pair<std::size_t, double>> mass_slots;
 };
 
 /// A number always given (the point's frequency and what follows from it).
@@ -179,8 +191,25 @@ SpanQuantity span_per_damper(std::string name, std::string unit, std::string mea
       std::move(name), std::move(unit), std::move(meaning),
       [context](const span::BalancePoint& p) { return p.converged(); },
       [context, value = std::move(value)](const span::BalancePoint& p, std::size_t member) {
-        const std::size_t i = context->entry_of_member[member];
+        const SpanDamperSlot& slot = context->damper_slots[member];
+        const std::size_t i = span_damper_entry(p.dampers, slot.damper, slot.position, context->length);
         return i < p.dampers.size() ? value(p.dampers[i]) : kSpanNoValue;
+      });
+}
+
+/// A number of each mass and position: NaN where the point did not converge.
+SpanQuantity span_per_mass(std::string name, std::string unit, std::string meaning,
+                           std::shared_ptr<const SpanTableContext> context,
+                           std::function<double(const span::MassAtBalance&)> value) {
+  return masked_quantity<span::BalancePoint>(
+      std::move(name), std::move(unit), std::move(meaning),
+      [context](const span::BalancePoint& p) { return p.converged(); },
+      [context, value = std::move(value)](const span::BalancePoint& p, std::size_t member) {
+        const auto [mass, position] = context->mass_slots[member];
+        for (const span::MassAtBalance& m : p.masses) {
+          if (m.mass == mass && std::abs(m.position - position) <= 1e-9 * context->length) return value(m);
+        }
+        return kSpanNoValue;
       });
 }
 
@@ -193,10 +222,10 @@ std::shared_ptr<const SpanTableContext> span_table_context(const span::Span& spa
   context->endurance_limit = span.endurance_limit();
   context->conductor = span.conductor();
   context->dampers = !span.dampers().empty();
-  const std::vector<std::pair<std::size_t, int>> entries = span_damper_slots(span);
-  for (const auto& slot : span_column_slots(span)) {
-    context->entry_of_member.push_back(
-        static_cast<std::size_t>(std::find(entries.begin(), entries.end(), slot) - entries.begin()));
+  context->length = span.length();
+  context->damper_slots = span_column_slots(span);
+  for (std::size_t m = 0; m < span.masses().size(); ++m) {
+    for (const double x : span.masses()[m].positions) context->mass_slots.emplace_back(m, x);
   }
   return context;
 }
@@ -292,10 +321,46 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
                       "the outer wires' peak-to-peak bending strain at its clamp", c,
                       [c](const D& d) { return span::bending_strain_pp_microstrain(c->conductor, d.clamp_stress); }),
   };
+  std::vector<SpanQuantity> attachments{
+      span_solved("stress_fymax_end2_mpa", "MPa", "fymax stress at the span clamp of end 2",
+                  [mpa](const P& p) { return mpa(p.stress_fymax_end2); }),
+      span_solved("stress_ps_end2_mpa", "MPa", "Poffenberger-Swart stress at the span clamp of end 2",
+                  [mpa](const P& p) { return mpa(p.stress_poffenberger_swart_end2); }),
+      span_solved("bending_amplitude_end2_pp_m", "m", "Yb at the span clamp of end 2",
+                  [](const P& p) { return p.bending_amplitude_end2; }),
+      span_solved("max_subspan_amplitude_m", "m",
+                  "the largest antinode amplitude of the stretches between the span's attachments (masses, dampers "
+                  "placed along the span; Y without them)",
+                  [](const P& p) { return p.max_subspan_amplitude; }),
+      span_solved("max_subspan_from_m", "m", "where that stretch starts, from end 1",
+                  [](const P& p) { return p.max_subspan_from; }),
+      span_solved("max_subspan_to_m", "m", "where it ends", [](const P& p) { return p.max_subspan_to; }),
+      span_solved("governing_stress_mpa", "MPa",
+                  "the largest stress the criterion judges over both span clamps and the masses' clamps",
+                  [mpa, span_copy = std::make_shared<span::Span>(span)](const P& p) {
+                    return mpa(span::governing_place(*span_copy, p).stress);
+                  }),
+      {"governing_place", "", "where it is: span clamp 1 or 2, or a mass's clamp (empty where not converged)",
+       ColumnKind::label, {},
+       [span_copy = std::make_shared<span::Span>(span)](const P& p, std::size_t) {
+         return p.converged() ? span::governing_place(*span_copy, p).place : std::string();
+       }},
+      span_per_mass("<mass>_amplitude_m", "m", "per mass and position: the conductor's amplitude |Y| there", c,
+                    [](const span::MassAtBalance& m) { return m.displacement; }),
+      span_per_mass("<mass>_clamp_stress_mpa", "MPa",
+                    "the conductor's stress at its clamp, the point force w^2 M |Y| times its stress_factor", c,
+                    [](const span::MassAtBalance& m) { return m.clamp_stress / kPascalPerMegapascal; }),
+  };
+  q.insert(q.end(), std::make_move_iterator(attachments.begin()), std::make_move_iterator(attachments.end()));
   std::vector<std::string> members;
   const std::vector<std::string> prefixes = span_damper_prefixes(span);
-  for (const auto& [k, end] : span_column_slots(span)) members.push_back(fmt::format("{}_end{}", prefixes[k], end));
-  return Table<span::BalancePoint>(std::move(q), {{"<damper>_end<k>", members}});
+  for (const SpanDamperSlot& slot : c->damper_slots) members.push_back(fmt::format("{}_{}", prefixes[slot.damper], slot.suffix));
+  std::vector<std::string> mass_names;
+  for (const span::SpanMass& m : span.masses()) mass_names.push_back(m.name);
+  const std::vector<std::string> mass_prefixes = column_prefixes(mass_names, "mass");
+  std::vector<std::string> mass_members;
+  for (const auto& [m, x] : c->mass_slots) mass_members.push_back(fmt::format("{}_at_{}", mass_prefixes[m], span_place_name(x)));
+  return Table<span::BalancePoint>(std::move(q), {{"<damper>_end<k>", members}, {"<mass>", mass_members}});
 }
 
 Table<span::BalancePoint> span_point_notes_table() {
@@ -383,7 +448,12 @@ io::JsonObject span_inputs(const span::Span& span) {
   std::vector<io::JsonObject> dampers;
   for (const span::SpanDamper& d : span.dampers()) {
     io::JsonObject damper;
-    damper.add("name", d.name).add("position_m", d.position).add("ends", d.both_ends ? "both" : "one");
+    damper.add("name", d.name);
+    if (d.in_span()) {
+      damper.add("positions_from_end1_m", d.along).add("ends", "along");
+    } else {
+      damper.add("position_m", d.position).add("ends", d.both_ends ? "both" : "one");
+    }
     damper.add("source", d.fit ? "fitted" : d.measured() ? "sheet" : "model");
     if (d.fit) {
       damper.add("fit", io::JsonObject()
@@ -397,9 +467,18 @@ io::JsonObject span_inputs(const span::Span& span) {
     }
     dampers.push_back(std::move(damper));
   }
+  std::vector<io::JsonObject> masses;
+  for (const span::SpanMass& m : span.masses()) {
+    masses.push_back(io::JsonObject()
+                         .add("name", m.name)
+                         .add("mass_kg", m.mass)
+                         .add("positions_from_end1_m", m.positions)
+                         .add("stress_factor", m.stress_factor));
+  }
   return io::JsonObject()
       .add("conductor", conductor)
       .add("dampers", dampers)
+      .add("masses", masses)
       .add("length_m", span.length())
       .add("tension", io::JsonObject()
                           .add("tension_n", t.tension)
@@ -427,6 +506,7 @@ io::JsonObject span_summary(const SpanResult& result) {
       .add("verdict", span::verdict_name(s.verdict))
       .add("max_judged_stress_mpa", s.converged > 0 ? mpa(s.max_judged_stress) : kSpanNoValue)
       .add("max_judged_stress_high_mpa", s.converged > 0 ? mpa(s.max_judged_stress_high) : kSpanNoValue)
+      .add("governing_place", s.max_judged_stress_place)
       .add("undamped_max_judged_stress_mpa", mpa(s.undamped_max_judged_stress))
       .add("max_stress_fymax_mpa", s.converged > 0 ? mpa(s.max_stress_fymax) : kSpanNoValue)
       .add("max_stress_frequency_hz", s.converged > 0 ? s.max_stress_frequency_hz : kSpanNoValue)

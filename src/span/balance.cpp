@@ -105,23 +105,14 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// waves) equals what their dampers dissipate.
 constexpr double kIdentityTolerance = 1e-8;
 
-void fill_undamped(const Span& span, double f, BalancePoint& p) {
-  const Conductor& c = span.conductor();
-  const auto y = undamped_amplitude(span.wind(), span.self_damping(), c, span.tension(), span.length(), f);
-  p.undamped_amplitude = y.value_or(kNaN);
-  p.undamped_stress_fymax = y ? fymax_stress(c, f, *y) : kNaN;
-  const double x_b = span.fatigue().yb_distance;
-  p.undamped_bending_amplitude = y ? bending_amplitude(c, span.tension(), f, *y, x_b) : kNaN;
-  p.undamped_stress_poffenberger_swart =
-      y ? poffenberger_swart_stress(c, span.tension(), p.undamped_bending_amplitude, x_b) : kNaN;
-}
-
 /// One damper's figures at the balance.
 DamperAtBalance damper_at_balance(const Span& span, const FrequencyBalance& balance, const EndSolution& s,
                                   std::size_t e, std::size_t j) {
+  const EndLayout& layout = balance.layouts()[e];
   DamperAtBalance d;
-  d.damper = balance.layouts()[e].damper[j];
-  d.end = static_cast<int>(e) + 1;
+  d.damper = layout.damper[j];
+  d.end = layout.end;
+  d.position = layout.end == 1 ? layout.positions[j] : span.length() - layout.positions[j];
   d.clamp_velocity = s.velocities[j];
   d.impedance = s.impedances[j];
   const double w = balance.wave().angular_frequency;
@@ -131,20 +122,69 @@ DamperAtBalance damper_at_balance(const Span& span, const FrequencyBalance& bala
   return d;
 }
 
+/// The masses of end e's chain at the balance, by their positions from end 1.
+void add_masses(const Span& span, const FrequencyBalance& balance, const EndSolution& s, std::size_t e,
+                std::vector<MassAtBalance>& masses) {
+  const EndLayout& layout = balance.layouts()[e];
+  const double w = balance.wave().angular_frequency;
+  for (std::size_t i = 0; i < layout.mass.size(); ++i) {
+    const SpanMass& mass = span.masses()[layout.mass[i]];
+    const double distance = layout.attachments.mass_positions[i];
+    MassAtBalance m;
+    m.mass = layout.mass[i];
+    m.position = layout.end == 1 ? distance : span.length() - distance;
+    m.displacement = std::abs(s.response.mass_displacement[i]);
+    m.clamp_stress = mass.stress_factor * point_force_stress(span.conductor(), span.tension(), w * w * mass.mass * m.displacement);
+    masses.push_back(m);
+  }
+}
+
+/// The span clamp's figures from its loop amplitude S: fymax, Yb and Poffenberger-Swart.
+struct ClampFigures {
+  double loop = 0.0, fymax = 0.0, bending = 0.0, poffenberger_swart = 0.0;
+};
+ClampFigures clamp_figures(const Span& span, double f, double loop) {
+  const Conductor& c = span.conductor();
+  const double x_b = span.fatigue().yb_distance;
+  ClampFigures out;
+  out.loop = loop;
+  out.fymax = fymax_stress(c, f, loop);
+  out.bending = bending_amplitude(c, span.tension(), f, loop, x_b);
+  out.poffenberger_swart = poffenberger_swart_stress(c, span.tension(), out.bending, x_b);
+  return out;
+}
+
+/// The loop amplitude S next to span clamp `end` (1 or 2): its chain's, or the free span's y.
+double clamp_loop(const FrequencyBalance& balance, const EndsAtAmplitude& at, int end, double y) {
+  for (std::size_t e = 0; e < at.ends.size(); ++e) {
+    if (balance.layouts()[e].end == end) return at.ends[e].response.loop_amplitude;
+  }
+  return y;
+}
+
 /// The figures at the balance amplitude y.
 void fill_balanced(const Span& span, FrequencyBalance& balance, double y, BalancePoint& p) {
-  const Conductor& c = span.conductor();
   const double f = p.frequency_hz;
   const EndsAtAmplitude at = balance.dampers(y);
   p.amplitude = y;
-  p.wind_power = balance.wind(y);
-  p.self_damping_power = balance.self_damping(y);
+  p.wind_power = balance.wind(at.subspans);
+  p.self_damping_power = balance.self_damping(at.subspans);
   p.damper_power = at.absorbed;
-  p.clamp_loop_amplitude = at.ends.empty() ? y : at.ends.front().response.loop_amplitude;
-  p.stress_fymax = fymax_stress(c, f, p.clamp_loop_amplitude);
-  const double x_b = span.fatigue().yb_distance;
-  p.bending_amplitude = bending_amplitude(c, span.tension(), f, p.clamp_loop_amplitude, x_b);
-  p.stress_poffenberger_swart = poffenberger_swart_stress(c, span.tension(), p.bending_amplitude, x_b);
+  const ClampFigures one = clamp_figures(span, f, clamp_loop(balance, at, 1, y));
+  p.clamp_loop_amplitude = one.loop;
+  p.stress_fymax = one.fymax;
+  p.bending_amplitude = one.bending;
+  p.stress_poffenberger_swart = one.poffenberger_swart;
+  const ClampFigures two = clamp_figures(span, f, clamp_loop(balance, at, 2, y));
+  p.clamp_loop_amplitude_end2 = two.loop;
+  p.stress_fymax_end2 = two.fymax;
+  p.bending_amplitude_end2 = two.bending;
+  p.stress_poffenberger_swart_end2 = two.poffenberger_swart;
+  const auto largest = std::max_element(at.subspans.begin(), at.subspans.end(),
+                                        [](const SubSpan& a, const SubSpan& b) { return a.amplitude < b.amplitude; });
+  p.max_subspan_amplitude = largest->amplitude;
+  p.max_subspan_from = largest->from;
+  p.max_subspan_to = largest->to;
   double sum_dampers = 0.0, incoming = 0.0;
   p.damper_clamp_stress = 0.0;
   const StringWave& wave = balance.wave();
@@ -156,19 +196,77 @@ void fill_balanced(const Span& span, FrequencyBalance& balance, double y, Balanc
       p.dampers.push_back(damper_at_balance(span, balance, s, e, j));
       p.damper_clamp_stress = std::max(p.damper_clamp_stress, p.dampers.back().clamp_stress);
     }
+    add_masses(span, balance, s, e, p.masses);
   }
+  std::sort(p.masses.begin(), p.masses.end(),
+            [](const MassAtBalance& a, const MassAtBalance& b) { return a.position < b.position; });
   // Relative to the power the waves bring to the ends, the scale of P_d's round-off
   // (P_d = Z0 w^2 (|B|^2 - |A|^2) / 2 is a difference: near a node it is tiny).
   p.identity_error = incoming > 0.0 ? std::abs(p.damper_power - sum_dampers) / incoming : 0.0;
 }
 
+/// The span without its dampers (its masses kept) at every frequency: the undamped
+/// figures. Without masses the bare string's balance (undamped.hpp); with them the
+/// balance through their chain.
+class UndampedSpan {
+ public:
+  UndampedSpan(const Span& span, const SpanTables& tables, const BalanceOptions& options)
+      : span_(span.without_dampers()), tables_(tables.frequencies(), {}), options_(options) {
+    options_.damper_model = DamperModel::travelling;
+  }
+
+  void fill(std::size_t i, BalancePoint& p) const {
+    if (span_.masses().empty()) return fill_bare(p);
+    FrequencyBalance balance(span_, tables_, i, options_);
+    const StableRoot y = balance.balanced_amplitude();
+    if (!y.converged()) return fill_none(p);
+    BalancePoint u;
+    u.frequency_hz = p.frequency_hz;
+    fill_balanced(span_, balance, y.amplitude, u);
+    p.undamped_amplitude = u.amplitude;
+    p.undamped_stress_fymax = u.stress_fymax;
+    p.undamped_bending_amplitude = u.bending_amplitude;
+    p.undamped_stress_poffenberger_swart = u.stress_poffenberger_swart;
+    p.undamped_judged_stress = governing_place(span_, u).stress;
+    p.undamped_life_stress = life_stress(u);
+  }
+
+ private:
+  void fill_bare(BalancePoint& p) const {
+    const double f = p.frequency_hz;
+    const auto y = undamped_amplitude(span_.wind(), span_.self_damping(), span_.conductor(), span_.tension(),
+                                      span_.length(), f);
+    if (!y) return fill_none(p);
+    const ClampFigures clamp = clamp_figures(span_, f, *y);
+    p.undamped_amplitude = *y;
+    p.undamped_stress_fymax = clamp.fymax;
+    p.undamped_bending_amplitude = clamp.bending;
+    p.undamped_stress_poffenberger_swart = clamp.poffenberger_swart;
+    p.undamped_judged_stress = span_.judges_poffenberger_swart() ? clamp.poffenberger_swart : clamp.fymax;
+    p.undamped_life_stress = clamp.poffenberger_swart;
+  }
+  static void fill_none(BalancePoint& p) {
+    for (double* x : {&p.undamped_amplitude, &p.undamped_stress_fymax, &p.undamped_bending_amplitude,
+                      &p.undamped_stress_poffenberger_swart, &p.undamped_judged_stress, &p.undamped_life_stress}) {
+      *x = kNaN;
+    }
+  }
+
+  Span span_;
+  SpanTables tables_;
+  BalanceOptions options_;
+};
+
 void mask(BalancePoint& p) {
   for (double* x : {&p.amplitude, &p.wind_power, &p.self_damping_power, &p.damper_power, &p.clamp_loop_amplitude,
                     &p.stress_fymax, &p.stress_poffenberger_swart, &p.bending_amplitude, &p.damper_clamp_stress,
-                    &p.identity_error}) {
+                    &p.identity_error, &p.clamp_loop_amplitude_end2, &p.stress_fymax_end2,
+                    &p.stress_poffenberger_swart_end2, &p.bending_amplitude_end2, &p.max_subspan_amplitude,
+                    &p.max_subspan_from, &p.max_subspan_to}) {
     *x = kNaN;
   }
   p.dampers.clear();
+  p.masses.clear();
 }
 
 /// The balance amplitude at one frequency: by continuation from the last frequencies
@@ -228,12 +326,12 @@ std::string check_sheet_velocities(const Span& span, const SpanTables& tables, s
 }
 
 BalancePoint balance_at(const Span& span, const SpanTables& tables, std::size_t i, Polish* polish,
-                        const BalanceOptions& options) {
+                        const BalanceOptions& options, const UndampedSpan& undamped) {
   BalancePoint p;
   p.frequency_hz = tables.frequencies()[i];
   p.wind_speed = span.wind().wind_speed(p.frequency_hz, span.conductor().diameter);
   p.wavelength = wavelength(span.conductor(), span.tension(), p.frequency_hz);
-  fill_undamped(span, p.frequency_hz, p);
+  undamped.fill(i, p);
   if (std::string outside = outside_sheets(span, tables, i); !outside.empty()) {
     if (polish) polish->forget();  // the next frequency starts afresh
     p.summary.termination = Termination::inner_failure;
@@ -283,8 +381,9 @@ SpanBalance run_balance(const Span& span, const SpanTables& tables, const Balanc
   SpanBalance out;
   std::optional<Polish> polish;
   if (options.polish && !span.dampers().empty()) polish.emplace(span, options);
+  const UndampedSpan undamped(span, tables, options);
   for (std::size_t i = 0; i < tables.frequencies().size(); ++i) {
-    out.points.push_back(balance_at(span, tables, i, polish ? &*polish : nullptr, options));
+    out.points.push_back(balance_at(span, tables, i, polish ? &*polish : nullptr, options, undamped));
   }
   out.summary = summarise(span, out.points);
   out.summary.impedance_nodes = tables.nodes();

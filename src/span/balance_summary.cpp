@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "stockbridge/span/fatigue.hpp"
 
 namespace stockbridge::span {
@@ -18,9 +20,28 @@ std::string_view verdict_name(Verdict verdict) {
   return "unknown";
 }
 
-double judged_stress(const Span& span, const BalancePoint& point) {
-  return span.judges_poffenberger_swart() ? point.stress_poffenberger_swart : point.stress_fymax;
+GoverningPlace governing_place(const Span& span, const BalancePoint& point) {
+  const bool ps = span.judges_poffenberger_swart();
+  GoverningPlace out{ps ? point.stress_poffenberger_swart : point.stress_fymax, "span clamp 1"};
+  if (const double two = ps ? point.stress_poffenberger_swart_end2 : point.stress_fymax_end2; two > out.stress) {
+    out = {two, "span clamp 2"};
+  }
+  for (const MassAtBalance& m : point.masses) {
+    if (m.clamp_stress > out.stress) {
+      out = {m.clamp_stress, fmt::format("{} at {:.4g} m", span.masses()[m.mass].name, m.position)};
+    }
+  }
+  return out;
 }
+
+double life_stress(const BalancePoint& point) {
+  double stress = point.stress_poffenberger_swart;
+  if (point.stress_poffenberger_swart_end2 > stress) stress = point.stress_poffenberger_swart_end2;
+  for (const MassAtBalance& m : point.masses) stress = std::max(stress, m.clamp_stress);
+  return stress;
+}
+
+double judged_stress(const Span& span, const BalancePoint& point) { return governing_place(span, point).stress; }
 
 double judged_stress_high(const Span& span, const BalancePoint& point) {
   if (!std::isfinite(point.stress_fymax_high) || !(point.stress_fymax > 0.0)) return std::numeric_limits<double>::quiet_NaN();
@@ -72,12 +93,11 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
   std::vector<double> frequencies, stresses, undamped_stresses;
   for (const BalancePoint& p : points) {
     frequencies.push_back(p.frequency_hz);
-    const double stress = p.converged() ? p.stress_poffenberger_swart : std::numeric_limits<double>::quiet_NaN();
+    const double stress = p.converged() ? life_stress(p) : std::numeric_limits<double>::quiet_NaN();
     stresses.push_back(stress);
-    undamped_stresses.push_back(p.undamped_stress_poffenberger_swart);
+    undamped_stresses.push_back(p.undamped_life_stress);
     undamped.add(p.frequency_hz, p.undamped_stress_fymax);
-    undamped_judged.add(p.frequency_hz, span.judges_poffenberger_swart() ? p.undamped_stress_poffenberger_swart
-                                                                          : p.undamped_stress_fymax);
+    undamped_judged.add(p.frequency_hz, p.undamped_judged_stress);
     if (std::isfinite(p.undamped_bending_amplitude)) {
       s.undamped_max_bending_amplitude = std::max(s.undamped_max_bending_amplitude, p.undamped_bending_amplitude);
       s.undamped_max_stress_poffenberger_swart =
@@ -86,7 +106,9 @@ BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& poin
     if (!p.converged()) continue;
     ++s.converged;
     damped.add(p.frequency_hz, p.stress_fymax);
-    judged.add(p.frequency_hz, judged_stress(span, p));
+    const GoverningPlace governing = governing_place(span, p);
+    if (governing.stress > judged.stress) s.max_judged_stress_place = governing.place;
+    judged.add(p.frequency_hz, governing.stress);
     // A point without a band (no vibration: stress 0) leaves the largest top as it is.
     if (const double top = judged_stress_high(span, p); std::isfinite(top) && !(top <= high)) high = top;
     s.max_bending_amplitude = std::max(s.max_bending_amplitude, p.bending_amplitude);

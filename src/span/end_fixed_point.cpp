@@ -21,9 +21,14 @@ namespace {
 /// The end of one antinode amplitude, its responses counted.
 class EndProblem {
  public:
-  EndProblem(const StringWave& wave, const std::vector<double>& positions, const ClampImpedance& impedance,
-             double antinode, const FixedPointOptions& options)
-      : wave_(wave), positions_(positions), impedance_(impedance), antinode_(antinode), options_(options) {}
+  EndProblem(const StringWave& wave, const std::vector<double>& positions, const EndAttachments& attachments,
+             const ClampImpedance& impedance, double antinode, const FixedPointOptions& options)
+      : wave_(wave),
+        positions_(positions),
+        attachments_(attachments),
+        impedance_(impedance),
+        antinode_(antinode),
+        options_(options) {}
 
   /// The impedances at velocities v; none (and `unknown_` says where) if one is not known.
   std::optional<std::vector<std::complex<double>>> impedances(const std::vector<double>& v) {
@@ -40,7 +45,7 @@ class EndProblem {
   }
   EndResponse response(const std::vector<std::complex<double>>& z) {
     ++evaluations_;
-    return end_response(wave_, positions_, z, antinode_);
+    return end_response(wave_, positions_, z, antinode_, attachments_);
   }
   /// log of damper j's velocity in a response (held at the floor at a node).
   double log_velocity(const EndResponse& r, std::size_t j) const {
@@ -60,6 +65,7 @@ class EndProblem {
  private:
   const StringWave& wave_;
   const std::vector<double>& positions_;
+  const EndAttachments& attachments_;
   const ClampImpedance& impedance_;
   double antinode_;
   const FixedPointOptions& options_;
@@ -143,7 +149,7 @@ numerics::NonlinearSystemResult EndProblem::solve_system(const std::vector<doubl
       if (!hi || !lo) return false;
       std::vector<std::complex<double>> direction(n, 0.0);
       direction[m] = (*hi - *lo) / (2.0 * kStep);
-      const EndResponseTangent t = end_response_tangent(wave_, positions_, *z, direction, antinode_);
+      const EndResponseTangent t = end_response_tangent(wave_, positions_, *z, direction, antinode_, attachments_);
       for (std::size_t j = 0; j < n; ++j) {
         // A damper held at the velocity floor (near a node) does not move with the others.
         const bool floored = wave_.angular_frequency * std::abs(r.damper_displacement[j]) <= options_.velocity_floor;
@@ -163,8 +169,9 @@ numerics::NonlinearSystemResult EndProblem::solve_system(const std::vector<doubl
 }  // namespace
 
 EndSolution solve_end(const StringWave& wave, const std::vector<double>& positions, const ClampImpedance& impedance,
-                      double antinode, const FixedPointOptions& options, std::vector<double> start) {
-  EndProblem problem(wave, positions, impedance, antinode, options);
+                      double antinode, const FixedPointOptions& options, std::vector<double> start,
+                      const EndAttachments& attachments) {
+  EndProblem problem(wave, positions, attachments, impedance, antinode, options);
   EndSolution out;
   std::vector<double>& v = out.velocities;
   v = std::move(start);

@@ -1,30 +1,115 @@
 #include "frequency_balance.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
 
+#include "stockbridge/core/error.hpp"
+
 namespace stockbridge::span {
 
+namespace {
+
+/// A damper's or mass's place on one end's chain.
+struct ChainEntry {
+  double distance = 0.0;  ///< from the end's clamp, m
+  std::size_t index = 0;  ///< the span's damper, or the mass's value's slot
+};
+
+/// The end (0: end 1, 1: end 2) a point x from end 1 belongs to, and its distance from that clamp.
+std::pair<std::size_t, double> nearer_end(double x, double length) {
+  return x <= 0.5 * length ? std::pair{std::size_t{0}, x} : std::pair{std::size_t{1}, length - x};
+}
+
+void sort_by_distance(std::vector<ChainEntry>& entries) {
+  std::stable_sort(entries.begin(), entries.end(),
+                   [](const ChainEntry& a, const ChainEntry& b) { return a.distance < b.distance; });
+}
+
+}  // namespace
+
 std::vector<EndLayout> end_layouts(const Span& span) {
-  std::vector<EndLayout> ends(2);
-  std::vector<std::size_t> order(span.dampers().size());
-  for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return span.dampers()[a].position < span.dampers()[b].position; });
-  for (const std::size_t j : order) {
-    for (std::size_t e = 0; e < 2; ++e) {
-      if (e == 1 && !span.dampers()[j].both_ends) continue;
-      ends[e].positions.push_back(span.dampers()[j].position);
-      ends[e].damper.push_back(j);
+  const double length = span.length();
+  std::array<std::vector<ChainEntry>, 2> dampers, masses;
+  std::array<std::vector<double>, 2> splits;
+  std::vector<double> mass_values;
+  std::vector<std::size_t> mass_owner;  ///< per mass value: its SpanMass
+  for (std::size_t j = 0; j < span.dampers().size(); ++j) {
+    const SpanDamper& d = span.dampers()[j];
+    if (!d.in_span()) {
+      dampers[0].push_back({d.position, j});
+      if (d.both_ends) dampers[1].push_back({d.position, j});
+      continue;
+    }
+    for (const double x : d.along) {
+      const auto [e, distance] = nearer_end(x, length);
+      dampers[e].push_back({distance, j});
+      splits[e].push_back(distance);
     }
   }
-  if (ends[1].positions.empty()) ends.pop_back();
-  if (ends[0].positions.empty()) ends.clear();  // no dampers: the string's own standing wave, S = Y
-  return ends;
+  for (const SpanMass& m : span.masses()) {
+    for (const double x : m.positions) {
+      const auto [e, distance] = nearer_end(x, length);
+      masses[e].push_back({distance, mass_values.size()});
+      mass_values.push_back(m.mass);
+      mass_owner.push_back(static_cast<std::size_t>(&m - span.masses().data()));
+      splits[e].push_back(distance);
+    }
+  }
+  std::vector<EndLayout> ends;
+  for (std::size_t e = 0; e < 2; ++e) {
+    EndLayout layout;
+    layout.end = static_cast<int>(e) + 1;
+    sort_by_distance(dampers[e]);
+    sort_by_distance(masses[e]);
+    for (const ChainEntry& d : dampers[e]) layout.positions.push_back(d.distance), layout.damper.push_back(d.index);
+    for (const ChainEntry& m : masses[e]) {
+      layout.attachments.mass_positions.push_back(m.distance);
+      layout.attachments.masses.push_back(mass_values[m.index]);
+      layout.mass.push_back(mass_owner[m.index]);
+    }
+    // The end zone, from the clamp to the end's last damper at `position`, counts with
+    // the stretch past it (the energy balance's end convention): no split inside it.
+    double zone = 0.0;
+    for (const ChainEntry& d : dampers[e]) {
+      if (!span.dampers()[d.index].in_span()) zone = std::max(zone, d.distance);
+    }
+    std::erase_if(splits[e], [zone](double x) { return x < zone; });
+    std::sort(splits[e].begin(), splits[e].end());
+    splits[e].erase(std::unique(splits[e].begin(), splits[e].end()), splits[e].end());
+    layout.attachments.splits = std::move(splits[e]);
+    if (!layout.positions.empty() || !layout.attachments.empty()) ends.push_back(std::move(layout));
+  }
+  return ends;  // nothing on the span: the string's own standing wave, S = Y
+}
+
+std::vector<SubSpan> FrequencyBalance::subspans(const std::vector<EndSolution>& ends, double y) const {
+  const double length = span_.length();
+  std::vector<SubSpan> out;
+  double lo = 0.0, hi = length;  // the free span in the middle
+  for (std::size_t e = 0; e < ends.size(); ++e) {
+    const std::vector<double>& splits = layouts_[e].attachments.splits;
+    const std::vector<double>& amplitudes = ends[e].response.segment_amplitude;
+    double previous = 0.0;
+    for (std::size_t i = 0; i < splits.size(); ++i) {
+      if (layouts_[e].end == 1) {
+        out.push_back({previous, splits[i], amplitudes[i]});
+        lo = splits[i];
+      } else {
+        out.push_back({length - splits[i], length - previous, amplitudes[i]});
+        hi = length - splits[i];
+      }
+      previous = splits[i];
+    }
+  }
+  out.push_back({lo, hi, y});
+  std::sort(out.begin(), out.end(), [](const SubSpan& a, const SubSpan& b) { return a.from < b.from; });
+  return out;
 }
 
 FrequencyBalance::FrequencyBalance(const Span& span, const SpanTables& tables, std::size_t index,
@@ -35,6 +120,10 @@ FrequencyBalance::FrequencyBalance(const Span& span, const SpanTables& tables, s
       frequency_(tables.frequencies().at(index)),
       options_(options),
       layouts_(end_layouts(span)) {
+  if (options.damper_model == DamperModel::weak && span.has_attachments()) {
+    throw InvalidParameter("damper_model", " = \"weak\": the weak-damper form takes the string's own wave; a span "
+                                           "with masses or dampers along it needs \"travelling\"");
+  }
   const Conductor& c = span.conductor();
   wave_.angular_frequency = 2.0 * std::numbers::pi * frequency_;
   wave_.wavenumber = wavenumber(c, span.tension(), frequency_);
@@ -48,17 +137,36 @@ FrequencyBalance::FrequencyBalance(const Span& span, const SpanTables& tables, s
   }
 }
 
-double FrequencyBalance::wind(double y) const {
-  return span_.wind().power(y, frequency_, span_.conductor().diameter, span_.length());
+double FrequencyBalance::wind(const std::vector<SubSpan>& subspans) const {
+  double p = 0.0;
+  for (const SubSpan& s : subspans) p += span_.wind().power(s.amplitude, frequency_, span_.conductor().diameter, s.length());
+  return p;
 }
 
-double FrequencyBalance::self_damping(double y) const {
-  return span_.self_damping().power(y, frequency_, span_.conductor(), span_.tension(), span_.length());
+double FrequencyBalance::self_damping(const std::vector<SubSpan>& subspans) const {
+  double p = 0.0;
+  for (const SubSpan& s : subspans) {
+    p += span_.self_damping().power(s.amplitude, frequency_, span_.conductor(), span_.tension(), s.length());
+  }
+  return p;
 }
 
-double FrequencyBalance::net_power_slope(double y) const {
+double FrequencyBalance::net_power_in_proportion(double y) const {
+  std::vector<SubSpan> at = unit_subspans_;
+  for (SubSpan& s : at) s.amplitude *= y;
+  return wind(at) - self_damping(at);
+}
+
+double FrequencyBalance::net_power_slope(double y) {
   const double dy = 1e-6 * y;
-  return (wind(y + dy) - self_damping(y + dy) - wind(y - dy) + self_damping(y - dy)) / (2.0 * dy);
+  if (!absorbed_per_square()) {
+    const auto net = [&](double a) {
+      const std::vector<SubSpan> whole{{0.0, span_.length(), a}};
+      return wind(whole) - self_damping(whole);
+    };
+    return (net(y + dy) - net(y - dy)) / (2.0 * dy);
+  }
+  return (net_power_in_proportion(y + dy) - net_power_in_proportion(y - dy)) / (2.0 * dy);
 }
 
 EndsAtAmplitude FrequencyBalance::dampers(double y) {
@@ -67,13 +175,14 @@ EndsAtAmplitude FrequencyBalance::dampers(double y) {
     EndSolution s = end(e, y);
     if (!s.converged()) {
       out.summary.termination = Termination::inner_failure;
-      out.summary.where = fmt::format("at Y = {:.3g} m: end {}: {}", y, e + 1, brief_report(s.summary));
+      out.summary.where = fmt::format("at Y = {:.3g} m: end {}: {}", y, layouts_[e].end, brief_report(s.summary));
       return out;
     }
     last_velocities_[e] = s.velocities;
     out.absorbed += s.response.absorbed_power;
     out.ends.push_back(std::move(s));
   }
+  out.subspans = subspans(out.ends, y);
   out.summary.termination = Termination::converged;
   return out;
 }
@@ -85,14 +194,14 @@ StableRoot FrequencyBalance::balanced_amplitude() {
   SolverSummary ends;  // the first end that failed on the way
   const auto net_power = [&](double y) {
     if (const std::optional<double> per_square = absorbed_per_square()) {
-      return wind(y) - self_damping(y) - *per_square * y * y;
+      return net_power_in_proportion(y) - *per_square * y * y;
     }
     const EndsAtAmplitude at = dampers(y);
     if (!at.summary.converged()) {
       if (ends.termination == Termination::not_run) ends = at.summary;
       return std::numeric_limits<double>::quiet_NaN();
     }
-    return wind(y) - self_damping(y) - at.absorbed;
+    return wind(at.subspans) - self_damping(at.subspans) - at.absorbed;
   };
   const double d = span_.conductor().diameter;
   StableRoot root = smallest_stable_root(net_power, options_.amplitude_min_over_diameter * d,
@@ -127,7 +236,12 @@ std::optional<double> FrequencyBalance::absorbed_per_square() {
       if (!all_fixed(e)) return std::nullopt;
     }
     double absorbed = 0.0;
-    for (std::size_t e = 0; e < layouts_.size(); ++e) absorbed += end(e, 1.0).response.absorbed_power;
+    std::vector<EndSolution> ends;
+    for (std::size_t e = 0; e < layouts_.size(); ++e) {
+      ends.push_back(end(e, 1.0));
+      absorbed += ends.back().response.absorbed_power;
+    }
+    unit_subspans_ = subspans(ends, 1.0);
     absorbed_per_square_ = absorbed;
   }
   return absorbed_per_square_;
@@ -137,7 +251,7 @@ EndResponseTangent FrequencyBalance::end_tangent(std::size_t e, const std::vecto
                                                  const std::vector<std::complex<double>>& direction) const {
   const std::vector<double>& positions = layouts_[e].positions;
   if (options_.damper_model == DamperModel::travelling) {
-    return end_response_tangent(wave_, positions, z, direction, 1.0);
+    return end_response_tangent(wave_, positions, z, direction, 1.0, layouts_[e].attachments);
   }
   // The weak form: Y_j = sin(k a_j) whatever the impedances, P_d = sum Re Z_j w^2 Y_j^2 / 2.
   EndResponseTangent t;
@@ -159,7 +273,7 @@ EndSolution FrequencyBalance::end(std::size_t e, double y) const {
   };
   if (options_.damper_model == DamperModel::weak) return weak_end(layout, z, y);
   if (all_fixed(e)) return fixed_end(e, y);
-  return solve_end(wave_, layout.positions, z, y, options_.fixed_point, last_velocities_[e]);
+  return solve_end(wave_, layout.positions, z, y, options_.fixed_point, last_velocities_[e], layout.attachments);
 }
 
 bool FrequencyBalance::all_fixed(std::size_t e) const {
@@ -173,7 +287,7 @@ bool FrequencyBalance::all_fixed(std::size_t e) const {
 EndSolution FrequencyBalance::fixed_end(std::size_t e, double y) const {
   EndSolution s;
   for (const auto& z : fixed_[e]) s.impedances.push_back(*z);
-  s.response = end_response(wave_, layouts_[e].positions, s.impedances, y);
+  s.response = end_response(wave_, layouts_[e].positions, s.impedances, y, layouts_[e].attachments);
   for (const std::complex<double>& yj : s.response.damper_displacement) {
     s.velocities.push_back(std::max(wave_.angular_frequency * std::abs(yj), options_.fixed_point.velocity_floor));
   }

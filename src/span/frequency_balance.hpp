@@ -16,19 +16,43 @@
 
 namespace stockbridge::span {
 
-/// The dampers of one end: their positions (ascending) and which of the span's dampers each is.
+/// The chain of one end (MODEL.md section 15): its dampers (positions ascending, and
+/// which of the span's dampers each is), and the masses and sub-span bounds on its
+/// half of the span, all measured from its own clamp.
 struct EndLayout {
+  int end = 1;  ///< the span end (1 or 2) whose clamp the chain starts from
   std::vector<double> positions;
   std::vector<std::size_t> damper;
+  EndAttachments attachments;
+  std::vector<std::size_t> mass;  ///< which of the span's masses each of attachments.masses is
+
+  /// The other end's chain is this one's mirror image (the same velocities by symmetry).
+  bool mirrors(const EndLayout& other) const {
+    return positions == other.positions && damper == other.damper && attachments == other.attachments;
+  }
 };
 
-/// End 1 holds every damper; end 2 those mounted at both ends (no ends without dampers).
+/// End 1 holds the dampers at one or both ends; end 2 those at both ends; each end
+/// the masses and dampers placed along the span on its half (the nearer clamp's;
+/// mid-span goes to end 1). Ends with nothing on them are left out.
 std::vector<EndLayout> end_layouts(const Span& span);
+
+/// A stretch of the span between attachments (the clamps, masses, dampers placed
+/// along the span; a clamp's dampers count with the stretch past them, as the energy
+/// balance takes the end zones), at its own antinode amplitude.
+struct SubSpan {
+  double from = 0.0;       ///< m from end 1
+  double to = 0.0;         ///< m from end 1
+  double amplitude = 0.0;  ///< |A| + |B| there, m
+
+  double length() const { return to - from; }
+};
 
 /// What the dampers of all ends do at one amplitude.
 struct EndsAtAmplitude {
   std::vector<EndSolution> ends;
   double absorbed = 0.0;  ///< P_d of all ends, W
+  std::vector<SubSpan> subspans;  ///< the span's stretches, by position; the free span's at the amplitude asked
   /// converged, or the first end that is not (`where` names it, with its report).
   SolverSummary summary;
 };
@@ -41,10 +65,13 @@ class FrequencyBalance {
   double frequency() const { return frequency_; }
   const StringWave& wave() const { return wave_; }
   const std::vector<EndLayout>& layouts() const { return layouts_; }
-  double wind(double y) const;
-  double self_damping(double y) const;
-  /// d(P_w - P_s)/dY at y (a central difference: the laws are smooth or piecewise linear).
-  double net_power_slope(double y) const;
+  /// P_w and P_s summed over the stretches at their own amplitudes, W.
+  double wind(const std::vector<SubSpan>& subspans) const;
+  double self_damping(const std::vector<SubSpan>& subspans) const;
+  /// d(P_w - P_s)/dY at y (a central difference: the laws are smooth or piecewise
+  /// linear); the stretches' amplitudes in proportion to y as the fixed impedances
+  /// make them (the polish's trials), the whole span at y otherwise.
+  double net_power_slope(double y);
 
   /// The ends' dampers at antinode amplitude y (each end's fixed point on the tables
   /// from the last one solved, or the fixed impedances' response).
@@ -75,6 +102,10 @@ class FrequencyBalance {
   bool all_fixed(std::size_t e) const;
   EndSolution fixed_end(std::size_t e, double y) const;
   EndSolution weak_end(const EndLayout& layout, const ClampImpedance& z, double y) const;
+  /// The span's stretches given the ends' responses at antinode amplitude y.
+  std::vector<SubSpan> subspans(const std::vector<EndSolution>& ends, double y) const;
+  /// P_w - P_s with every stretch's amplitude `ratio` times y (unit_subspans_).
+  double net_power_in_proportion(double y) const;
 
   const Span& span_;
   const SpanTables& tables_;
@@ -88,6 +119,7 @@ class FrequencyBalance {
   std::vector<std::vector<std::optional<std::complex<double>>>> fixed_;
   std::vector<std::vector<double>> curvatures_;  ///< per end and damper: the last direct solve's messenger curvature
   std::optional<double> absorbed_per_square_;    ///< cached by absorbed_per_square()
+  std::vector<SubSpan> unit_subspans_;           ///< with it: the stretches at amplitude 1
 };
 
 }  // namespace stockbridge::span

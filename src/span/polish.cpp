@@ -44,7 +44,7 @@ int Polish::direct_solves() const {
 std::vector<Polish::Unknown> Polish::unknowns_of(const FrequencyBalance& balance) const {
   const std::vector<EndLayout>& ends = balance.layouts();
   std::vector<Unknown> unknowns;
-  const bool mirrored = ends.size() == 2 && ends[1].damper == ends[0].damper;
+  const bool mirrored = ends.size() == 2 && ends[1].mirrors(ends[0]);
   for (std::size_t e = 0; e < ends.size(); ++e) {
     for (std::size_t j = 0; j < ends[e].damper.size(); ++j) {
       if (mirrored && e == 1) {

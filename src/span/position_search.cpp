@@ -72,18 +72,27 @@ std::vector<double> usual_positions(const Span& span, double f_max, int count, d
 
 namespace {
 
+/// The dampers a search places: those at the ends (`position`), by their positions;
+/// dampers along the span stay where the span has them.
+std::vector<std::size_t> placed_dampers(const Span& span) {
+  std::vector<std::size_t> order;
+  for (std::size_t j = 0; j < span.dampers().size(); ++j) {
+    if (!span.dampers()[j].in_span()) order.push_back(j);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return span.dampers()[a].position < span.dampers()[b].position;
+  });
+  return order;
+}
+
 /// One search: the dampers' order (by their positions in the span), the balances
 /// made and the best arrangement seen.
 class PositionObjectiveRun {
  public:
   PositionObjectiveRun(const Span& span, const SpanTables& tables, const BalanceOptions& options,
                        const PositionRules& rules, const std::function<bool()>& stop)
-      : span_(span), tables_(tables), options_(options), rules_(rules), stop_(stop), order_(span.dampers().size()) {
+      : span_(span), tables_(tables), options_(options), rules_(rules), stop_(stop), order_(placed_dampers(span)) {
     options_.polish = false;
-    std::iota(order_.begin(), order_.end(), std::size_t{0});
-    std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
-      return span.dampers()[a].position < span.dampers()[b].position;
-    });
     best_.objective = std::numeric_limits<double>::infinity();
     best_.criterion = rules.objective;
   }
@@ -109,11 +118,8 @@ class PositionObjectiveRun {
 
   PositionSearch result() const {
     PositionSearch out = best_;
-    out.positions.assign(order_.size(), 0.0);
-    if (best_sorted_.empty()) {  // no arrangement converged: the span's own
-      for (std::size_t j = 0; j < order_.size(); ++j) out.positions[j] = span_.dampers()[j].position;
-      return out;
-    }
+    for (const SpanDamper& d : span_.dampers()) out.positions.push_back(d.position);
+    if (best_sorted_.empty()) return out;  // no arrangement converged: the span's own
     for (std::size_t k = 0; k < order_.size(); ++k) out.positions[order_[k]] = best_sorted_[k];
     return out;
   }
@@ -239,8 +245,9 @@ std::vector<std::vector<double>> spread_arrangements(std::size_t n, int count, c
 PositionSearch optimise_positions(const Span& span, const SpanTables& tables, const BalanceOptions& options,
                                   const PositionRules& rules, const std::function<bool()>& stop) {
   rules.validate();
-  const std::size_t n = span.dampers().size();
-  if (n == 0) throw InvalidParameter("damper", ": a position search needs at least one [[damper]]");
+  const std::vector<std::size_t> placed = placed_dampers(span);
+  const std::size_t n = placed.size();
+  if (n == 0) throw InvalidParameter("damper", ": a position search needs at least one [[damper]] at the ends (position)");
   const double room = rules.position_max - rules.position_min;
   if (static_cast<double>(n - 1) * rules.spacing_min > room) {
     throw InvalidParameter("spacing_min", fmt::format(" = {}: {} dampers at least that far apart do not fit between "
@@ -263,8 +270,7 @@ PositionSearch optimise_positions(const Span& span, const SpanTables& tables, co
   const double f_max = tables.frequencies().back();
   std::vector<std::pair<double, std::vector<double>>> starts;
   std::vector<double> own;
-  for (const SpanDamper& d : span.dampers()) own.push_back(d.position);
-  std::sort(own.begin(), own.end());
+  for (const std::size_t j : placed) own.push_back(span.dampers()[j].position);
   PositionRules fit = rules;
   for (std::size_t k = 0; k < n; ++k) {
     own[k] = std::clamp(own[k], rules.position_min + static_cast<double>(k) * rules.spacing_min,

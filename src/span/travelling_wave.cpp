@@ -2,6 +2,8 @@
 
 #include <cassert>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 namespace stockbridge::span {
 
@@ -21,6 +23,42 @@ double abs_change(std::complex<double> q, std::complex<double> dq) {
   return r > 0.0 ? (std::conj(q) * dq).real() / r : std::abs(dq);
 }
 
+/// What the chain meets next along the end.
+enum class Event { split, mass, damper };
+
+/// Walks an end's chain from its clamp: `visit(event, index, distance)` at every
+/// split, mass and damper in the order of their positions (at one position: the
+/// split first, the wave just before the loads, then the mass, then the damper),
+/// `distance` from the last event.
+template <class Visit>
+void walk_chain(const std::vector<double>& positions, const EndAttachments& attachments, Visit&& visit) {
+  std::size_t j = 0, m = 0, s = 0;
+  double x = 0.0;
+  for (;;) {
+    double next = std::numeric_limits<double>::infinity();
+    std::optional<Event> event;
+    if (s < attachments.splits.size()) next = attachments.splits[s], event = Event::split;
+    if (m < attachments.mass_positions.size() && attachments.mass_positions[m] < next) {
+      next = attachments.mass_positions[m], event = Event::mass;
+    }
+    if (j < positions.size() && positions[j] < next) next = positions[j], event = Event::damper;
+    if (!event) return;
+    const std::size_t index = *event == Event::split ? s++ : *event == Event::mass ? m++ : j++;
+    visit(*event, index, next - x);
+    x = next;
+  }
+}
+
+/// |a| + |b| of the wave (y, slope) as a e^{-jkx} + b e^{jkx}: its local antinode amplitude.
+double local_antinode(std::complex<double> y, std::complex<double> slope, std::complex<double> jk) {
+  return std::abs(0.5 * (y + slope / jk)) + std::abs(0.5 * (y - slope / jk));
+}
+
+/// A mass's Z / Z0 at the wave's frequency: j w M / Z0.
+std::complex<double> mass_ratio(const StringWave& wave, double mass) {
+  return {0.0, wave.angular_frequency * mass / wave.wave_impedance};
+}
+
 }  // namespace
 
 std::vector<double> EndResponse::damper_velocities(double angular_frequency) const {
@@ -31,20 +69,29 @@ std::vector<double> EndResponse::damper_velocities(double angular_frequency) con
 }
 
 EndResponse end_response(const StringWave& wave, const std::vector<double>& positions,
-                         const std::vector<std::complex<double>>& impedances, double antinode) {
+                         const std::vector<std::complex<double>>& impedances, double antinode,
+                         const EndAttachments& attachments) {
   assert(positions.size() == impedances.size());
   const double k = wave.wavenumber;
   const std::complex<double> jk(0.0, k);
-  // Unit slope at the fixed end: Y = sin(k x) / k up to the first damper.
+  // Unit slope at the fixed end: Y = sin(k x) / k up to the first attachment.
   std::complex<double> y = 0.0, slope = 1.0;
-  double x = 0.0;
-  std::vector<std::complex<double>> at_dampers;
-  for (std::size_t j = 0; j < positions.size(); ++j) {
-    propagate(y, slope, k, positions[j] - x);
-    x = positions[j];
-    at_dampers.push_back(y);
-    slope += jk * (impedances[j] / wave.wave_impedance) * y;
-  }
+  std::vector<std::complex<double>> at_dampers, at_masses;
+  std::vector<double> segments;
+  walk_chain(positions, attachments, [&](Event event, std::size_t i, double distance) {
+    propagate(y, slope, k, distance);
+    switch (event) {
+      case Event::split: segments.push_back(local_antinode(y, slope, jk)); break;
+      case Event::mass:
+        at_masses.push_back(y);
+        slope += jk * mass_ratio(wave, attachments.masses[i]) * y;
+        break;
+      case Event::damper:
+        at_dampers.push_back(y);
+        slope += jk * (impedances[i] / wave.wave_impedance) * y;
+        break;
+    }
+  });
   const std::complex<double> b = 0.5 * (y + slope / jk), a = 0.5 * (y - slope / jk);
   const double scale = antinode / (std::abs(a) + std::abs(b));
   EndResponse r;
@@ -57,28 +104,40 @@ EndResponse end_response(const StringWave& wave, const std::vector<double>& posi
     r.damper_displacement.push_back(scale * at_dampers[j]);
     r.damper_power += 0.5 * impedances[j].real() * w2 * std::norm(r.damper_displacement.back());
   }
+  for (const std::complex<double>& ym : at_masses) r.mass_displacement.push_back(scale * ym);
+  for (const double segment : segments) r.segment_amplitude.push_back(scale * segment);
   return r;
 }
 
 EndResponseTangent end_response_tangent(const StringWave& wave, const std::vector<double>& positions,
                                         const std::vector<std::complex<double>>& impedances,
-                                        const std::vector<std::complex<double>>& direction, double antinode) {
+                                        const std::vector<std::complex<double>>& direction, double antinode,
+                                        const EndAttachments& attachments) {
   assert(positions.size() == impedances.size() && positions.size() == direction.size());
   const double k = wave.wavenumber;
   const std::complex<double> jk(0.0, k);
   // The recursion of end_response (unit slope at the fixed end) and its derivative.
   std::complex<double> y = 0.0, slope = 1.0, dy = 0.0, dslope = 0.0;
-  double x = 0.0;
   std::vector<std::complex<double>> at_dampers, d_at_dampers;
-  for (std::size_t j = 0; j < positions.size(); ++j) {
-    propagate(y, slope, k, positions[j] - x);
-    propagate(dy, dslope, k, positions[j] - x);  // linear: the same transfer
-    x = positions[j];
-    at_dampers.push_back(y);
-    d_at_dampers.push_back(dy);
-    slope += jk * (impedances[j] / wave.wave_impedance) * y;
-    dslope += jk * ((direction[j] * y + impedances[j] * dy) / wave.wave_impedance);
-  }
+  walk_chain(positions, attachments, [&](Event event, std::size_t j, double distance) {
+    propagate(y, slope, k, distance);
+    propagate(dy, dslope, k, distance);  // linear: the same transfer
+    switch (event) {
+      case Event::split: break;
+      case Event::mass: {
+        const std::complex<double> zeta = mass_ratio(wave, attachments.masses[j]);
+        slope += jk * zeta * y;
+        dslope += jk * zeta * dy;
+        break;
+      }
+      case Event::damper:
+        at_dampers.push_back(y);
+        d_at_dampers.push_back(dy);
+        slope += jk * (impedances[j] / wave.wave_impedance) * y;
+        dslope += jk * ((direction[j] * y + impedances[j] * dy) / wave.wave_impedance);
+        break;
+    }
+  });
   const std::complex<double> b = 0.5 * (y + slope / jk), a = 0.5 * (y - slope / jk);
   const std::complex<double> db = 0.5 * (dy + dslope / jk), da = 0.5 * (dy - dslope / jk);
   const double sum = std::abs(a) + std::abs(b);

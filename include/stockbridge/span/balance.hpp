@@ -99,7 +99,8 @@ class SpanTables {
 /// One damper at one frequency's balance.
 struct DamperAtBalance {
   std::size_t damper = 0;               ///< its index in Span::dampers()
-  int end = 1;                          ///< 1 or 2
+  int end = 1;                          ///< 1 or 2: the end whose chain it is on (the nearer, for one along the span)
+  double position = 0.0;                ///< m from end 1
   double clamp_velocity = 0.0;          ///< v_j, m/s
   std::complex<double> impedance;       ///< Z_j(f, v_j), N s/m
   double power = 0.0;                   ///< Re Z_j w^2 |Y_j|^2 / 2, W
@@ -107,6 +108,16 @@ struct DamperAtBalance {
   /// The largest clamp-section curvature amplitude of the damper's arms (its own
   /// cable's fatigue load, 1/m) from the polish's direct solve at v_j; NaN without the polish.
   double messenger_curvature_max = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// A mass (a warning sphere, a marker) at one of its positions at one frequency's balance.
+struct MassAtBalance {
+  std::size_t mass = 0;        ///< its index in Span::masses()
+  double position = 0.0;       ///< m from end 1
+  double displacement = 0.0;   ///< |Y| there, m
+  /// The conductor's stress at its clamp, Pa: the point force F = w^2 M |Y| on the
+  /// tensioned beam (MODEL.md section 9), times the mass's stress_factor.
+  double clamp_stress = 0.0;
 };
 
 /// The balance at one frequency; numbers NaN unless converged.
@@ -130,6 +141,18 @@ struct BalancePoint {
   /// (FatigueSpec::yb_distance): what a vibration recorder measures, m
   double bending_amplitude = 0.0;
   double damper_clamp_stress = 0.0;     ///< largest over the dampers, Pa
+  /// The other span clamp's (end 2) loop, stresses and Yb, as end 1's above.
+  double clamp_loop_amplitude_end2 = 0.0;
+  double stress_fymax_end2 = 0.0;
+  double stress_poffenberger_swart_end2 = 0.0;
+  double bending_amplitude_end2 = 0.0;
+  /// The largest antinode amplitude of the stretches between the span's attachments
+  /// (Y itself without masses or dampers along the span), m, and where that stretch
+  /// lies, m from end 1.
+  double max_subspan_amplitude = 0.0;
+  double max_subspan_from = 0.0;
+  double max_subspan_to = 0.0;
+  std::vector<MassAtBalance> masses;    ///< every mass at every position, by position from end 1
   /// |P_d - sum Re Z w^2 |Y_j|^2 / 2| relative to the power the incoming waves bring
   /// to the ends, sum Z0 w^2 |B|^2 / 2 (the scale of P_d's round-off: P_d is the
   /// difference of the incoming and outgoing waves' powers)
@@ -139,6 +162,11 @@ struct BalancePoint {
   double undamped_stress_fymax = 0.0;   ///< Pa
   double undamped_stress_poffenberger_swart = 0.0;  ///< Pa
   double undamped_bending_amplitude = 0.0;  ///< Yb without dampers, m
+  /// Without dampers (the masses kept): the largest stress the criterion judges over
+  /// the span's clamps and the masses' clamps, and the largest stress of the life
+  /// (Poffenberger-Swart at the span clamps, the point force's at a mass), Pa.
+  double undamped_judged_stress = 0.0;
+  double undamped_life_stress = 0.0;
   /// How the balance ended: converged; no_root (the wind's power exceeds the
   /// dissipation up to the amplitude limit: no stable balance); inner_failure (a
   /// damper's impedance not known or not solved: `where`); max_iterations or
@@ -169,9 +197,21 @@ enum class Verdict {
 };
 std::string_view verdict_name(Verdict verdict);
 
-/// The stress the span's criterion judges at a converged point, Pa; and the top of
-/// its measured sheets' band (the same, times stress_fymax_high / stress_fymax;
-/// NaN without a band).
+/// Where a point's judged stress is largest, and that stress (Pa): a span clamp
+/// ("span clamp 1", "span clamp 2": the criterion's stress there) or a mass's clamp
+/// ("sphere at 150 m": the point-force stress). Span clamp 1 where they tie.
+struct GoverningPlace {
+  double stress = 0.0;
+  std::string place;
+};
+GoverningPlace governing_place(const Span& span, const BalancePoint& point);
+/// The stress the lives count at a point, Pa: the largest of the Poffenberger-Swart
+/// stresses at the span clamps (the S-N curves are stated for it) and the masses' clamp stresses.
+double life_stress(const BalancePoint& point);
+
+/// The stress the span's criterion judges at a converged point, at its governing
+/// place, Pa; and the top of its measured sheets' band (the same, times
+/// stress_fymax_high / stress_fymax; NaN without a band).
 double judged_stress(const Span& span, const BalancePoint& point);
 double judged_stress_high(const Span& span, const BalancePoint& point);
 
@@ -193,6 +233,8 @@ struct BalanceSummary {
   double max_judged_stress = 0.0;
   double max_judged_stress_frequency_hz = 0.0;
   double max_judged_stress_high = std::numeric_limits<double>::quiet_NaN();
+  /// Where that largest judged stress is (governing_place: "span clamp 1", a mass's clamp).
+  std::string max_judged_stress_place;
   Verdict verdict = Verdict::unknown;
   int undamped_points = 0;               ///< with an undamped balance (the rest: none up to 10 D)
   double undamped_max_stress_fymax = 0.0;

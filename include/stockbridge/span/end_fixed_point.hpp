@@ -50,9 +50,10 @@ struct EndSolution {
 };
 
 /// The end's dampers at `positions` (m from the end, ascending) at antinode amplitude
-/// `antinode` (m). `start`: velocities to start from (empty: those of the undamped
-/// string, w Y |sin(k a_j)|).
+/// `antinode` (m), with the end's masses in the chain (`attachments`). `start`:
+/// velocities to start from (empty: those of the undamped string, w Y |sin(k a_j)|).
 EndSolution solve_end(const StringWave& wave, const std::vector<double>& positions, const ClampImpedance& impedance,
-                      double antinode, const FixedPointOptions& options, std::vector<double> start = {});
+                      double antinode, const FixedPointOptions& options, std::vector<double> start = {},
+                      const EndAttachments& attachments = {});
 
 }  // namespace stockbridge::span

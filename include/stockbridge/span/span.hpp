@@ -45,12 +45,12 @@ struct SpanDamper {
   std::optional<damper::Damper> damper;  ///< the model (none: the sheet)
   double position = 0.0;
   bool both_ends = true;
-  /// Positions measured from end 1 (a span file's `positions = [..]`); empty: at
-  /// `position` from the clamp of one or both ends.
-  std::vector<double> along;
   std::string name;  ///< how tables and messages call it ("damper 1" or the file's stem)
   std::shared_ptr<const ImpedanceSheet> sheet;  ///< the measured sheet, where there is no model
   std::optional<SheetFit> fit;  ///< the model is fitted to a measured sheet (fit_from)
+  /// Positions measured from end 1 (a span file's `positions = [..]`); empty: at
+  /// `position` from the clamp of one or both ends.
+  std::vector<double> along;
 
   bool measured() const { return sheet != nullptr; }
   /// Placed along the span (`along`), not at `position` from the ends.

@@ -21,6 +21,18 @@ struct StringWave {
   double wave_impedance = 0.0;     ///< Z0 = sqrt(T m), N s/m
 };
 
+/// What an end's chain carries besides its dampers (MODEL.md section 15): rigid
+/// masses, each a point load of impedance Z = j w M, and the places where the wind's
+/// sub-spans part (the masses and the dampers placed along the span).
+struct EndAttachments {
+  std::vector<double> mass_positions;  ///< m from the end, ascending
+  std::vector<double> masses;          ///< kg, one per position
+  std::vector<double> splits;          ///< m from the end, ascending: each sub-span's bound toward the middle
+
+  bool empty() const { return mass_positions.empty() && splits.empty(); }
+  bool operator==(const EndAttachments&) const = default;
+};
+
 /// One span end at antinode amplitude Y, its dampers at `positions` (m from the end, ascending).
 struct EndResponse {
   double loop_amplitude = 0.0;  ///< S: the loop between the end's clamp and its first damper, m
@@ -29,15 +41,21 @@ struct EndResponse {
   double incoming = 0.0;        ///< |B|, m
   double absorbed_power = 0.0;  ///< P_d = Z0 w^2 (|B|^2 - |A|^2) / 2, W
   double damper_power = 0.0;    ///< sum Re Z_j w^2 |Y_j|^2 / 2, W (the same, an identity)
+  std::vector<std::complex<double>> mass_displacement;  ///< complex amplitude at each mass, m
+  /// Per split: the antinode amplitude |A| + |B| of the wave just before it (the
+  /// sub-span from the split before it, or the clamp, up to it), m.
+  std::vector<double> segment_amplitude;
 
   /// The clamp velocity amplitude w |Y_j| of each damper, m/s.
   std::vector<double> damper_velocities(double angular_frequency) const;
 };
 
-/// The end's standing wave scaled to antinode amplitude `antinode`, with the dampers'
-/// impedances `impedances` (N s/m, one per position). Without dampers S = Y.
+/// The end's standing wave scaled to antinode amplitude `antinode` past its last
+/// attachment, with the dampers' impedances `impedances` (N s/m, one per position)
+/// and the end's masses. Without attachments S = Y.
 EndResponse end_response(const StringWave& wave, const std::vector<double>& positions,
-                         const std::vector<std::complex<double>>& impedances, double antinode);
+                         const std::vector<std::complex<double>>& impedances, double antinode,
+                         const EndAttachments& attachments = {});
 
 /// The first-order change of end_response(wave, positions, impedances, antinode)
 /// when the impedances move by dZ_j = `direction`[j] (N s/m): the response's
@@ -46,8 +64,10 @@ struct EndResponseTangent {
   std::vector<double> log_displacement;  ///< d log|Y_j| per damper (0 for a damper at a node, Y_j = 0)
   double absorbed_power = 0.0;           ///< d P_d, W
 };
+/// The masses' impedances are fixed (no direction); the sub-spans' amplitudes have no tangent here.
 EndResponseTangent end_response_tangent(const StringWave& wave, const std::vector<double>& positions,
                                         const std::vector<std::complex<double>>& impedances,
-                                        const std::vector<std::complex<double>>& direction, double antinode);
+                                        const std::vector<std::complex<double>>& direction, double antinode,
+                                        const EndAttachments& attachments = {});
 
 }  // namespace stockbridge::span
