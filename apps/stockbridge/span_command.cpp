@@ -35,6 +35,7 @@ struct SpanOptions {
   std::optional<std::string> frequencies;
   int points = requests::SpanRequest{}.points;
   bool no_dampers = false;
+  bool no_attachments = false;
   std::optional<std::string> damper_model;
   std::optional<std::string> optimize_position;
   double spacing_min = requests::SpanRequest{}.spacing_min;
@@ -45,6 +46,7 @@ struct SpanOptions {
   bool allow_unusual = false;
   std::string output;
   std::optional<std::string> report;
+  std::optional<std::string> profile;
 };
 
 requests::SpanRequest span_request_of(const SpanOptions& options) {
@@ -52,6 +54,7 @@ requests::SpanRequest span_request_of(const SpanOptions& options) {
   if (options.frequencies) request.frequencies = parse_number_list(*options.frequencies, "--frequencies");
   request.points = options.points;
   request.no_dampers = options.no_dampers;
+  request.no_attachments = options.no_attachments;
   request.damper_model = options.damper_model;
   if (options.optimize_position) {
     const std::string& text = *options.optimize_position;
@@ -86,6 +89,18 @@ std::string span_life(const std::optional<span::LifeEstimate>& life, int missing
   return life ? span_years(*life) : fmt::format("unknown ({} points missing)", missing);
 }
 
+/// "118, 122" (m).
+std::string span_places(const std::vector<double>& x) {
+  std::string out;
+  for (const double p : x) out += fmt::format("{}{:.4g}", out.empty() ? "" : ", ", p);
+  return out;
+}
+
+std::string span_damper_place(const span::SpanDamper& d) {
+  if (d.in_span()) return fmt::format("at {} m from end 1", span_places(d.along));
+  return fmt::format("{:.4g} m from the clamp, {}", d.position, d.both_ends ? "both ends" : "one end");
+}
+
 void print_span_report(const requests::SpanResult& result) {
   const span::SpanAnalysis& a = result.analysis;
   const span::Span& s = a.span;
@@ -112,10 +127,12 @@ void print_span_report(const requests::SpanResult& result) {
     fmt::print("dampers: none\n");
   } else {
     for (const span::SpanDamper& d : s.dampers()) {
-      fmt::print("damper {}: {:.4g} m from the clamp, {} ({} model{}{})\n", d.name, d.position,
-                 d.both_ends ? "both ends" : "one end", span::damper_model_name(result.damper_model),
+      fmt::print("damper {}: {} ({} model{}{})\n", d.name, span_damper_place(d), span::damper_model_name(result.damper_model),
                  d.measured() ? ", Z from its measured sheet" : "", d.fit ? "; " + d.fit->summary() : std::string());
     }
+  }
+  for (const span::SpanMass& m : s.masses()) {
+    fmt::print("mass {}: {:.4g} kg at {} m from end 1\n", m.name, m.mass, span_places(m.positions));
   }
   if (a.position) {
     std::string positions;
@@ -129,6 +146,10 @@ void print_span_report(const requests::SpanResult& result) {
                span_megapascal(summary.undamped_max_stress_fymax), summary.undamped_max_stress_frequency_hz);
     if (!s.dampers().empty()) {
       fmt::print("largest stress at a damper clamp: {}\n", span_megapascal(summary.max_damper_clamp_stress));
+    }
+    if (s.has_attachments() || summary.max_judged_stress_place != "span clamp 1") {
+      fmt::print("governing place: {}, {} at {:.4g} Hz\n", summary.max_judged_stress_place,
+                 span_megapascal(summary.max_judged_stress), summary.max_judged_stress_frequency_hz);
     }
     fmt::print("largest Yb ({:.3g} mm from the clamp): {:.3g} mm peak-to-peak, {:.4g} microstrain (undamped {:.3g} "
                "mm, {:.4g} microstrain)\n",
@@ -168,8 +189,10 @@ void print_span_report(const requests::SpanResult& result) {
 int run_span_command(const SpanOptions& options) {
   const requests::SpanRequest request = span_request_of(options);
   check_report_path(options.report);
-  const io::SpanFile file = read_span_input(options.span_file, {{"-o", options.output}, {"--report", options.report.value_or("")}},
-                                             slip_policy(options.allow_unusual));
+  const io::SpanFile file = read_span_input(
+      options.span_file,
+      {{"-o", options.output}, {"--report", options.report.value_or("")}, {"--profile", options.profile.value_or("")}},
+      slip_policy(options.allow_unusual));
   requests::validate(request, file.span);  // a refusal prints its one line alone, before the file's warnings
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress("span: impedance tables", options.quiet);
@@ -178,8 +201,12 @@ int run_span_command(const SpanOptions& options) {
   const span::SpanAnalysis& a = result.analysis;
   print_warnings(a.warnings);
   const std::string report = options.report ? report::span_report(result, report_context()) : std::string();
+  const std::string profile =
+      options.profile ? requests::span_profile_table().values(requests::span_profile_rows(requests::governing_profile(result))).csv()
+                      : std::string();
   io::write_file_atomically(options.output, span_csv(a));
   if (options.report) io::write_file_atomically(*options.report, report);
+  if (options.profile) io::write_file_atomically(*options.profile, profile);
 
   const span::BalanceSummary& summary = a.balance.summary;
   if (options.json) {
@@ -220,6 +247,9 @@ void add_span_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()
       ->excludes(frequencies);
   sub->add_flag("--no-dampers", options->no_dampers, "Balance the span without its dampers");
+  sub->add_flag("--no-attachments", options->no_attachments,
+                "Balance the span without its masses ([[mass]]) and the dampers along it (positions = [..]); the "
+                "dampers at its ends kept");
   sub->add_option("--damper-model", options->damper_model,
                   "travelling (the dampers' standing wave, MODEL.md 9) or weak (|Z| << Z0); default: the span "
                   "file's [balance] damper_model, travelling");
@@ -239,6 +269,9 @@ void add_span_command(CLI::App& app, int& exit_code) {
   add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   add_report_option(*sub, options->report, "the inputs, the verdict, the stress, amplitude and power curves, the life");
+  sub->add_option("--profile", options->profile,
+                  "Also write the standing wave along the span at the governing frequency (CSV: x_m, displacement_m, "
+                  "envelope_m, attachment)");
   sub->callback([options, &exit_code] { exit_code = run_span_command(*options); });
 }
 

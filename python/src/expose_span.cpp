@@ -57,6 +57,7 @@ py::dict recorder_counts(const std::string& span_path, const std::string& counts
 py::dict span_balance(const std::optional<std::string>& path, const std::optional<std::string>& text,
                       const std::optional<std::string>& base,
                       const std::optional<std::vector<double>>& frequencies, int points, bool no_dampers,
+                      bool no_attachments,
                       const std::optional<std::string>& damper_model,
                       const std::optional<std::pair<double, double>>& optimize_position, double spacing_min,
                       const std::string& objective, int threads, bool report, bool allow_unusual) {
@@ -70,6 +71,7 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   }
   request.points = points;
   request.no_dampers = no_dampers;
+  request.no_attachments = no_attachments;
   request.damper_model = damper_model;
   if (optimize_position) {
     request.position_min = optimize_position->first;
@@ -92,12 +94,20 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   const std::vector<std::size_t> shape{a.balance.points.size()};
   const requests::TableValues columns = requests::span_table(a.span).values(a.balance.points);
   py::dict out = table_arrays(columns, shape);
-  for (const auto& [name, values] : table_arrays(requests::span_point_notes_table().values(a.balance.points), shape)) {
+  for (const auto& [name, values] : table_arrays(requests::span_point_notes_table(a.span).values(a.balance.points), shape)) {
     out[name] = values;
   }
   out["dampers"] = requests::span_damper_prefixes(a.span);  // the <damper> of the per-damper columns
   out["columns"] = columns.names();
   out["summary_json"] = requests::span_summary(*result).str();
+  out["profile"] = py::none();
+  if (a.balance.summary.converged > 0) {
+    const span::SpanProfile profile = requests::governing_profile(*result);
+    const std::vector<requests::SpanProfileRow> rows = requests::span_profile_rows(profile);
+    py::dict arrays = table_arrays(requests::span_profile_table().values(rows), {rows.size()});
+    arrays["frequency_hz"] = profile.frequency_hz;
+    out["profile"] = arrays;
+  }
   if (report) {
     std::vector<std::string> warnings = file.warnings;
     for (const std::string& w : a.warnings) warnings.push_back(w);
@@ -139,7 +149,7 @@ void expose_span(py::module_& m) {
   m.def("_span", &span_balance, py::arg("file") = py::none(), py::arg("text") = py::none(),
         py::arg("base") = py::none(),
         py::arg("frequencies") = py::none(), py::arg("points") = requests::SpanRequest{}.points,
-        py::arg("no_dampers") = false, py::arg("damper_model") = py::none(),
+        py::arg("no_dampers") = false, py::arg("no_attachments") = false, py::arg("damper_model") = py::none(),
         py::arg("optimize_position") = py::none(), py::arg("spacing_min") = requests::SpanRequest{}.spacing_min,
         py::arg("objective") = requests::SpanRequest{}.objective, py::arg("threads") = requests::SpanRequest{}.threads,
         py::arg("report") = false, py::arg("allow_unusual") = false,

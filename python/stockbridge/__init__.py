@@ -129,7 +129,26 @@ def _span_spec(file, text, spec, base):
     return copy.deepcopy(dict(spec)), base
 
 
-def _override(spec, damper, positions, ends, tension, tension_fraction, catenary_parameter, length, conductor_type):
+def _mass_entries(masses):
+    """[[mass]] tables of `masses`: dicts as a span file's (name, mass, positions,
+    stress_factor), or (mass, positions) and (mass, positions, name) tuples."""
+    entries = []
+    for k, m in enumerate(masses):
+        if isinstance(m, dict):
+            entries.append(dict(m))
+            continue
+        if not isinstance(m, (tuple, list)) or len(m) not in (2, 3):
+            raise InvalidParameter(f"masses[{k}] = {m!r}: expected a dict (name, mass, positions, stress_factor) or "
+                                   "(mass kg, [positions m from end 1]) with an optional name third")
+        entry = {"mass": float(m[0]), "positions": [float(x) for x in m[1]]}
+        if len(m) == 3:
+            entry["name"] = str(m[2])
+        entries.append(entry)
+    return entries
+
+
+def _override(spec, damper, positions, ends, tension, tension_fraction, catenary_parameter, length, conductor_type,
+              masses=None):
     """The span description with the overrides applied, each as the span file would say it."""
     forms = {name: v for name, v in zip(_TENSION_FORMS, (tension, tension_fraction, catenary_parameter)) if v is not None}
     if len(forms) > 1:
@@ -156,12 +175,16 @@ def _override(spec, damper, positions, ends, tension, tension_fraction, catenary
     if positions is not None:
         if not dampers:
             raise InvalidParameter("positions: the span has no [[damper]] to place: give damper too")
-        model = {k: v for k, v in dampers[0].items() if k != "position"}
+        model = {k: v for k, v in dampers[0].items() if k not in ("position", "positions")}
         dampers = [dict(model, position=float(a)) for a in positions]
     if ends is not None:
         dampers = [dict(d, ends=ends) for d in dampers]
     if dampers:
         spec["damper"] = dampers
+    if masses is not None:
+        spec.pop("mass", None)
+        if masses:
+            spec["mass"] = _mass_entries(masses)
     return spec
 
 
@@ -169,7 +192,8 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
          optimize_position=None, threads=_defaults.get("span_threads"), text=None, spec=None, base=None,
          damper=None, positions=None, ends=None, tension=None, tension_fraction=None, catenary_parameter=None,
          length=None, conductor_type=None, spacing_min=_defaults.get("span_spacing_min"),
-         objective=_defaults.get("span_objective"), report=None, allow_unusual=False):
+         objective=_defaults.get("span_objective"), report=None, allow_unusual=False, masses=None,
+         no_attachments=False):
     """The energy balance of a span over the wind band, as ``stockbridge span``.
 
     The span: a span file's path (`file`; its relative paths start at its folder), its
@@ -180,9 +204,13 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
     measured sheet's CSV, for every [[damper]]), `positions` (m from the clamp: one
     damper per position, the first [[damper]]'s kind), `ends` ("both" or "one"),
     one of `tension` (N), `tension_fraction` and `catenary_parameter` (H/w, m),
-    `length` (m), `conductor_type` (the catalogue's, replacing [conductor]).
+    `length` (m), `conductor_type` (the catalogue's, replacing [conductor]),
+    `masses` (replacing the file's [[mass]] entries: dicts as a span file's, or
+    (mass kg, [positions m from end 1]) tuples; [] for the span without them: "with
+    and without warning spheres").
     `frequencies` (Hz, increasing) or `points` log-spaced over the band;
-    `no_dampers`; `damper_model` "travelling" or "weak" (None: the span file's
+    `no_dampers`; `no_attachments` (without the masses and the dampers along the
+    span, as --no-attachments); `damper_model` "travelling" or "weak" (None: the span file's
     [balance] damper_model, travelling by default); `optimize_position` = (amin,
     amax) in m to search every damper's position first (each its own, at least
     `spacing_min` m apart, minimising `objective`: "max_stress" or "life"; the
@@ -195,13 +223,17 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
     Returns a dict: one array per column of the span CSV, by the CSV's names (stresses
     in MPa; NaN where a point did not converge), 'converged' and 'several_states'
     (bool arrays), 'termination', 'messages' and 'notes' (per point), 'dampers' (the
-    <name> of the per-damper columns), 'columns' (the CSV's order) and 'summary': the
-    --json summary's keys (None where the JSON has null; a life is None where a point
-    is missing, life_missing_points says how many)."""
-    overrides = (damper, positions, ends, tension, tension_fraction, catenary_parameter, length, conductor_type)
+    <name> of the per-damper columns), 'columns' (the CSV's order), 'profile' (the
+    standing wave along the span at the governing frequency, as ``span --profile``
+    writes it: arrays x_m, displacement_m, envelope_m, attachment, and frequency_hz;
+    None where no point converged) and 'summary': the --json summary's keys (None
+    where the JSON has null; a life is None where a point is missing,
+    life_missing_points says how many)."""
+    overrides = (damper, positions, ends, tension, tension_fraction, catenary_parameter, length, conductor_type, masses)
     if spec is None and all(v is None for v in overrides):
         out = _span(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
-                    frequencies=frequencies, points=points, no_dampers=no_dampers, damper_model=damper_model,
+                    frequencies=frequencies, points=points, no_dampers=no_dampers, no_attachments=no_attachments,
+                    damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
                     spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None,
                     allow_unusual=allow_unusual)
@@ -209,7 +241,7 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
         described, folder = _span_spec(file, text, spec, None if base is None else str(base))
         described = _override(described, *overrides)
         out = _span(text=_toml.document(described), base=folder, frequencies=frequencies, points=points,
-                    no_dampers=no_dampers, damper_model=damper_model,
+                    no_dampers=no_dampers, no_attachments=no_attachments, damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
                     spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None,
                     allow_unusual=allow_unusual)

@@ -1479,6 +1479,59 @@ def line(result, output=None, *, label=None):
     return finish(schedule_figure(Schedule(table)), output)
 
 
+# ---------------------------------------------------------------- span profile
+
+def profile_figure(table, name="span", frequency=None):
+    """The standing wave along the span (|Y(x)| and each stretch's antinode
+    amplitude), the masses and dampers marked where they hang."""
+    x = table.required("x_m")
+    y = [1e3 * v for v in table.required("displacement_m")]
+    envelope = [1e3 * v for v in table.required("envelope_m")]
+    places = table.text("attachment")
+    figure, axis = plt.subplots(1, 1, figsize=FIGURE_SIZE, layout="constrained")
+    axis.plot(x, y, color="C0", linewidth=0.6, label="|Y(x)|")
+    axis.plot(x, envelope, color="C1", linestyle="--", label="stretch's antinode |A| + |B|")
+    top = 1.08 * max(envelope)
+    marked = set()
+    for i, place in enumerate(places):
+        if not place:
+            continue
+        for item in place.split("; "):
+            mass = item.endswith("(mass)")
+            kind = "masses" if mass else "dampers"
+            axis.axvline(x[i], color="C3" if mass else "C2", linewidth=0.8, alpha=0.6,
+                         label=None if kind in marked else kind)
+            axis.plot([x[i]], [top], marker="s" if mass else "o", color="C3" if mass else "C2", markersize=7)
+            marked.add(kind)
+    axis.set_xlabel("distance from end 1 (m)")
+    axis.set_ylabel("amplitude, single peak (mm)")
+    axis.set_xlim(min(x), max(x))
+    axis.set_ylim(0.0, 1.12 * max(envelope))
+    title = f"{name}: along the span"
+    if frequency is not None:
+        title += f" at {frequency:.3g} Hz"
+    axis.set_title(title)
+    axis.legend(loc="lower right")
+    axis.grid(True, alpha=0.3)
+    return figure
+
+
+def plot_span_profile(path, output, label=None):
+    table = Table(path)
+    save(profile_figure(table, label or os.path.splitext(os.path.basename(path))[0]), output)
+
+
+def span_profile(result, output=None, *, label=None):
+    """plot span-profile's figure of what stockbridge.span() returns (its 'profile'):
+    the standing wave along the span at the governing frequency, attachments marked.
+    Returns the matplotlib Figure; with `output` also saves it there."""
+    profile = result.get("profile") if isinstance(result, dict) and "profile" in result else result
+    if profile is None:
+        raise PlotError("span-profile: no point of the span converged: no profile to draw")
+    table = result_table(profile, "span-profile", "x_m", label or "span")
+    return finish(profile_figure(table, label or "span", profile.get("frequency_hz")), output)
+
+
 # ---------------------------------------------------------------- recorder
 
 def recorder_years(value):
@@ -1673,6 +1726,11 @@ def parser():
     span.add_argument("--summary", action="append", metavar="FILE.json",
                       help="the JSON summary stockbridge span --json printed for a file (once per file, in order): "
                       "the dampers' positions and the life in the title")
+    profile = commands.add_parser("span-profile", help="the standing wave along a span at its governing frequency, "
+                                  "masses and dampers marked (stockbridge span --profile)")
+    profile.add_argument("csv", help="the profile CSV (stockbridge span --profile)")
+    profile.add_argument("-o", "--output", required=True)
+    profile.add_argument("--label", help="the span's name in the title (default: the file's name without .csv)")
     rec = commands.add_parser("recorder", help="a recorder's matrix (Yb against frequency, cycles as colour) from "
                               "the bins CSV of stockbridge recorder, with the predicted Yb(f)")
     rec.add_argument("csv", help="the bins CSV (stockbridge recorder -o)")
@@ -1713,6 +1771,8 @@ def run(args):
         plot_span(args.csv, args.output, args.label, args.summary)
     elif args.command == "recorder":
         plot_recorder(args.csv, args.output, args.summary)
+    elif args.command == "span-profile":
+        plot_span_profile(args.csv, args.output, args.label)
     elif args.command == "design":
         plot_design(args.csv, args.output)
     elif args.command == "line":

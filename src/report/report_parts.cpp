@@ -7,6 +7,7 @@
 
 #include "stockbridge/numerics/solver_summary.hpp"
 #include "stockbridge/span/fatigue.hpp"
+#include "stockbridge/span/profile.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 
 namespace stockbridge::report::parts {
@@ -259,6 +260,32 @@ void span_figures(HtmlPage& page, const span::SpanAnalysis& a, std::string_view 
   if (!a.span.dampers().empty()) power.series.push_back({"dampers", f, column(v, "damper_power_w"), LineStyle::solid, 0});
   power.top = SecondaryAxis{"wind speed (m/s)", wind_scale};
   page.figure(svg(power), "The powers at the balance: what the wind brings in equals what the conductor and the dampers dissipate.");
+  if (a.span.has_attachments() && m.converged > 0) span_profile_figure(page, a, name);
+}
+
+void span_profile_figure(HtmlPage& page, const span::SpanAnalysis& a, std::string_view name) {
+  const span::SpanProfile profile = span::span_profile(a.span, span::governing_point(a.span, a.balance));
+  Chart chart(fmt::format("{}: along the span at {} Hz", name, number(profile.frequency_hz, 3)),
+              Axis("distance from end 1 (m)"), Axis("amplitude, single peak (mm)"));
+  std::vector<double> y, envelope;
+  for (const double d : profile.displacement) y.push_back(1e3 * d);
+  for (const double e : profile.envelope) envelope.push_back(1e3 * e);
+  chart.series.push_back({"|Y(x)|", profile.x, y, LineStyle::solid, 0});
+  chart.series.push_back({"stretch's antinode |A| + |B|", profile.x, envelope, LineStyle::dashed, 1});
+  Series masses{"masses", {}, {}, LineStyle::square, 3}, dampers{"dampers", {}, {}, LineStyle::ring, 2};
+  const double top = envelope.empty() ? 0.0 : *std::max_element(envelope.begin(), envelope.end());
+  for (const span::ProfileAttachment& at : profile.attachments) {
+    Series& s = at.mass ? masses : dampers;
+    s.x.push_back(at.position);
+    s.y.push_back(1.05 * top);
+  }
+  if (!masses.x.empty()) chart.series.push_back(std::move(masses));
+  if (!dampers.x.empty()) chart.series.push_back(std::move(dampers));
+  page.figure(svg(chart),
+              fmt::format("The standing wave along the span at the governing frequency ({} Hz, where the largest judged "
+                          "stress is: {}): the displacement amplitude and, dashed, the antinode amplitude of each stretch "
+                          "between attachments; the marks above show where the masses and dampers hang.",
+                          number(profile.frequency_hz, 3), a.balance.summary.max_judged_stress_place));
 }
 
 std::vector<std::string> span_caveats(bool life) {

@@ -36,6 +36,9 @@ std::string span_verdict_reason(const span::SpanAnalysis& analysis);
 
 /// The span's figures (stress with microstrain, amplitude, powers), `name` in the titles.
 void span_figures(HtmlPage& page, const span::SpanAnalysis& analysis, std::string_view name);
+/// The standing wave along the span at the governing frequency, the attachments marked
+/// (a span with masses or dampers along it).
+void span_profile_figure(HtmlPage& page, const span::SpanAnalysis& analysis, std::string_view name);
 
 /// The stress chart alone (the data sheet's per-span figure).
 Chart span_stress_chart(const span::SpanAnalysis& analysis, std::string_view title);

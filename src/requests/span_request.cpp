@@ -134,11 +134,26 @@ span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const S
   return options;
 }
 
+namespace {
+
+/// The span file's span without what the request leaves out.
+span::Span span_as_asked(const span::Span& file_span, const SpanRequest& request) {
+  span::Span span = request.no_dampers ? file_span.without_dampers() : file_span;
+  if (!request.no_attachments) return span;
+  std::vector<span::SpanDamper> at_ends;
+  for (const span::SpanDamper& d : span.dampers()) {
+    if (!d.in_span()) at_ends.push_back(d);
+  }
+  return span.with_dampers(std::move(at_ends)).with_masses({});
+}
+
+}  // namespace
+
 SpanResult run_span(const span::Span& file_span, const span::BalanceOptions& file, const SpanRequest& request,
                     const damper::SweepProgress& progress) {
   validate(request, file_span);
   const span::AnalysisOptions options = analysis_options(file, request);
-  const span::Span span = request.no_dampers ? file_span.without_dampers() : file_span;
+  const span::Span span = span_as_asked(file_span, request);
   std::vector<double> frequencies =
       request.frequencies.empty() ? span::band_frequencies(span, request.points) : request.frequencies;
   return SpanResult{span::analyse_span(span, std::move(frequencies), options, progress), options.balance.damper_model};
@@ -340,11 +355,6 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
                   [mpa, span_copy = std::make_shared<span::Span>(span)](const P& p) {
                     return mpa(span::governing_place(*span_copy, p).stress);
                   }),
-      {"governing_place", "", "where it is: span clamp 1 or 2, or a mass's clamp (empty where not converged)",
-       ColumnKind::label, {},
-       [span_copy = std::make_shared<span::Span>(span)](const P& p, std::size_t) {
-         return p.converged() ? span::governing_place(*span_copy, p).place : std::string();
-       }},
       span_per_mass("<mass>_amplitude_m", "m", "per mass and position: the conductor's amplitude |Y| there", c,
                     [](const span::MassAtBalance& m) { return m.displacement; }),
       span_per_mass("<mass>_clamp_stress_mpa", "MPa",
@@ -363,9 +373,14 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
   return Table<span::BalancePoint>(std::move(q), {{"<damper>_end<k>", members}, {"<mass>", mass_members}});
 }
 
-Table<span::BalancePoint> span_point_notes_table() {
+Table<span::BalancePoint> span_point_notes_table(const span::Span& span) {
   using P = span::BalancePoint;
   return Table<span::BalancePoint>({
+      {"governing_place", "", "where the judged stress is largest: span clamp 1 or 2, or a mass's clamp (empty where not converged)",
+       ColumnKind::label, {},
+       [span_copy = std::make_shared<span::Span>(span)](const P& p, std::size_t) {
+         return p.converged() ? span::governing_place(*span_copy, p).place : std::string();
+       }},
       {"termination", "", "how the point's balance ended (converged, or why not)", ColumnKind::label, {},
        [](const P& p, std::size_t) { return std::string(termination_name(p.summary.termination)); }},
       {"messages", "", "why a point did not converge (empty where it did)", ColumnKind::label, {},
@@ -373,6 +388,44 @@ Table<span::BalancePoint> span_point_notes_table() {
       {"notes", "", "what the point's balance noted (a fold passed, a damper solved cold)", ColumnKind::label, {},
        [](const P& p, std::size_t) { return p.note; }},
   });
+}
+
+std::vector<SpanProfileRow> span_profile_rows(const span::SpanProfile& profile) {
+  std::vector<SpanProfileRow> rows;
+  for (std::size_t i = 0; i < profile.x.size(); ++i) {
+    rows.push_back({profile.x[i], profile.displacement[i], profile.envelope[i], {}});
+    for (const span::ProfileAttachment& a : profile.attachments) {
+      if (a.position != profile.x[i]) continue;
+      std::string& label = rows.back().attachment;
+      label += fmt::format("{}{} ({})", label.empty() ? "" : "; ", a.name, a.mass ? "mass" : "damper");
+    }
+  }
+  return rows;
+}
+
+Table<SpanProfileRow> span_profile_table() {
+  using R = SpanProfileRow;
+  const auto number = [](std::string name, std::string unit, std::string meaning, double R::*field) {
+    return Quantity<R>{std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
+                       [field](const R& r, std::size_t) { return r.*field; }, {}};
+  };
+  return Table<R>({
+      number("x_m", "m", "the place along the span, from end 1", &R::x),
+      number("displacement_m", "m", "|Y(x)|, the conductor's displacement amplitude there (zero-to-peak)",
+             &R::displacement),
+      number("envelope_m", "m", "|A| + |B|, the antinode amplitude of the stretch x lies in", &R::envelope),
+      {"attachment", "", "at an attachment's place: its name and kind (mass or damper); empty elsewhere",
+       ColumnKind::label, {}, [](const R& r, std::size_t) { return r.attachment; }},
+  });
+}
+
+span::SpanProfile governing_profile(const SpanResult& result) {
+  const span::SpanAnalysis& a = result.analysis;
+  try {
+    return span::span_profile(a.span, span::governing_point(a.span, a.balance));
+  } catch (const InvalidParameter&) {
+    throw InvalidParameter("profile", ": no point of the balance converged: no governing frequency to show");
+  }
 }
 
 namespace {
@@ -507,6 +560,7 @@ io::JsonObject span_summary(const SpanResult& result) {
       .add("max_judged_stress_mpa", s.converged > 0 ? mpa(s.max_judged_stress) : kSpanNoValue)
       .add("max_judged_stress_high_mpa", s.converged > 0 ? mpa(s.max_judged_stress_high) : kSpanNoValue)
       .add("governing_place", s.max_judged_stress_place)
+      .add("governing_frequency_hz", s.converged > 0 ? s.max_judged_stress_frequency_hz : kSpanNoValue)
       .add("undamped_max_judged_stress_mpa", mpa(s.undamped_max_judged_stress))
       .add("max_stress_fymax_mpa", s.converged > 0 ? mpa(s.max_stress_fymax) : kSpanNoValue)
       .add("max_stress_frequency_hz", s.converged > 0 ? s.max_stress_frequency_hz : kSpanNoValue)

@@ -363,7 +363,8 @@ def test_span_equals_the_programs_csv_and_json(tmp_path):
 
 def test_span_returns_the_documented_keys_and_takes_the_cli_options(tmp_path):
     s = sb.span(SPAN, frequencies=[10.0, 20.0, 30.0, 40.0], no_dampers=True)
-    assert set(s) == set(s["columns"]) | {"termination", "messages", "notes", "dampers", "columns", "summary"}
+    assert set(s) == set(s["columns"]) | {"termination", "messages", "notes", "dampers", "columns", "summary",
+                                          "profile", "governing_place"}
     documented = documented_keys("span", ["sauter2003"])
     assert {"converged", "several_states", "termination", "messages", "notes", "dampers", "columns", "summary"} <= documented
     # MODEL.md section 9's undamped check numbers.
@@ -428,6 +429,38 @@ def test_span_overrides_without_editing_text(tmp_path):
         sb.span(SPAN, tension=3e4, catenary_parameter=1800.0)
     with pytest.raises(sb.InvalidParameter, match="give one of file"):
         sb.span(SPAN, spec=spec, length=300.0)
+
+
+def test_span_masses_and_profile_are_the_programs(tmp_path):
+    f = [12.0, 24.0]
+    # Two 10 kg spheres, as the program reads them from a span file's [[mass]].
+    text = open(SPAN).read().replace('file = "sauter2003.toml"',
+                                     f'file = "{os.path.join(SOURCE, "examples", "sauter2003.toml")}"')
+    spheres = text + '\n[[mass]]\nname = "sphere"\nmass = 10.0\npositions = [100, 250]\n'
+    (tmp_path / "spheres.toml").write_text(spheres)
+    out = subprocess.run([CLI, "span", "spheres.toml", "--frequencies", "12,24", "--json", "-o", "s.csv",
+                          "--profile", "along.csv"], cwd=tmp_path, check=True, capture_output=True, text=True).stdout
+    s = sb.span(SPAN, frequencies=f, masses=[(10.0, [100.0, 250.0], "sphere")])
+    rows = read_csv(tmp_path / "s.csv")
+    assert s["columns"] == list(rows[0].keys())
+    assert "sphere_at_100m_clamp_stress_mpa" in s["columns"]
+    assert s["governing_stress_mpa"].tolist() == pytest.approx([float(r["governing_stress_mpa"]) for r in rows],
+                                                               rel=1e-12)
+    assert json.loads(out)["governing_place"] == s["summary"]["governing_place"]
+    along = read_csv(tmp_path / "along.csv")
+    profile = s["profile"]
+    assert profile["x_m"].tolist() == pytest.approx([float(r["x_m"]) for r in along], rel=1e-12)
+    assert [r["attachment"] for r in along if r["attachment"]] == [a for a in profile["attachment"] if a]
+    assert "sphere (mass)" in list(profile["attachment"])
+    assert profile["frequency_hz"] == s["summary"]["governing_frequency_hz"]
+    # masses=[] is the span without them; no_attachments drops the masses too.
+    bare = sb.span(SPAN, frequencies=f)
+    assert sb.span(SPAN, frequencies=f, masses=[])["stress_fymax_mpa"].tolist() == \
+        pytest.approx(bare["stress_fymax_mpa"].tolist(), rel=1e-12)
+    dropped = sb.span(text=spheres, frequencies=f, no_attachments=True)
+    assert dropped["stress_fymax_mpa"].tolist() == pytest.approx(bare["stress_fymax_mpa"].tolist(), rel=1e-12)
+    with pytest.raises(sb.InvalidParameter, match=r"masses\[0\]"):
+        sb.span(SPAN, frequencies=f, masses=[10.0])
 
 
 def test_span_verdict_criterion_and_inputs_are_the_programs(tmp_path):

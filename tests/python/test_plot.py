@@ -1187,3 +1187,18 @@ def test_every_log_frequency_axis_is_labelled_across_the_band(files, span_files,
             if axis.get_xscale() == "log" and axis.xaxis.get_ticklabels():
                 assert len(labelled_ticks(axis)) >= 5, [label.get_text() for _, label in labelled_ticks(axis)]
         module.plt.close(figure)
+
+
+def test_span_profile_plot_marks_the_attachments(tmp_path):
+    example = os.path.join(SOURCE, "examples", "aster570_400m.toml")
+    text = open(example).read().replace('file = "sauter2003.toml"',
+                                        f'file = "{os.path.join(SOURCE, "examples", "sauter2003.toml")}"')
+    (tmp_path / "spheres.toml").write_text(text + '\n[[mass]]\nname = "sphere"\nmass = 10.0\npositions = [100, 300]\n')
+    run_cli("span", "spheres.toml", "--frequencies", "15,30", "-o", "s.csv", "--profile", "along.csv", cwd=tmp_path)
+    result = plot("span-profile", "along.csv", "-o", "along.png", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert png_size(tmp_path / "along.png") == (800, 600)
+    (tmp_path / "bad.csv").write_text("x_m,displacement_m\n1,2\n")
+    bad = plot("span-profile", "bad.csv", "-o", "bad.png", cwd=tmp_path)
+    assert bad.returncode == 2 and "missing column 'envelope_m'" in bad.stderr
+    assert not os.path.exists(tmp_path / "bad.png")

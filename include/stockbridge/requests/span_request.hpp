@@ -14,6 +14,7 @@
 #include "stockbridge/io/json_writer.hpp"
 #include "stockbridge/requests/output_table.hpp"
 #include "stockbridge/span/analysis.hpp"
+#include "stockbridge/span/profile.hpp"
 
 namespace stockbridge::requests {
 
@@ -21,6 +22,9 @@ struct SpanRequest {
   std::vector<double> frequencies;  ///< Hz, strictly increasing; empty: `points` over the wind band
   int points = 100;                 ///< log-spaced over the wind band (span::band_frequencies), >= 2
   bool no_dampers = false;          ///< balance the span without its dampers
+  /// Balance the span without its masses and the dampers along it (the dampers at
+  /// its ends kept): the same span "without the warning spheres".
+  bool no_attachments = false;
   /// travelling | weak (span::parse_damper_model), instead of the span file's [balance] damper_model.
   std::optional<std::string> damper_model;
   /// Search every damper's position in [min, max] (m from the span end's clamp),
@@ -79,9 +83,24 @@ std::vector<std::string> span_damper_prefixes(const span::Span& span);
 /// the endurance limit are always given), and for the damper columns of a span
 /// without dampers.
 Table<span::BalancePoint> span_table(const span::Span& span);
-/// What Python's span adds per point beside the CSV's columns: termination,
-/// messages (why a point did not converge), notes.
-Table<span::BalancePoint> span_point_notes_table();
+/// What Python's span adds per point beside the CSV's columns: the governing place,
+/// termination, messages (why a point did not converge), notes.
+Table<span::BalancePoint> span_point_notes_table(const span::Span& span);
+
+/// One sample of the standing wave along the span (span/profile.hpp).
+struct SpanProfileRow {
+  double x = 0.0;             ///< m from end 1
+  double displacement = 0.0;  ///< |Y(x)|, m
+  double envelope = 0.0;      ///< the stretch's antinode amplitude, m
+  std::string attachment;     ///< at an attachment's position: "sphere (mass)", "sb1 (damper)"; empty elsewhere
+};
+/// The profile's rows: every sample, an attachment's name at its position.
+std::vector<SpanProfileRow> span_profile_rows(const span::SpanProfile& profile);
+/// x_m, displacement_m, envelope_m, attachment (`span --profile`'s CSV, Python's arrays).
+Table<SpanProfileRow> span_profile_table();
+/// The profile at the balance's governing frequency (the largest judged stress);
+/// InvalidParameter naming "profile" when no point converged.
+span::SpanProfile governing_profile(const SpanResult& result);
 
 /// The summary, as `stockbridge span --json` prints it and Python returns it:
 /// points, converged, damper_model, dampers, endurance_limit_mpa, verdict (safe,

@@ -50,7 +50,7 @@ struct SpanDamper {
   std::optional<SheetFit> fit;  ///< the model is fitted to a measured sheet (fit_from)
   /// Positions measured from end 1 (a span file's `positions = [..]`); empty: at
   /// `position` from the clamp of one or both ends.
-  std::vector<double> along;
+  std::vector<double> along{};
 
   bool measured() const { return sheet != nullptr; }
   /// Placed along the span (`along`), not at `position` from the ends.

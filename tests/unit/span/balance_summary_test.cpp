@@ -47,8 +47,15 @@ BalancePoint made_point(double f, double fymax, double high = kNoBand, bool conv
   return p;
 }
 
-BalanceSummary summary_of(FatigueCriterion criterion, const std::vector<BalancePoint>& points) {
-  return summarise(summary_span(criterion), points);
+/// The points' undamped judged and life stresses as the balance sets them for a span
+/// without masses (the criterion's stress at the clamp; the Poffenberger-Swart one).
+BalanceSummary summary_of(FatigueCriterion criterion, std::vector<BalancePoint> points) {
+  const Span span = summary_span(criterion);
+  for (BalancePoint& p : points) {
+    p.undamped_judged_stress = span.judges_poffenberger_swart() ? p.undamped_stress_poffenberger_swart : p.undamped_stress_fymax;
+    p.undamped_life_stress = p.undamped_stress_poffenberger_swart;
+  }
+  return summarise(span, points);
 }
 
 TEST(BalanceSummary, ABandReachingAboveTheLimitWithTheStressWithinItIsUncertain) {
