@@ -17,7 +17,7 @@ namespace {
 // presets compile it in unity batches).
 
 span::WireMaterial read_material(const TomlTable& table) {
-  const std::string name = table.required_string("material", "a string: steel, aluminium or aluminium-alloy");
+  const std::string name = table.required_string("material", "a string: steel, aluminium, aluminium-alloy or aluminium-clad-steel");
   try {
     return span::parse_wire_material(name);
   } catch (const InvalidParameter& e) {

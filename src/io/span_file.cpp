@@ -84,12 +84,26 @@ span::StrandedConductor span_conductor_file(const TomlTable& table, const std::s
   return conductor;
 }
 
+/// The outer wires' material a [conductor] table gives (outer_wire_material), if it does.
+std::optional<span::WireMaterial> read_outer_wire_material(const TomlTable& table) {
+  const std::optional<std::string> name = table.optional_string("outer_wire_material");
+  if (!name) return std::nullopt;
+  return span_parsed_name(table, "outer_wire_material", *name,
+                          [](const std::string& text) { return span::parse_wire_material(text, "outer_wire_material"); });
+}
+
+/// aluminium_layers' least value: 1 where the outer wires are aluminium (it picks the
+/// Safe Border Line), 0 for an earth wire of steel or aluminium-clad steel.
+int fewest_aluminium_layers(span::WireMaterial outer) { return span::is_aluminium(outer) ? 1 : 0; }
+
 /// The [conductor] table: every key given (mass_per_length ... aluminium_layers), or
 /// `type` (the catalogue's conductor) or `file` (a conductor file), whose derived
 /// values (span::conductor_of) the keys given beside it override.
 span::Conductor read_conductor(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading) {
   table.accept_only({"type", "file", "name", "mass_per_length", "diameter", "rated_tensile_strength", "ei_min",
-                           "ei_max", "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers"});
+                           "ei_max", "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers",
+                           "outer_wire_material"});
+  const std::optional<span::WireMaterial> outer = read_outer_wire_material(table);
   const std::optional<std::string> type = table.optional_string("type");
   const std::optional<std::string> file = table.optional_string("file");
   if (type && file) {
@@ -103,8 +117,9 @@ span::Conductor read_conductor(const TomlTable& table, const std::filesystem::pa
     // alternatives too (a deleted type line leaves a table of overrides).
     constexpr std::string_view kRequired[] = {"mass_per_length", "diameter", "rated_tensile_strength", "ei_min",
                                               "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers"};
+    const span::WireMaterial outer_material = outer.value_or(span::WireMaterial::aluminium);
     for (const std::string_view key : kRequired) {
-      if (table.present(key)) continue;
+      if (table.present(key) || (key == "aluminium_layers" && !span::is_aluminium(outer_material))) continue;
       throw InputError(fmt::format("{}missing key '{}' in [{}]: expected type = a conductor of the catalogue (e.g. "
                                    "\"ACSR Drake\"), file = a conductor file, or every one of mass_per_length, diameter, "
                                    "rated_tensile_strength, ei_min, outer_wire_diameter, outer_wire_modulus and "
@@ -119,7 +134,9 @@ span::Conductor read_conductor(const TomlTable& table, const std::filesystem::pa
     c.ei_max = table.optional_number("ei_max").value_or(0.0);
     c.outer_wire_diameter = table.number("outer_wire_diameter");
     c.outer_wire_modulus = table.number("outer_wire_modulus");
-    c.aluminium_layers = static_cast<int>(table.integer("aluminium_layers", 1, 10));  // Conductor::validate's range
+    c.outer_wire_material = outer_material;
+    c.aluminium_layers = static_cast<int>(  // Conductor::validate's range
+        table.optional_integer("aluminium_layers", fewest_aluminium_layers(outer_material), 10).value_or(0));
     c.source = "the [conductor] keys";
     return c;
   }
@@ -128,7 +145,7 @@ span::Conductor read_conductor(const TomlTable& table, const std::filesystem::pa
   c.source = type ? fmt::format("the catalogue's {}", *type) : fmt::format("the conductor file {}", *file);
   std::string given;
   for (const std::string_view key : {"name", "mass_per_length", "diameter", "rated_tensile_strength", "ei_min", "ei_max",
-                                     "outer_wire_diameter", "outer_wire_modulus", "aluminium_layers"}) {
+                                     "outer_wire_diameter", "outer_wire_modulus", "outer_wire_material", "aluminium_layers"}) {
     if (table.contains(key)) given += fmt::format("{}{}", given.empty() ? "" : ", ", key);
   }
   if (!given.empty()) c.source += fmt::format("; {} given beside it", given);
@@ -140,7 +157,10 @@ span::Conductor read_conductor(const TomlTable& table, const std::filesystem::pa
   c.ei_max = table.optional_number("ei_max").value_or(c.ei_max);
   c.outer_wire_diameter = table.optional_number("outer_wire_diameter").value_or(c.outer_wire_diameter);
   c.outer_wire_modulus = table.optional_number("outer_wire_modulus").value_or(c.outer_wire_modulus);
-  if (const auto n = table.optional_integer("aluminium_layers", 1, 10)) c.aluminium_layers = static_cast<int>(*n);
+  c.outer_wire_material = outer.value_or(c.outer_wire_material);
+  if (const auto n = table.optional_integer("aluminium_layers", fewest_aluminium_layers(c.outer_wire_material), 10)) {
+    c.aluminium_layers = static_cast<int>(*n);
+  }
   return c;
 }
 

@@ -46,6 +46,16 @@ bool fatigue_test_failed(const std::string& cell, const std::string& where) {
                                printable(cell)));
 }
 
+/// The tests are set against the CIGRE Safe Border Line, stated for aluminium outer
+/// wires only: a conductor of steel or aluminium-clad steel outer wires is refused.
+span::Conductor with_aluminium_outer_wires(span::Conductor conductor, const std::string& name, const std::string& where) {
+  if (conductor.safe_border_line_applies()) return conductor;
+  throw InputError(fmt::format("{}column 'conductor' = '{}': outer wires of {}: expected a conductor with aluminium or "
+                               "aluminium-alloy outer wires (the tests are set against the CIGRE Safe Border Line, "
+                               "stated for those only)",
+                               where, printable(name), span::wire_material_name(conductor.outer_wire_material)));
+}
+
 /// The row's conductor: a conductor file (*.toml, relative to the CSV's folder) or the catalogue's type.
 span::Conductor fatigue_test_conductor(const std::string& name, const std::filesystem::path& base,
                                        const std::string& where, std::vector<std::filesystem::path>& inputs) {
@@ -62,13 +72,15 @@ span::Conductor fatigue_test_conductor(const std::string& name, const std::files
                                    where, printable(name), printable(path.string(), 300)));
     }
     inputs.push_back(path);
-    return span::conductor_of(io::read_conductor_file(path));
+    return with_aluminium_outer_wires(span::conductor_of(io::read_conductor_file(path)), name, where);
   }
+  const span::StrandedConductor* entry = nullptr;
   try {
-    return span::conductor_of(io::catalogue_conductor(name));
+    entry = &io::catalogue_conductor(name);
   } catch (const InvalidParameter& e) {
     throw InputError(fmt::format("{}column 'conductor'{}, or a conductor file (*.toml)", where, e.detail()));
   }
+  return with_aluminium_outer_wires(span::conductor_of(*entry), name, where);
 }
 
 }  // namespace

@@ -10,6 +10,30 @@
 
 namespace stockbridge::span {
 
+std::string_view wire_material_name(WireMaterial material) {
+  switch (material) {
+    case WireMaterial::steel: return "steel";
+    case WireMaterial::aluminium: return "aluminium";
+    case WireMaterial::aluminium_alloy: return "aluminium-alloy";
+    case WireMaterial::aluminium_clad_steel: return "aluminium-clad-steel";
+  }
+  return "steel";
+}
+
+WireMaterial parse_wire_material(std::string_view name, std::string_view field) {
+  if (name == "steel") return WireMaterial::steel;
+  if (name == "aluminium" || name == "aluminum") return WireMaterial::aluminium;
+  if (name == "aluminium-alloy" || name == "aluminum-alloy") return WireMaterial::aluminium_alloy;
+  if (name == "aluminium-clad-steel" || name == "aluminum-clad-steel") return WireMaterial::aluminium_clad_steel;
+  throw InvalidParameter(std::string(field),
+                         fmt::format(" = \"{}\": expected steel, aluminium, aluminium-alloy or aluminium-clad-steel",
+                                     printable(name)));
+}
+
+bool is_aluminium(WireMaterial material) {
+  return material == WireMaterial::aluminium || material == WireMaterial::aluminium_alloy;
+}
+
 void Conductor::validate() const {
   require_plausible("mass_per_length", mass_per_length, "kg/m");
   require_plausible("diameter", diameter, "m");
@@ -33,7 +57,9 @@ void Conductor::validate() const {
                   fmt::format("less than the conductor's diameter = {} m", format_value(diameter)));
   }
   require_plausible("outer_wire_modulus", outer_wire_modulus, "Pa");
-  require_in_range("aluminium_layers", aluminium_layers, 1, 10);
+  // The Safe Border Line is picked by the aluminium layers of a conductor with aluminium
+  // outer wires; an earth wire of steel or aluminium-clad steel may have none.
+  require_in_range("aluminium_layers", aluminium_layers, safe_border_line_applies() ? 1 : 0, 10);
 }
 
 void check_tension(const Conductor& conductor, double tension, const std::string& field) {

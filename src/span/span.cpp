@@ -85,6 +85,40 @@ void FatigueSpec::validate() const {
   require_plausible("yb_distance", yb_distance, "m");
 }
 
+namespace {
+
+// Names in this unnamed namespace are unique across the library (the sanitizer
+// presets compile it in unity batches).
+
+/// "steel", "aluminium-clad-steel": what a message says the outer wires are.
+std::string outer_wires_named(const Conductor& conductor) {
+  return fmt::format("the conductor's outer wires are {}", wire_material_name(conductor.outer_wire_material));
+}
+
+/// The CIGRE Safe Border Line is stated for outer wires of aluminium or aluminium alloy
+/// only: for others the span must give its own limit (endurance_limit_mpa) or curve.
+/// Throws InvalidParameter naming the key to give, within [fatigue].
+void check_safe_border_line_applies(const Conductor& conductor, const FatigueSpec& fatigue) {
+  if (conductor.safe_border_line_applies() || fatigue.curve) return;
+  if (fatigue.criterion == FatigueCriterion::safe_border_line) {
+    throw InvalidParameter(
+        "endurance_limit_mpa",
+        fmt::format(": missing: {}, and the CIGRE Safe Border Line (criterion \"safe-border-line\") is stated for "
+                    "aluminium outer layers only: expected endurance_limit_mpa (the outer wires' endurance limit, MPa "
+                    "zero-to-peak) in place of cycles, or curve = an S-N curve of these wires",
+                    outer_wires_named(conductor)));
+  }
+  if (fatigue.life) {
+    throw InvalidParameter(
+        "curve", fmt::format(": missing: {}, and the life's N(sigma) is the CIGRE Safe Border Line's, stated for "
+                             "aluminium outer layers only: expected curve = an S-N curve of these wires, or no "
+                             "wind_weibull and aeolian_fraction",
+                             outer_wires_named(conductor)));
+  }
+}
+
+}  // namespace
+
 Span::Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
            std::vector<SpanDamper> dampers, FatigueSpec fatigue, std::optional<int> terrain,
            std::vector<SpanMass> masses)
@@ -133,7 +167,10 @@ Span::Span(Conductor conductor, double length, double tension, WindModel wind, S
     }
     check_along(field + ".positions", mass.positions, length_);
   }
-  within_field("fatigue", [&] { fatigue_.validate(); });
+  within_field("fatigue", [&] {
+    fatigue_.validate();
+    check_safe_border_line_applies(conductor_, fatigue_);
+  });
   if (terrain_) terrain_category(*terrain_, "span.terrain");
 }
 
@@ -154,7 +191,13 @@ double Span::endurance_limit() const {
 }
 
 SnCurve Span::sn_curve() const {
-  return fatigue_.curve ? *fatigue_.curve : safe_border_curve(conductor_.aluminium_layers);
+  if (fatigue_.curve) return *fatigue_.curve;
+  if (!conductor_.safe_border_line_applies()) {
+    throw InvalidParameter("fatigue.curve", fmt::format(": missing: {}, and the CIGRE Safe Border Line is stated for "
+                                                        "aluminium outer layers only: expected an S-N curve of these wires",
+                                                        outer_wires_named(conductor_)));
+  }
+  return safe_border_curve(conductor_.aluminium_layers);
 }
 
 std::string Span::criterion_description() const {

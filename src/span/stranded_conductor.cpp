@@ -19,10 +19,6 @@ constexpr double kStrandingSlack = 1.02;  // hand-rounded data: 2 %, as strand::
 
 std::string layer_field(std::size_t j, std::string_view key) { return fmt::format("layer[{}].{}", j, key); }
 
-bool is_aluminium(WireMaterial material) {
-  return material == WireMaterial::aluminium || material == WireMaterial::aluminium_alloy;
-}
-
 int count_aluminium_layers(const StrandedConductor& conductor) {
   return static_cast<int>(std::count_if(conductor.layers.begin(), conductor.layers.end(),
                                          [](const ConductorLayer& layer) { return is_aluminium(layer.material); }));
@@ -36,23 +32,6 @@ std::string stranding_length(double metres) { return fmt::format("{:.6g}", metre
 std::string stranding_mm(double metres) { return fmt::format("{:.4g}", metres * 1e3); }
 
 }  // namespace
-
-std::string_view wire_material_name(WireMaterial material) {
-  switch (material) {
-    case WireMaterial::steel: return "steel";
-    case WireMaterial::aluminium: return "aluminium";
-    case WireMaterial::aluminium_alloy: return "aluminium-alloy";
-  }
-  return "steel";
-}
-
-WireMaterial parse_wire_material(std::string_view name, std::string_view field) {
-  if (name == "steel") return WireMaterial::steel;
-  if (name == "aluminium" || name == "aluminum") return WireMaterial::aluminium;
-  if (name == "aluminium-alloy" || name == "aluminum-alloy") return WireMaterial::aluminium_alloy;
-  throw InvalidParameter(std::string(field), fmt::format(" = \"{}\": expected steel, aluminium or aluminium-alloy",
-                                                         printable(name)));
-}
 
 std::vector<double> pitch_radii(const StrandedConductor& conductor) {
   std::vector<double> radii;
@@ -130,9 +109,9 @@ void StrandedConductor::validate() const {
                               stranding_length(stranded)));
   }
   const int aluminium = count_aluminium_layers(*this);
-  if (aluminium < 1 || aluminium > 10) {
-    throw InvalidParameter("layer", fmt::format(": {} layers of aluminium or aluminium-alloy wires: expected 1 to 10 (the "
-                                                "Safe Border Line is chosen by their number)",
+  if (aluminium > 10) {
+    throw InvalidParameter("layer", fmt::format(": {} layers of aluminium or aluminium-alloy wires: expected at most 10 "
+                                                "(the Safe Border Line is chosen by their number)",
                                                 aluminium));
   }
 }
@@ -162,6 +141,7 @@ Conductor conductor_of(const StrandedConductor& conductor) {
   c.ei_max = bounds.ei_max;
   c.outer_wire_diameter = conductor.layers.back().wire_diameter;
   c.outer_wire_modulus = conductor.layers.back().youngs_modulus;
+  c.outer_wire_material = conductor.layers.back().material;
   c.aluminium_layers = count_aluminium_layers(conductor);
   c.stranding = stranding_label(conductor);
   return c;

@@ -1,7 +1,10 @@
 // `stockbridge conductors`: the catalogue as text and JSON, one entry as the
 // [conductor] table a span file takes (run through `stockbridge span` against
 // type = "..."), the strand command on a strand of two materials, and exit 2 with
-// one line naming file, line, key and value for a bad type or conductor file.
+// one line naming file, line, key and value for a bad type or conductor file. Earth
+// wires: listed with their outer wires, and a steel earth wire's span under the Safe
+// Border Line refused (exit 2, one line naming endurance_limit_mpa, nothing written)
+// until its file gives endurance_limit_mpa.
 
 #include <cmath>
 #include <cstdlib>
@@ -28,11 +31,12 @@ double conductors_json_number(const std::string& json, const std::string& key) {
   return std::strtod(match[1].str().c_str(), nullptr);
 }
 
-/// A span file of `conductor_table`, no dampers, three frequencies.
-std::string conductors_span(const std::string& conductor_table) {
+/// A span file of `conductor_table`, no dampers, three frequencies, judged by the Safe
+/// Border Line (`fatigue`: the [fatigue] table's keys).
+std::string conductors_span(const std::string& conductor_table, const std::string& fatigue = "cycles = 5e8\n") {
   return conductor_table +
          "\n[span]\nlength = 300\ntension_fraction = 0.2\n[wind]\nlaw = \"cigre\"\n[self_damping]\n"
-         "law = \"noiseux-1991\"\n[fatigue]\ncycles = 5e8\n";
+         "law = \"noiseux-1991\"\n[fatigue]\n" + fatigue;
 }
 
 TEST(ConductorsCli, ListsTheCatalogue) {
@@ -42,12 +46,19 @@ TEST(ConductorsCli, ListsTheCatalogue) {
   EXPECT_EQ(r.err, "");
   for (const char* type : {"ACSR Drake", "ACSR Cardinal", "ACSR Linnet", "ACSR Falcon", "AAAC ASTER570", "AAC Arbutus",
                            "ACSR Tern", "ACSR Ibis", "ACSR Bersimis", "ACSR Bersfort", "AAC Orchid", "AAAC 823",
-                           "AAAC 900", "AAAC 1055"}) {
+                           "AAAC 900", "AAAC 1055", "EHS 3/8", "GSW 19/3.25", "Alumoweld 7 No. 8", "Alumoweld 19 No. 9",
+                           "OPGW 9.6", "OPGW 13.6"}) {
     EXPECT_NE(r.out.find(type), std::string::npos) << type;
   }
-  // Drake's row: stranding, D 28.14 mm, m 1.628 kg/m, RTS 138.8 kN, EI_min 44.25 N m^2.
-  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(ACSR Drake +26/7: steel 1\+6 x 3\.45 mm, aluminium 10\+16 x 4\.44 mm +28\.14 +1\.628 +138\.8 +44\.25 +1501)")))
+  // Drake's row: stranding, D 28.14 mm, m 1.628 kg/m, RTS 138.8 kN, EI_min 44.25 N m^2,
+  // aluminium outer wires.
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(ACSR Drake +26/7: steel 1\+6 x 3\.45 mm, aluminium 10\+16 x 4\.44 mm +28\.14 +1\.628 +138\.8 +44\.25 +1501 +aluminium\n)")))
       << r.out;
+  // The EHS strand's: D 9.15 mm, m 0.407 kg/m, RTS 68.5 kN, EI_min 6.16 N m^2, steel outer wires.
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(EHS 3/8 +7: steel 1\+6 x 3\.05 mm +9\.15 +0\.407 +68\.5 +6\.16 +[0-9]+ +steel\n)")))
+      << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(Alumoweld 7 No\. 8 .* aluminium-clad-steel\n)"))) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(OPGW 13\.6 .* aluminium-alloy\n)"))) << r.out;
 }
 
 TEST(ConductorsCli, ListsTheCatalogueAsJson) {
@@ -84,6 +95,54 @@ TEST(ConductorsCli, TheTablePrintedRunsAsTheSpanOfTheType) {
   ASSERT_EQ(typed.exit_code, 0) << typed.err;
   EXPECT_EQ(read_text(dir / "pasted.csv"), read_text(dir / "typed.csv"));
   EXPECT_FALSE(read_text(dir / "typed.csv").empty());
+}
+
+TEST(ConductorsCli, AnEarthWiresTableNamesItsOuterWiresAndRunsWithItsEnduranceLimit) {
+  const auto dir = scratch_directory("conductors-paste-earth-wire");
+  const CliResult table = run_cli("conductors \"EHS 3/8\"", dir);
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  EXPECT_NE(table.out.find("\nouter_wire_material = \"steel\" "), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("\naluminium_layers = 0 "), std::string::npos) << table.out;
+  std::ofstream(dir / "pasted.toml") << conductors_span(table.out, "endurance_limit_mpa = 30\n");
+  std::ofstream(dir / "typed.toml") << conductors_span("[conductor]\ntype = \"EHS 3/8\"\n", "endurance_limit_mpa = 30\n");
+  const CliResult pasted = run_cli("span pasted.toml --frequencies 10,20,30 --quiet -o pasted.csv", dir);
+  const CliResult typed = run_cli("span typed.toml --frequencies 10,20,30 --quiet --json -o typed.csv", dir);
+  ASSERT_EQ(pasted.exit_code, 0) << pasted.err;
+  ASSERT_EQ(typed.exit_code, 0) << typed.err;
+  EXPECT_EQ(read_text(dir / "pasted.csv"), read_text(dir / "typed.csv"));
+  // The verdict is against the given 30 MPa.
+  EXPECT_NE(typed.out.find("\"criterion\": \"stress\""), std::string::npos) << typed.out;
+  EXPECT_EQ(conductors_json_number(typed.out, "endurance_limit_mpa"), 30.0);
+  const CliResult json = run_cli("conductors \"EHS 3/8\" --json", dir);
+  EXPECT_NE(json.out.find("\"outer_wire_material\": \"steel\""), std::string::npos) << json.out;
+  EXPECT_EQ(conductors_json_number(json.out, "aluminium_layers"), 0.0);
+}
+
+TEST(ConductorsCli, ASteelEarthWireUnderTheSafeBorderLineIsExitTwoOneLineNamingEnduranceLimitMpa) {
+  const auto dir = scratch_directory("conductors-earth-wire-sbl");
+  std::ofstream(dir / "ehs.toml") << conductors_span("[conductor]\ntype = \"EHS 3/8\"\n");
+  const CliResult r = run_cli("span ehs.toml --frequencies 10,20,30 -o out.csv", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.stderr_lines(), 1) << r.err;
+  EXPECT_EQ(r.err, "stockbridge: ehs.toml:11: fatigue.endurance_limit_mpa: missing: the conductor's outer wires are "
+                   "steel, and the CIGRE Safe Border Line (criterion \"safe-border-line\") is stated for aluminium outer "
+                   "layers only: expected endurance_limit_mpa (the outer wires' endurance limit, MPa zero-to-peak) in "
+                   "place of cycles, or curve = an S-N curve of these wires\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));
+  // An aluminium-clad steel OPGW alike; an OPGW of aluminium-alloy outer wires runs.
+  std::ofstream(dir / "opgw.toml") << conductors_span("[conductor]\ntype = \"OPGW 9.6\"\n");
+  const CliResult acs = run_cli("span opgw.toml --frequencies 10,20,30 -o opgw.csv", dir);
+  EXPECT_EQ(acs.exit_code, 2);
+  EXPECT_EQ(acs.stderr_lines(), 1) << acs.err;
+  EXPECT_NE(acs.err.find("fatigue.endurance_limit_mpa: missing: the conductor's outer wires are aluminium-clad-steel"),
+            std::string::npos)
+      << acs.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "opgw.csv"));
+  std::ofstream(dir / "alloy.toml") << conductors_span("[conductor]\ntype = \"OPGW 13.6\"\n");
+  const CliResult alloy = run_cli("span alloy.toml --frequencies 10,20,30 --quiet -o alloy.csv", dir);
+  EXPECT_EQ(alloy.exit_code, 0) << alloy.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "alloy.csv"));
 }
 
 TEST(ConductorsCli, AnUnknownTypeIsExitTwoAndOneLine) {

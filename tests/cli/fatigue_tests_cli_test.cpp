@@ -80,6 +80,12 @@ TEST(FatigueTestsCli, BadCellsAreNamedAndNothingIsWritten) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("2 failure(s) at 2 stress(es): the fit needs 3 failures or more at 2 stresses or more"),
             std::string::npos) << r.err;
+  write_fatigue_file(dir / "steel.csv", header + "a,EHS 3/8,20000,0.8,3e6,true\n");
+  r = run_cli("fatigue-tests steel.csv -o out.csv", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "stockbridge: steel.csv:2: column 'conductor' = 'EHS 3/8': outer wires of steel: expected a "
+                   "conductor with aluminium or aluminium-alloy outer wires (the tests are set against the CIGRE Safe "
+                   "Border Line, stated for those only)\n");
   write_fatigue_file(dir / "who.csv", header + "a,ACSR Nonesuch,35000,0.8,3e6,true\n");
   r = run_cli("fatigue-tests who.csv -o out.csv", dir);
   EXPECT_EQ(r.exit_code, 2);

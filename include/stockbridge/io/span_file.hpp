@@ -12,7 +12,9 @@
 //   ei_max = 2155                    # N m^2 (optional: Foti's self-damping)
 //   outer_wire_diameter = 0.00345    # m
 //   outer_wire_modulus = 68e9        # Pa
-//   aluminium_layers = 4
+//   aluminium_layers = 4             # 0 allowed where outer_wire_material is not aluminium
+//   outer_wire_material = "aluminium-alloy"  # optional: aluminium (default), aluminium-alloy, steel,
+//                                    # aluminium-clad-steel (the last two: no Safe Border Line)
 //   [span]
 //   length = 400                     # m
 //   tension_fraction = 0.15          # or tension = N: exactly one
@@ -26,7 +28,8 @@
 //   position = 1.0                   # m from the span end's clamp
 //   ends = "both"                    # both (default) | one
 //   [fatigue]
-//   cycles = 5e8                     # or endurance_limit = Pa
+//   cycles = 5e8                     # or endurance_limit_mpa = MPa (required for steel or
+//                                    # aluminium-clad steel outer wires), endurance_limit = Pa
 //   wind_weibull = { shape = 2.0, scale = 4.0 }  # optional, with aeolian_fraction
 //   aeolian_fraction = 0.3
 //   [balance]                        # optional, every key optional (span::BalanceOptions' defaults)

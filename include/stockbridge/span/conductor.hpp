@@ -16,8 +16,24 @@
 // Units: SI throughout (kg/m, m, N, N m^2, Pa, Hz).
 
 #include <string>
+#include <string_view>
 
 namespace stockbridge::span {
+
+/// What a conductor's wires are made of (MODEL.md sections 11 and 15): galvanised
+/// steel (a stainless tube counts as steel), aluminium, aluminium alloy, or
+/// aluminium-clad steel (20SA and the other grades of IEC 61232). Each wire carries its
+/// own modulus; the material decides how a span is judged: the CIGRE Safe Border Line
+/// is stated for outer wires of aluminium or aluminium alloy only.
+enum class WireMaterial { steel, aluminium, aluminium_alloy, aluminium_clad_steel };
+
+/// "steel", "aluminium", "aluminium-alloy", "aluminium-clad-steel".
+std::string_view wire_material_name(WireMaterial material);
+/// The material of a name as wire_material_name writes it ("aluminum", "aluminum-alloy"
+/// and "aluminum-clad-steel" also accepted); throws InvalidParameter naming `field` otherwise.
+WireMaterial parse_wire_material(std::string_view name, std::string_view field = "material");
+/// Aluminium or aluminium alloy: the wires the Safe Border Line is stated for.
+bool is_aluminium(WireMaterial material);
 
 /// What a span file's [conductor] table says; validate() checks it once.
 struct Conductor {
@@ -29,7 +45,10 @@ struct Conductor {
   double ei_max = 0.0;                  ///< no-slip bending stiffness, N m^2; 0: not given (only Foti's self-damping needs it)
   double outer_wire_diameter = 0.0;     ///< d_a, diameter of an outer-layer wire, m
   double outer_wire_modulus = 0.0;      ///< E_a, Young's modulus of the outer wires, Pa
-  int aluminium_layers = 1;             ///< picks the Safe Border Line: 1, or several (2..10)
+  int aluminium_layers = 1;             ///< picks the Safe Border Line: 1, or several (2..10); 0 without aluminium layers
+  /// The outer wires' material: the Safe Border Line judges a span only where it is
+  /// aluminium or aluminium alloy (Span refuses it otherwise).
+  WireMaterial outer_wire_material = WireMaterial::aluminium;
   /// Where the values come from, for reports: "the catalogue's ACSR Drake", "the
   /// conductor file drake.toml", "the [conductor] keys", with the keys given beside
   /// ("; diameter given"); and the stranding where it is known ("26/7: ...").
@@ -39,8 +58,11 @@ struct Conductor {
   /// Throws InvalidParameter naming the field as a span file spells it
   /// ("mass_per_length = -1: expected a finite value > 0 (kg/m)"): every magnitude
   /// plausible (core/error.hpp), ei_max 0 or >= ei_min, outer_wire_diameter < diameter,
-  /// aluminium_layers from 1 to 10.
+  /// aluminium_layers from 1 to 10 (from 0 where the outer wires are not aluminium).
   void validate() const;
+  /// Whether the outer wires are aluminium or aluminium alloy, which the CIGRE Safe
+  /// Border Line is stated for.
+  bool safe_border_line_applies() const { return is_aluminium(outer_wire_material); }
 };
 
 /// Throws InvalidParameter naming `field` unless 0 < tension < RTS (a conductor

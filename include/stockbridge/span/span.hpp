@@ -110,6 +110,10 @@ class Span {
   /// usual one (typical_ranges.hpp) and the span is what is short. Each damper has
   /// its model or its sheet, not both ("damper[0]").
   /// Masses name "mass[0].positions[1]"; a damper along the span "damper[0].positions[1]".
+  /// Where the outer wires are not aluminium (steel, aluminium-clad steel: earth wires,
+  /// OPGW) and no `curve` is given, the Safe Border Line does not apply: criterion
+  /// safe_border_line is refused naming "fatigue.endurance_limit_mpa" (the limit to give
+  /// instead), a life estimate naming "fatigue.curve".
   Span(Conductor conductor, double length, double tension, WindModel wind, SelfDampingModel self_damping,
        std::vector<SpanDamper> dampers, FatigueSpec fatigue, std::optional<int> terrain = std::nullopt,
        std::vector<SpanMass> masses = {});
@@ -132,7 +136,8 @@ class Span {
   /// microstrain criterion the Poffenberger-Swart stress of that strain, E_a eps / 2).
   double endurance_limit() const;
   /// The S-N curve in force: the fatigue's `curve`, or the Safe Border Line of the
-  /// conductor's aluminium layers.
+  /// conductor's aluminium layers; InvalidParameter naming "fatigue.curve" where the
+  /// outer wires are not aluminium and no curve is given.
   SnCurve sn_curve() const;
   /// Whether the verdict judges the Poffenberger-Swart stress (the microstrain
   /// criterion: Yb as measured) rather than the fymax stress.

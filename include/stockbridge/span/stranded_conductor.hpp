@@ -4,7 +4,10 @@
 // core wire and layers of round wires, each of one material with its own modulus.
 // From the stranding come the quantities a span needs (span::Conductor): EI_min
 // and EI_max (the strand's bounds, wire by wire with each wire's modulus), the
-// outer wires' diameter and modulus, and the number of aluminium layers.
+// outer wires' diameter, modulus and material, and the number of aluminium layers.
+// The materials (WireMaterial, span/conductor.hpp): steel, aluminium, aluminium
+// alloy and aluminium-clad steel; earth wires and OPGW are strands of these too
+// (MODEL.md section 15), some without an aluminium layer.
 //
 // The layers touch: the core wire of diameter d_c on the axis, layer j's wires of
 // diameter d_j on the pitch radius
@@ -23,16 +26,6 @@
 #include "stockbridge/strand/strand_bounds.hpp"
 
 namespace stockbridge::span {
-
-/// What a conductor's wires are made of: decides which layers count as aluminium
-/// layers (the Safe Border Line's choice).
-enum class WireMaterial { steel, aluminium, aluminium_alloy };
-
-/// "steel", "aluminium", "aluminium-alloy".
-std::string_view wire_material_name(WireMaterial material);
-/// The material of a name as wire_material_name writes it ("aluminum" and
-/// "aluminum-alloy" also accepted); throws InvalidParameter naming `field` otherwise.
-WireMaterial parse_wire_material(std::string_view name, std::string_view field = "material");
 
 /// The core wire, or one layer of identical wires.
 struct ConductorLayer {
@@ -59,7 +52,8 @@ struct StrandedConductor {
   /// magnitudes plausible (core/error.hpp), counts 1 to 1000, exactly one of
   /// lay_length and lay_ratio per layer with a lay angle below 45 degrees, room for
   /// each layer's wires side by side (2 % slack for rounded data), the diameter
-  /// within 2 % of the stranding's, and 1 to 10 aluminium or aluminium-alloy layers.
+  /// within 2 % of the stranding's, and at most 10 aluminium or aluminium-alloy layers
+  /// (none: a steel or aluminium-clad steel earth wire).
   void validate() const;
 };
 
@@ -74,8 +68,8 @@ double lay_length(const StrandedConductor& conductor, std::size_t layer);
 strand::Strand strand_of(const StrandedConductor& conductor);
 /// The conductor a span file's [conductor] table describes (validated first):
 /// name = type, the data sheet's m, D and RTS, ei_min and ei_max from strand_of,
-/// the outer layer's wire diameter and modulus, and the number of layers (the core
-/// not counted) of aluminium or aluminium alloy.
+/// the outer layer's wire diameter, modulus and material, and the number of layers
+/// (the core not counted) of aluminium or aluminium alloy.
 Conductor conductor_of(const StrandedConductor& conductor);
 
 /// The stranding in words: "26/7: steel 1+6 x 3.45 mm, aluminium 10+16 x 4.44 mm"

@@ -192,23 +192,34 @@ TEST(ConductorCatalogue, EveryEntryHasItsStrandingsDerivedNumbers) {
       {"ACSR Tern", "45/7: steel 1+6 x 2.25 mm, aluminium 9+15+21 x 3.38 mm", 3,
        7 * kSteel * wire_i(2.25e-3) + 45 * kAluminium * wire_i(3.38e-3)},
   };
-  const auto& catalogue = io::conductor_catalogue();
-  ASSERT_EQ(catalogue.size(), std::size(expected));
-  for (std::size_t i = 0; i < catalogue.size(); ++i) {
-    SCOPED_TRACE(expected[i].type);
-    EXPECT_EQ(catalogue[i].type, expected[i].type);
-    EXPECT_EQ(stranding_label(catalogue[i]), expected[i].stranding);
-    EXPECT_FALSE(catalogue[i].source.empty());
-    const Conductor c = conductor_of(catalogue[i]);
+  for (const Expected& e : expected) {
+    SCOPED_TRACE(e.type);
+    const StrandedConductor& entry = io::catalogue_conductor(e.type);
+    EXPECT_EQ(entry.type, e.type);
+    EXPECT_EQ(stranding_label(entry), e.stranding);
+    EXPECT_FALSE(entry.source.empty());
+    const Conductor c = conductor_of(entry);
     c.validate();
-    EXPECT_EQ(c.aluminium_layers, expected[i].aluminium_layers);
-    expect_relative_to(c.ei_min, expected[i].ei_min, 1e-12);
+    EXPECT_EQ(c.aluminium_layers, e.aluminium_layers);
+    EXPECT_TRUE(c.safe_border_line_applies());
+    expect_relative_to(c.ei_min, e.ei_min, 1e-12);
     // No slip is 15 to 90 times stiffer than free wires for these strandings.
     EXPECT_GT(c.ei_max, 15.0 * c.ei_min);
     EXPECT_LT(c.ei_max, 90.0 * c.ei_min);
     // The data sheet's diameter is the stranding's, to 0.2 %.
-    expect_relative_to(stranding_diameter(catalogue[i]), c.diameter, 2e-3);
+    expect_relative_to(stranding_diameter(entry), c.diameter, 2e-3);
   }
+}
+
+TEST(ConductorCatalogue, HoldsThePhaseConductorsAndTheEarthWires) {
+  // The phase conductors above; the earth wires and OPGW in earth_wire_test.cpp.
+  std::vector<std::string> types;
+  for (const StrandedConductor& entry : io::conductor_catalogue()) types.push_back(entry.type);
+  EXPECT_EQ(types, (std::vector<std::string>{"AAAC 1055", "AAAC 823", "AAAC 900", "AAAC ASTER570", "AAC Arbutus",
+                                             "AAC Orchid", "ACSR Bersfort", "ACSR Bersimis", "ACSR Cardinal",
+                                             "ACSR Drake", "ACSR Falcon", "ACSR Ibis", "ACSR Linnet", "ACSR Tern",
+                                             "Alumoweld 19 No. 9", "Alumoweld 7 No. 8", "EHS 3/8", "GSW 19/3.25",
+                                             "OPGW 13.6", "OPGW 9.6"}));
 }
 
 // The conductors of RTE's fatigue test data set (dohl): each data sheet's diameter
@@ -259,7 +270,8 @@ TEST(ConductorCatalogue, AnUnknownTypeListsTheKnownOnes) {
   EXPECT_EQ(stockbridge::testing::invalid_parameter_message([] { io::catalogue_conductor("ACSR Drak"); }),
             "type = \"ACSR Drak\": expected a conductor of the catalogue: AAAC 1055, AAAC 823, AAAC 900, AAAC ASTER570, "
             "AAC Arbutus, AAC Orchid, ACSR Bersfort, ACSR Bersimis, ACSR Cardinal, ACSR Drake, ACSR Falcon, ACSR Ibis, "
-            "ACSR Linnet, ACSR Tern (case, spaces and hyphens aside; stockbridge conductors lists them)");
+            "ACSR Linnet, ACSR Tern, Alumoweld 19 No. 9, Alumoweld 7 No. 8, EHS 3/8, GSW 19/3.25, OPGW 13.6, OPGW 9.6 "
+            "(case, spaces and hyphens aside; stockbridge conductors lists them)");
 }
 
 // The stranding's checks.
@@ -305,16 +317,31 @@ TEST(StrandedConductorChecks, EachBadStrandingIsNamedByItsKey) {
   EXPECT_EQ(message([](StrandedConductor& c) { c.layers[1].lay_ratio = 10.0; }),
             "layer[1].lay_length = 0.2 with lay_ratio = 10: expected one of the two (the other 0)");
   EXPECT_EQ(message([](StrandedConductor& c) {
-              for (ConductorLayer& layer : c.layers) layer.material = WireMaterial::steel;
+              for (int j = 0; j < 9; ++j) c.layers.push_back({WireMaterial::aluminium, 68.9e9, 12, 0.003, 0.0, 12.0});
+              c.diameter = stranding_diameter(c);
             }),
-            "layer: 0 layers of aluminium or aluminium-alloy wires: expected 1 to 10 (the Safe Border Line is chosen by "
-            "their number)");
+            "layer: 11 layers of aluminium or aluminium-alloy wires: expected at most 10 (the Safe Border Line is chosen "
+            "by their number)");
   EXPECT_EQ(message([](StrandedConductor& c) { c.layers[1].youngs_modulus = 0.0; }),
             "layer[1].youngs_modulus = 0: expected a finite value > 0 (Pa)");
   EXPECT_EQ(message([](StrandedConductor& c) { c.layers.clear(); }),
             "layer: none: expected the layers of wires around the core, from the inside out");
   EXPECT_EQ(stockbridge::testing::invalid_parameter_message([] { parse_wire_material("copper"); }),
-            "material = \"copper\": expected steel, aluminium or aluminium-alloy");
+            "material = \"copper\": expected steel, aluminium, aluminium-alloy or aluminium-clad-steel");
+}
+
+TEST(StrandedConductorChecks, AStrandOfSteelAloneIsAnEarthWireWithoutAluminiumLayers) {
+  // An earth wire: no aluminium layer, its outer wires steel (MODEL.md section 15).
+  StrandedConductor c = two_layer_test_conductor();
+  for (ConductorLayer& layer : c.layers) layer.material = WireMaterial::steel, layer.youngs_modulus = 207e9;
+  EXPECT_NO_THROW(c.validate());
+  const Conductor derived = conductor_of(c);
+  EXPECT_EQ(derived.aluminium_layers, 0);
+  EXPECT_EQ(derived.outer_wire_material, WireMaterial::steel);
+  EXPECT_FALSE(derived.safe_border_line_applies());
+  EXPECT_EQ(stranding_label(c), "19: steel 1+6+12 x 3 mm");
+  // EI_min wire by wire: 19 x 207e9 x pi (1.5e-3)^4 / 4.
+  expect_relative_to(derived.ei_min, 19.0 * kSteel * wire_i(3e-3), 1e-12);
 }
 
 }  // namespace
