@@ -270,8 +270,8 @@ void add_span_command(CLI::App& app, int& exit_code) {
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   add_report_option(*sub, options->report, "the inputs, the verdict, the stress, amplitude and power curves, the life");
   sub->add_option("--profile", options->profile,
-                  "Also write the standing wave along the span at the governing frequency (CSV: x_m, displacement_m, "
-                  "envelope_m, attachment)");
+                  "Also write the standing wave along the span at the governing frequency (CSV: attachment, x_m, displacement_m, "
+                  "envelope_m)");
   sub->callback([options, &exit_code] { exit_code = run_span_command(*options); });
 }
 

@@ -13,7 +13,7 @@ const std::vector<TypicalRange>& typical::all() {
                                                 conductor_diameter, conductor_mass_per_length, span_length,
                                                 rated_tensile_strength, conductor_ei_min, conductor_ei_max,
                                                 outer_wire_diameter, outer_wire_modulus, span_tension,
-                                                tension_fraction, catenary_parameter, damper_position, strouhal,
+                                                tension_fraction, catenary_parameter, damper_position, attachment_mass, strouhal,
                                                 wind_speed, turbulence_intensity, self_damping_l, self_damping_m,
                                                 self_damping_n, fatigue_cycles, endurance_limit, endurance_limit_mpa,
                                                 limit_pp_microstrain, weibull_shape,

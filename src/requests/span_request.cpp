@@ -410,12 +410,13 @@ Table<SpanProfileRow> span_profile_table() {
                        [field](const R& r, std::size_t) { return r.*field; }, {}};
   };
   return Table<R>({
+      // A label leads a CSV.
+      {"attachment", "", "at an attachment's place: its name and kind (mass or damper); empty elsewhere",
+       ColumnKind::label, {}, [](const R& r, std::size_t) { return r.attachment; }},
       number("x_m", "m", "the place along the span, from end 1", &R::x),
       number("displacement_m", "m", "|Y(x)|, the conductor's displacement amplitude there (zero-to-peak)",
              &R::displacement),
       number("envelope_m", "m", "|A| + |B|, the antinode amplitude of the stretch x lies in", &R::envelope),
-      {"attachment", "", "at an attachment's place: its name and kind (mass or damper); empty elsewhere",
-       ColumnKind::label, {}, [](const R& r, std::size_t) { return r.attachment; }},
   });
 }
 

@@ -96,7 +96,7 @@ struct SpanProfileRow {
 };
 /// The profile's rows: every sample, an attachment's name at its position.
 std::vector<SpanProfileRow> span_profile_rows(const span::SpanProfile& profile);
-/// x_m, displacement_m, envelope_m, attachment (`span --profile`'s CSV, Python's arrays).
+/// attachment, x_m, displacement_m, envelope_m (`span --profile`'s CSV, Python's arrays).
 Table<SpanProfileRow> span_profile_table();
 /// The profile at the balance's governing frequency (the largest judged stress);
 /// InvalidParameter naming "profile" when no point converged.

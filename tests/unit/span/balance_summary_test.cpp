@@ -107,14 +107,14 @@ TEST(BalanceSummary, TheMicrostrainCriterionJudgesThePoffenbergerSwartStressAndI
   const Span span = summary_span(FatigueCriterion::microstrain);
   EXPECT_DOUBLE_EQ(span.endurance_limit(), 0.5e-6 * 150.0 * 68e9);
   // fymax 8 MPa is above 5.1 MPa, its Poffenberger-Swart 4 MPa and its top 4.5 MPa within.
-  const BalanceSummary safe = summarise(span, {made_point(10.0, 8.0, 9.0)});
+  const BalanceSummary safe = summary_of(FatigueCriterion::microstrain, {made_point(10.0, 8.0, 9.0)});
   EXPECT_EQ(safe.verdict, Verdict::safe);
   EXPECT_EQ(safe.max_judged_stress, 4.0 * kMegapascal);
   EXPECT_DOUBLE_EQ(safe.max_judged_stress_high, 4.5 * kMegapascal);
   EXPECT_EQ(safe.max_stress_fymax, 8.0 * kMegapascal);
   EXPECT_DOUBLE_EQ(judged_stress_high(span, made_point(10.0, 8.0, 9.0)), 4.5 * kMegapascal);
   // 5 MPa within, its top 5 * 11 / 10 = 5.5 MPa above.
-  const BalanceSummary uncertain = summarise(span, {made_point(10.0, 8.0, 9.0), made_point(20.0, 10.0, 11.0)});
+  const BalanceSummary uncertain = summary_of(FatigueCriterion::microstrain, {made_point(10.0, 8.0, 9.0), made_point(20.0, 10.0, 11.0)});
   EXPECT_EQ(uncertain.verdict, Verdict::uncertain);
   EXPECT_DOUBLE_EQ(uncertain.max_judged_stress_high, 5.5 * kMegapascal);
   // The undamped balance judged alike: 3 * 5 = 15 MPa.

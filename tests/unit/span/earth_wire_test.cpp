@@ -225,7 +225,7 @@ std::string earth_wire_span_text(const std::string& conductor, const std::string
 }
 
 TEST(EarthWireSpanFile, TheSafeBorderLineIsRefusedAtTheFatigueTable) {
-  const auto path = testing::write_temp_file(earth_wire_directory(), "ehs.toml",
+  const auto path = stockbridge::testing::write_temp_file(earth_wire_directory(), "ehs.toml",
                                              earth_wire_span_text("type = \"EHS 3/8\"\n", "cycles = 5e8\n"));
   try {
     io::load_span_file(path);
