@@ -137,33 +137,31 @@ FrequencyBalance::FrequencyBalance(const Span& span, const SpanTables& tables, s
   }
 }
 
-double FrequencyBalance::wind(const std::vector<SubSpan>& subspans) const {
+double FrequencyBalance::wind(const std::vector<SubSpan>& subspans, double scale) const {
   double p = 0.0;
-  for (const SubSpan& s : subspans) p += span_.wind().power(s.amplitude, frequency_, span_.conductor().diameter, s.length());
+  for (const SubSpan& s : subspans) {
+    p += span_.wind().power(scale * s.amplitude, frequency_, span_.conductor().diameter, s.length());
+  }
   return p;
 }
 
-double FrequencyBalance::self_damping(const std::vector<SubSpan>& subspans) const {
+double FrequencyBalance::self_damping(const std::vector<SubSpan>& subspans, double scale) const {
   double p = 0.0;
   for (const SubSpan& s : subspans) {
-    p += span_.self_damping().power(s.amplitude, frequency_, span_.conductor(), span_.tension(), s.length());
+    p += span_.self_damping().power(scale * s.amplitude, frequency_, span_.conductor(), span_.tension(), s.length());
   }
   return p;
 }
 
 double FrequencyBalance::net_power_in_proportion(double y) const {
-  std::vector<SubSpan> at = unit_subspans_;
-  for (SubSpan& s : at) s.amplitude *= y;
-  return wind(at) - self_damping(at);
+  return wind(unit_subspans_, y) - self_damping(unit_subspans_, y);
 }
 
 double FrequencyBalance::net_power_slope(double y) {
   const double dy = 1e-6 * y;
   if (!absorbed_per_square()) {
-    const auto net = [&](double a) {
-      const std::vector<SubSpan> whole{{0.0, span_.length(), a}};
-      return wind(whole) - self_damping(whole);
-    };
+    const std::vector<SubSpan> whole{{0.0, span_.length(), 1.0}};
+    const auto net = [&](double a) { return wind(whole, a) - self_damping(whole, a); };
     return (net(y + dy) - net(y - dy)) / (2.0 * dy);
   }
   return (net_power_in_proportion(y + dy) - net_power_in_proportion(y - dy)) / (2.0 * dy);

@@ -65,9 +65,9 @@ class FrequencyBalance {
   double frequency() const { return frequency_; }
   const StringWave& wave() const { return wave_; }
   const std::vector<EndLayout>& layouts() const { return layouts_; }
-  /// P_w and P_s summed over the stretches at their own amplitudes, W.
-  double wind(const std::vector<SubSpan>& subspans) const;
-  double self_damping(const std::vector<SubSpan>& subspans) const;
+  /// P_w and P_s summed over the stretches at their own amplitudes times `scale`, W.
+  double wind(const std::vector<SubSpan>& subspans, double scale = 1.0) const;
+  double self_damping(const std::vector<SubSpan>& subspans, double scale = 1.0) const;
   /// d(P_w - P_s)/dY at y (a central difference: the laws are smooth or piecewise
   /// linear); the stretches' amplitudes in proportion to y as the fixed impedances
   /// make them (the polish's trials), the whole span at y otherwise.

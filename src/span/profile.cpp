@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <stdexcept>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -14,71 +15,18 @@ namespace stockbridge::span {
 
 namespace {
 
-/// A load on an end's chain: its distance from the clamp and Z / Z0.
-struct ChainLoad {
-  double distance = 0.0;
-  std::complex<double> ratio;
-};
-
-/// The loads of `layout` at `point`: its masses (j w M) and dampers (their balanced Z).
-std::vector<ChainLoad> chain_loads(const Span& span, const EndLayout& layout, const BalancePoint& point,
-                                   const StringWave& wave) {
-  std::vector<ChainLoad> loads;
-  for (std::size_t i = 0; i < layout.attachments.masses.size(); ++i) {
-    loads.push_back({layout.attachments.mass_positions[i],
-                     {0.0, wave.angular_frequency * layout.attachments.masses[i] / wave.wave_impedance}});
-  }
+/// The impedances of `layout`'s dampers at `point` (their balanced Z), in its order.
+std::vector<std::complex<double>> chain_impedances(const Span& span, const EndLayout& layout, const BalancePoint& point) {
+  std::vector<std::complex<double>> z;
   for (std::size_t j = 0; j < layout.positions.size(); ++j) {
     const double from_end1 = layout.end == 1 ? layout.positions[j] : span.length() - layout.positions[j];
     const auto d = std::find_if(point.dampers.begin(), point.dampers.end(), [&](const DamperAtBalance& a) {
       return a.damper == layout.damper[j] && std::abs(a.position - from_end1) <= 1e-9 * span.length();
     });
     if (d == point.dampers.end()) throw std::logic_error("span_profile: a damper of the chain is not in the point");
-    loads.push_back({layout.positions[j], d->impedance / wave.wave_impedance});
+    z.push_back(d->impedance);
   }
-  std::stable_sort(loads.begin(), loads.end(), [](const ChainLoad& a, const ChainLoad& b) { return a.distance < b.distance; });
-  return loads;
-}
-
-/// The chain of one end sampled at `distances` (ascending, from its clamp): |Y| and
-/// the local antinode amplitude, scaled so that the wave past its last load has
-/// antinode amplitude `antinode`.
-struct Sampled {
-  std::vector<double> displacement, envelope;
-};
-Sampled sample_chain(const std::vector<ChainLoad>& loads, const StringWave& wave, double antinode,
-                     const std::vector<double>& distances) {
-  const double k = wave.wavenumber;
-  const std::complex<double> jk(0.0, k);
-  const auto carry = [k](std::complex<double>& y, std::complex<double>& slope, double d) {
-    const double c = std::cos(k * d), s = std::sin(k * d);
-    const std::complex<double> next = y * c + slope * s / k;
-    slope = -y * k * s + slope * c;
-    y = next;
-  };
-  const auto local = [jk](std::complex<double> y, std::complex<double> slope) {
-    return std::abs(0.5 * (y + slope / jk)) + std::abs(0.5 * (y - slope / jk));
-  };
-  // The states just past each load (unit slope at the clamp).
-  std::vector<std::complex<double>> ys{0.0}, slopes{1.0};
-  std::vector<double> at{0.0};
-  for (const ChainLoad& load : loads) {
-    std::complex<double> y = ys.back(), slope = slopes.back();
-    carry(y, slope, load.distance - at.back());
-    slope += jk * load.ratio * y;
-    ys.push_back(y), slopes.push_back(slope), at.push_back(load.distance);
-  }
-  const double scale = antinode / local(ys.back(), slopes.back());
-  Sampled out;
-  std::size_t stretch = 0;
-  for (const double s : distances) {
-    while (stretch + 1 < at.size() && at[stretch + 1] <= s) ++stretch;
-    std::complex<double> y = ys[stretch], slope = slopes[stretch];
-    carry(y, slope, s - at[stretch]);
-    out.displacement.push_back(scale * std::abs(y));
-    out.envelope.push_back(scale * local(y, slope));
-  }
-  return out;
+  return z;
 }
 
 std::vector<ProfileAttachment> attachments_of(const Span& span) {
@@ -137,10 +85,11 @@ SpanProfile span_profile(const Span& span, const BalancePoint& point, int points
       distances.push_back(layout.end == 1 ? x : length - x);
     }
     if (layout.end == 2) std::reverse(index.begin(), index.end()), std::reverse(distances.begin(), distances.end());
-    const Sampled s = sample_chain(chain_loads(span, layout, point, wave), wave, point.amplitude, distances);
+    const EndSamples s = sample_end(wave, layout.positions, chain_impedances(span, layout, point), point.amplitude,
+                                    layout.attachments, distances);
     for (std::size_t n = 0; n < index.size(); ++n) {
       out.displacement[index[n]] = s.displacement[n];
-      out.envelope[index[n]] = s.envelope[n];
+      out.envelope[index[n]] = s.antinode[n];
     }
   }
   return out;

@@ -109,6 +109,37 @@ EndResponse end_response(const StringWave& wave, const std::vector<double>& posi
   return r;
 }
 
+EndSamples sample_end(const StringWave& wave, const std::vector<double>& positions,
+                      const std::vector<std::complex<double>>& impedances, double antinode,
+                      const EndAttachments& attachments, const std::vector<double>& distances) {
+  assert(positions.size() == impedances.size());
+  const double k = wave.wavenumber;
+  const std::complex<double> jk(0.0, k);
+  // The wave just past the clamp and past each attachment (unit slope at the clamp).
+  std::vector<double> at{0.0};
+  std::vector<std::complex<double>> ys{0.0}, slopes{1.0};
+  std::complex<double> y = 0.0, slope = 1.0;
+  walk_chain(positions, attachments, [&](Event event, std::size_t i, double distance) {
+    propagate(y, slope, k, distance);
+    if (event == Event::mass) slope += jk * mass_ratio(wave, attachments.masses[i]) * y;
+    if (event == Event::damper) slope += jk * (impedances[i] / wave.wave_impedance) * y;
+    at.push_back(at.back() + distance);
+    ys.push_back(y);
+    slopes.push_back(slope);
+  });
+  const double scale = antinode / local_antinode(y, slope, jk);
+  EndSamples out;
+  std::size_t stretch = 0;
+  for (const double d : distances) {
+    while (stretch + 1 < at.size() && at[stretch + 1] <= d) ++stretch;
+    std::complex<double> yd = ys[stretch], sd = slopes[stretch];
+    propagate(yd, sd, k, d - at[stretch]);
+    out.displacement.push_back(scale * std::abs(yd));
+    out.antinode.push_back(scale * local_antinode(yd, sd, jk));
+  }
+  return out;
+}
+
 EndResponseTangent end_response_tangent(const StringWave& wave, const std::vector<double>& positions,
                                         const std::vector<std::complex<double>>& impedances,
                                         const std::vector<std::complex<double>>& direction, double antinode,

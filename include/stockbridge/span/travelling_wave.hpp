@@ -57,6 +57,17 @@ EndResponse end_response(const StringWave& wave, const std::vector<double>& posi
                          const std::vector<std::complex<double>>& impedances, double antinode,
                          const EndAttachments& attachments = {});
 
+/// The end's wave of end_response(wave, positions, impedances, antinode, attachments)
+/// at `distances` (m from the end, ascending): |Y| and the local antinode amplitude
+/// |A| + |B| of the stretch each lies in.
+struct EndSamples {
+  std::vector<double> displacement;
+  std::vector<double> antinode;
+};
+EndSamples sample_end(const StringWave& wave, const std::vector<double>& positions,
+                      const std::vector<std::complex<double>>& impedances, double antinode,
+                      const EndAttachments& attachments, const std::vector<double>& distances);
+
 /// The first-order change of end_response(wave, positions, impedances, antinode)
 /// when the impedances move by dZ_j = `direction`[j] (N s/m): the response's
 /// recursion is linear in each Z_j, so this is exact (forward mode through it).
