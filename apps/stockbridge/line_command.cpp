@@ -221,9 +221,10 @@ int run_line_command(const LineOptions& options) {
   const std::size_t spans = file.line.spans().size();
   if (!options.details.empty()) prepare_line_details(options.details, file);
   const std::string fingerprint = requests::line_fingerprint(file, line_text_of(options.line_file));
-  std::map<std::size_t, line::ScheduleRow> rows;
+  std::map<std::size_t, line::ScheduleRow> rows;  // the journal's; the run's outcomes join them when it ends
   int cut_short = 0;
   if (root && options.resume) rows = read_line_journal(journal_path, fingerprint, spans, cut_short);
+  const std::size_t resumed = rows.size();
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < spans; ++i) {
     if (!rows.contains(i)) todo.push_back(i);
@@ -254,13 +255,12 @@ int run_line_command(const LineOptions& options) {
     if (!options.quiet) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const std::size_t left = todo.size() - done_now;
-      fmt::print(stderr, "line: {}/{} {}: {}, {}{}\n", rows.size() + 1, spans, outcome.row->id,
+      fmt::print(stderr, "line: {}/{} {}: {}, {}{}\n", resumed + done_now, spans, outcome.row->id,
                  line_arrangement(*outcome.row), span::verdict_name(outcome.row->verdict),
                  left == 0 ? std::string() : fmt::format("; {} left, about {}", left,
                                                          line_duration(seconds / static_cast<double>(done_now) *
                                                                        static_cast<double>(left))));
     }
-    rows.insert_or_assign(outcome.index, *outcome.row);
   };
   run.dealer = [&processes](int threads, const std::vector<std::size_t>& tasks,
                             const std::function<std::string(std::size_t)>& compute,
@@ -268,8 +268,11 @@ int run_line_command(const LineOptions& options) {
                             const std::function<void()>&, const std::atomic<bool>& stop) {
     processes.deal(threads, tasks, compute, pass_on, stop);
   };
-  const requests::LineRun result = requests::run_line(file, cache, run);
+  requests::LineRun result = requests::run_line(file, cache, run);
   const bool interrupted = result.termination == Termination::interrupted;
+  for (requests::SpanOutcome& outcome : result.outcomes) {
+    if (outcome.row) rows.insert_or_assign(outcome.index, std::move(*outcome.row));  // scheduled or failed
+  }
   interrupt.reset();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!root) return kSuccess;
