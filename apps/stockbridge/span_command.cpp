@@ -21,6 +21,7 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/span_request.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 
@@ -165,19 +166,20 @@ void print_span_report(const requests::SpanResult& result) {
   }
 }
 
-int run_span_command(const SpanOptions& options) {
+int run_span_command(const SpanOptions& options, Invocation& invocation) {
   const requests::SpanRequest request = span_request_of(options);
   check_report_path(options.report);
-  const io::SpanFile file = read_span_input(options.span_file, {{"-o", options.output}, {"--report", options.report.value_or("")}},
-                                             slip_policy(options.allow_unusual));
+  const io::SpanFile file = read_span_input(
+      invocation, options.span_file, {{"-o", options.output}, {"--report", options.report.value_or("")}},
+      slip_policy(options.allow_unusual));
   requests::validate(request, file.span);  // a refusal prints its one line alone, before the file's warnings
   const auto start = std::chrono::steady_clock::now();
-  ProgressReport progress("span: impedance tables", options.quiet);
+  ProgressReport progress(invocation, "span: impedance tables", options.quiet);
   const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const span::SpanAnalysis& a = result.analysis;
-  print_warnings(a.warnings);
-  const std::string report = options.report ? report::span_report(result, report_context()) : std::string();
+  print_warnings(invocation, a.warnings);
+  const std::string report = options.report ? report::span_report(result, invocation.report_context()) : std::string();
   io::write_file_atomically(options.output, span_csv(a));
   if (options.report) io::write_file_atomically(*options.report, report);
 
@@ -209,7 +211,7 @@ int run_span_command(const SpanOptions& options) {
 
 }  // namespace
 
-void add_span_command(CLI::App& app, int& exit_code) {
+void add_span_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<SpanOptions>();
   CLI::App* sub = app.add_subcommand(
       "span", "Energy balance of a span with its dampers over the wind band: amplitudes, stresses, endurance, life");
@@ -239,7 +241,7 @@ void add_span_command(CLI::App& app, int& exit_code) {
   add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   add_report_option(*sub, options->report, "the inputs, the verdict, the stress, amplitude and power curves, the life");
-  sub->callback([options, &exit_code] { exit_code = run_span_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_span_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli
