@@ -35,7 +35,7 @@ int run_conductors_command(const ConductorsOptions& options) {
 
 }  // namespace
 
-void add_conductors_command(CLI::App& app, int& exit_code) {
+void add_conductors_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<ConductorsOptions>();
   CLI::App* sub = app.add_subcommand(
       "conductors", "The catalogue of conductors a span file's [conductor] type = \"...\" selects (docs/span.md)");
@@ -43,7 +43,7 @@ void add_conductors_command(CLI::App& app, int& exit_code) {
                   "One conductor (e.g. \"ACSR Drake\"; case, spaces and hyphens aside): print its [conductor] table "
                   "for a span file");
   sub->add_flag("--json", options->json, "Print JSON instead of text (one object; the list as {\"conductors\": [...]})");
-  sub->callback([options, &exit_code] { exit_code = run_conductors_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_conductors_command(*options)); });
 }
 
 }  // namespace stockbridge::cli

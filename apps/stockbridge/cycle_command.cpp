@@ -26,11 +26,12 @@ struct CycleOptions {
   std::string output;
 };
 
-int run_cycle_command(const CycleOptions& options) {
+int run_cycle_command(const CycleOptions& options, Invocation& invocation) {
   (void)requests::experiment_drive(options.request);  // the options checked before the file is read
-  const cable::Cable cable = read_cable_input(options.cable_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
+  const cable::Cable cable =
+      read_cable_input(invocation, options.cable_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
   const requests::CycleResult result = requests::run_cycle(cable, options.request);
-  print_warnings(result.warnings);
+  print_warnings(invocation, result.warnings);
   io::write_file_atomically(options.output,
                             requests::cycle_table().values(requests::cycle_samples(result)).csv());
   const cable::ExperimentSummary& s = result.record.summary;
@@ -50,7 +51,7 @@ int run_cycle_command(const CycleOptions& options) {
 
 }  // namespace
 
-void add_cycle_command(CLI::App& app, int& exit_code) {
+void add_cycle_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<CycleOptions>();
   CLI::App* sub = app.add_subcommand("cycle", "Run hysteresis experiment (a) tip force or (b) tip rotation on a cable");
   sub->add_option("cable", options->cable_file, "Cable description (TOML)")->required();
@@ -63,7 +64,7 @@ void add_cycle_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout");
   add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
-  sub->callback([options, &exit_code] { exit_code = run_cycle_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_cycle_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

@@ -59,7 +59,7 @@ span::Span span_with_datasheet_damper(const io::SpanFile& file, const std::strin
   return file.span.with_dampers(std::move(dampers));
 }
 
-int run_datasheet_command(const DatasheetOptions& options) {
+int run_datasheet_command(const DatasheetOptions& options, Invocation& invocation) {
   check_report_path(options.output, "-o");
   requests::SweepRequest sweep;
   sweep.velocities = parse_number_list(options.velocity, "--velocity");
@@ -67,12 +67,16 @@ int run_datasheet_command(const DatasheetOptions& options) {
   sweep.threads = options.threads;
   const damper::SweepSpec spec = requests::sweep_spec(sweep);
   require_in_range("span-points", options.span_points, 2, 100000);
-  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
+  const damper::Damper damper =
+      read_damper_input(invocation, options.damper_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
   const std::string name = std::filesystem::path(options.damper_file).stem().string();
   std::vector<io::SpanFile> span_files;
-  for (const std::string& path : options.spans) span_files.push_back(read_span_input(path, {{"-o", options.output}}, slip_policy(options.allow_unusual)));
+  for (const std::string& path : options.spans) {
+    span_files.push_back(
+        read_span_input(invocation, path, {{"-o", options.output}}, slip_policy(options.allow_unusual)));
+  }
 
-  ProgressReport progress("datasheet: impedance", options.quiet);
+  ProgressReport progress(invocation, "datasheet: impedance", options.quiet);
   const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));
   const requests::ModesResult modes = requests::run_modes(damper);
   report::DatasheetInput input{name, &damper, &runs, &modes, {}, {}};
@@ -83,9 +87,9 @@ int run_datasheet_command(const DatasheetOptions& options) {
     const span::Span s = span_with_datasheet_damper(span_files[k], options.spans[k], damper, name);
     input.span_names.push_back(std::filesystem::path(options.spans[k]).stem().string());
     input.spans.push_back(requests::run_span(s, span_files[k].balance, request));
-    print_warnings(input.spans.back().analysis.warnings);
+    print_warnings(invocation, input.spans.back().analysis.warnings);
   }
-  io::write_file_atomically(options.output, report::datasheet(input, report_context()));
+  io::write_file_atomically(options.output, report::datasheet(input, invocation.report_context()));
 
   const requests::SweepTally tally = requests::tally(runs);
   int span_points = 0, span_converged = 0;
@@ -106,7 +110,7 @@ int run_datasheet_command(const DatasheetOptions& options) {
 
 }  // namespace
 
-void add_datasheet_command(CLI::App& app, int& exit_code) {
+void add_datasheet_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<DatasheetOptions>();
   CLI::App* sub = app.add_subcommand(
       "datasheet", "A damper's data sheet (self-contained HTML): its numbers, impedance and power at the test "
@@ -126,7 +130,7 @@ void add_datasheet_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--quiet", options->quiet, "No progress on stderr");
   add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output HTML file")->required();
-  sub->callback([options, &exit_code] { exit_code = run_datasheet_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_datasheet_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

@@ -24,6 +24,7 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/design_file.hpp"
+#include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/design_request.hpp"
 #include "journal_file.hpp"
 #include "task_runner.hpp"
@@ -180,9 +181,11 @@ void print_design_report(const design::DesignStudy& study, const design::DesignR
 }
 
 /// The HTML report: the study, the optimum and the rounded design, the objective
-/// against each variable, and the design to build balanced on each span.
+/// against each variable, and the design to build balanced on each span; `context`
+/// the run's.
 std::string design_report(const DesignOptions& options, const design::DesignStudy& study,
-                          const design::DesignResult& result, const std::optional<design::Evaluation>& rounded) {
+                          const design::DesignResult& result, const std::optional<design::Evaluation>& rounded,
+                          const report::ReportContext& context) {
   report::DesignReportInput input{std::filesystem::path(options.design_file).stem().string(), &study, &result,
                                   rounded ? &*rounded : nullptr, options.round_digits, {}};
   const design::Evaluation* build = rounded && rounded->feasible() ? &*rounded
@@ -198,7 +201,7 @@ std::string design_report(const DesignOptions& options, const design::DesignStud
       input.best_spans.push_back(requests::run_span(s, study.spans()[k].balance, request));
     }
   }
-  return report::design_report(input, report_context());
+  return report::design_report(input, context);
 }
 
 /// On stderr, as the span command does for its points: which candidates did not
@@ -226,7 +229,7 @@ void print_unconverged_candidates(const design::DesignResult& result, const std:
   }
 }
 
-int run_design_command(const DesignOptions& options) {
+int run_design_command(const DesignOptions& options, Invocation& invocation) {
   Processes processes;
   if (processes.mpirun_without_mpi()) {
     fmt::print(stderr, "warning: started by mpirun, but this stockbridge was built without MPI: every process runs "
@@ -240,12 +243,13 @@ int run_design_command(const DesignOptions& options) {
   requests::validate(request);
   check_report_path(options.report);
   const io::DesignFile file = read_design_input(
-      options.design_file, {{"-o", options.output}, {"--best", options.best}, {"--report", options.report.value_or("")}},
+      invocation, options.design_file,
+      {{"-o", options.output}, {"--best", options.best}, {"--report", options.report.value_or("")}},
       slip_policy(options.allow_unusual));
   const design::SearchOptions search = requests::search_options(file.search, request);
 
   const auto start = std::chrono::steady_clock::now();
-  ProgressReport progress("design", options.quiet || processes.rank() != 0, "candidates");
+  ProgressReport progress(invocation, "design", options.quiet || processes.rank() != 0, "candidates");
   const std::unique_ptr<design::TaskRunner> runner = processes.runner(options.threads);
   const std::string head =
       fmt::format("{} {}", kDesignJournalHead, requests::design_fingerprint(file.inputs, design_text_of(options.design_file)));
@@ -271,7 +275,8 @@ int run_design_command(const DesignOptions& options) {
   if (processes.rank() != 0) return result.best ? kSuccess : kNotConverged;
 
   const std::optional<design::Evaluation> rounded = requests::rounded_best(file.study, result, options.round_digits);
-  const std::string report = options.report ? design_report(options, file.study, result, rounded) : std::string();
+  const std::string report =
+      options.report ? design_report(options, file.study, result, rounded, invocation.report_context()) : std::string();
   io::write_file_atomically(options.output, requests::design_table(file.study).values(result.evaluations).csv());
   const auto best = requests::best_damper_file(file.study, result, std::filesystem::path(options.design_file).filename().string(),
                                                rounded ? &*rounded : nullptr);
@@ -297,7 +302,7 @@ int run_design_command(const DesignOptions& options) {
 
 }  // namespace
 
-void add_design_command(CLI::App& app, int& exit_code) {
+void add_design_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<DesignOptions>();
   CLI::App* sub = app.add_subcommand(
       "design", "Search the best damper for spans and their wind band (a design file): on threads and MPI ranks");
@@ -319,7 +324,7 @@ void add_design_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   add_report_option(*sub, options->report,
                     "the study, the optimum and the design to build, the objective against each variable, its curves");
-  sub->callback([options, &exit_code] { exit_code = run_design_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_design_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

@@ -17,6 +17,7 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/report/fatigue_tests_report.hpp"
+#include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/fatigue_tests_request.hpp"
 
 namespace stockbridge::cli {
@@ -33,7 +34,7 @@ struct FatigueTestsOptions {
   std::string output;
 };
 
-int run_fatigue_tests_command(const FatigueTestsOptions& options) {
+int run_fatigue_tests_command(const FatigueTestsOptions& options, Invocation& invocation) {
   check_report_path(options.report);
   requests::FatigueTestsRequest request;
   request.file = options.tests_file;
@@ -49,8 +50,9 @@ int run_fatigue_tests_command(const FatigueTestsOptions& options) {
   // curve) leaves every file as it was.
   const std::string csv = requests::fatigue_tests_values(outcome.result).csv();
   const std::string curve = options.curve ? requests::fatigue_tests_curve_toml(outcome) : std::string();
-  print_warnings(outcome.warnings);
-  const std::string report = options.report ? report::fatigue_tests_report(outcome, report_context()) : std::string();
+  print_warnings(invocation, outcome.warnings);
+  const std::string report =
+      options.report ? report::fatigue_tests_report(outcome, invocation.report_context()) : std::string();
   io::write_file_atomically(options.output, csv);
   if (options.curve) io::write_file_atomically(*options.curve, curve);
   if (options.report) io::write_file_atomically(*options.report, report);
@@ -79,7 +81,7 @@ int run_fatigue_tests_command(const FatigueTestsOptions& options) {
 
 }  // namespace
 
-void add_fatigue_tests_command(CLI::App& app, int& exit_code) {
+void add_fatigue_tests_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<FatigueTestsOptions>();
   CLI::App* sub = app.add_subcommand(
       "fatigue-tests", "A conductor's fatigue tests: stresses, the Safe Border Line, a censored Basquin fit and its "
@@ -93,7 +95,7 @@ void add_fatigue_tests_command(CLI::App& app, int& exit_code) {
   add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file: the tests with their stresses")->required();
   add_report_option(*sub, options->report, "the S-N plot, the fit and its design curve, the tests against the Safe Border Line");
-  sub->callback([options, &exit_code] { exit_code = run_fatigue_tests_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_fatigue_tests_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

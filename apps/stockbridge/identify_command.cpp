@@ -96,7 +96,7 @@ struct GlobalOptions {
   bool json = false;
 };
 
-int run_global(const GlobalOptions& options) {
+int run_global(const GlobalOptions& options, Invocation& invocation) {
   require_outputs_apart({{"-o", options.output}, {"--fitted", options.fitted}}, {{"the --input record", options.input}});
   const requests::GlobalRequest& request = options.request;
   (void)requests::global_options(request);
@@ -107,7 +107,7 @@ int run_global(const GlobalOptions& options) {
   } catch (const InvalidParameter& e) {
     throw InputError(fmt::format("{}: {}", options.input, e.what()));
   }
-  print_warnings(result.warnings);
+  print_warnings(invocation, result.warnings);
   if (!options.output.empty()) {
     io::write_file_atomically(options.output, requests::global_cable_toml(request, result, options.input));
   }
@@ -133,7 +133,7 @@ int run_global(const GlobalOptions& options) {
 
 }  // namespace
 
-void add_identify_command(CLI::App& app, int& exit_code) {
+void add_identify_command(CLI::App& app, Invocation& invocation) {
   CLI::App* identify = app.add_subcommand(
       "identify",
       "Identify cable parameters from measured hysteresis or impedance, or a conductor's self-damping from its tests");
@@ -155,7 +155,7 @@ void add_identify_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--json", local->json,
                 "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout (Bouc-Wen: "
                 "{\"law\": \"bouc-wen\", \"ei_min\": ..., \"ei_max\": ..., \"chi0\": ..., \"error\": ...})");
-  sub->callback([local, &exit_code] { exit_code = run_local(*local); });
+  sub->callback([local, &invocation] { invocation.set_exit_code(run_local(*local)); });
 
   auto global = std::make_shared<GlobalOptions>();
   CLI::App* g = identify->add_subcommand(
@@ -181,10 +181,10 @@ void add_identify_command(CLI::App& app, int& exit_code) {
   g->add_flag("--json", global->json,
               "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"error\": ...} on stdout (Bouc-Wen: "
               "{\"law\": \"bouc-wen\", \"ei_min\": ..., \"ei_max\": ..., \"chi0\": ..., \"error\": ...})");
-  g->callback([global, &exit_code] { exit_code = run_global(*global); });
+  g->callback([global, &invocation] { invocation.set_exit_code(run_global(*global, invocation)); });
 
-  add_identify_impedance_command(*identify, exit_code);
-  add_identify_self_damping_command(*identify, exit_code);
+  add_identify_impedance_command(*identify, invocation);
+  add_identify_self_damping_command(*identify, invocation);
 }
 
 }  // namespace stockbridge::cli

@@ -51,15 +51,16 @@ std::vector<std::string> cable_outputs(const std::string& output, const identifi
   return paths;
 }
 
-int run_impedance_fit(const ImpedanceFitOptions& options) {
+int run_impedance_fit(const ImpedanceFitOptions& options, Invocation& invocation) {
   const identification::ImpedanceIdentificationOptions fit_options = requests::fit_options(options.request);
   const std::vector<CommandFile> outputs{
       {"-o", options.output}, {"--fitted", options.fitted}, {"--fitted-damper", options.fitted_damper}};
   require_outputs_apart(outputs, {{"the --input measurement", options.input}, {"the --damper file", options.damper_file}});
   const io::MeasuredImpedanceFile measured = io::load_measured_impedance(options.input, slip_policy(options.allow_unusual));
   const identification::ImpedanceMeasurement& measurement = measured.measurement;
-  const damper::Damper damper = read_damper_input(options.damper_file, outputs, slip_policy(options.allow_unusual));
-  print_warnings(measured.warnings);
+  const damper::Damper damper =
+      read_damper_input(invocation, options.damper_file, outputs, slip_policy(options.allow_unusual));
+  print_warnings(invocation, measured.warnings);
   identification::ImpedanceIdentification fit;
   try {
     fit = identification::identify_impedance(damper.description(), measurement, fit_options);
@@ -72,7 +73,7 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
                          ? fmt::format("{}: {}", options.input, what.substr(measurement_prefix.size()))
                          : fmt::format("{}: {}", options.damper_file, what));
   }
-  print_warnings(requests::fit_warnings(fit, options.input));
+  print_warnings(invocation, requests::fit_warnings(fit, options.input));
   const std::vector<std::string> cables = cable_outputs(options.output, fit, damper);
   for (std::size_t t = 0; t < cables.size(); ++t) {
     io::write_file_atomically(cables[t], requests::fitted_cable_file(fit, t, options.input));
@@ -99,7 +100,7 @@ int run_impedance_fit(const ImpedanceFitOptions& options) {
 
 }  // namespace
 
-void add_identify_impedance_command(CLI::App& identify, int& exit_code) {
+void add_identify_impedance_command(CLI::App& identify, Invocation& invocation) {
   auto options = std::make_shared<ImpedanceFitOptions>();
   CLI::App* sub = identify.add_subcommand(
       "impedance", "Cable parameters (and chosen numbers of the damper) from its measured impedance (frequency_hz, "
@@ -135,7 +136,7 @@ void add_identify_impedance_command(CLI::App& identify, int& exit_code) {
   sub->add_flag("--json", options->json,
                 "Print {\"ei\": ..., \"jenkin\": [{\"c\": ..., \"h\": ...}], \"misfit\": ..., \"parameters\": ...} on "
                 "stdout");
-  sub->callback([options, &exit_code] { exit_code = run_impedance_fit(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_impedance_fit(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

@@ -26,11 +26,11 @@ struct SelfDampingOptions {
   bool allow_unusual = false;
 };
 
-int run_self_damping(const SelfDampingOptions& options) {
+int run_self_damping(const SelfDampingOptions& options, Invocation& invocation) {
   require_outputs_apart({{"-o", options.output}}, {{"the test file", options.input}});
   const measurements::SelfDampingTests tests =
       measurements::load_self_damping_tests(options.input, slip_policy(options.allow_unusual));
-  print_warnings(tests.warnings);
+  print_warnings(invocation, tests.warnings);
   measurements::SelfDampingFit fit;
   try {
     fit = measurements::fit_self_damping(tests.tests, options.n);
@@ -49,7 +49,7 @@ int run_self_damping(const SelfDampingOptions& options) {
 
 }  // namespace
 
-void add_identify_self_damping_command(CLI::App& identify, int& exit_code) {
+void add_identify_self_damping_command(CLI::App& identify, Invocation& invocation) {
   auto options = std::make_shared<SelfDampingOptions>();
   CLI::App* sub = identify.add_subcommand(
       "self-damping", "The power law P = k Y^l f^m / (T/1000)^n of a conductor's self-damping from its tests "
@@ -66,7 +66,7 @@ void add_identify_self_damping_command(CLI::App& identify, int& exit_code) {
   sub->add_flag("--json", options->json,
                 "Print {\"k\": {\"value\": ..., \"standard_error\": ...}, \"l\": ..., \"m\": ..., \"n\": ..., "
                 "\"n_given\": ..., \"points\": ..., \"residual_rms_ln_p\": ..., \"r_squared\": ..., ...} on stdout");
-  sub->callback([options, &exit_code] { exit_code = run_self_damping(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_self_damping(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

@@ -20,6 +20,7 @@
 #include "stockbridge/damper/sweep.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/plausibility.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 
@@ -58,16 +59,16 @@ requests::SweepRequest sweep_request(const ImpedanceOptions& options) {
   return request;
 }
 
-int run_impedance_command(const ImpedanceOptions& options) {
+int run_impedance_command(const ImpedanceOptions& options, Invocation& invocation) {
   const requests::SweepRequest request = sweep_request(options);
   const damper::SweepSpec spec = requests::sweep_spec(request);
   check_report_path(options.report);
-  const damper::Damper damper =
-      read_damper_input(options.damper_file, {{"-o", options.output}, {"--report", options.report.value_or("")}},
-                        slip_policy(options.allow_unusual));
-  warn_unusual_options(requests::unusual_values(request), slip_policy(options.allow_unusual));
+  const damper::Damper damper = read_damper_input(
+      invocation, options.damper_file, {{"-o", options.output}, {"--report", options.report.value_or("")}},
+      slip_policy(options.allow_unusual));
+  warn_unusual_options(invocation, requests::unusual_values(request), slip_policy(options.allow_unusual));
   const auto start = std::chrono::steady_clock::now();
-  ProgressReport progress("impedance", options.quiet);
+  ProgressReport progress(invocation, "impedance", options.quiet);
   const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::string report;
@@ -75,7 +76,7 @@ int run_impedance_command(const ImpedanceOptions& options) {
     const requests::ModesResult modes = requests::run_modes(damper);
     report = report::impedance_report({std::filesystem::path(options.damper_file).stem().string(), &damper, &runs,
                                        spec.constant_displacement, &modes},
-                                      report_context());
+                                      invocation.report_context());
   }
   io::write_file_atomically(options.output, requests::impedance_table(damper).values(requests::sweep_points(runs)).csv());
   if (options.report) io::write_file_atomically(*options.report, report);
@@ -103,7 +104,7 @@ int run_impedance_command(const ImpedanceOptions& options) {
 
 }  // namespace
 
-void add_impedance_command(CLI::App& app, int& exit_code) {
+void add_impedance_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<ImpedanceOptions>();
   CLI::App* sub = app.add_subcommand("impedance", "Nonlinear impedance Z(f, amplitude) of a damper over a frequency sweep");
   sub->add_option("damper", options->damper_file, "Damper description (TOML)")->required();
@@ -120,7 +121,7 @@ void add_impedance_command(CLI::App& app, int& exit_code) {
   add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   add_report_option(*sub, options->report, "the damper's numbers, |Z|, phase and power per amplitude, its linear modes");
-  sub->callback([options, &exit_code] { exit_code = run_impedance_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_impedance_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

@@ -1,5 +1,4 @@
 #include "input_files.hpp"
-#include "report_output.hpp"
 
 #include <filesystem>
 
@@ -29,45 +28,49 @@ void add_allow_unusual_flag(CLI::App& command, bool& allow_unusual) {
                    "with a warning, instead of refusing it");
 }
 
-damper::Damper read_damper_input(const std::string& path, const std::vector<CommandFile>& outputs, SlipPolicy policy) {
+damper::Damper read_damper_input(Invocation& invocation, const std::string& path,
+                                 const std::vector<CommandFile>& outputs, SlipPolicy policy) {
   require_outputs_apart(outputs, {{"the damper file", path}});
   io::DamperFile file = io::load_damper_file(path, policy);
   require_apart_from_references(outputs, "a cable file the damper file references", file.cable_files);
-  print_warnings(file.warnings);
+  print_warnings(invocation, file.warnings);
   return std::move(file.damper);
 }
 
-io::SpanFile read_span_input(const std::string& path, const std::vector<CommandFile>& outputs, SlipPolicy policy) {
+io::SpanFile read_span_input(Invocation& invocation, const std::string& path,
+                             const std::vector<CommandFile>& outputs, SlipPolicy policy) {
   require_outputs_apart(outputs, {{"the span file", path}});
   io::SpanFile file = io::load_span_file(path, policy);
   require_apart_from_references(outputs, "a file the span file references", file.inputs);
-  print_warnings(file.warnings);
+  print_warnings(invocation, file.warnings);
   return file;
 }
 
-io::DesignFile read_design_input(const std::string& path, const std::vector<CommandFile>& outputs, SlipPolicy policy) {
+io::DesignFile read_design_input(Invocation& invocation, const std::string& path,
+                                 const std::vector<CommandFile>& outputs, SlipPolicy policy) {
   require_outputs_apart(outputs, {{"the design file", path}});
   io::DesignFile file = io::load_design_file(path, policy);
   require_apart_from_references(outputs, "a file the design file reads", file.inputs);
-  print_warnings(file.warnings);
+  print_warnings(invocation, file.warnings);
   return file;
 }
 
-cable::Cable read_cable_input(const std::string& path, const std::vector<CommandFile>& outputs, SlipPolicy policy) {
+cable::Cable read_cable_input(Invocation& invocation, const std::string& path,
+                              const std::vector<CommandFile>& outputs, SlipPolicy policy) {
   require_outputs_apart(outputs, {{"the cable file", path}});
   io::CableFile file = io::load_cable_file(path, policy);
-  print_warnings(file.warnings);
+  print_warnings(invocation, file.warnings);
   return std::move(file.cable);
 }
 
-void print_warnings(const std::vector<std::string>& lines) {
-  for (const std::string& line : lines) remember_warning(line);
+void print_warnings(Invocation& invocation, const std::vector<std::string>& lines) {
+  for (const std::string& line : lines) invocation.warn(line);
 }
 
-void print_warnings(const std::vector<Warning>& warnings) {
+void print_warnings(Invocation& invocation, const std::vector<Warning>& warnings) {
   for (const Warning& w : warnings) {
     if (!w.setting) {
-      print_warnings({w.message});
+      print_warnings(invocation, {w.message});
       continue;
     }
     // The setting's name (up to the first space) as its flag: max_iterations -> --max-iterations.
@@ -75,7 +78,7 @@ void print_warnings(const std::vector<Warning>& warnings) {
     for (std::size_t i = 2; i < line.size() && line[i] != ' '; ++i) {
       if (line[i] == '_') line[i] = '-';
     }
-    print_warnings({line});
+    print_warnings(invocation, {line});
   }
 }
 
@@ -93,8 +96,8 @@ std::vector<std::string> judged_options(const std::vector<UnusualValue>& values,
 
 }  // namespace
 
-void warn_unusual_options(const std::vector<UnusualValue>& values, SlipPolicy policy) {
-  print_warnings(judged_options(values, policy));
+void warn_unusual_options(Invocation& invocation, const std::vector<UnusualValue>& values, SlipPolicy policy) {
+  print_warnings(invocation, judged_options(values, policy));
 }
 
 void refuse_slipped_options(const std::vector<UnusualValue>& values, SlipPolicy policy) {

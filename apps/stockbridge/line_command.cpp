@@ -27,6 +27,7 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/line_file.hpp"
+#include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/line_request.hpp"
 #include "stockbridge/requests/line_run.hpp"
 #include "stockbridge/requests/span_request.hpp"
@@ -149,13 +150,14 @@ void write_line_details(const std::filesystem::path& directory, const io::LineFi
 }
 
 /// The line file, its outputs checked apart from every file it reads, its warnings printed.
-io::LineFile read_line_input(const LineOptions& options, const std::vector<CommandFile>& outputs) {
+io::LineFile read_line_input(const LineOptions& options, const std::vector<CommandFile>& outputs,
+                             Invocation& invocation) {
   require_outputs_apart(outputs, {{"the line file", options.line_file}});
   io::LineFile file = io::load_line_file(options.line_file, slip_policy(options.allow_unusual));
   std::vector<CommandFile> inputs;
   for (const auto& p : file.inputs) inputs.push_back({"a file the line file reads", p.string()});
   require_outputs_apart(outputs, inputs);
-  print_warnings(file.warnings);
+  print_warnings(invocation, file.warnings);
   return file;
 }
 
@@ -176,8 +178,9 @@ void prepare_line_details(const std::string& folder, const io::LineFile& file) {
 
 /// The schedule, the bill and the report (or JSON); the exit status.
 int write_line_outputs(const LineOptions& options, const io::LineFile& file, const requests::LineSchedule& schedule,
-                       const Processes& processes, double seconds, std::size_t computed) {
-  const std::string report = options.report ? report::line_report(file, schedule, report_context()) : std::string();
+                       const Processes& processes, double seconds, std::size_t computed, const Invocation& invocation) {
+  const std::string report =
+      options.report ? report::line_report(file, schedule, invocation.report_context()) : std::string();
   io::write_file_atomically(options.output, requests::schedule_table().values(schedule.rows).csv());
   if (options.report) io::write_file_atomically(*options.report, report);
   io::write_file_atomically(line_bill_path(options),
@@ -204,7 +207,7 @@ int write_line_outputs(const LineOptions& options, const io::LineFile& file, con
   return kNotConverged;
 }
 
-int run_line_command(const LineOptions& options) {
+int run_line_command(const LineOptions& options, Invocation& invocation) {
   Processes processes;
   const bool root = processes.rank() == 0;
   if (processes.mpirun_without_mpi()) {
@@ -217,13 +220,15 @@ int run_line_command(const LineOptions& options) {
   const io::LineFile file = read_line_input(options, {{"-o", options.output},
                                                       {"--bill", line_bill_path(options)},
                                                       {"the journal", journal_path},
-                                                      {"--report", options.report.value_or("")}});
+                                                      {"--report", options.report.value_or("")}},
+                                              invocation);
   const std::size_t spans = file.line.spans().size();
   if (!options.details.empty()) prepare_line_details(options.details, file);
   const std::string fingerprint = requests::line_fingerprint(file, line_text_of(options.line_file));
-  std::map<std::size_t, line::ScheduleRow> rows;
+  std::map<std::size_t, line::ScheduleRow> rows;  // the journal's; the run's outcomes join them when it ends
   int cut_short = 0;
   if (root && options.resume) rows = read_line_journal(journal_path, fingerprint, spans, cut_short);
+  const std::size_t resumed = rows.size();
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < spans; ++i) {
     if (!rows.contains(i)) todo.push_back(i);
@@ -254,13 +259,12 @@ int run_line_command(const LineOptions& options) {
     if (!options.quiet) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const std::size_t left = todo.size() - done_now;
-      fmt::print(stderr, "line: {}/{} {}: {}, {}{}\n", rows.size() + 1, spans, outcome.row->id,
+      fmt::print(stderr, "line: {}/{} {}: {}, {}{}\n", resumed + done_now, spans, outcome.row->id,
                  line_arrangement(*outcome.row), span::verdict_name(outcome.row->verdict),
                  left == 0 ? std::string() : fmt::format("; {} left, about {}", left,
                                                          line_duration(seconds / static_cast<double>(done_now) *
                                                                        static_cast<double>(left))));
     }
-    rows.insert_or_assign(outcome.index, *outcome.row);
   };
   run.dealer = [&processes](int threads, const std::vector<std::size_t>& tasks,
                             const std::function<std::string(std::size_t)>& compute,
@@ -268,8 +272,11 @@ int run_line_command(const LineOptions& options) {
                             const std::function<void()>&, const std::atomic<bool>& stop) {
     processes.deal(threads, tasks, compute, pass_on, stop);
   };
-  const requests::LineRun result = requests::run_line(file, cache, run);
+  requests::LineRun result = requests::run_line(file, cache, run);
   const bool interrupted = result.termination == Termination::interrupted;
+  for (requests::SpanOutcome& outcome : result.outcomes) {
+    if (outcome.row) rows.insert_or_assign(outcome.index, std::move(*outcome.row));  // scheduled or failed
+  }
   interrupt.reset();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!root) return kSuccess;
@@ -287,12 +294,12 @@ int run_line_command(const LineOptions& options) {
       write_line_details(options.details, file, row, line::analyse_arrangement(file.line, row, cache));
     }
   }
-  return write_line_outputs(options, file, schedule, processes, seconds, done_now);
+  return write_line_outputs(options, file, schedule, processes, seconds, done_now, invocation);
 }
 
 }  // namespace
 
-void add_line_command(CLI::App& app, int& exit_code) {
+void add_line_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<LineOptions>();
   CLI::App* sub = app.add_subcommand(
       "line", "The damper schedule of a line: for every span the fewest dampers per end and their positions that "
@@ -309,7 +316,7 @@ void add_line_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--quiet", options->quiet, "No progress on stderr");
   add_allow_unusual_flag(*sub, options->allow_unusual);
   add_report_option(*sub, options->report, "the rules, the verdicts, the margin per span, the schedule and the bill");
-  sub->callback([options, &exit_code] { exit_code = run_line_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_line_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

@@ -54,7 +54,7 @@ int run_loop_command(const LoopOptions& options) {
 
 }  // namespace
 
-void add_loop_command(CLI::App& app, int& exit_code) {
+void add_loop_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<LoopOptions>();
   CLI::App* sub = app.add_subcommand(
       "loop", "Drive one cable section with kappa = A sin(2 pi k / points) and write its moment-curvature loop");
@@ -101,7 +101,7 @@ void add_loop_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember(requests::loop_law_names()))
       ->capture_default_str();
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
-  sub->callback([options, &exit_code] { exit_code = run_loop_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_loop_command(*options)); });
 }
 
 }  // namespace stockbridge::cli

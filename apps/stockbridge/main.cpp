@@ -10,8 +10,8 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "invocation.hpp"
 #include "misspellings.hpp"
-#include "report_output.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/version.hpp"
 
@@ -33,26 +33,25 @@ int main(int argc, char** argv) {
   CLI::App app{"stockbridge: nonlinear impedance of Stockbridge dampers (Masing cable model)", "stockbridge"};
   app.require_subcommand(1);
   app.set_version_flag("--version", fmt::format("stockbridge {}", stockbridge::version()));
-  int exit_code = cli::kSuccess;
-  cli::remember_command_line(argc, argv);
-  cli::add_loop_command(app, exit_code);
-  cli::add_cycle_command(app, exit_code);
-  cli::add_identify_command(app, exit_code);
-  cli::add_impedance_command(app, exit_code);
-  cli::add_response_command(app, exit_code);
-  cli::add_strand_command(app, exit_code);
-  cli::add_conductors_command(app, exit_code);
-  cli::add_modes_command(app, exit_code);
-  cli::add_span_command(app, exit_code);
-  cli::add_recorder_command(app, exit_code);
-  cli::add_design_command(app, exit_code);
-  cli::add_line_command(app, exit_code);
-  cli::add_datasheet_command(app, exit_code);
-  cli::add_fatigue_tests_command(app, exit_code);
+  cli::Invocation invocation(argc, argv);
+  cli::add_loop_command(app, invocation);
+  cli::add_cycle_command(app, invocation);
+  cli::add_identify_command(app, invocation);
+  cli::add_impedance_command(app, invocation);
+  cli::add_response_command(app, invocation);
+  cli::add_strand_command(app, invocation);
+  cli::add_conductors_command(app, invocation);
+  cli::add_modes_command(app, invocation);
+  cli::add_span_command(app, invocation);
+  cli::add_recorder_command(app, invocation);
+  cli::add_design_command(app, invocation);
+  cli::add_line_command(app, invocation);
+  cli::add_datasheet_command(app, invocation);
+  cli::add_fatigue_tests_command(app, invocation);
   try {
     cli::reject_misspellings(app, argc, argv);
     app.parse(argc, argv);
-    cli::flush_warnings();
+    invocation.flush_warnings();
   } catch (const CLI::CallForHelp&) {
     std::fputs(app.help().c_str(), stdout);
     return cli::kSuccess;
@@ -75,5 +74,5 @@ int main(int argc, char** argv) {
     std::fputs(fmt::format("stockbridge: internal error: {}\n", one_line(e.what())).c_str(), stderr);
     return 1;
   }
-  return exit_code;
+  return invocation.exit_code();
 }

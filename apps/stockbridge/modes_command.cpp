@@ -63,8 +63,9 @@ void print_modes_table(const requests::ModesResult& result) {
   }
 }
 
-int run_modes_command(const ModesOptions& options) {
-  const damper::Damper damper = read_damper_input(options.damper_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
+int run_modes_command(const ModesOptions& options, Invocation& invocation) {
+  const damper::Damper damper =
+      read_damper_input(invocation, options.damper_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
   const requests::ModesResult result = requests::run_modes(damper);
   if (!options.output.empty()) {
     io::write_file_atomically(options.output, requests::modes_table().values(requests::mode_rows(result)).csv());
@@ -79,7 +80,7 @@ int run_modes_command(const ModesOptions& options) {
 
 }  // namespace
 
-void add_modes_command(CLI::App& app, int& exit_code) {
+void add_modes_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<ModesOptions>();
   CLI::App* sub = app.add_subcommand(
       "modes", "Linear natural frequencies, every element sticking and every one slipping: each arm (clamp held) "
@@ -89,7 +90,7 @@ void add_modes_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--json", options->json,
                 "Print {\"arms\": [{\"name\", \"stick_hz\", \"slip_hz\"}], \"damper\": {...}} instead of the table");
   sub->add_option("-o,--output", options->output, "Also write a CSV: arm,state,mode,frequency_hz");
-  sub->callback([options, &exit_code] { exit_code = run_modes_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_modes_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

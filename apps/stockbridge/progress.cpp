@@ -1,5 +1,4 @@
 #include "progress.hpp"
-#include "report_output.hpp"
 
 #include <cstdio>
 
@@ -13,13 +12,13 @@ constexpr double kPlainInterval = 10.0;  // s, between plain lines and before th
 constexpr int kBarWidth = 30;
 }  // namespace
 
-ProgressReport::ProgressReport(std::string what, bool quiet, std::string unit)
+ProgressReport::ProgressReport(Invocation& invocation, std::string what, bool quiet, std::string unit)
     : what_(std::move(what)),
       unit_(std::move(unit)),
       quiet_(quiet),
       terminal_(::isatty(STDERR_FILENO) == 1),
       start_(std::chrono::steady_clock::now()) {
-  flush_warnings();  // the inputs are read and checked: what they warn of comes before the progress
+  invocation.flush_warnings();  // the inputs are read and checked: what they warn of comes before the progress
 }
 
 std::string ProgressReport::line(int done, int total, double seconds) const {

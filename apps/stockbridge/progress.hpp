@@ -7,13 +7,15 @@
 #include <chrono>
 #include <string>
 
+#include "invocation.hpp"
+
 namespace stockbridge::cli {
 
 class ProgressReport {
  public:
   /// `what` starts every line ("impedance"); `quiet` silences everything; `unit`
-  /// names what is counted.
-  ProgressReport(std::string what, bool quiet, std::string unit = "points");
+  /// names what is counted. The invocation's warnings held are printed first.
+  ProgressReport(Invocation& invocation, std::string what, bool quiet, std::string unit = "points");
   /// (points done, points in all); safe to call from the sweep's serialised callback.
   void operator()(int done, int total);
 

@@ -72,7 +72,7 @@ void print_recorder_report(const measurements::RecorderResult& r) {
   }
 }
 
-int run_recorder_command(const RecorderCommandOptions& options) {
+int run_recorder_command(const RecorderCommandOptions& options, Invocation& invocation) {
   requests::RecorderRequest request;
   request.days = options.days;
   if (options.calibrate) request.calibrate = split_list(*options.calibrate);
@@ -91,24 +91,25 @@ int run_recorder_command(const RecorderCommandOptions& options) {
   if (options.calibrated_span && request.calibrate.empty()) {
     throw InvalidParameter("--calibrated-span", ": given without --calibrate; expected the keys to calibrate");
   }
-  const io::SpanFile file = read_span_input(options.span_file, outputs, slip_policy(options.allow_unusual));
+  const io::SpanFile file =
+      read_span_input(invocation, options.span_file, outputs, slip_policy(options.allow_unusual));
   measurements::RecorderCounts counts;
   try {
     counts = requests::read_recorder_input(options.counts_file, file, request, slip_policy(options.allow_unusual));
   } catch (const InvalidParameter& e) {
     throw InputError(fmt::format("{}: {}", options.span_file, e.what()));
   }
-  print_warnings(file.warnings);
-  print_warnings(counts.warnings);
+  print_warnings(invocation, file.warnings);
+  print_warnings(invocation, counts.warnings);
   const measurements::RecorderResult result = requests::run_recorder(counts, file, request);
   std::string calibrated_text;
   const bool calibrated = result.calibration && result.calibration->converged;
   if (options.calibrated_span && calibrated) {
     calibrated_text = measurements::calibrated_span_text(options.span_file, result.calibration->values);
   }
-  const std::string report = options.report
-                                 ? report::recorder_report({&result, &file.span, options.counts_file}, report_context())
-                                 : std::string();
+  const std::string report =
+      options.report ? report::recorder_report({&result, &file.span, options.counts_file}, invocation.report_context())
+                     : std::string();
   io::write_file_atomically(options.output, requests::recorder_bins_table().values(result.bins).csv());
   if (options.report) io::write_file_atomically(*options.report, report);
   // A calibration that did not converge writes no span file: its values are not a fit.
@@ -132,7 +133,7 @@ int run_recorder_command(const RecorderCommandOptions& options) {
 
 }  // namespace
 
-void add_recorder_command(CLI::App& app, int& exit_code) {
+void add_recorder_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<RecorderCommandOptions>();
   CLI::App* sub = app.add_subcommand(
       "recorder", "A vibration recorder's counts: damage and life measured, predicted by the span's balance and "
@@ -156,7 +157,7 @@ void add_recorder_command(CLI::App& app, int& exit_code) {
   sub->add_option("-o,--output", options->output, "Output CSV file: one row per bin")->required();
   add_report_option(*sub, options->report,
                     "the recorded matrix with the predicted Yb(f), the damage table, the verdict");
-  sub->callback([options, &exit_code] { exit_code = run_recorder_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_recorder_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

@@ -35,7 +35,7 @@ struct ResponseOptions {
   std::string output;
 };
 
-int run_response_command(const ResponseOptions& options) {
+int run_response_command(const ResponseOptions& options, Invocation& invocation) {
   if (options.velocity.has_value() == options.displacement.has_value()) {  // named by the flags
     throw InvalidParameter("give either --velocity V (m/s) or --displacement X (m)");
   }
@@ -45,9 +45,9 @@ int run_response_command(const ResponseOptions& options) {
   refuse_slipped_options(requests::unusual_excitation(request.frequency, request.velocity, request.displacement),
                          slip_policy(options.allow_unusual));
   const damper::Damper damper =
-      read_damper_input(options.damper_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
+      read_damper_input(invocation, options.damper_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
   const requests::ResponseResult result = requests::run_response(damper, request);
-  print_warnings(result.warnings);
+  print_warnings(invocation, result.warnings);
   const damper::ImpedancePoint& p = result.state.point;
   // Written even when not converged (the last iterate, marked), so that it can be inspected.
   io::write_file_atomically(options.output,
@@ -76,7 +76,7 @@ int run_response_command(const ResponseOptions& options) {
 
 }  // namespace
 
-void add_response_command(CLI::App& app, int& exit_code) {
+void add_response_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<ResponseOptions>();
   CLI::App* sub = app.add_subcommand("response", "One steady period of a damper: clamp motion, shaker force, each arm's motion and cable loads");
   sub->add_option("damper", options->damper_file, "Damper description (TOML)")->required();
@@ -87,7 +87,7 @@ void add_response_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--json", options->json, "Print a JSON summary on stdout");
   add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
-  sub->callback([options, &exit_code] { exit_code = run_response_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_response_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

@@ -21,6 +21,7 @@
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/span_request.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 
@@ -186,21 +187,21 @@ void print_span_report(const requests::SpanResult& result) {
   }
 }
 
-int run_span_command(const SpanOptions& options) {
+int run_span_command(const SpanOptions& options, Invocation& invocation) {
   const requests::SpanRequest request = span_request_of(options);
   check_report_path(options.report);
   const io::SpanFile file = read_span_input(
-      options.span_file,
+      invocation, options.span_file,
       {{"-o", options.output}, {"--report", options.report.value_or("")}, {"--profile", options.profile.value_or("")}},
       slip_policy(options.allow_unusual));
   requests::validate(request, file.span);  // a refusal prints its one line alone, before the file's warnings
   const auto start = std::chrono::steady_clock::now();
-  ProgressReport progress("span: impedance tables", options.quiet);
+  ProgressReport progress(invocation, "span: impedance tables", options.quiet);
   const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const span::SpanAnalysis& a = result.analysis;
-  print_warnings(a.warnings);
-  const std::string report = options.report ? report::span_report(result, report_context()) : std::string();
+  print_warnings(invocation, a.warnings);
+  const std::string report = options.report ? report::span_report(result, invocation.report_context()) : std::string();
   const std::string profile =
       options.profile ? requests::span_profile_table().values(requests::span_profile_rows(requests::governing_profile(result))).csv()
                       : std::string();
@@ -236,7 +237,7 @@ int run_span_command(const SpanOptions& options) {
 
 }  // namespace
 
-void add_span_command(CLI::App& app, int& exit_code) {
+void add_span_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<SpanOptions>();
   CLI::App* sub = app.add_subcommand(
       "span", "Energy balance of a span with its dampers over the wind band: amplitudes, stresses, endurance, life");
@@ -272,7 +273,7 @@ void add_span_command(CLI::App& app, int& exit_code) {
   sub->add_option("--profile", options->profile,
                   "Also write the standing wave along the span at the governing frequency (CSV: attachment, x_m, displacement_m, "
                   "envelope_m)");
-  sub->callback([options, &exit_code] { exit_code = run_span_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_span_command(*options, invocation)); });
 }
 
 }  // namespace stockbridge::cli

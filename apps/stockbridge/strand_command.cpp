@@ -49,13 +49,13 @@ int run_strand_command(const StrandOptions& options) {
 
 }  // namespace
 
-void add_strand_command(CLI::App& app, int& exit_code) {
+void add_strand_command(CLI::App& app, Invocation& invocation) {
   auto options = std::make_shared<StrandOptions>();
   CLI::App* sub = app.add_subcommand(
       "strand", "Bending-stiffness bounds EI_min (no friction) and EI_max (no slip) of a strand, N m^2");
   sub->add_option("strand_file", options->file, "Strand description (TOML, see docs/strand.md)")->required();
   sub->add_flag("--json", options->json, "Print {\"ei_min_n_m2\": ..., \"ei_max_n_m2\": ...} instead of text");
-  sub->callback([options, &exit_code] { exit_code = run_strand_command(*options); });
+  sub->callback([options, &invocation] { invocation.set_exit_code(run_strand_command(*options)); });
 }
 
 }  // namespace stockbridge::cli

@@ -18,6 +18,7 @@
 #endif
 
 #include "stockbridge/core/parallel.hpp"
+#include "stockbridge/requests/line_run.hpp"
 
 namespace stockbridge::cli {
 
@@ -214,7 +215,9 @@ Processes::~Processes() {
 
 namespace {
 
-/// The tasks and records of one rank's threads: tasks in, records out.
+#ifdef STOCKBRIDGE_WITH_MPI
+
+/// The tasks and records of one rank's threads (MPI's dealing): tasks in, records out.
 class DealState {
  public:
   /// A task for a thread, waiting for one; none when there are no more.
@@ -277,7 +280,6 @@ class DealState {
 /// each rank to one core), often enough next to tasks of a second or more.
 constexpr std::chrono::milliseconds kDealPoll{20};
 
-#ifdef STOCKBRIDGE_WITH_MPI
 enum DealTag : int { kDealRequest = 11, kDealTask = 12, kDealRecord = 13, kDealDone = 14 };
 
 /// A rank but 0: asks rank 0 for a task for each free thread, sends each record back,
@@ -355,12 +357,18 @@ void Processes::deal(int threads, const std::vector<std::size_t>& todo,
                      const std::function<std::string(std::size_t)>& run,
                      const std::function<void(std::size_t, const std::string&)>& done,
                      const std::atomic<bool>& stop) const {
+  const auto pass_on = [&](std::size_t t, const std::string& record) {
+    if (!record.empty()) done(t, record);
+  };
+  if (!mpi_) {
+    requests::thread_dealer()(threads, todo, run, pass_on, {}, stop);
+    return;
+  }
 #ifdef STOCKBRIDGE_WITH_MPI
-  if (mpi_ && rank_ != 0) {
+  if (rank_ != 0) {
     deal_as_worker(threads, run);
     return;
   }
-#endif
   std::mutex dealing;
   std::size_t next = 0;
   const auto take = [&]() -> std::optional<std::size_t> {
@@ -372,19 +380,14 @@ void Processes::deal(int threads, const std::vector<std::size_t>& todo,
   DealState state;
   Workers workers(threads, take, [&](std::size_t t) { state.finish(t, run(t)); }, nullptr,
                   [&state] { state.thread_exited(); });
-  int ranks_open = mpi_ ? size_ - 1 : 0;
-  const auto pass_on = [&](std::size_t t, const std::string& record) {
-    if (!record.empty()) done(t, record);
-  };
+  int ranks_open = size_ - 1;
   while (true) {
-    const auto wait = mpi_ ? kDealPoll : std::chrono::milliseconds(200);
-    for (auto& [t, record] : state.take_records(wait, threads)) pass_on(t, record);
-#ifdef STOCKBRIDGE_WITH_MPI
-    if (mpi_) ranks_open -= serve_ranks(take, done);
-#endif
+    for (auto& [t, record] : state.take_records(kDealPoll, threads)) pass_on(t, record);
+    ranks_open -= serve_ranks(take, done);
     if (ranks_open == 0 && state.all_exited(threads)) break;
   }
   workers.join();
+#endif
 }
 
 std::unique_ptr<design::TaskRunner> Processes::runner(int threads) const {

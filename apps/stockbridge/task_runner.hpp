@@ -36,7 +36,8 @@ class Processes {
   /// record (empty: not finished, e.g. interrupted); on rank 0, `done` gets each
   /// record as it arrives, from the calling thread, one at a time. Rank 0 stops
   /// dealing once `stop` is set (the tasks under way finish or give up). Returns on
-  /// every rank when no task is under way.
+  /// every rank when no task is under way. One process (no MPI): the library's
+  /// requests::thread_dealer on this process's threads.
   void deal(int threads, const std::vector<std::size_t>& todo, const std::function<std::string(std::size_t)>& run,
             const std::function<void(std::size_t, const std::string&)>& done, const std::atomic<bool>& stop) const;
 

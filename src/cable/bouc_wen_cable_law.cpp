@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <string_view>
 
@@ -17,12 +16,9 @@ namespace stockbridge::cable {
 
 namespace {
 
-/// AVX2 with FMA on this processor, and not declined by STOCKBRIDGE_BASELINE_KERNELS
-/// (set, other than "0").
+/// AVX2 with FMA on this processor.
 bool avx2_available() {
 #if defined(__x86_64__)
-  const char* declined = std::getenv("STOCKBRIDGE_BASELINE_KERNELS");
-  if (declined && *declined && std::string_view(declined) != "0") return false;
   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #else
   return false;
@@ -31,7 +27,8 @@ bool avx2_available() {
 
 }  // namespace
 
-BoucWenCableLaw::BoucWenCableLaw(const CableDescription& description, std::span<const double> positions) {
+BoucWenCableLaw::BoucWenCableLaw(const CableDescription& description, std::span<const double> positions,
+                                 BoucWenKernels kernels) {
   for (double position : positions) {
     const double s = description.profile_position(position);
     const double ei_min = description.number("ei_min").at(s);
@@ -46,7 +43,7 @@ BoucWenCableLaw::BoucWenCableLaw(const CableDescription& description, std::span<
   hysteretic_.resize(padded, 0.0);
   chi0_.resize(padded, 1.0);
   inverse_chi0_.resize(padded, 1.0);
-  avx2_ = avx2_available();
+  avx2_ = kernels == BoucWenKernels::best && avx2_available();
 }
 
 namespace {

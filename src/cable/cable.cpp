@@ -33,7 +33,10 @@ std::vector<int> points_per_zone(const std::vector<double>& lengths, int total) 
 
 }  // namespace
 
-Cable::Cable(CableDescription description) : description_(validated(std::move(description))) {
+Cable::Cable(CableDescription description) : Cable(std::move(description), make_cable_law) {}
+
+Cable::Cable(CableDescription description, const CableLawMaker& make_law)
+    : description_(validated(std::move(description))) {
   const double l = description_.length;
   std::vector<double> edges{0.0};
   for (double b : description_.zone_boundaries()) edges.push_back(b);
@@ -46,7 +49,7 @@ Cable::Cable(CableDescription description) : description_(validated(std::move(de
     positions_.insert(positions_.end(), rule.nodes.begin(), rule.nodes.end());
     weights_.insert(weights_.end(), rule.weights.begin(), rule.weights.end());
   }
-  law_ = make_cable_law(description_, positions_, weights_);
+  law_ = make_law(description_, positions_, weights_);
 }
 
 }  // namespace stockbridge::cable

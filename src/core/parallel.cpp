@@ -31,10 +31,21 @@ Workers::~Workers() {
   }
 }
 
-std::optional<std::size_t> Workers::take() {
+bool Workers::stopping() {
   const std::lock_guard<std::mutex> lock(mutex_);
-  if (failed_ || (stop_ && stop_->load())) return std::nullopt;
-  return next_();
+  return failed_ || (stop_ && stop_->load());
+}
+
+std::optional<std::size_t> Workers::take() {
+  if (stopping()) return std::nullopt;  // without waiting for a thread that waits in the source
+  std::optional<std::size_t> t;
+  {
+    const std::lock_guard<std::mutex> source_lock(source_mutex_);
+    if (stopping()) return std::nullopt;
+    t = next_();  // may block: meanwhile the other threads record their exceptions and leave
+  }
+  if (stopping()) return std::nullopt;  // a task threw or a stop came while the source waited
+  return t;
 }
 
 void Workers::work() {

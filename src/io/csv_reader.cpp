@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/io/input_file.hpp"
 
 namespace stockbridge::io {
 
@@ -39,8 +40,7 @@ struct OpenedCsv {
 
 OpenedCsv open_csv(const std::filesystem::path& path) {
   const std::string file = path.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(fmt::format("{}: no such file", file));
+  existing_input_file(path);
   OpenedCsv csv{std::ifstream(path, std::ios::binary), {}, {}, 0};
   std::string line;
   while (std::getline(csv.in, line)) {

@@ -10,6 +10,7 @@
 #include "damper_reading.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/cable_file.hpp"
+#include "stockbridge/io/input_file.hpp"
 #include "stockbridge/io/toml_text.hpp"
 
 namespace stockbridge::io {
@@ -41,13 +42,8 @@ std::filesystem::path resolve(const std::filesystem::path& file, const std::file
 cable::CableDescription read_referenced_cable(const TomlTable& table, const std::filesystem::path& base_directory,
                                               SlipPolicy policy, CableReference& reference) {
   const std::string file = *table.optional_string("file");
-  reference.path = resolve(file, base_directory);
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(reference.path, ec)) {
-    table.fail("file", fmt::format("\"{}\": expected an existing cable file (looked for {}, relative paths start "
-                                   "at the damper file's folder)",
-                                   printable(file), printable(reference.path.string())));
-  }
+  reference.path = existing_input_file(table.where("file"), {file, resolve(file, base_directory), "cable file",
+                                                              "the damper file's folder"});
   CableFile referenced = load_cable_file(reference.path, policy);
   reference.warnings = std::move(referenced.warnings);
   cable::CableDescription description = referenced.cable.description();

@@ -4,6 +4,7 @@
 
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/input_file.hpp"
 #include "stockbridge/io/span_file.hpp"
 #include "toml_reader.hpp"
 
@@ -18,13 +19,7 @@ std::filesystem::path design_input(const TomlTable& table, std::string_view key,
                                    const std::filesystem::path& base_directory, std::string_view what) {
   const std::filesystem::path path =
       std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base_directory / file;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    table.fail(key, fmt::format("\"{}\": expected an existing {} file (looked for {}, relative paths start at the "
-                                "design file's folder)",
-                                printable(file), what, printable(path.string())));
-  }
-  return path;
+  return existing_input_file(table.where(key), {file, path, what, "the design file's folder"});
 }
 
 std::vector<std::string> design_span_names(const TomlTable& top) {
@@ -62,14 +57,14 @@ DesignReading read_design(const TomlTable& top, const std::filesystem::path& bas
   DesignReading r;
   const std::string damper = top.optional_string("damper").value_or("");
   if (!top.contains("damper")) top.fail("damper", "missing: expected the base damper file, e.g. damper = \"damper.toml\"");
-  r.damper_file = design_input(top, "damper", damper, base_directory, "damper");
+  r.damper_file = design_input(top, "damper", damper, base_directory, "damper file");
   DamperFile d = load_damper_file(r.damper_file, policy);
   r.base = d.damper.description();
   r.inputs.push_back(r.damper_file);
   r.inputs.insert(r.inputs.end(), d.cable_files.begin(), d.cable_files.end());
   r.warnings = std::move(d.warnings);
   for (const std::string& name : design_span_names(top)) {
-    const std::filesystem::path path = design_input(top, "spans", name, base_directory, "span");
+    const std::filesystem::path path = design_input(top, "spans", name, base_directory, "span file");
     SpanFile s = load_span_file(path, policy);
     r.inputs.push_back(path);
     r.inputs.insert(r.inputs.end(), s.inputs.begin(), s.inputs.end());

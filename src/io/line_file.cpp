@@ -15,6 +15,7 @@
 #include "stockbridge/io/conductor_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/input_file.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 #include "span_reading.hpp"
 #include "toml_reader.hpp"
@@ -65,13 +66,10 @@ span::Conductor span_conductor(const GivenSpan& given, const span::Conductor& li
   if (given.conductor.empty()) return line_conductor;
   const std::string& c = given.conductor;
   if (c.size() > 5 && c.ends_with(".toml")) {
-    const std::filesystem::path path = std::filesystem::path(c).is_absolute() ? std::filesystem::path(c) : base / c;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-      throw InputError(fmt::format("{}conductor = \"{}\": expected an existing conductor file (looked for {}; relative "
-                                   "paths start at the line file's folder) or a catalogue type",
-                                   given.located("conductor"), printable(c), printable(path.string(), 300)));
-    }
+    const std::filesystem::path path = existing_input_file(
+        given.located("conductor") + "conductor = ",
+        {c, std::filesystem::path(c).is_absolute() ? std::filesystem::path(c) : base / c, "conductor file",
+         "the line file's folder", "a catalogue type"});
     inputs.push_back(path);
     span::Conductor read = span::conductor_of(read_conductor_file(path));
     read.source = fmt::format("the conductor file {}", c);

@@ -15,6 +15,7 @@
 #include "stockbridge/io/conductor_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
 #include "stockbridge/io/damper_file.hpp"
+#include "stockbridge/io/input_file.hpp"
 #include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/io/sn_curve_file.hpp"
 #include "stockbridge/span/stranded_conductor.hpp"
@@ -43,13 +44,9 @@ std::string span_base(const TomlTable& table, const std::filesystem::path& base_
 std::filesystem::path span_input_file(const TomlTable& table, std::string_view key, const std::string& file,
                                       const std::filesystem::path& base_directory, std::string_view what) {
   const std::filesystem::path path = span_resolve(file, base_directory);
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    std::error_code absolute;
-    table.fail(key, fmt::format("\"{}\": expected an existing {} (looked for {}; relative paths start at {})",
-                                printable(file), what, printable(std::filesystem::absolute(path, absolute).string(), 300),
-                                span_base(table, base_directory)));
-  }
+  std::error_code absolute;
+  existing_input_file(table.where(key), {file, std::filesystem::absolute(path, absolute), what,
+                                         span_base(table, base_directory)});
   return path;
 }
 
@@ -216,13 +213,8 @@ void read_wind(const TomlTable& table, const std::filesystem::path& base_directo
                                  "(columns y_over_d,fnc; relative paths start at the span file's folder)",
                                  table.location("table")));
   }
-  const std::filesystem::path path = span_resolve(*file, base_directory);
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    table.fail("table", fmt::format("\"{}\": expected an existing CSV file (looked for {}, relative paths start at the "
-                                    "span file's folder)",
-                                    printable(*file), printable(path.string())));
-  }
+  const std::filesystem::path path = existing_input_file(
+      table.where("table"), {*file, span_resolve(*file, base_directory), "CSV file", "the span file's folder"});
   const CsvRows rows = read_csv_rows(path, {"y_over_d", "fnc"}, 2);
   for (std::size_t i = 0; i < rows.lines.size(); ++i) {
     const double y = rows.columns[0][i];

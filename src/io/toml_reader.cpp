@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/io/input_file.hpp"
 
 namespace stockbridge::io {
 
@@ -34,12 +35,10 @@ std::string toml_syntax_error(const toml::parse_error& e, std::string_view text)
 
 toml::table parse_toml_file(const std::filesystem::path& path) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) {
-    throw InputError(fmt::format("{}: no such file", path.string()));
-  }
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError(fmt::format("{}: is a directory, expected a TOML file", path.string()));
   }
+  existing_input_file(path);
   try {
     return toml::parse_file(path.string());
   } catch (const toml::parse_error& e) {
@@ -114,8 +113,12 @@ std::string TomlTable::location(std::string_view key) const {
   return location_of(n ? *n : static_cast<const toml::node&>(*table_));
 }
 
+std::string TomlTable::where(std::string_view key) const {
+  return fmt::format("{}{}: ", location(key), qualified(key));
+}
+
 void TomlTable::fail(std::string_view key, std::string_view message) const {
-  throw InputError(fmt::format("{}{}: {}", location(key), qualified(key), message));
+  throw InputError(where(key) + std::string(message));
 }
 
 const toml::node* TomlTable::node(std::string_view key) const {

@@ -85,6 +85,8 @@ class TomlTable {
   bool has_lines() const { return source_.lines; }
   const std::string& key_path() const { return key_path_; }
 
+  /// "<location><qualified key>: ", where a message about the key starts.
+  std::string where(std::string_view key) const;
   /// Throws InputError "<location><qualified key>: <message>".
   [[noreturn]] void fail(std::string_view key, std::string_view message) const;
 

@@ -153,6 +153,26 @@ std::vector<double> recorder_frequencies(const RecorderCounts& counts, const spa
   return f;
 }
 
+namespace {
+
+/// The balance's point `next` at `frequency` (predict_record takes a balance at
+/// recorder_frequencies), else InvalidParameter naming "balance".
+void require_balance_point(const span::SpanBalance& balance, std::size_t next, double frequency) {
+  if (next >= balance.points.size()) {
+    throw InvalidParameter("balance", fmt::format(": {} points, expected more (one at each of recorder_frequencies: "
+                                                  "the next at {} Hz)",
+                                                  balance.points.size(), format_value(frequency)));
+  }
+  const double at = balance.points[next].frequency_hz;
+  if (std::abs(at - frequency) > 1e-9 * frequency) {
+    throw InvalidParameter("balance", fmt::format(".points[{}] at {} Hz, expected {} Hz (the balance is to be at "
+                                                  "recorder_frequencies)",
+                                                  next, format_value(at), format_value(frequency)));
+  }
+}
+
+}  // namespace
+
 RecorderPrediction predict_record(const RecorderCounts& counts, const span::Span& span,
                                   const span::SpanBalance& balance, int points_per_band, double days) {
   const span::LifeModel& climate = recorder_climate(span);
@@ -176,9 +196,7 @@ RecorderPrediction predict_record(const RecorderCounts& counts, const span::Span
     bool known = cut.has_value();
     if (cut) {
       for (PredictedPoint p : recorder_band_points(*cut, points_per_band)) {
-        if (next >= balance.points.size() || std::abs(balance.points[next].frequency_hz - p.frequency) > 1e-9 * p.frequency) {
-          throw std::invalid_argument("predict_record: the balance is not at recorder_frequencies");
-        }
+        require_balance_point(balance, next, p.frequency);
         const span::BalancePoint& bp = balance.points[next++];
         const double u_lo = span.wind().wind_speed(p.frequency_low, diameter);
         const double u_hi = span.wind().wind_speed(p.frequency_high, diameter);

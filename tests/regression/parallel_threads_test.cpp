@@ -7,6 +7,7 @@
 #include <condition_variable>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -130,6 +131,43 @@ TEST(WorkersThreads, ATaskThatThrowsStopsTheOthersTakingAndJoinRethrowsIt) {
   EXPECT_THROW(workers.join(), std::out_of_range);
   EXPECT_EQ(exits.load(), 2);
   EXPECT_TRUE(queue.next().has_value());  // tasks were left in the source
+}
+
+// A source that blocks until the thread of the first task has left: that thread's
+// task throws while the other thread waits in the source, and must record its
+// exception and leave meanwhile (before, the workers' lock, held around the source,
+// kept it from recording the exception: both threads waited for ever).
+TEST(WorkersThreads, ASourceWaitingForAnotherThreadToLeaveLetsItsTaskThrowAndLeave) {
+  std::mutex mutex;
+  std::condition_variable changed;
+  int calls = 0;
+  int left = 0;
+  const auto source = [&]() -> std::optional<std::size_t> {
+    std::unique_lock lock(mutex);
+    if (++calls == 1) return 0;
+    changed.notify_all();  // the second call waits here: task 0 may throw now
+    changed.wait(lock, [&] { return left > 0; });
+    return 1;
+  };
+  std::atomic<int> runs{0};
+  const auto task = [&](std::size_t t) {
+    ++runs;
+    if (t != 0) return;
+    std::unique_lock lock(mutex);
+    changed.wait(lock, [&] { return calls == 2; });
+    throw std::out_of_range("task 0");
+  };
+  const auto on_exit = [&] {
+    {
+      const std::lock_guard lock(mutex);
+      ++left;
+    }
+    changed.notify_all();
+  };
+  Workers workers(2, source, task, nullptr, on_exit);
+  EXPECT_THROW(workers.join(), std::out_of_range);
+  EXPECT_EQ(left, 2);
+  EXPECT_EQ(runs.load(), 1);  // task 1, given after task 0 threw, did not start
 }
 
 }  // namespace

@@ -22,17 +22,23 @@
 
 namespace stockbridge::cable {
 
+/// Which build of the section loops a Bouc-Wen law runs. The two agree to round-off
+/// (the AVX2 build fuses multiplies and adds).
+enum class BoucWenKernels {
+  best,      ///< AVX2 with FMA where the processor has both, else the x86-64 baseline's
+  baseline,  ///< the x86-64 baseline's on any processor (a test holds the builds to each other)
+};
+
 class BoucWenCableLaw final : public CableLaw {
  public:
-  BoucWenCableLaw(const CableDescription& description, std::span<const double> positions);
+  BoucWenCableLaw(const CableDescription& description, std::span<const double> positions,
+                  BoucWenKernels kernels = BoucWenKernels::best);
 
   double ei_min(std::size_t i) const { return ei_min_[i]; }
   double ei_max(std::size_t i) const { return ei_min_[i] + hysteretic_[i]; }
   double chi0(std::size_t i) const { return chi0_[i]; }
-  /// Whether the section loops run their AVX2-with-FMA build: where the processor has
-  /// both, unless the environment variable STOCKBRIDGE_BASELINE_KERNELS was set (other
-  /// than "0") when the law was made; else the x86-64 baseline's. The two agree to
-  /// round-off.
+  /// Whether the section loops run their AVX2-with-FMA build: with BoucWenKernels::best
+  /// where the processor has both; else the x86-64 baseline's.
   bool uses_avx2() const { return avx2_; }
   /// The sections' numbers in order (padded beyond the cable's sections).
   const double* ei_min_data() const { return ei_min_.data(); }

@@ -5,6 +5,7 @@
 // each), and its section law's numbers at each point (the model, constant; its
 // state lives in CableState).
 
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -14,10 +15,18 @@
 
 namespace stockbridge::cable {
 
+/// Makes a cable's section law at its Gauss points (`positions`, with their `weights`).
+using CableLawMaker = std::function<std::shared_ptr<const CableLaw>(
+    const CableDescription& description, std::span<const double> positions, std::span<const double> weights)>;
+
 class Cable {
  public:
-  /// Validates the description (InvalidParameter) and discretises it.
+  /// Validates the description (InvalidParameter) and discretises it; its law is the
+  /// one the description names (make_cable_law).
   explicit Cable(CableDescription description);
+  /// The same with the law `make_law` makes, which must be the law the description
+  /// names, with options of its own (BoucWenCableLaw's kernels).
+  Cable(CableDescription description, const CableLawMaker& make_law);
 
   const CableDescription& description() const { return description_; }
   double length() const { return description_.length; }

@@ -23,8 +23,11 @@
 namespace stockbridge {
 
 /// Threads that run `task(t)` for every t that `next()` gives until it gives none
-/// (it may block waiting for one; it is called by one thread at a time), a stop is
-/// requested or a task throws. They start at construction; `join` waits for them.
+/// (it may block waiting for one; it is called by one thread at a time, and while it
+/// waits the other threads finish their tasks, record an exception and leave), a
+/// stop is requested or a task throws. A task `next()` gives once a task has thrown
+/// or a stop is requested is not run. They start at construction; `join` waits for
+/// them.
 class Workers {
  public:
   using Source = std::function<std::optional<std::size_t>()>;
@@ -46,12 +49,15 @@ class Workers {
 
  private:
   std::optional<std::size_t> take();
+  /// A task threw or a stop is requested: no task is to start.
+  bool stopping();
 
   Source next_;
   Task task_;
   const std::atomic<bool>* stop_;
   std::function<void()> on_exit_;
-  std::mutex mutex_;
+  std::mutex source_mutex_;  // held while next_ runs (one thread at a time), not while a task runs
+  std::mutex mutex_;         // failed_ and failure_; never held while next_ runs
   std::exception_ptr failure_;
   bool failed_ = false;
   std::vector<std::thread> threads_;

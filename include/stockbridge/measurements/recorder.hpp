@@ -177,7 +177,8 @@ DamageFigures measured_figures(const std::vector<RecorderBinResult>& bins, const
 std::vector<double> recorder_frequencies(const RecorderCounts& counts, const span::Span& span, int points_per_band);
 
 /// The prediction from a balance at recorder_frequencies (the span needs a climate:
-/// InvalidParameter naming "fatigue.wind_weibull" otherwise).
+/// InvalidParameter naming "fatigue.wind_weibull" otherwise; a balance at other
+/// frequencies: InvalidParameter naming "balance", its point and frequency).
 RecorderPrediction predict_record(const RecorderCounts& counts, const span::Span& span,
                                   const span::SpanBalance& balance, int points_per_band, double days);
 

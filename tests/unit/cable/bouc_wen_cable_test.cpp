@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include <Eigen/LU>
@@ -377,15 +379,16 @@ TEST(BoucWenCable, EverySectionCarriesItsMomentWhateverTheGroupsOfFour) {
   }
 }
 
-// The section loops are built for the x86-64 baseline and for AVX2 with FMA; the
-// environment variable STOCKBRIDGE_BASELINE_KERNELS makes a law built while it is set
-// run the baseline's. Both builds give the same loads along a path and the same exact
-// sensitivities of a period, to round-off (the AVX2 build fuses multiplies and adds).
+// The section loops are built for the x86-64 baseline and for AVX2 with FMA; a law
+// made with BoucWenKernels::baseline runs the baseline's. Both builds give the same
+// loads along a path and the same exact sensitivities of a period, to round-off (the
+// AVX2 build fuses multiplies and adds).
 TEST(BoucWenCable, TheBaselineAndAvx2BuildsAgree) {
   const CableDescription d = slenderpy_cable(41);  // a group short of four at the end
-  setenv("STOCKBRIDGE_BASELINE_KERNELS", "1", 1);
-  const Cable baseline_cable(d);
-  unsetenv("STOCKBRIDGE_BASELINE_KERNELS");
+  const Cable baseline_cable(d, [](const CableDescription& description, std::span<const double> positions,
+                                   std::span<const double>) {
+    return std::make_shared<const BoucWenCableLaw>(description, positions, BoucWenKernels::baseline);
+  });
   const Cable own_cable(d);
   const auto& baseline_law = dynamic_cast<const BoucWenCableLaw&>(baseline_cable.law());
   const auto& own_law = dynamic_cast<const BoucWenCableLaw&>(own_cable.law());

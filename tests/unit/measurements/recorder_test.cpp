@@ -164,6 +164,33 @@ TEST(Recorder, TurbulenceIntensityOfAnotherLawIsRefusedNamingTheLaw) {
   }
 }
 
+// predict_record takes the balance at recorder_frequencies: one at other frequencies,
+// or with too few points, is refused naming the balance, the point and the frequency.
+TEST(Recorder, APredictionFromABalanceAtOtherFrequenciesIsRefusedNamingTheBalance) {
+  const RecorderCounts counts = read_recorder_counts(recorder_write(
+      "other_balance.csv", "yb_pp_mm_low,yb_pp_mm_high,frequency_hz_low,frequency_hz_high,cycles\n0.1,0.2,10,14,1\n"));
+  const io::SpanFile made = recorder_span(0.1);
+  std::vector<double> frequencies = recorder_frequencies(counts, made.span, 2);
+  ASSERT_EQ(frequencies.size(), 2u);
+  for (double& f : frequencies) f *= 1.01;
+  const span::SpanTables tables(made.span, frequencies, made.balance.table);
+  const span::SpanBalance other = span::run_balance(made.span, tables, made.balance);
+  try {
+    predict_record(counts, made.span, other, 2, 30.0);
+    FAIL() << "accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.field(), "balance");
+    EXPECT_EQ(std::string(e.what()).rfind("balance.points[0] at ", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("expected"), std::string::npos) << e.what();
+  }
+  try {
+    predict_record(counts, made.span, span::SpanBalance{}, 2, 30.0);
+    FAIL() << "accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("balance: 0 points, expected more", 0), 0u) << e.what();
+  }
+}
+
 /// A record made by the span's own balance at `truth`: per band the balance's
 /// cycles spread over Yb bins (a factor 1.5 wide) by a lognormal of sigma 0.35 in
 /// ln Yb about the balance's Yb, each band's centre moved by a fixed scatter.
