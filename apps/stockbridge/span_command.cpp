@@ -18,6 +18,7 @@
 #include "option_parsing.hpp"
 #include "progress.hpp"
 #include "report_output.hpp"
+#include "span_modes_command.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
@@ -239,7 +240,13 @@ void add_span_command(CLI::App& app, int& exit_code) {
   add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "Output CSV file")->required();
   add_report_option(*sub, options->report, "the inputs, the verdict, the stress, amplitude and power curves, the life");
-  sub->callback([options, &exit_code] { exit_code = run_span_command(*options); });
+  auto modes = std::make_shared<SpanModesFlags>();
+  add_span_modes_options(*sub, *modes);
+  sub->callback([options, modes, &exit_code] {
+    exit_code = modes->modes ? run_span_modes_command(*modes, {options->span_file, options->output, options->json,
+                                                               options->quiet, options->allow_unusual})
+                             : run_span_command(*options);
+  });
 }
 
 }  // namespace stockbridge::cli
