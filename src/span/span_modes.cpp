@@ -269,6 +269,49 @@ std::vector<double> shape_sample_positions(const Span& span, const SpanModesOpti
   return x;
 }
 
+/// The chain at one natural frequency: its states past each node, the largest |Y|
+/// and the end condition's residual.
+struct ModeChain {
+  double w = 0.0;
+  std::vector<ChainState> past;
+  double peak = 0.0;
+  double residual = 0.0;
+};
+
+/// Every natural frequency below max_frequency_hz (rad/s, ascending), by the count
+/// bisected; InvalidParameter naming max_frequency_hz above max_span_modes of them.
+std::vector<double> natural_angular_frequencies(const AttachedString& string, double max_frequency_hz) {
+  const double w_max = 2.0 * kChainPi * max_frequency_hz;
+  const int total = string.modes_below(w_max);
+  if (total > max_span_modes) {
+    throw_invalid("max_frequency_hz", max_frequency_hz,
+                  fmt::format("a frequency with at most {} modes below it ({} lie below this one)", max_span_modes, total));
+  }
+  std::vector<double> roots;
+  double lo = 0.0;  // J(lo) < n for the next n
+  for (int n = 1; n <= total; ++n) roots.push_back(string.root(n, lo, w_max));
+  return roots;
+}
+
+/// The chain at w, or none where it misses its end condition: a clamp-still mode.
+std::optional<ModeChain> conductor_mode(const AttachedString& string, double w, double length) {
+  ModeChain c{w, string.chain(w), 0.0, 0.0};
+  c.peak = string.peak(c.past, w);
+  c.residual = std::abs(string.deflection(c.past, w, length)) / c.peak;
+  if (!(std::isfinite(c.peak) && c.residual <= kClampStillResidual)) return std::nullopt;
+  return c;
+}
+
+SpanMode span_mode(const ModeChain& chain, int number, double wave_speed_m_s, const std::vector<std::size_t>& node_of) {
+  SpanMode mode;
+  mode.number = number;
+  mode.frequency_hz = chain.w / (2.0 * kChainPi);
+  mode.wavelength_m = wave_speed_m_s / mode.frequency_hz;
+  mode.end_residual = chain.residual;
+  for (const std::size_t node : node_of) mode.attachment_deflection.push_back(chain.past[node].deflection / chain.peak);
+  return mode;
+}
+
 }  // namespace
 
 std::string_view mode_dampers_name(ModeDampers dampers) {
@@ -308,44 +351,23 @@ SpanModes span_modes(const Span& span, const SpanModesOptions& options) {
   out.max_frequency_hz = options.max_frequency_hz;
   out.dampers = options.dampers;
   out.attachments = assembly.attachments;
-
-  const double w_max = 2.0 * kChainPi * options.max_frequency_hz;
-  const int total = string.modes_below(w_max);
-  if (total > max_span_modes) {
-    throw_invalid("max_frequency_hz", options.max_frequency_hz,
-                  fmt::format("a frequency with at most {} modes below it ({} lie below this one)", max_span_modes, total));
-  }
-  std::vector<double> roots;
-  double lo = 0.0;  // J(lo) < n for the next n
-  for (int n = 1; n <= total; ++n) roots.push_back(string.root(n, lo, w_max));
-
-  std::vector<std::vector<ChainState>> chains;  // of each mode kept, at its w
-  std::vector<double> omegas, peaks;
-  for (const double w : roots) {
-    std::vector<ChainState> past = string.chain(w);
-    const double peak = string.peak(past, w);
-    const double residual = std::abs(string.deflection(past, w, span.length())) / peak;
-    if (!(std::isfinite(peak) && residual <= kClampStillResidual)) {
+  std::vector<ModeChain> chains;  // of each mode kept
+  for (const double w : natural_angular_frequencies(string, options.max_frequency_hz)) {
+    std::optional<ModeChain> chain = conductor_mode(string, w, span.length());
+    if (!chain) {
       ++out.clamp_still_modes;
       continue;
     }
-    SpanMode mode;
-    mode.number = static_cast<int>(out.modes.size()) + 1;
-    mode.frequency_hz = w / (2.0 * kChainPi);
-    mode.wavelength_m = out.wave_speed / mode.frequency_hz;
-    mode.end_residual = residual;
-    for (const std::size_t node : assembly.node_of) mode.attachment_deflection.push_back(past[node].deflection / peak);
-    out.max_end_residual = std::max(out.max_end_residual, residual);
-    out.modes.push_back(std::move(mode));
-    chains.push_back(std::move(past));
-    omegas.push_back(w);
-    peaks.push_back(peak);
+    out.modes.push_back(span_mode(*chain, static_cast<int>(out.modes.size()) + 1, out.wave_speed, assembly.node_of));
+    out.max_end_residual = std::max(out.max_end_residual, chain->residual);
+    chains.push_back(std::move(*chain));
   }
   if (!options.shapes) return out;
   const double top = out.modes.empty() ? options.max_frequency_hz : out.modes.back().frequency_hz;
   out.x = shape_sample_positions(span, options, top, out.attachments);
   for (std::size_t i = 0; i < out.modes.size(); ++i) {
-    for (const double x : out.x) out.modes[i].shape.push_back(string.deflection(chains[i], omegas[i], x) / peaks[i]);
+    const ModeChain& c = chains[i];
+    for (const double x : out.x) out.modes[i].shape.push_back(string.deflection(c.past, c.w, x) / c.peak);
   }
   return out;
 }
