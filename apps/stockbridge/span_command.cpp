@@ -18,6 +18,7 @@
 #include "option_parsing.hpp"
 #include "progress.hpp"
 #include "report_output.hpp"
+#include "span_modes_command.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
@@ -273,7 +274,15 @@ void add_span_command(CLI::App& app, Invocation& invocation) {
   sub->add_option("--profile", options->profile,
                   "Also write the standing wave along the span at the governing frequency (CSV: attachment, x_m, displacement_m, "
                   "envelope_m)");
-  sub->callback([options, &invocation] { invocation.set_exit_code(run_span_command(*options, invocation)); });
+  auto modes = std::make_shared<SpanModesFlags>();
+  add_span_modes_options(*sub, *modes);
+  sub->callback([options, modes, &invocation] {
+    invocation.set_exit_code(modes->modes ? run_span_modes_command(*modes,
+                                                                   {options->span_file, options->output, options->json,
+                                                                    options->quiet, options->allow_unusual},
+                                                                   invocation)
+                                          : run_span_command(*options, invocation));
+  });
 }
 
 }  // namespace stockbridge::cli

@@ -36,6 +36,7 @@ PYBIND11_MODULE(_core, m) {
   python::expose_cable(m);
   python::expose_damper(m);
   python::expose_span(m);
+  python::expose_span_modes(m);
   python::expose_line(m);
   python::expose_design(m);
   python::expose_identification(m);

@@ -9,6 +9,7 @@ span, line and impedance return, after ``import stockbridge.plot``).
     damper = sb.load_damper("examples/sauter2003.toml")
     z = sb.impedance(damper, [10.0, 20.0], velocity=[0.2, 0.05])
     s = sb.span("examples/aster570_400m.toml", points=50)
+    modes = sb.span_modes("examples/aster570_400m.toml", fmax=10)   # natural frequencies, shapes
     drake = sb.conductor("ACSR Drake")   # the catalogue's [conductor] values, EI_min 44.25 N m^2
     d = sb.design("examples/design_aster570.toml", samples=16, threads=2)
     schedule = sb.line("examples/line_short.toml", threads=2)["schedule"]
@@ -37,6 +38,7 @@ try:
                         load_damper, load_strand, loop, modes, response, strand_bounds)
     from ._core import (_cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _line,  # noqa: F401
                         _fatigue_tests, _identify_self_damping, _recorder, _span)
+    from ._core import _span_modes  # noqa: F401
 except ImportError:  # the plots work from the source tree without the compiled module
     _defaults = {}  # the library's defaults come with it
 
@@ -437,3 +439,27 @@ def identify_self_damping(file=None, tension=None, frequency=None, amplitude=Non
     return _identify_self_damping(file=None if file is None else str(file), tension=values(tension),
                                   frequency=values(frequency), amplitude=values(amplitude), power=values(power),
                                   n=None if n is None else float(n), allow_unusual=allow_unusual)
+
+
+def span_modes(file=None, fmax=None, dampers="linear", shapes=True, text=None, base=None, allow_unusual=False):
+    """The span's natural frequencies with its masses and dampers, as ``stockbridge
+    span --modes``: the conductor a taut string pinned at its clamps, each [[mass]] a
+    point mass, each damper at its linear impedance (`dampers` "linear": every
+    element sticking) or left out ("removed"; a damper known only by its measured
+    sheet has no linear impedance: InvalidParameter naming dampers). The modes below
+    `fmax` (Hz; None: the top of the span's wind band). The span: a span file's path
+    (`file`) or its contents (`text`, relative paths from `base`).
+
+    Returns a dict: one array per column of the modes CSV, by its names ('mode',
+    'frequency_hz', 'wavelength_m', 'bare_frequency_ratio', 'end_residual',
+    '<attachment>_deflection'), 'columns' (the CSV's order), 'x_m' (the samples along
+    the span, m from end 1: uniform and each attachment's position), 'shapes' (modes
+    x samples: Y over the largest |Y|, Y'(0) > 0; no columns without `shapes`),
+    'attachment_deflection' (modes x attachments) and 'summary', the --json
+    summary's keys (frequencies_hz, attachments [{name, column, kind, position_m,
+    mass_kg}], clamp_still_modes, ...)."""
+    out = _span_modes(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
+                      fmax=None if fmax is None else float(fmax), dampers=dampers, shapes=shapes,
+                      allow_unusual=allow_unusual)
+    out["summary"] = json.loads(out.pop("summary_json"))
+    return out

@@ -10,6 +10,8 @@
     python3 -m stockbridge.plot line schedule.csv -o schedule.png (line: stresses and dampers per span)
     python3 -m stockbridge.plot fatigue-tests out.csv [--summary s.json] -o sn.png
                                 (fatigue-tests: S-N, runouts marked; --summary: the fit, its design curve, the SBL)
+    python3 -m stockbridge.plot span-modes modes.csv [--shapes shapes.csv] [--modes 1,2,5] -o modes.png
+                                (span --modes: the shapes with the attachments marked, f against the bare span's)
 
 Errors (a missing file or column, a cell that is not a number, nothing to plot, an
 output that cannot be written) print one line on stderr and exit with status 2,
@@ -41,6 +43,7 @@ import warnings
 import matplotlib
 import matplotlib.cm
 import matplotlib.colors
+import matplotlib.lines
 import matplotlib.patches
 import matplotlib.pyplot as plt
 import numpy
@@ -1697,6 +1700,141 @@ def fatigue_tests(result, output=None, *, label=None):
     return finish(fatigue_figure(table, result), output)
 
 
+# ---------------------------------------------------------------- span modes
+
+SPAN_MODES_SHOWN = 4  # shapes drawn where --modes does not say which
+
+
+class ModeShapes:
+    """The shapes of a span's modes along it: the samples `x` (m from end 1), each
+    mode's shape by its number, and the attachments as (name, x)."""
+
+    def __init__(self, name, x, shapes, attachments):
+        self.name, self.x, self.shapes, self.attachments = name, x, shapes, attachments
+
+    @classmethod
+    def from_csv(cls, path):
+        """The shapes CSV of stockbridge span --modes --shapes: attachment, x_m, mode_1, ..."""
+        table = Table(path)
+        x = table.required("x_m")
+        shapes = {}
+        for column in table.header:
+            match = re.fullmatch(r"mode_(\d+)", column)
+            if match:
+                shapes[int(match.group(1))] = table.required(column)
+        if not shapes:
+            raise PlotError(f"{path}: no column mode_1, mode_2, ...: expected the shapes CSV of stockbridge span "
+                            "--modes --shapes")
+        attachments = []
+        if "attachment" in table:
+            for names, position in zip(table.text("attachment"), x):
+                attachments += [(name, position) for name in names.split(";") if name]
+        return cls(path, x, shapes, attachments)
+
+    @classmethod
+    def from_result(cls, result, name):
+        """What stockbridge.span_modes() returns: 'x_m', 'shapes' (modes x samples), the
+        summary's attachments."""
+        check_result(result, "span_modes", "x_m", "shapes", "mode", "summary")
+        shapes = numpy.asarray(result["shapes"], dtype=float)
+        if shapes.ndim != 2 or shapes.shape[1] != len(result["x_m"]):
+            raise PlotError(f"{name}: no shapes: expected stockbridge.span_modes(..., shapes=True)")
+        attachments = [(a["name"], a["position_m"]) for a in result["summary"].get("attachments", [])]
+        return cls(name, list(result["x_m"]), {int(n): list(shapes[i]) for i, n in enumerate(result["mode"])},
+                   attachments)
+
+
+def selected_modes(available, wanted, name):
+    """The mode numbers to draw: `wanted` (each must be there), or the first few."""
+    if wanted is None:
+        return sorted(available)[:SPAN_MODES_SHOWN]
+    missing = [n for n in wanted if n not in available]
+    if missing:
+        raise PlotError(f"{name}: no mode {missing[0]}: expected one of 1 to {max(available)}")
+    return list(wanted)
+
+
+def attachment_colours(attachments):
+    """A colour per attachment name, in the order they first appear."""
+    names = list(dict.fromkeys(name for name, _ in attachments))
+    return {name: f"C{1 + k % 9}" for k, name in enumerate(names)}
+
+
+def draw_mode_shape(axis, shapes, number, frequency, colours):
+    """One mode's shape along the span, each attachment a dotted line and a dot on the shape."""
+    axis.plot(shapes.x, shapes.shapes[number], "-", color="C0", linewidth=1.2)
+    axis.axhline(0.0, color="0.7", linewidth=0.6)
+    for name, position in shapes.attachments:
+        axis.axvline(position, color=colours[name], linestyle=":", linewidth=1.0)
+        y = numpy.interp(position, shapes.x, shapes.shapes[number])
+        axis.plot([position], [y], "o", color=colours[name], markersize=5)
+    axis.set_ylim(-1.15, 1.15)
+    axis.set_yticks([-1.0, 0.0, 1.0])
+    axis.set_ylabel(f"mode {number}" + ("" if frequency is None else f"\n{frequency:.4g} Hz"), fontsize="small")
+
+
+def span_modes_figure(modes, shapes=None, wanted=None):
+    """The shapes of a few modes (`wanted`, default the first four) along the span with
+    the attachments marked, over the ratio of every mode's frequency to the bare
+    span's of the same number (what the attachments move them by)."""
+    numbers = [int(n) for n in modes.required("mode")]
+    frequency = dict(zip(numbers, modes.required("frequency_hz")))
+    ratio = modes.required("bare_frequency_ratio")
+    drawn = [] if shapes is None else selected_modes(shapes.shapes, wanted, shapes.name)
+    figure, axes = plt.subplots(len(drawn) + 1, 1, figsize=FIGURE_SIZE, layout="constrained",
+                                height_ratios=[1.0] * len(drawn) + [1.4], squeeze=False)
+    axes = [row[0] for row in axes]
+    if drawn:
+        colours = attachment_colours(shapes.attachments)
+        for axis, number in zip(axes, drawn):
+            draw_mode_shape(axis, shapes, number, frequency.get(number), colours)
+            axis.set_xlim(min(shapes.x), max(shapes.x))
+        for axis in axes[:len(drawn) - 1]:
+            axis.tick_params(labelbottom=False)
+        axes[len(drawn) - 1].set_xlabel("x, from end 1 (m); each shape Y / max|Y|")
+        handles = [matplotlib.lines.Line2D([], [], color=c, linestyle=":", marker="o", markersize=5)
+                   for c in colours.values()]
+        if handles:
+            axes[0].legend(handles, list(colours), fontsize="small", loc="lower right", bbox_to_anchor=(1.0, 1.0),
+                           ncol=min(len(handles), 4), frameon=False, borderaxespad=0.2)  # above the shapes
+    bottom = axes[-1]
+    bottom.plot(numbers, ratio, "o-", color="C0", markersize=3, linewidth=0.8)
+    bottom.axhline(1.0, color="0.5", linewidth=0.8, linestyle="--")
+    bottom.set_xlabel("mode number n")
+    bottom.set_ylabel("f / (n c / 2L)")
+    bottom.grid(True, alpha=0.3)
+    title = f"{modes.path}: {len(numbers)} modes from {min(frequency.values()):.4g} to {max(frequency.values()):.4g} Hz"
+    figure.suptitle(textwrap.fill(title, TITLE_WIDTH), fontsize="medium")
+    return figure
+
+
+def mode_numbers(text):
+    """--modes 1,2,5: mode numbers from 1."""
+    try:
+        numbers = [int(item) for item in text.split(",")]
+    except ValueError:
+        numbers = []
+    if not numbers or any(n < 1 for n in numbers):
+        raise PlotError(f"--modes = '{text}': expected mode numbers from 1, comma-separated (1,2,5)")
+    return numbers
+
+
+def plot_span_modes(path, output, shapes_path=None, wanted=None):
+    shapes = None if shapes_path is None else ModeShapes.from_csv(shapes_path)
+    save(span_modes_figure(Table(path), shapes, wanted), output)
+
+
+def span_modes(result, output=None, *, modes=None, label=None):
+    """plot span-modes' figure of what stockbridge.span_modes() returns: the shapes of
+    `modes` (mode numbers; default the first four) along the span with its
+    attachments marked, over every mode's frequency relative to the bare span's; the
+    title names the span (`label`, default "span_modes"). Returns the matplotlib
+    Figure; with `output` (a path: .png, .pdf, .svg) also saves it there."""
+    name = label or "span_modes"
+    table = result_table(result, "span_modes", "mode", name)
+    return finish(span_modes_figure(table, ModeShapes.from_result(result, name), modes), output)
+
+
 # ---------------------------------------------------------------- command line
 
 class Parser(argparse.ArgumentParser):
@@ -1744,6 +1882,13 @@ def parser():
     fatigue.add_argument("--summary", metavar="FILE.json",
                          help="the JSON summary stockbridge fatigue-tests --json printed: the fit, its design curve "
                          "and the Safe Border Lines")
+    modes = commands.add_parser("span-modes", help="a span's mode shapes with its attachments marked and its "
+                                "frequencies against the bare span's (stockbridge span --modes)")
+    modes.add_argument("csv", help="the modes CSV (stockbridge span --modes -o)")
+    modes.add_argument("-o", "--output", required=True)
+    modes.add_argument("--shapes", metavar="FILE.csv", help="the shapes CSV (stockbridge span --modes --shapes): "
+                       "the shapes along the span")
+    modes.add_argument("--modes", help="the modes whose shapes to draw, e.g. 1,2,5 (default: the first four)")
     for name, text in (("loop", "hysteresis loops of a cycle, response or loop file"),
                        ("fit", "measured and fitted loops or impedance (identify ... --fitted)"),
                        ("design", "objective over each variable of a design CSV: feasible, infeasible, polished, "
@@ -1779,6 +1924,8 @@ def run(args):
         plot_line(args.csv, args.output)
     elif args.command == "fatigue-tests":
         plot_fatigue_tests(args.csv, args.output, args.summary)
+    elif args.command == "span-modes":
+        plot_span_modes(args.csv, args.output, args.shapes, None if args.modes is None else mode_numbers(args.modes))
     else:
         plot_fit(args.csv, args.output)
 

@@ -49,7 +49,9 @@ struct SpanDamper {
   std::shared_ptr<const ImpedanceSheet> sheet;  ///< the measured sheet, where there is no model
   std::optional<SheetFit> fit;  ///< the model is fitted to a measured sheet (fit_from)
   /// Positions measured from end 1 (a span file's `positions = [..]`); empty: at
-  /// `position` from the clamp of one or both ends.
+  /// `position` from the clamp of one or both ends. Its {} keeps the initialisers
+  /// that leave it out (damper, position, both_ends, name, sheet, fit) free of
+  /// -Wmissing-field-initializers.
   std::vector<double> along{};
 
   bool measured() const { return sheet != nullptr; }

@@ -28,6 +28,7 @@
 #include "stockbridge/requests/recorder_request.hpp"
 #include "stockbridge/requests/response_request.hpp"
 #include "stockbridge/requests/section_loop.hpp"
+#include "stockbridge/requests/span_modes_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
 
@@ -68,6 +69,8 @@ std::map<std::string, std::string> documented_output_tables() {
       {"bill", documented_table(bill_table())},
       {"recorder_bins", documented_table(recorder_bins_table())},
       {"fatigue_tests", documented_table(fatigue_tests_table())},
+      {"span_modes", documented_table(span_modes_table(SpanModesResult{}))},
+      {"span_mode_shapes", documented_table(span_mode_shapes_table(SpanModesResult{}))},
   };
 }
 
