@@ -102,7 +102,10 @@ std::string line_positions(const line::ScheduleRow& row) {
 
 std::string line_arrangement(const line::ScheduleRow& row) {
   if (row.per_end == 0) return "no dampers";
-  return fmt::format("{} per end of {} at {} m", row.per_end, row.damper_type, line_positions(row));
+  const std::string beside_masses =
+      row.sphere_dampers > 0 ? fmt::format(" and {} beside the masses, {:g} m from each", row.sphere_dampers, row.sphere_distance)
+                             : std::string();
+  return fmt::format("{} per end of {} at {} m{}", row.per_end, row.damper_type, line_positions(row), beside_masses);
 }
 
 std::string line_duration(double seconds) {
@@ -125,8 +128,9 @@ void print_line_report(const io::LineFile& file, const requests::LineSchedule& s
                b.price ? fmt::format(", price {:.6g}", *b.price) : std::string());
   }
   if (governing) {
-    fmt::print("governing span: {} ({}), {:.3g} MPa, {:.3g} % of the endurance limit\n", governing->id,
-               line_arrangement(*governing), governing->max_stress / 1e6, 100.0 * governing->stress_ratio());
+    fmt::print("governing span: {} ({}), {:.3g} MPa at {}, {:.3g} % of the endurance limit\n", governing->id,
+               line_arrangement(*governing), governing->max_stress / 1e6, governing->governing_place,
+               100.0 * governing->stress_ratio());
   }
   int shown = 0;
   for (const line::ScheduleRow& r : rows) {

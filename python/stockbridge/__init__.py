@@ -295,9 +295,9 @@ def line(file=None, text=None, base=None, threads=1, report=None, allow_unusual=
 
     Returns a dict: 'schedule', one array per column of the schedule CSV by its names,
     one value per span in the line's order (id, conductor, undamped_verdict,
-    damper_type, positions_m, verdict and warnings lists of str; dampers_per_end,
-    converged_points, points and search_balances int; converged and
-    terrain_hw_within bool; the rest float, NaN where the CSV's cell is empty: a
+    damper_type, positions_m, verdict, warnings and governing_place lists of str;
+    dampers_per_end, sphere_dampers, converged_points, points and search_balances
+    int; converged and terrain_hw_within bool; the rest float, NaN where the CSV's cell is empty: a
     stress or life of a balance that did not converge throughout); 'bill', the bill
     of materials CSV's columns (damper_type, dampers, spans, mass_kg); 'summary', the
     --json summary's keys (spans, spans_safe, spans_unsafe, spans_unknown, bill,
