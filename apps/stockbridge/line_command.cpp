@@ -75,20 +75,35 @@ std::string line_text_of(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+/// The journal's records that are not rows: cut short (an interruption mid-write),
+/// or of an earlier program (their rows lack what the schedule now writes).
+struct LineJournalLeftOut {
+  int cut_short = 0;
+  int earlier = 0;
+
+  /// " (3 record(s) cut short, 2 of an earlier program, computed again)", or nothing.
+  std::string text() const {
+    if (cut_short + earlier == 0) return {};
+    std::string what = cut_short > 0 ? fmt::format("{} record(s) cut short", cut_short) : std::string();
+    if (earlier > 0) what += fmt::format("{}{} record(s) of an earlier program", what.empty() ? "" : ", ", earlier);
+    return fmt::format(" ({}, computed again)", what);
+  }
+};
+
 /// The journal's rows of this line (the journal of other inputs refused); records
-/// cut short (an interruption mid-write) are left out: those spans are computed again.
+/// cut short or of an earlier program are left out: those spans are computed again.
 std::map<std::size_t, line::ScheduleRow> read_line_journal(const std::filesystem::path& path,
                                                            const std::string& fingerprint, std::size_t spans,
-                                                           int& cut_short) {
+                                                           LineJournalLeftOut& left_out) {
   JournalRecords journal = read_journal(path, fmt::format("{} {}", kJournalHead, fingerprint));
-  cut_short = journal.cut_short;
+  left_out.cut_short = journal.cut_short;
   std::map<std::size_t, line::ScheduleRow> rows;
   for (const std::string& record : journal.records) {
     try {
       requests::SpanOutcome outcome = requests::parse_span_outcome(record);
       if (outcome.index < spans) rows.insert_or_assign(outcome.index, std::move(*outcome.row));
     } catch (const InvalidParameter&) {
-      ++cut_short;
+      ++(requests::earlier_span_record(record) ? left_out.earlier : left_out.cut_short);
     }
   }
   return rows;
@@ -226,8 +241,8 @@ int run_line_command(const LineOptions& options) {
   if (!options.details.empty()) prepare_line_details(options.details, file);
   const std::string fingerprint = requests::line_fingerprint(file, line_text_of(options.line_file));
   std::map<std::size_t, line::ScheduleRow> rows;
-  int cut_short = 0;
-  if (root && options.resume) rows = read_line_journal(journal_path, fingerprint, spans, cut_short);
+  LineJournalLeftOut left_out;
+  if (root && options.resume) rows = read_line_journal(journal_path, fingerprint, spans, left_out);
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < spans; ++i) {
     if (!rows.contains(i)) todo.push_back(i);
@@ -236,7 +251,7 @@ int run_line_command(const LineOptions& options) {
   if (root) journal.emplace(journal_path, fmt::format("{} {}", kJournalHead, fingerprint), options.resume);
   if (root && options.resume && !options.quiet) {
     fmt::print(stderr, "line: resuming: {} of {} spans in {}{}, {} to compute\n", rows.size(), spans, journal_path,
-               cut_short > 0 ? fmt::format(" ({} record(s) cut short, computed again)", cut_short) : "", todo.size());
+               left_out.text(), todo.size());
   }
 
   std::optional<InterruptRequest> interrupt(std::in_place);

@@ -370,6 +370,19 @@ TEST(LineCli, ASpanWithSpheresGetsDampersBesideThemFromScheduleToSpanFile) {
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.err.find("1 of 2 spans in schedule.csv.journal, 1 to compute"), std::string::npos) << resumed.err;
   EXPECT_EQ(read_text(dir / "schedule.csv"), schedule);
+
+  // A record of the program before the dampers beside the masses (span-v2, no
+  // governing place) is no row: its span is computed again, and the run says why.
+  std::string earlier = journal[1];
+  earlier.replace(earlier.find("span-v3"), 7, "span-v2");
+  std::ofstream(dir / "schedule.csv.journal", std::ios::trunc) << journal[0] << "\n" << earlier << "\n";
+  const CliResult again = run_cli("line line.toml -o schedule.csv --resume", dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("0 of 2 spans in schedule.csv.journal (1 record(s) of an earlier program, computed again), 2 "
+                           "to compute"),
+            std::string::npos)
+      << again.err;
+  EXPECT_EQ(read_text(dir / "schedule.csv"), schedule);
 }
 
 }  // namespace
