@@ -359,7 +359,8 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
     'run' int, 'converged', 'feasible' and each span's '<span>_worse_than_undamped'
     bool, the rest float, NaN where not computed), 'stage' (array of str: base,
     sample or polish), 'governing_span' (array of str: the span of the largest
-    stress ratio, empty unless converged), 'columns' (the CSV's
+    stress ratio, empty unless converged), 'governing_place' (array of str: where on
+    that span the largest stress lies, "span clamp 1", "sphere at 200 m"), 'columns' (the CSV's
     order), 'variables' (the variables' names, their columns), 'summary' (the --json
     summary's keys, None where the JSON has null; 'rounded' the rounded design's
     figures) and 'best_damper': the text of the --best damper file (the rounded
@@ -367,7 +368,7 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
     unit slip explains is refused (UnusualValueError) unless `allow_unusual`."""
     out = _design(file=str(file), samples=samples, polish=polish, threads=threads, round_digits=round_digits,
                   allow_unusual=allow_unusual)
-    for name in ("stage", "governing_span"):
+    for name in ("stage", "governing_span", "governing_place"):
         if name in out:
             out[name] = numpy.array(out[name], dtype=str)
     out["summary"] = json.loads(out.pop("summary_json"))

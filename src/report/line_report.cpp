@@ -50,12 +50,16 @@ std::vector<Fact> line_rules(const io::LineFile& file) {
   out.emplace_back("positions", fmt::format("{} to {} m from the clamp, at least {} m apart, on a {} mm step",
                                             parts::number(r.positions.position_min), parts::number(r.positions.position_max),
                                             parts::number(r.positions.spacing_min), parts::number(1e3 * r.position_step)));
-  out.emplace_back("dampers beside masses",
-                   r.sphere_dampers == line::SphereDampers::none
-                       ? std::string("none")
-                       : fmt::format("one on either side of each mass along a span, {} to {} m from it (the best of "
-                                     "the least, the middle and the most, each balanced with its own end positions)",
-                                     parts::number(r.sphere_distance_min), parts::number(r.sphere_distance_max)));
+  const bool masses = std::any_of(file.line.spans().begin(), file.line.spans().end(),
+                                  [](const line::LineSpan& s) { return !s.span.masses().empty(); });
+  if (masses) {
+    out.emplace_back("dampers beside masses",
+                     r.sphere_dampers == line::SphereDampers::none
+                         ? std::string("none")
+                         : fmt::format("one on either side of each mass along a span, {} to {} m from it (the best "
+                                       "of the least, the middle and the most, each with its own end positions)",
+                                       parts::number(r.sphere_distance_min), parts::number(r.sphere_distance_max)));
+  }
   out.emplace_back("objective", r.positions.objective == span::PositionObjective::life ? "the shortest life (damage per year)"
                                                                                        : "the largest fymax stress");
   const span::Span& first = file.line.spans().front().span;
