@@ -76,20 +76,35 @@ std::string line_text_of(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+/// The journal's records that are not rows: cut short (an interruption mid-write),
+/// or of an earlier program (their rows lack what the schedule now writes).
+struct LineJournalLeftOut {
+  int cut_short = 0;
+  int earlier = 0;
+
+  /// " (3 record(s) cut short, 2 of an earlier program, computed again)", or nothing.
+  std::string text() const {
+    if (cut_short + earlier == 0) return {};
+    std::string what = cut_short > 0 ? fmt::format("{} record(s) cut short", cut_short) : std::string();
+    if (earlier > 0) what += fmt::format("{}{} record(s) of an earlier program", what.empty() ? "" : ", ", earlier);
+    return fmt::format(" ({}, computed again)", what);
+  }
+};
+
 /// The journal's rows of this line (the journal of other inputs refused); records
-/// cut short (an interruption mid-write) are left out: those spans are computed again.
+/// cut short or of an earlier program are left out: those spans are computed again.
 std::map<std::size_t, line::ScheduleRow> read_line_journal(const std::filesystem::path& path,
                                                            const std::string& fingerprint, std::size_t spans,
-                                                           int& cut_short) {
+                                                           LineJournalLeftOut& left_out) {
   JournalRecords journal = read_journal(path, fmt::format("{} {}", kJournalHead, fingerprint));
-  cut_short = journal.cut_short;
+  left_out.cut_short = journal.cut_short;
   std::map<std::size_t, line::ScheduleRow> rows;
   for (const std::string& record : journal.records) {
     try {
       requests::SpanOutcome outcome = requests::parse_span_outcome(record);
       if (outcome.index < spans) rows.insert_or_assign(outcome.index, std::move(*outcome.row));
     } catch (const InvalidParameter&) {
-      ++cut_short;
+      ++(requests::earlier_span_record(record) ? left_out.earlier : left_out.cut_short);
     }
   }
   return rows;
@@ -103,7 +118,10 @@ std::string line_positions(const line::ScheduleRow& row) {
 
 std::string line_arrangement(const line::ScheduleRow& row) {
   if (row.per_end == 0) return "no dampers";
-  return fmt::format("{} per end of {} at {} m", row.per_end, row.damper_type, line_positions(row));
+  const std::string beside_masses =
+      row.sphere_dampers > 0 ? fmt::format(" and {} beside the masses, {:g} m from each", row.sphere_dampers, row.sphere_distance)
+                             : std::string();
+  return fmt::format("{} per end of {} at {} m{}", row.per_end, row.damper_type, line_positions(row), beside_masses);
 }
 
 std::string line_duration(double seconds) {
@@ -126,8 +144,9 @@ void print_line_report(const io::LineFile& file, const requests::LineSchedule& s
                b.price ? fmt::format(", price {:.6g}", *b.price) : std::string());
   }
   if (governing) {
-    fmt::print("governing span: {} ({}), {:.3g} MPa, {:.3g} % of the endurance limit\n", governing->id,
-               line_arrangement(*governing), governing->max_stress / 1e6, 100.0 * governing->stress_ratio());
+    fmt::print("governing span: {} ({}), {:.3g} MPa at {}, {:.3g} % of the endurance limit\n", governing->id,
+               line_arrangement(*governing), governing->max_stress / 1e6, governing->governing_place,
+               100.0 * governing->stress_ratio());
   }
   int shown = 0;
   for (const line::ScheduleRow& r : rows) {
@@ -226,8 +245,8 @@ int run_line_command(const LineOptions& options, Invocation& invocation) {
   if (!options.details.empty()) prepare_line_details(options.details, file);
   const std::string fingerprint = requests::line_fingerprint(file, line_text_of(options.line_file));
   std::map<std::size_t, line::ScheduleRow> rows;  // the journal's; the run's outcomes join them when it ends
-  int cut_short = 0;
-  if (root && options.resume) rows = read_line_journal(journal_path, fingerprint, spans, cut_short);
+  LineJournalLeftOut left_out;
+  if (root && options.resume) rows = read_line_journal(journal_path, fingerprint, spans, left_out);
   const std::size_t resumed = rows.size();
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < spans; ++i) {
@@ -237,7 +256,7 @@ int run_line_command(const LineOptions& options, Invocation& invocation) {
   if (root) journal.emplace(journal_path, fmt::format("{} {}", kJournalHead, fingerprint), options.resume);
   if (root && options.resume && !options.quiet) {
     fmt::print(stderr, "line: resuming: {} of {} spans in {}{}, {} to compute\n", rows.size(), spans, journal_path,
-               cut_short > 0 ? fmt::format(" ({} record(s) cut short, computed again)", cut_short) : "", todo.size());
+               left_out.text(), todo.size());
   }
 
   std::optional<InterruptRequest> interrupt(std::in_place);

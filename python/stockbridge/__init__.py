@@ -297,9 +297,9 @@ def line(file=None, text=None, base=None, threads=1, report=None, allow_unusual=
 
     Returns a dict: 'schedule', one array per column of the schedule CSV by its names,
     one value per span in the line's order (id, conductor, undamped_verdict,
-    damper_type, positions_m, verdict and warnings lists of str; dampers_per_end,
-    converged_points, points and search_balances int; converged and
-    terrain_hw_within bool; the rest float, NaN where the CSV's cell is empty: a
+    damper_type, positions_m, verdict, warnings and governing_place lists of str;
+    dampers_per_end, sphere_dampers, converged_points, points and search_balances
+    int; converged and terrain_hw_within bool; the rest float, NaN where the CSV's cell is empty: a
     stress or life of a balance that did not converge throughout); 'bill', the bill
     of materials CSV's columns (damper_type, dampers, spans, mass_kg); 'summary', the
     --json summary's keys (spans, spans_safe, spans_unsafe, spans_unknown, bill,
@@ -361,7 +361,8 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
     'run' int, 'converged', 'feasible' and each span's '<span>_worse_than_undamped'
     bool, the rest float, NaN where not computed), 'stage' (array of str: base,
     sample or polish), 'governing_span' (array of str: the span of the largest
-    stress ratio, empty unless converged), 'columns' (the CSV's
+    stress ratio, empty unless converged), 'governing_place' (array of str: where on
+    that span the largest stress lies, "span clamp 1", "sphere at 200 m"), 'columns' (the CSV's
     order), 'variables' (the variables' names, their columns), 'summary' (the --json
     summary's keys, None where the JSON has null; 'rounded' the rounded design's
     figures) and 'best_damper': the text of the --best damper file (the rounded
@@ -369,7 +370,7 @@ def design(file, samples=None, polish=None, threads=_defaults.get("design_thread
     unit slip explains is refused (UnusualValueError) unless `allow_unusual`."""
     out = _design(file=str(file), samples=samples, polish=polish, threads=threads, round_digits=round_digits,
                   allow_unusual=allow_unusual)
-    for name in ("stage", "governing_span"):
+    for name in ("stage", "governing_span", "governing_place"):
         if name in out:
             out[name] = numpy.array(out[name], dtype=str)
     out["summary"] = json.loads(out.pop("summary_json"))

@@ -1102,7 +1102,7 @@ class Designs:
         self.variables = header[start:end]
         if header[0] != "stage" or not self.variables or header[end:end + len(DESIGN_FIGURES)] != DESIGN_FIGURES:
             raise PlotError(f"{path}: expected the columns stage, run, the variables, {', '.join(DESIGN_FIGURES)} "
-                            "in this order (a design CSV; governing_span before run and each span's figures after "
+                            "in this order (a design CSV; governing_span and governing_place before run and each span's figures after "
                             "them are allowed)")
         self.stage = table.text("stage")
         for i, stage in enumerate(self.stage):

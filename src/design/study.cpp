@@ -27,6 +27,13 @@ std::string_view objective_name(Objective objective) { return objective == Objec
 
 namespace {
 
+/// The span's first damper at the ends (by `position`), or none: the one a position variable places.
+const span::SpanDamper* first_end_damper(const span::Span& span) {
+  const auto& d = span.dampers();
+  const auto first = std::find_if(d.begin(), d.end(), [](const span::SpanDamper& x) { return !x.in_span(); });
+  return first == d.end() ? nullptr : &*first;
+}
+
 /// A variable's or tie's path must name a number of the base damper.
 void check_path(const std::string& field, const std::string& path, const damper::DamperDescription& base) {
   try {
@@ -48,11 +55,16 @@ void validate_variable(const DesignVariable& v, std::size_t i, const damper::Dam
       throw_invalid(field + ".max", v.max, "a fraction of the shortest loop up to 5");
     }
     for (const DesignSpan& s : spans) {
-      if (s.span.dampers().empty()) {
-        throw InvalidParameter(field + ".name", fmt::format(" = \"{}\": span {} has no [[damper]] to move", v.name, s.name));
+      const span::SpanDamper* first = first_end_damper(s.span);
+      if (!first) {
+        throw InvalidParameter(field + ".name", fmt::format(" = \"{}\": span {} has no [[damper]] at its ends (position) "
+                                                            "to move",
+                                                            v.name, s.name));
       }
-      double last = 0.0;  // the farthest damper beyond the first, which the position places
-      for (const span::SpanDamper& d : s.span.dampers()) last = std::max(last, d.position - s.span.dampers().front().position);
+      double last = 0.0;  // the farthest damper at the ends beyond the first, which the position places
+      for (const span::SpanDamper& d : s.span.dampers()) {
+        if (!d.in_span()) last = std::max(last, d.position - first->position);
+      }
       const double farthest = v.name == kPosition ? v.max : v.max * span::shortest_loop(s.span);
       if (!(farthest + last < 0.5 * s.span.length())) {
         throw_invalid(field + ".max", v.max, fmt::format("a position whose dampers stay within half of span {} ({} m)", s.name,
@@ -125,7 +137,7 @@ DesignStudy::DesignStudy(damper::DamperDescription base, std::vector<DesignSpan>
 std::vector<double> DesignStudy::base_values() const {
   std::vector<double> x;
   for (const DesignVariable& v : variables_) {
-    const double first = v.name == kPosition || v.name == kPositionLoopFraction ? spans_.front().span.dampers().front().position : 0.0;
+    const double first = v.name == kPosition || v.name == kPositionLoopFraction ? first_end_damper(spans_.front().span)->position : 0.0;
     x.push_back(v.name == kPosition               ? first
                 : v.name == kPositionLoopFraction ? first / shortest_loop(0)
                                                   : damper_number(base_, v.name));
@@ -189,7 +201,7 @@ span::Span DesignStudy::span_with(std::size_t k, const damper::Damper& damper, s
     d.damper = damper;
     d.sheet.reset();  // a span's measured damper is replaced by the candidate too
   }
-  span::Span with(s.conductor(), s.length(), s.tension(), s.wind(), s.self_damping(), std::move(dampers), s.fatigue());
+  const span::Span with = s.with_dampers(std::move(dampers));
   return position ? with.with_dampers_at(*position) : with;
 }
 
@@ -263,12 +275,14 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
     }
     const double r = b.max_judged_stress / b.endurance_limit;
     e.spans.push_back(SpanFigures{r, b.max_judged_stress, b.undamped_max_judged_stress,
-                                  b.life ? b.life->life_years : std::numeric_limits<double>::quiet_NaN()});
+                                  b.life ? b.life->life_years : std::numeric_limits<double>::quiet_NaN(),
+                                  b.max_judged_stress_place});
     if (k == 0 || r > ratio) {
       ratio = r;
       e.max_stress = b.max_judged_stress;
       e.frequency_at_max_hz = b.max_judged_stress_frequency_hz;
       e.span_at_max = k;
+      e.place_at_max = b.max_judged_stress_place;
     }
     for (const span::BalancePoint& p : a.balance.points) {
       for (const span::DamperAtBalance& d : p.dampers) curvature = std::max(curvature, d.messenger_curvature_max);

@@ -6,7 +6,6 @@
 #include <functional>
 #include <cmath>
 #include <optional>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -17,14 +16,12 @@
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/input_file.hpp"
 #include "stockbridge/span/tension_figures.hpp"
+#include "line_document.hpp"
 #include "span_reading.hpp"
 #include "toml_reader.hpp"
 
 namespace stockbridge::io {
 
-struct LineDocument {
-  toml::table table;
-};
 
 namespace line_reading {
 
@@ -39,6 +36,10 @@ struct GivenSpan {
   std::optional<int> terrain;
   std::string conductor;  ///< a catalogue type or a conductor file; empty: the line's
   std::optional<double> speed_min, speed_max;
+  /// Masses along the span ([[span.mass]] tables, or the CSV's masses column grouped
+  /// by their mass), and the CSV's cell as written (for messages).
+  std::vector<span::SpanMass> masses;
+  std::string masses_cell;
   std::string where;      ///< "file:line: " for messages
   /// The location of one of its keys or columns ("file:line: ").
   std::function<std::string(std::string_view key)> located;
@@ -54,6 +55,7 @@ std::string GivenSpan::named(std::string_view key) const {
   if (key == "length") return "length_m";
   if (key == "tension") return "tension_n";
   if (key == "catenary_parameter") return "catenary_parameter_m";
+  if (key.starts_with("mass[")) return "masses";
   return std::string(key);
 }
 
@@ -109,11 +111,19 @@ line::LineSpan build_given(const GivenSpan& given, const SpanReading& shared, co
         fmt::format("{}span \"{}\": ", given.located(given.tension_form), printable(given.id)),
         given.named(given.tension_form), given.tension_value, shared.policy, warnings);
     span::Span s(std::move(conductor), *given.length, tension, std::move(wind), shared.self_damping, {}, shared.fatigue,
-                 given.terrain);
+                 given.terrain, given.masses);
     return line::LineSpan{given.id, std::move(s), shared.balance, given.tension_form, given.tension_value,
                           given.conductor, given.where};
   } catch (const InvalidParameter& e) {
     const std::string& field = e.field();
+    if (field.starts_with("mass[") && given.from_csv) {
+      throw InputError(fmt::format("{}span \"{}\": column 'masses' = '{}': {}{}", given.where, printable(given.id),
+                                   printable(given.masses_cell), field.ends_with(".mass") ? "a mass" : "a position",
+                                   e.detail()));
+    }
+    if (field.starts_with("mass[")) {
+      throw InputError(fmt::format("{}span \"{}\": {}{}", given.located(field), printable(given.id), field, e.detail()));
+    }
     if (field.starts_with("span.")) {
       throw InputError(fmt::format("{}span \"{}\": {}{}", given.located(field.substr(5)), printable(given.id),
                                    given.named(field.substr(5)), e.detail()));
@@ -137,6 +147,9 @@ void check_given(const GivenSpan& given, SlipPolicy policy, std::vector<std::str
                               : given.tension_form == "tension_fraction" ? typical::tension_fraction
                                                                          : typical::catenary_parameter;
   check_typical(unusual, given.tension_form, given.tension_value, range);
+  for (std::size_t m = 0; m < given.masses.size(); ++m) {
+    check_typical(unusual, fmt::format("mass[{}].mass", m), given.masses[m].mass, typical::attachment_mass);
+  }
   for (UnusualValue& u : unusual) {
     const std::string location = fmt::format("{}span \"{}\": ", given.located(u.field), printable(given.id));
     u.field = given.named(u.field);
@@ -144,9 +157,22 @@ void check_given(const GivenSpan& given, SlipPolicy policy, std::vector<std::str
   }
 }
 
+/// The location of a [[span.mass]] table's key that a model's field names
+/// ("mass[1].positions[0]": the second table's positions), or of the span's table.
+std::string mass_location(const TomlTable& span_table, const std::vector<TomlTable>& masses, std::string_view field) {
+  const std::size_t open = field.find('['), close = field.find(']');
+  std::size_t index = 0;
+  const auto [end, error] = std::from_chars(field.data() + open + 1, field.data() + close, index);
+  if (error != std::errc() || index >= masses.size() || close + 1 >= field.size()) return span_table.location("mass");
+  std::string_view key = field.substr(close + 2);
+  key = key.substr(0, key.find('['));
+  return masses[index].location(key);
+}
+
 /// A [[span]] table.
 GivenSpan given_from_table(const TomlTable& t) {
-  t.accept_only({"id", "length", "tension", "tension_fraction", "catenary_parameter", "terrain", "conductor", "wind"});
+  t.accept_only({"id", "length", "tension", "tension_fraction", "catenary_parameter", "terrain", "conductor", "wind",
+                 "mass"});
   GivenSpan g;
   g.id = t.required_string("id", "a string naming the span (e.g. \"T12-T13\")");
   g.length = t.number("length");
@@ -170,8 +196,11 @@ GivenSpan given_from_table(const TomlTable& t) {
     g.speed_min = w->optional_number("speed_min");
     g.speed_max = w->optional_number("speed_max");
   }
+  const std::vector<TomlTable> masses = t.table_array("mass", false);
+  for (const TomlTable& m : masses) g.masses.push_back(span_reading::read_span_mass(m, g.masses.size()));
   g.where = t.location("id");
-  g.located = [t](std::string_view key) {
+  g.located = [t, masses](std::string_view key) {
+    if (key.starts_with("mass[")) return mass_location(t, masses, key);
     return key == "speed_min" || key == "speed_max" ? t.location("wind") : t.location(key);
   };
   return g;
@@ -188,9 +217,57 @@ std::optional<double> csv_number(const std::string& cell, const std::string& whe
   return value;
 }
 
-constexpr std::array<std::string_view, 9> kCsvColumns{"id", "length_m", "tension_n", "tension_fraction",
-                                                      "catenary_parameter_m", "terrain", "conductor",
-                                                      "wind_speed_min_m_s", "wind_speed_max_m_s"};
+constexpr std::array<std::string_view, 10> kCsvColumns{"id", "length_m", "tension_n", "tension_fraction",
+                                                       "catenary_parameter_m", "terrain", "conductor",
+                                                       "wind_speed_min_m_s", "wind_speed_max_m_s", "masses"};
+
+std::string_view trimmed(std::string_view text) {
+  const std::size_t first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+/// A number of a masses cell's entry, or none where the text is not one.
+std::optional<double> mass_entry_number(std::string_view text) {
+  text = trimmed(text);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+/// A spans CSV's masses cell: "12.5@30;12.5@90" (kg @ m from end 1, ';'-separated;
+/// empty: none). Masses of one value are one SpanMass at all their positions, named
+/// "mass 1", "mass 2", ... in the order first given (a span file's [[mass]] names);
+/// the model checks the values.
+std::vector<span::SpanMass> csv_masses(const std::string& cell, const std::string& where) {
+  std::vector<span::SpanMass> masses;
+  if (trimmed(cell).empty()) return masses;
+  std::string_view rest(cell);
+  while (true) {
+    const std::size_t split = rest.find(';');
+    const std::string_view entry = rest.substr(0, split);
+    const std::size_t at = entry.find('@');
+    const std::optional<double> mass = at == std::string_view::npos ? std::nullopt : mass_entry_number(entry.substr(0, at));
+    const std::optional<double> position =
+        at == std::string_view::npos ? std::nullopt : mass_entry_number(entry.substr(at + 1));
+    if (!mass || !position) {
+      throw InputError(fmt::format("{}column 'masses' = '{}': '{}' is not a mass at a position: expected "
+                                   "<kg>@<m from end 1> entries, ';'-separated (e.g. 12.5@30;12.5@90), or an empty "
+                                   "cell for none",
+                                   where, printable(cell), printable(trimmed(entry))));
+    }
+    auto same = std::find_if(masses.begin(), masses.end(), [&](const span::SpanMass& m) { return m.mass == *mass; });
+    if (same == masses.end()) {
+      masses.push_back(span::SpanMass{fmt::format("mass {}", masses.size() + 1), *mass, {}, 1.0});
+      same = masses.end() - 1;
+    }
+    same->positions.push_back(*position);
+    if (split == std::string_view::npos) break;
+    rest.remove_prefix(split + 1);
+  }
+  return masses;
+}
 
 /// The spans of a spans CSV.
 std::vector<GivenSpan> given_from_csv(const std::filesystem::path& path) {
@@ -255,6 +332,8 @@ std::vector<GivenSpan> given_from_csv(const std::filesystem::path& path) {
     g.conductor = cell(6);
     g.speed_min = csv_number(cell(7), where, "wind_speed_min_m_s");
     g.speed_max = csv_number(cell(8), where, "wind_speed_max_m_s");
+    g.masses_cell = cell(9);
+    g.masses = csv_masses(g.masses_cell, where);
     spans.push_back(std::move(g));
   }
   return spans;
@@ -308,6 +387,9 @@ line::ScheduleRules read_rules(const TomlTable& d, const std::optional<TomlTable
   if (d.contains("undamped_rule")) r.undamped_rule = parsed("undamped_rule", line::parse_undamped_rule);
   r.accept_uncertain = d.optional_boolean("accept_uncertain").value_or(false);
   r.position_step = d.optional_number("position_step").value_or(r.position_step);
+  if (d.contains("sphere_dampers")) r.sphere_dampers = parsed("sphere_dampers", line::parse_sphere_dampers);
+  r.sphere_distance_min = d.optional_number("sphere_distance_min").value_or(r.sphere_distance_min);
+  r.sphere_distance_max = d.optional_number("sphere_distance_max").value_or(r.sphere_distance_max);
   if (l) {
     if (const auto n = l->optional_integer("points", 2, 100000)) r.points = static_cast<int>(*n);
     if (const auto n = l->optional_integer("search_points", 2, 100000)) r.search_points = static_cast<int>(*n);
@@ -339,7 +421,8 @@ LineFile build_line(toml::table document, const TomlSource& source, const std::f
   }
   const TomlTable dampers = top.table("dampers");
   dampers.accept_only({"types", "min_per_end", "max_per_end", "position_min", "position_max", "spacing_min",
-                       "objective", "life_target", "position_step", "choose", "accept_uncertain", "undamped_rule"});
+                       "objective", "life_target", "position_step", "choose", "accept_uncertain", "undamped_rule",
+                       "sphere_dampers", "sphere_distance_min", "sphere_distance_max"});
   std::vector<line::DamperType> types;
   for (const TomlTable& t : dampers.table_array("types", true)) types.push_back(read_damper_type(t, base, shared));
   const line::ScheduleRules rules = read_rules(dampers, line_table);
@@ -365,7 +448,9 @@ LineFile build_line(toml::table document, const TomlSource& source, const std::f
   std::vector<std::string> warnings;
   span_reading::add_span_warnings(shared, document, source, warnings, false);
   for (const auto& [key, value] : {std::pair{"position_min", rules.positions.position_min},
-                                   std::pair{"position_max", rules.positions.position_max}}) {
+                                   std::pair{"position_max", rules.positions.position_max},
+                                   std::pair{"sphere_distance_min", rules.sphere_distance_min},
+                                   std::pair{"sphere_distance_max", rules.sphere_distance_max}}) {
     if (const auto u = unusual(fmt::format("dampers.{}", key), value, typical::damper_position)) {
       judge_unusual(*u, dampers.location(key), policy, warnings);
     }
@@ -404,75 +489,6 @@ LineFile load_line_text(std::string_view text, std::string_view source, const st
                         SlipPolicy policy) {
   return line_reading::build_line(parse_toml_text(text, source), TomlSource{std::string(source), false}, base_directory,
                                   policy);
-}
-
-namespace {
-
-/// `node`'s path values made absolute (the span file lies elsewhere).
-void absolute_path_value(toml::table& table, std::string_view key, const std::filesystem::path& base) {
-  if (const auto* value = table.get_as<std::string>(key)) {
-    const std::filesystem::path p(value->get());
-    if (!p.is_absolute()) table.insert_or_assign(key, std::filesystem::absolute(base / p).lexically_normal().string());
-  }
-}
-
-}  // namespace
-
-std::string span_file_text(const LineFile& file, const line::ScheduleRow& row) {
-  const line::LineSpan& s = file.line.spans().at(row.index);
-  toml::table doc;
-  for (const char* key : {"conductor", "wind", "self_damping", "fatigue", "balance"}) {
-    if (const toml::table* t = file.document->table.get_as<toml::table>(key)) doc.insert(key, *t);
-  }
-  const std::filesystem::path& base = file.base_directory;
-  if (!s.conductor.empty()) {
-    toml::table c;
-    if (s.conductor.ends_with(".toml")) {
-      c.insert("file", s.conductor);
-      absolute_path_value(c, "file", base);
-    } else {
-      c.insert("type", s.conductor);
-    }
-    doc.insert_or_assign("conductor", std::move(c));
-  }
-  absolute_path_value(*doc.get_as<toml::table>("conductor"), "file", base);
-  toml::table& wind = *doc.get_as<toml::table>("wind");
-  absolute_path_value(wind, "table", base);
-  wind.insert_or_assign("speed_min", s.span.wind().speed_min);  // the span's own where it has one
-  wind.insert_or_assign("speed_max", s.span.wind().speed_max);
-  toml::table span_table;
-  span_table.insert("length", s.span.length());
-  span_table.insert(s.tension_form, s.tension_given);
-  if (s.span.terrain()) span_table.insert("terrain", static_cast<int64_t>(*s.span.terrain()));
-  doc.insert("span", std::move(span_table));
-  if (!row.positions.empty()) {
-    const line::DamperType* type = nullptr;
-    for (const line::DamperType& t : file.line.types()) {
-      if (t.name == row.damper_type) type = &t;
-    }
-    if (!type) throw InvalidParameter("damper_type", fmt::format(" = \"{}\": not a type of the line", printable(row.damper_type)));
-    if (type->file.empty()) throw InvalidParameter("damper_type", ": a type made in code has no file to name");
-    toml::array dampers;
-    for (const double x : row.positions) {
-      toml::table d;
-      d.insert(type->damper.measured() || type->damper.fit ? "impedance" : "file", type->file);
-      if (type->damper.fit) {
-        d.insert("fit_from", type->fit_from);
-        toml::array free;
-        for (const std::string& number : type->damper.fit->free) free.push_back(number);
-        d.insert("free", std::move(free));
-      }
-      d.insert("position", x);
-      d.insert("ends", "both");
-      dampers.push_back(std::move(d));
-    }
-    doc.insert("damper", std::move(dampers));
-  }
-  std::ostringstream out;
-  out << "# span " << s.id << " of line " << file.name << ", as its damper schedule balanced it\n"
-      << toml::toml_formatter(doc, toml::toml_formatter::default_flags & ~toml::format_flags::allow_literal_strings)
-      << "\n";
-  return out.str();
 }
 
 }  // namespace stockbridge::io

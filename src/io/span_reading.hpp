@@ -58,6 +58,9 @@ span::SelfDampingModel read_self_damping(const TomlTable& table);
 span::FatigueSpec read_fatigue(const TomlTable& table, const std::filesystem::path& base_directory,
                                SpanReading& reading);
 span::BalanceOptions read_balance(const std::optional<TomlTable>& table);
+/// A [[mass]] entry (name, mass, positions, stress_factor); its name "mass <index + 1>"
+/// where not given. The model checks its values.
+span::SpanMass read_span_mass(const TomlTable& table, std::size_t index);
 /// A measured sheet named at the table's `impedance` key (one per file).
 std::shared_ptr<const span::ImpedanceSheet> read_sheet(const TomlTable& table, const std::string& file,
                                                        const std::filesystem::path& base_directory,

@@ -14,6 +14,12 @@ namespace stockbridge::line {
 
 namespace {
 
+/// `steps` whole steps as the decimal number the schedule prints (0.01 * 113 = 1.13).
+double steps_of(long long steps, double step) {
+  const int digits = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
+  return std::stod(fmt::format("{:.{}f}", static_cast<double>(steps) * step, digits));
+}
+
 /// Positions (increasing) rounded to the rules' step, their range and spacing kept
 /// (in whole steps), as the decimal numbers the schedule prints.
 std::vector<double> rounded_positions(std::vector<double> x, const ScheduleRules& rules) {
@@ -31,10 +37,7 @@ std::vector<double> rounded_positions(std::vector<double> x, const ScheduleRules
     if (k > 0) i = std::max(i, steps[static_cast<std::size_t>(k - 1)] + spacing);
     steps[static_cast<std::size_t>(k)] = i;
   }
-  const int digits = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    x[k] = std::stod(fmt::format("{:.{}f}", static_cast<double>(steps[k]) * step, digits));
-  }
+  for (std::size_t k = 0; k < x.size(); ++k) x[k] = steps_of(steps[k], step);
   return x;
 }
 
@@ -83,49 +86,110 @@ std::size_t type_index(const Line& line, const std::string& name) {
   throw InvalidParameter("damper_type", fmt::format(" = \"{}\": not a damper type of the line", printable(name)));
 }
 
-span::SpanAnalysis analyse_with(const Line& line, std::size_t index, std::size_t type, const std::vector<double>& positions,
+/// The span's dampers of an arrangement: one a position at the ends, and the one
+/// placed beside the masses (a SpanDamper with all its positions along the span).
+std::size_t damper_count(const Arrangement& a) { return a.positions.size() + (a.sphere_distance ? 1 : 0); }
+
+span::SpanAnalysis analyse_with(const Line& line, std::size_t index, std::size_t type, const Arrangement& arrangement,
                                 TableCache& cache) {
   const LineSpan& s = line.spans()[index];
   span::AnalysisOptions options;
   options.balance = s.balance;
   const std::vector<double> f = span::band_frequencies(s.span, line.rules().points);
-  if (positions.empty()) return span::analyse_span(s.span, f, options);
+  if (arrangement.positions.empty()) return span::analyse_span(s.span, f, options);
   const span::TableSource tables = [&](const span::Span&, const std::vector<double>& frequencies,
                                        const span::ImpedanceTableOptions& table) {
-    return type_tables(line, type, positions.size(), frequencies, table, cache);
+    return type_tables(line, type, damper_count(arrangement), frequencies, table, cache);
   };
-  return span::analyse_span(with_arrangement(s.span, line.types()[type], positions), f, options, {}, tables);
+  return span::analyse_span(with_arrangement(s.span, line.types()[type], arrangement), f, options, {}, tables);
 }
 
-/// One damper type, `per_end` dampers: the positions searched on the tables, rounded,
-/// and the polished balance there.
+/// The distances the dampers beside the masses are tried at: sphere_distance_min, the
+/// middle and sphere_distance_max, on the position step (one where the two are equal).
+/// Each is searched and balanced with the polish: on the tables alone the largest
+/// stress can be off by tens of percent where dampers sit close to a mass, enough to
+/// rank the distances wrongly (docs/line.md, "Masses along a span").
+constexpr int kSphereDistances = 3;
+
+std::vector<double> sphere_distances(const ScheduleRules& rules) {
+  const double step = rules.position_step;
+  const auto lo = static_cast<long long>(std::ceil(rules.sphere_distance_min / step - 1e-9));
+  const auto hi = std::max(lo, static_cast<long long>(std::floor(rules.sphere_distance_max / step + 1e-9)));
+  std::vector<double> d;
+  for (int k = 0; k < kSphereDistances; ++k) {
+    const long long at = lo + std::llround(static_cast<double>(hi - lo) * k / (kSphereDistances - 1));
+    const double x = steps_of(at, step);
+    if (d.empty() || x != d.back()) d.push_back(x);
+  }
+  return d;
+}
+
+/// One damper type, `per_end` dampers (and those beside the masses at one distance):
+/// the end positions searched on the tables, rounded, and the polished balance there.
 struct Candidate {
   std::size_t type = 0;
-  std::vector<double> positions;
+  Arrangement arrangement;
   span::SpanAnalysis analysis;
   int balances = 0;
   double objective = std::numeric_limits<double>::infinity();  ///< of the polished balance
   bool safe = false;
 };
 
+/// The polished balance of an arrangement, judged by the rules.
+Candidate polished_candidate(const Line& line, std::size_t index, std::size_t type, Arrangement arrangement,
+                             TableCache& cache) {
+  span::SpanAnalysis analysis = analyse_with(line, index, type, arrangement, cache);
+  Candidate c{type, std::move(arrangement), std::move(analysis), 0};
+  c.objective = span::position_objective(c.analysis.balance, line.rules().positions.objective);
+  c.safe = safe_by(verdict_of(c.analysis.balance.summary, line.rules(), false), line.rules());
+  return c;
+}
+
+/// The end dampers searched on the tables with the rest of `arrangement` in place,
+/// rounded, and the polished balance there.
+Candidate searched_candidate(const Line& line, std::size_t index, std::size_t type, Arrangement arrangement,
+                             TableCache& cache, const std::function<bool()>& stop) {
+  const LineSpan& s = line.spans()[index];
+  const ScheduleRules& rules = line.rules();
+  const std::vector<double> f = span::band_frequencies(s.span, rules.search_points);
+  const span::Span trial = with_arrangement(s.span, line.types()[type], arrangement);
+  const auto tables = type_tables(line, type, damper_count(arrangement), f, s.balance.table.for_position_search(), cache);
+  const span::PositionSearch found = span::optimise_positions(trial, *tables, s.balance, rules.positions, stop);
+  if (stop && stop()) throw Interrupted("the schedule was stopped");
+  // The search gives every damper's position, the ends' first (with_arrangement's order).
+  const auto ends = found.positions.begin() + static_cast<std::ptrdiff_t>(arrangement.positions.size());
+  arrangement.positions = rounded_positions({found.positions.begin(), ends}, rules);
+  Candidate c = polished_candidate(line, index, type, std::move(arrangement), cache);
+  c.balances = found.balances;
+  return c;
+}
+
+/// `per_end` dampers of one type at the ends, from the usual arrangement or from the
+/// one of one damper fewer: searched and polished (searched_candidate). Where the span
+/// gets dampers beside its masses, once for each of their distances: the best (safe
+/// before not, then by the objective; the smaller distance where they tie), the
+/// searches' balances added up.
 Candidate search_candidate(const Line& line, std::size_t index, std::size_t type, int per_end,
                            const std::vector<double>& previous, TableCache& cache, const std::function<bool()>& stop) {
   const LineSpan& s = line.spans()[index];
   const ScheduleRules& rules = line.rules();
-  const std::vector<double> f = span::band_frequencies(s.span, rules.search_points);
-  const std::vector<double> start = previous.empty()
-                                        ? span::usual_positions(s.span, f.back(), per_end, 0.5, rules.positions)
-                                        : extended(previous, rules);
-  const span::Span trial = with_arrangement(s.span, line.types()[type], start);
-  const auto tables = type_tables(line, type, start.size(), f, s.balance.table.for_position_search(), cache);
-  const span::PositionSearch found = span::optimise_positions(trial, *tables, s.balance, rules.positions, stop);
-  if (stop && stop()) throw Interrupted("the schedule was stopped");
-  std::vector<double> positions = rounded_positions(found.positions, rules);
-  span::SpanAnalysis analysis = analyse_with(line, index, type, positions, cache);
-  Candidate c{type, std::move(positions), std::move(analysis), found.balances};
-  c.objective = span::position_objective(c.analysis.balance, rules.positions.objective);
-  c.safe = safe_by(verdict_of(c.analysis.balance.summary, rules, false), rules);
-  return c;
+  const double f_max = span::band_frequencies(s.span, rules.search_points).back();
+  const Arrangement start{previous.empty() ? span::usual_positions(s.span, f_max, per_end, 0.5, rules.positions)
+                                           : extended(previous, rules),
+                          std::nullopt};
+  if (!gets_sphere_dampers(s.span, rules)) return searched_candidate(line, index, type, start, cache, stop);
+  std::optional<Candidate> best;
+  int balances = 0;
+  for (const double d : sphere_distances(rules)) {
+    Arrangement beside = start;
+    beside.sphere_distance = d;
+    Candidate c = searched_candidate(line, index, type, std::move(beside), cache, stop);
+    balances += c.balances;
+    const bool better = !best || (c.safe != best->safe ? c.safe : c.objective < best->objective);
+    if (better) best = std::move(c);
+  }
+  best->balances = balances;
+  return std::move(*best);
 }
 
 std::string megapascal(double pascal) { return fmt::format("{:.3g} MPa", pascal / 1e6); }
@@ -165,9 +229,14 @@ void fill_arrangement(ScheduleRow& row, const Line& line, const Candidate* c, co
   const span::BalanceSummary& s = a.balance.summary;
   if (c) {
     row.damper_type = line.types()[c->type].name;
-    row.per_end = static_cast<int>(c->positions.size());
-    row.positions = c->positions;
+    row.per_end = static_cast<int>(c->arrangement.positions.size());
+    row.positions = c->arrangement.positions;
+    if (c->arrangement.sphere_distance) {
+      row.sphere_distance = *c->arrangement.sphere_distance;
+      row.sphere_dampers = static_cast<int>(sphere_damper_positions(a.span, row.sphere_distance).size());
+    }
   }
+  row.governing_place = s.converged > 0 ? s.max_judged_stress_place : std::string();
   row.max_stress = s.converged > 0 ? s.max_judged_stress : std::numeric_limits<double>::quiet_NaN();
   row.max_stress_high = s.converged > 0 ? s.max_judged_stress_high : std::numeric_limits<double>::quiet_NaN();
   row.max_stress_frequency = s.converged > 0 ? s.max_judged_stress_frequency_hz : std::numeric_limits<double>::quiet_NaN();
@@ -235,7 +304,7 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
     for (std::size_t t = 0; t < line.types().size(); ++t) {
       Candidate c = search_candidate(line, index, t, per_end, previous[t], cache, stop);
       out.row.balances += c.balances;
-      previous[t] = c.positions;
+      previous[t] = c.arrangement.positions;
       const auto better = [&](const Candidate& a, const Candidate& b) {
         if (a.safe != b.safe) return a.safe;
         if (a.safe) {
@@ -262,7 +331,9 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
 
 span::SpanAnalysis analyse_arrangement(const Line& line, const ScheduleRow& row, TableCache& cache) {
   if (row.positions.empty()) return analyse_with(line, row.index, 0, {}, cache);
-  return analyse_with(line, row.index, type_index(line, row.damper_type), row.positions, cache);
+  Arrangement arrangement{row.positions, std::nullopt};
+  if (row.sphere_dampers > 0) arrangement.sphere_distance = row.sphere_distance;
+  return analyse_with(line, row.index, type_index(line, row.damper_type), arrangement, cache);
 }
 
 std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<ScheduleRow>& rows) {
@@ -271,7 +342,7 @@ std::vector<BillLine> bill_of_materials(const Line& line, const std::vector<Sche
     BillLine b{type.name, 0, 0, std::nullopt, std::nullopt};
     for (const ScheduleRow& row : rows) {
       if (row.damper_type != type.name) continue;
-      b.dampers += 2 * row.per_end;
+      b.dampers += 2 * row.per_end + row.sphere_dampers;
       ++b.spans;
     }
     if (type.mass) b.mass = *type.mass * b.dampers;

@@ -22,7 +22,8 @@ class SystemFunctor {
 
   int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     ++evaluations_;
-    if (!residual_(x, r) || !r.allFinite()) {
+    // A step that is not a number (a singular Jacobian's) is never handed to the residual.
+    if (!x.allFinite() || !residual_(x, r) || !r.allFinite()) {
       failed_ = true;
       return -1;
     }
@@ -124,7 +125,7 @@ struct CountedResidual {
   /// r at x; false (failed) where it cannot be evaluated.
   bool operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     ++evaluations;
-    if (!residual(x, r) || !r.allFinite()) return !(failed = true);
+    if (!x.allFinite() || !residual(x, r) || !r.allFinite()) return !(failed = true);
     const double size = r.cwiseAbs().maxCoeff();
     if (!(size >= best.summary.residual)) {
       best.x = x;

@@ -23,7 +23,8 @@ struct NonlinearSystemOptions {
 };
 
 /// The residual at x into r; false where it cannot be evaluated (the solve stops
-/// with inner_failure, the caller keeps its own reason).
+/// with inner_failure, the caller keeps its own reason). An x with an entry that is
+/// not a number (a step off a singular Jacobian) is never passed: the solve stops so.
 using Residual = std::function<bool(const Eigen::VectorXd& x, Eigen::VectorXd& r)>;
 /// The Jacobian dr/dx at x (a point the residual was evaluated at); false: as above.
 using ResidualJacobian = std::function<bool(const Eigen::VectorXd& x, Eigen::MatrixXd& jacobian)>;

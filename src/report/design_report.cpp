@@ -155,12 +155,14 @@ std::string design_report(const DesignReportInput& in, const ReportContext& cont
       const design::SpanFigures& f = build->spans[k];
       const auto position = study.position_on(k, build->x);
       spans.push_back({study.spans()[k].name, position ? number(*position, 3) : "-", number(f.max_stress / 1e6, 3),
-                       number(f.undamped_max_stress / 1e6, 3), number(100.0 * f.max_stress_ratio, 3),
+                       f.governing_place.empty() ? "-" : f.governing_place, number(f.undamped_max_stress / 1e6, 3),
+                       number(100.0 * f.max_stress_ratio, 3),
                        std::isnan(f.life_years) ? "-" : parts::years(f.life_years),
                        f.worse_than_undamped() ? "WORSE than undamped" : k == build->span_at_max ? "governs" : ""});
       tones.push_back(f.max_stress_ratio <= 1.0 ? Tone::good : Tone::bad);
     }
-    page.table({"span", "dampers from (m)", "max (MPa)", "undamped max (MPa)", "of the limit (%)", "life", "note"}, spans, tones);
+    page.table({"span", "dampers from (m)", "max (MPa)", "at", "undamped max (MPa)", "of the limit (%)", "life", "note"},
+               spans, tones);
   }
 
   page.section("Figures");

@@ -20,6 +20,11 @@ std::string positions(const line::ScheduleRow& r) {
   return out.empty() ? "-" : out;
 }
 
+/// The dampers beside the span's masses: "8 at 1.5 m" ("-": none).
+std::string beside_masses(const line::ScheduleRow& r) {
+  return r.sphere_dampers > 0 ? fmt::format("{} at {} m", r.sphere_dampers, parts::number(r.sphere_distance, 4)) : "-";
+}
+
 /// The span's terrain category and whether its H/w is within CIGRE TB 273's limit for it: "4, within".
 std::string terrain_cell(const line::ScheduleRow& r) {
   if (r.terrain <= 0) return "-";
@@ -45,6 +50,16 @@ std::vector<Fact> line_rules(const io::LineFile& file) {
   out.emplace_back("positions", fmt::format("{} to {} m from the clamp, at least {} m apart, on a {} mm step",
                                             parts::number(r.positions.position_min), parts::number(r.positions.position_max),
                                             parts::number(r.positions.spacing_min), parts::number(1e3 * r.position_step)));
+  const bool masses = std::any_of(file.line.spans().begin(), file.line.spans().end(),
+                                  [](const line::LineSpan& s) { return !s.span.masses().empty(); });
+  if (masses) {
+    out.emplace_back("dampers beside masses",
+                     r.sphere_dampers == line::SphereDampers::none
+                         ? std::string("none")
+                         : fmt::format("one on either side of each mass along a span, {} to {} m from it (the best "
+                                       "of the least, the middle and the most, each with its own end positions)",
+                                       parts::number(r.sphere_distance_min), parts::number(r.sphere_distance_max)));
+  }
   out.emplace_back("objective", r.positions.objective == span::PositionObjective::life ? "the shortest life (damage per year)"
                                                                                        : "the largest fymax stress");
   const span::Span& first = file.line.spans().front().span;
@@ -69,7 +84,7 @@ std::vector<Fact> line_rules(const io::LineFile& file) {
 
 Chart ratio_chart(const std::vector<line::ScheduleRow>& rows) {
   Chart chart("Largest stress over the endurance limit, span by span", Axis("span"),
-              Axis("largest fymax stress / endurance limit", true));
+              Axis("largest judged stress / endurance limit", true));
   Series damped{"with the scheduled dampers", {}, {}, LineStyle::markers, 0};
   Series undamped{"without dampers", {}, {}, LineStyle::markers, 1};
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -129,8 +144,10 @@ std::string line_report(const io::LineFile& file, const requests::LineSchedule& 
                         {"dampers", std::to_string(dampers)},
                         {"damper mass", mass_known ? parts::number(mass, 4) + " kg" : "not known for every type"}};
   if (counts.governing) {
-    key.emplace_back("governing span", fmt::format("{}: {} % of the limit", counts.governing->id,
-                                                   parts::number(100.0 * counts.governing->stress_ratio(), 3)));
+    const std::string& place = counts.governing->governing_place;
+    key.emplace_back("governing span", fmt::format("{}: {} % of the limit{}", counts.governing->id,
+                                                   parts::number(100.0 * counts.governing->stress_ratio(), 3),
+                                                   place.empty() ? "" : " (" + place + ")"));
   }
   for (const auto& [n, spans] : counts.per_end) key.emplace_back(fmt::format("spans with {} per end", n), std::to_string(spans));
   if (counts.worse_than_undamped > 0) key.emplace_back("spans worse than undamped", std::to_string(counts.worse_than_undamped));
@@ -139,23 +156,29 @@ std::string line_report(const io::LineFile& file, const requests::LineSchedule& 
   page.section("Rules");
   page.facts(line_rules(file));
   page.section("Figures");
-  page.figure(svg(ratio_chart(rows)), "Each span's largest fymax stress over its endurance limit, without dampers and with "
-                                      "the scheduled ones; below 1 is within the limit (the margin is 1 minus it). A span "
-                                      "not converged throughout has no damped mark.");
+  page.figure(svg(ratio_chart(rows)), "Each span's largest judged stress (at its clamps and its masses' clamps) over its "
+                                      "endurance limit, without dampers and with the scheduled ones; below 1 is within the "
+                                      "limit (the margin is 1 minus it). A span not converged throughout has no damped mark.");
   page.figure(svg(dampers_chart(rows)), "The dampers each span gets at each end.");
   page.section("Schedule");
   // A band column only where a span's dampers come from a measured sheet; terrain and TB 273's judgement share one
   // (the page must fit an A4 print).
   const bool any_band =
       std::any_of(rows.begin(), rows.end(), [](const line::ScheduleRow& r) { return std::isfinite(r.max_stress_high); });
+  // Columns for the masses only where a span has some: the dampers beside them, and where the largest stress lies.
+  const bool any_masses = std::any_of(rows.begin(), rows.end(), [](const line::ScheduleRow& r) {
+    return r.sphere_dampers > 0 || (!r.governing_place.empty() && !r.governing_place.starts_with("span clamp"));
+  });
   std::vector<std::vector<std::string>> table;
   std::vector<Tone> tones;
   for (const line::ScheduleRow& r : rows) {
     const bool trusted = r.converged == r.points;
     std::vector<std::string> cells{r.id, parts::number(r.length), parts::number(100.0 * r.tension_fraction, 3),
-                                   parts::number(r.catenary_parameter), terrain_cell(r), arrangement(r), positions(r),
-                                   parts::number(r.undamped_max_stress / 1e6, 3),
-                                   r.per_end > 0 ? stress_cell(r.max_stress, trusted) : "-"};
+                                   parts::number(r.catenary_parameter), terrain_cell(r), arrangement(r), positions(r)};
+    if (any_masses) cells.push_back(beside_masses(r));
+    cells.push_back(parts::number(r.undamped_max_stress / 1e6, 3));
+    cells.push_back(r.per_end > 0 ? stress_cell(r.max_stress, trusted) : "-");
+    if (any_masses) cells.push_back(trusted && !r.governing_place.empty() ? r.governing_place : "-");
     if (any_band)
       cells.push_back(std::isfinite(r.max_stress_high) && trusted ? parts::number(r.max_stress_high / 1e6, 3) : "-");
     cells.push_back(trusted ? parts::number(100.0 * (1.0 - r.stress_ratio()), 3) : "-");
@@ -165,7 +188,11 @@ std::string line_report(const io::LineFile& file, const requests::LineSchedule& 
     tones.push_back(parts::verdict_tone(r.verdict));
   }
   std::vector<std::string> header{"span", "length (m)", "tension (% RTS)", "H/w (m)", "terrain (TB 273)", "dampers per end",
-                                  "positions (m)", "undamped max (MPa)", "max (MPa)"};
+                                  "positions (m)"};
+  if (any_masses) header.emplace_back("beside masses");
+  header.emplace_back("undamped max (MPa)");
+  header.emplace_back("max (MPa)");
+  if (any_masses) header.emplace_back("at");
   if (any_band) header.emplace_back("band top (MPa)");
   for (const char* name : {"margin (%)", "life (years)", "verdict"}) header.emplace_back(name);
   page.table(header, table, tones);

@@ -69,10 +69,14 @@ io::JsonObject design_figures(const design::DesignStudy& study, const design::Ev
                           .add("max_stress_mpa", f.max_stress / 1e6)
                           .add("undamped_max_stress_mpa", f.undamped_max_stress / 1e6)
                           .add("life_years", f.life_years)
+                          .add("governing_place", f.governing_place)
                           .add("worse_than_undamped", f.worse_than_undamped()));
       if (f.worse_than_undamped()) worse.push_back(name);
     }
-    o.add("governing_span", study.spans().at(e.span_at_max).name).add("spans", spans).add("spans_worse_than_undamped", worse);
+    o.add("governing_span", study.spans().at(e.span_at_max).name)
+        .add("governing_place", e.place_at_max)
+        .add("spans", spans)
+        .add("spans_worse_than_undamped", worse);
   }
   if (!e.converged() && e.termination != Termination::not_run) {
     o.add("termination", termination_name(e.termination)).add("note", e.failure);
@@ -143,6 +147,10 @@ Table<design::StudyEvaluation> design_table(const design::DesignStudy& study) {
            [span_names](const S& s, std::size_t) {
              return s.evaluation.converged() ? span_names.at(s.evaluation.span_at_max) : std::string();
            }},
+          {"governing_place", "",
+           "where on that span the largest stress lies: span clamp 1, span clamp 2 or a mass's clamp (sphere at 120 m)",
+           ColumnKind::label, {},
+           [](const S& s, std::size_t) { return s.evaluation.converged() ? s.evaluation.place_at_max : std::string(); }},
           {"run", "", "the sample's index, or the polish's (0 for the base)", ColumnKind::count,
            [](const S& s, std::size_t) { return static_cast<double>(s.run); }, {}},
           {"<variable>", "as the damper file", "each variable by its name (`arm.left.mass`, `position`): the candidate",
@@ -272,7 +280,9 @@ std::optional<std::string> best_damper_file(const design::DesignStudy& study, co
 
 namespace {
 
-constexpr std::string_view kEvaluationTag = "candidate-v1";
+/// candidate-v2: the governing place added (the study's and each span's). A record of
+/// an earlier tag is not a candidate record (the candidate is evaluated again).
+constexpr std::string_view kEvaluationTag = "candidate-v2";
 
 }  // namespace
 
@@ -285,9 +295,12 @@ std::string evaluation_record(const design::Evaluation& e) {
                          e.messenger_curvature_max, e.shortest_life_years}) {
     out += fmt::format("\t{}", v);
   }
-  out += fmt::format("\t{}\t{}", e.span_at_max, e.spans.size());
+  out += fmt::format("\t{}\t", e.span_at_max);
+  out += escaped(e.place_at_max);
+  out += fmt::format("\t{}", e.spans.size());
   for (const design::SpanFigures& f : e.spans) {
-    out += fmt::format("\t{}\t{}\t{}\t{}", f.max_stress_ratio, f.max_stress, f.undamped_max_stress, f.life_years);
+    out += fmt::format("\t{}\t{}\t{}\t{}\t", f.max_stress_ratio, f.max_stress, f.undamped_max_stress, f.life_years);
+    out += escaped(f.governing_place);
   }
   out += '\t';
   out += escaped(e.failure);
@@ -314,11 +327,13 @@ design::Evaluation parse_evaluation_record(std::string_view record) {
     *v = f.number();
   }
   e.span_at_max = static_cast<std::size_t>(f.integer());
+  e.place_at_max = f.text();
   const long long spans = f.integer();
   if (spans < 0 || spans > 100000) record_text::bad_record("a count of spans out of range");
   e.spans.resize(static_cast<std::size_t>(spans));
   for (design::SpanFigures& s : e.spans) {
     for (double* v : {&s.max_stress_ratio, &s.max_stress, &s.undamped_max_stress, &s.life_years}) *v = f.number();
+    s.governing_place = f.text();
   }
   e.failure = f.text();
   e.infeasibility = f.text();

@@ -59,6 +59,10 @@ Table<line::ScheduleRow> schedule_table() {
        K::label, {}, [](const Row& r, std::size_t) { return r.no_damper_basis; }},
       {"warnings", "", "what the engineer should know, ' | '-separated", K::label, {},
        [](const Row& r, std::size_t) { return joined_warnings(r.warnings); }},
+      {"governing_place", "",
+       "where the largest stress with the recommended dampers lies: span clamp 1, span clamp 2 or a mass's clamp (sphere "
+       "at 120 m)",
+       K::label, {}, [](const Row& r, std::size_t) { return r.converged == r.points ? r.governing_place : std::string(); }},
       {"length_m", "m", "the span's length", K::number, number([](const Row& r) { return r.length; }), {}},
       {"tension_n", "N", "the tension T", K::number, number([](const Row& r) { return r.tension; }), {}},
       {"tension_percent_rts", "%", "T over the rated tensile strength", K::number,
@@ -74,15 +78,20 @@ Table<line::ScheduleRow> schedule_table() {
        K::number,
        number([](const Row& r) { return r.endurance_limit / 1e6; }), {}},
       {"undamped_max_stress_mpa", "MPa",
-       "the largest stress the criterion judges at the span clamp without dampers (fymax; Poffenberger-Swart under "
-       "the microstrain criterion)",
+       "the largest stress the criterion judges without dampers, at the span clamps and the masses' clamps (fymax; "
+       "Poffenberger-Swart under the microstrain criterion)",
        K::number,
        number([](const Row& r) { return r.undamped_max_stress / 1e6; }), {}},
       {"undamped_life_years", "years", "Miner's life without dampers (with the line's climate; inf: no damage)",
        K::number, number([](const Row& r) { return r.undamped_life_years; }), {}},
       {"dampers_per_end", "", "the recommended number of dampers at each end", K::count,
        number([](const Row& r) { return static_cast<double>(r.per_end); }), {}},
-      {"max_stress_mpa", "MPa", "the largest stress the criterion judges at the span clamp with those dampers", K::number,
+      {"sphere_dampers", "", "dampers of the type beside the span's masses, one on either side of each (dampers.sphere_dampers)",
+       K::count, number([](const Row& r) { return static_cast<double>(r.sphere_dampers); }), {}},
+      {"sphere_damper_distance_m", "m", "their distance from each mass's clamp (empty: none)", K::number,
+       number([](const Row& r) { return r.sphere_dampers > 0 ? r.sphere_distance : kLineNaN; }), {}},
+      {"max_stress_mpa", "MPa",
+       "the largest stress the criterion judges with those dampers, at the span clamps and the masses' clamps", K::number,
        number([](const Row& r) { return trusted(r, r.max_stress / 1e6, false); }), {}},
       {"max_stress_high_mpa", "MPa",
        "the top of its measured sheets' band (empty without a measured damper): the verdict is uncertain where it "
@@ -111,7 +120,7 @@ Table<line::BillLine> bill_table() {
   using K = ColumnKind;
   return Table<B>({
       {"damper_type", "", "the damper type", K::label, {}, [](const B& b, std::size_t) { return b.damper_type; }},
-      {"dampers", "", "dampers of the type over the line (both ends of every span)", K::count,
+      {"dampers", "", "dampers of the type over the line (both ends of every span, and beside its masses)", K::count,
        [](const B& b, std::size_t) { return static_cast<double>(b.dampers); }, {}},
       {"spans", "", "spans that get the type", K::count, [](const B& b, std::size_t) { return static_cast<double>(b.spans); }, {}},
       {"mass_kg", "kg", "their mass (empty where the type's mass is not known)", K::number,
@@ -158,14 +167,17 @@ io::JsonObject line_summary(const io::LineFile& file, const LineSchedule& schedu
       .add("choose", std::string(line::type_choice_name(file.line.rules().choose)))
       .add("undamped_rule", std::string(line::undamped_rule_name(file.line.rules().undamped_rule)))
       .add("accept_uncertain", file.line.rules().accept_uncertain)
+      .add("sphere_dampers", std::string(line::sphere_dampers_name(file.line.rules().sphere_dampers)))
       .add("spans_not_converged", c.not_converged)
       .add("spans_worse_than_undamped", c.worse_than_undamped)
       .add("dampers_per_end", counts)
       .add("bill", bill);
   if (governing) {
-    json.add("governing_span", governing->id).add("governing_stress_ratio", governing->stress_ratio());
+    json.add("governing_span", governing->id)
+        .add("governing_stress_ratio", governing->stress_ratio())
+        .add("governing_place", governing->governing_place);
   } else {
-    json.add_null("governing_span").add_null("governing_stress_ratio");
+    json.add_null("governing_span").add_null("governing_stress_ratio").add_null("governing_place");
   }
   return json;
 }
@@ -176,7 +188,9 @@ using record_text::bad_record;
 using record_text::escaped;
 using record_text::RecordFields;
 
-constexpr std::string_view kRecordTag = "span-v2";
+/// span-v3: the dampers beside the masses and the governing place added. A record of
+/// an earlier tag is not a schedule record (its span is computed again).
+constexpr std::string_view kRecordTag = "span-v3";
 
 span::Verdict verdict_from(long long v) {
   if (v < 0 || v > 3) bad_record("a verdict out of range");
@@ -198,6 +212,8 @@ std::string schedule_record(const line::ScheduleRow& r) {
                      static_cast<int>(r.undamped_verdict), static_cast<int>(r.verdict), r.per_end, r.converged,
                      r.points, r.balances, escaped(r.damper_type), r.positions.size());
   for (const double x : r.positions) out += fmt::format("\t{}", x);
+  out += fmt::format("\t{}\t{}\t", r.sphere_dampers, r.sphere_distance);
+  out += escaped(r.governing_place);
   out += fmt::format("\t{}", r.warnings.size());
   for (const std::string& w : r.warnings) {
     out += '\t';
@@ -232,6 +248,11 @@ line::ScheduleRow parse_schedule_record(std::string_view record) {
   const long long positions = f.integer();
   if (positions < 0 || positions > 100) bad_record("a count of positions out of range");
   for (long long k = 0; k < positions; ++k) r.positions.push_back(f.number());
+  const long long sphere_dampers = f.integer();
+  if (sphere_dampers < 0 || sphere_dampers > 100000) bad_record("a count of dampers beside the masses out of range");
+  r.sphere_dampers = static_cast<int>(sphere_dampers);
+  r.sphere_distance = f.number();
+  r.governing_place = f.text();
   const long long warnings = f.integer();
   if (warnings < 0 || warnings > 1000) bad_record("a count of warnings out of range");
   for (long long k = 0; k < warnings; ++k) r.warnings.push_back(f.text());

@@ -90,6 +90,11 @@ SpanOutcome parse_span_outcome(std::string_view record) {
   return o;
 }
 
+bool earlier_span_record(std::string_view record) {
+  if (record.starts_with(kFailedMark)) record.remove_prefix(kFailedMark.size());
+  return record.starts_with("span-v1\t") || record.starts_with("span-v2\t");
+}
+
 Dealer thread_dealer() {
   return [](int threads, const std::vector<std::size_t>& todo, const std::function<std::string(std::size_t)>& run,
             const std::function<void(std::size_t, const std::string&)>& done, const std::function<void()>& heartbeat,

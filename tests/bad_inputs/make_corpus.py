@@ -276,6 +276,18 @@ cases = {
                            {"damper.toml": DAMPER}),
     "line_spans_empty_array": (LINE_CMD, "line.toml", "spans = []\n" + LINE, "expected the path of a spans CSV file",
                                {"damper.toml": DAMPER}),
+    "line_spans_csv_masses_text": (LINE_CMD, "spans.csv", "id,length_m,tension_fraction,masses\nT01-T02,300,0.15,12.5@100;12.5\n",
+                                   "spans.csv:2: column 'masses' = '12.5@100;12.5': '12.5' is not a mass at a position",
+                                   {"line.toml": LINE_CSV, "damper.toml": DAMPER}),
+    "line_spans_csv_mass_beyond_span": (LINE_CMD, "spans.csv", "id,length_m,tension_fraction,masses\nT01-T02,300,0.15,12.5@300\n",
+                                        "spans.csv:2: span \"T01-T02\": column 'masses' = '12.5@300': a position = 300",
+                                        {"line.toml": LINE_CSV, "damper.toml": DAMPER}),
+    "line_span_mass_in_grams": (LINE_CMD, "line.toml", LINE + LINE_SPANS + "[[span.mass]]\nmass = 12500\npositions = [150]\n",
+                                "span \"T02-T03\": mass[0].mass = 12500: outside the typical 0.5 to 50 kg", {"damper.toml": DAMPER}),
+    "line_sphere_dampers_crossing": (LINE_CMD, "line.toml", LINE.replace("position_max = 6.0", "position_max = 6.0\nsphere_distance_max = 30")
+                                     + LINE_SPANS + "[[span.mass]]\nmass = 12.5\npositions = [120, 170]\n",
+                                     "dampers.sphere_distance_max = 30: on span \"T02-T03\", the dampers beside the masses at 120 "
+                                     "and 170 m would come within spacing_min of each other", {"damper.toml": DAMPER}),
     "line_diameter_mm": (LINE_CMD, "line.toml", LINE.replace('type = "AAAC ASTER570"', 'type = "AAAC ASTER570"\ndiameter = 28.14')
                          + LINE_SPANS, "conductor.diameter = 28.14: outside the typical 0.004 to 0.08 m of the conductor diameter (in mm?", {"damper.toml": DAMPER}),
     "design_tie_repeated": (DESIGN_CMD, "design.toml", DESIGN_OK + "[[tie]]\nname = \"arm.a.inertia\"\nequals = \"arm.a.mass\"\n",

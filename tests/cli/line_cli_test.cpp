@@ -3,6 +3,7 @@
 // row reproduced by `stockbridge span` on the span file --details writes; a journal
 // of other inputs refused; bad spans named by file and line.
 
+#include <algorithm>
 #include <csignal>
 #include <fstream>
 #include <sstream>
@@ -248,6 +249,12 @@ TEST(LineCli, BadSpansAreNamedByFileLineAndKey) {
        "spans.csv:2: 4 cells: expected 3, as the header has (a decimal comma?"},
       {"id,length_m,tension_fraction,conductor\nA,300,0.15,ACSR Drakee\n", "spans.csv:2: conductor"},
       {"\xEF\xBB\xBFid,length_m,tension_fraction\r\nA,-300,0.15\r\n", "spans.csv:2: span \"A\": length_m = -300"},
+      {"id,length_m,tension_fraction,masses\nA,300,0.15,12.5@100;12.5\n",
+       "spans.csv:2: column 'masses' = '12.5@100;12.5': '12.5' is not a mass at a position: expected <kg>@<m from end "
+       "1> entries, ';'-separated (e.g. 12.5@30;12.5@90), or an empty cell for none"},
+      {"id,length_m,tension_fraction,masses\nA,300,0.15,12.5@300\n",
+       "spans.csv:2: span \"A\": column 'masses' = '12.5@300': a position = 300: expected a distance from end 1 > 0 "
+       "and < the span's length, 300 m"},
   };
   for (const Case& c : cases) {
     std::string text = small_line();
@@ -262,6 +269,120 @@ TEST(LineCli, BadSpansAreNamedByFileLineAndKey) {
     EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv"));
     EXPECT_FALSE(std::filesystem::exists(dir / "schedule.csv.journal"));
   }
+}
+
+/// A line of two spans on the vendor's measured sheet (nothing solved: seconds), one
+/// with three warning spheres in a [[span.mass]] table, the other plain.
+std::string sphere_line() {
+  return R"([line]
+name = "spheres"
+points = 12
+search_points = 10
+[conductor]
+type = "AAAC ASTER570"
+[wind]
+law = "cigre"
+[self_damping]
+law = "noiseux-1991"
+[fatigue]
+cycles = 5e8
+[dampers]
+types = [ { name = "vendor", impedance = ")" +
+         std::string(STOCKBRIDGE_SOURCE_DIR) + R"(/examples/vendor_sheet.csv", mass = 2.4 } ]
+max_per_end = 2
+position_max = 4.0
+[[span]]
+id = "S"
+length = 400
+catenary_parameter = 1300
+[[span.mass]]
+name = "sphere"
+mass = 12.5
+positions = [100, 200, 300]
+[[span]]
+id = "P"
+length = 300
+catenary_parameter = 1300
+)";
+}
+
+/// A schedule CSV's cell of row `row` (1: the first span) in column `name`.
+std::string schedule_cell(const std::string& csv, std::size_t row, const std::string& name) {
+  const auto cells_of = [](const std::string& line) {  // a quoted cell may hold ','
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (const char ch : line) {
+      if (ch == '"') quoted = !quoted;
+      if (ch == ',' && !quoted) {
+        cells.emplace_back();
+      } else {
+        cells.back() += ch;
+      }
+    }
+    return cells;
+  };
+  const std::vector<std::string> rows = lines_of(csv);
+  const std::vector<std::string> header = cells_of(rows.at(0)), cells = cells_of(rows.at(row));
+  return cells.at(static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin()));
+}
+
+// The span with spheres end to end: dampers beside each sphere in its row and the
+// bill; its details span file gives `stockbridge span` the row's largest stress and
+// place, and the same balance CSV; the report shows them; a journal cut after the
+// first span resumes to the same schedule.
+TEST(LineCli, ASpanWithSpheresGetsDampersBesideThemFromScheduleToSpanFile) {
+  const auto dir = line_folder("line-spheres", sphere_line());
+  const CliResult r = run_cli("line line.toml -o schedule.csv --details spans --report line.html --quiet", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string schedule = read_text(dir / "schedule.csv");
+  EXPECT_EQ(schedule_cell(schedule, 1, "id"), "S");
+  EXPECT_EQ(schedule_cell(schedule, 1, "sphere_dampers"), "6");
+  const std::string distance = schedule_cell(schedule, 1, "sphere_damper_distance_m");
+  EXPECT_TRUE(distance == "1" || distance == "2" || distance == "3") << distance;
+  EXPECT_EQ(schedule_cell(schedule, 2, "sphere_dampers"), "0");
+  EXPECT_EQ(schedule_cell(schedule, 2, "sphere_damper_distance_m"), "");
+  const int per_end_s = std::stoi(schedule_cell(schedule, 1, "dampers_per_end"));
+  const int per_end_p = std::stoi(schedule_cell(schedule, 2, "dampers_per_end"));
+  const std::string bill = read_text(dir / "schedule_bill.csv");
+  EXPECT_NE(bill.find("vendor," + std::to_string(2 * per_end_s + 6 + 2 * per_end_p) + ",2,"), std::string::npos) << bill;
+
+  const CliResult span = run_cli("span spans/S.toml --points 12 -o again.csv --json", dir);
+  ASSERT_EQ(span.exit_code, 0) << span.err;
+  const std::string key = "\"max_judged_stress_mpa\": ";
+  const std::size_t at = span.out.find(key);
+  ASSERT_NE(at, std::string::npos) << span.out;
+  const double from_span = std::stod(span.out.substr(at + key.size()));
+  EXPECT_NEAR(from_span, std::stod(schedule_cell(schedule, 1, "max_stress_mpa")), 1e-9 * from_span);
+  const std::string place = schedule_cell(schedule, 1, "governing_place");
+  EXPECT_FALSE(place.empty());
+  EXPECT_NE(span.out.find("\"governing_place\": \"" + place + "\""), std::string::npos) << place << "\n" << span.out;
+  EXPECT_EQ(read_text(dir / "again.csv"), read_text(dir / "spans/S.csv"));
+  const std::string html = read_text(dir / "line.html");
+  EXPECT_NE(html.find("beside masses"), std::string::npos);
+  EXPECT_NE(html.find("6 at " + distance + " m"), std::string::npos);
+
+  // The journal cut after its first span's record: --resume computes the other.
+  const std::vector<std::string> journal = lines_of(read_text(dir / "schedule.csv.journal"));
+  ASSERT_EQ(journal.size(), 3u);
+  std::ofstream(dir / "schedule.csv.journal", std::ios::trunc) << journal[0] << "\n" << journal[1] << "\n";
+  std::filesystem::remove(dir / "schedule.csv");
+  const CliResult resumed = run_cli("line line.toml -o schedule.csv --resume", dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("1 of 2 spans in schedule.csv.journal, 1 to compute"), std::string::npos) << resumed.err;
+  EXPECT_EQ(read_text(dir / "schedule.csv"), schedule);
+
+  // A record of the program before the dampers beside the masses (span-v2, no
+  // governing place) is no row: its span is computed again, and the run says why.
+  std::string earlier = journal[1];
+  earlier.replace(earlier.find("span-v3"), 7, "span-v2");
+  std::ofstream(dir / "schedule.csv.journal", std::ios::trunc) << journal[0] << "\n" << earlier << "\n";
+  const CliResult again = run_cli("line line.toml -o schedule.csv --resume", dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("0 of 2 spans in schedule.csv.journal (1 record(s) of an earlier program, computed again), 2 "
+                           "to compute"),
+            std::string::npos)
+      << again.err;
+  EXPECT_EQ(read_text(dir / "schedule.csv"), schedule);
 }
 
 }  // namespace

@@ -769,12 +769,15 @@ def design_run(tmp_path_factory):
 def test_design_returns_the_documented_keys(design_run):
     folder, _, d = design_run
     assert d["variables"] == ["arm.left.mass", "arm.left.cable.length", "position"]
-    assert d["columns"][:3] == ["stage", "governing_span", "run"] and d["columns"][3:6] == d["variables"]
+    assert d["columns"][:4] == ["stage", "governing_span", "governing_place", "run"]
+    assert d["columns"][4:7] == d["variables"]
     assert set(d) == set(d["columns"]) | {"columns", "variables", "summary", "best_damper"}
     documented = {name.replace("<span>", "aster570_400m") for name in documented_keys("design", ["-"])}
     assert "<variable>" in documented
     assert set(d) == documented - {"<variable>"} | set(d["variables"])
     assert d["governing_span"].tolist() == ["aster570_400m" if ok else "" for ok in d["converged"]]
+    assert all(place.startswith("span clamp") if ok else place == ""
+               for place, ok in zip(d["governing_place"].tolist(), d["converged"]))
     assert d["aster570_400m_worse_than_undamped"].dtype == bool
     n = d["summary"]["evaluations"]
     assert n == len(d["stage"]) == 1 + 3 + len([s for s in d["stage"] if s == "polish"])
@@ -787,9 +790,9 @@ def test_design_equals_the_programs_csv_json_and_best_file(design_run):
     folder, summary, d = design_run
     rows = read_csv(folder / "designs.csv")
     assert d["columns"] == list(rows[0].keys())
-    for column in ("stage", "governing_span"):
+    for column in ("stage", "governing_span", "governing_place"):
         assert d[column].tolist() == [row[column] for row in rows], column
-    for column in d["columns"][2:]:
+    for column in d["columns"][3:]:
         expected = np.array([float(row[column]) if row[column] else np.nan for row in rows])
         assert np.array_equal(d[column].astype(float), expected, equal_nan=True), column  # exactly: threads change nothing
     del summary["seconds"]  # the program's wall time

@@ -2,7 +2,8 @@
 // recommended with n dampers per end is unsafe with n - 1 at their best positions
 // (one damper: the best of a 5 cm grid over the whole range, polished; none: the
 // undamped balance), and every row is the balance of its span file (the text
-// --details writes), read and balanced as `stockbridge span` does, to 1e-9.
+// --details writes), read and balanced as `stockbridge span` does, to 1e-9: a span
+// with warning spheres and the dampers beside them too.
 
 #include <algorithm>
 #include <string>
@@ -63,7 +64,8 @@ double best_one_damper_stress(const Line& line, std::size_t index, TableCache& c
   std::vector<std::pair<double, double>> grid;  // (stress, position)
   const span::PositionRules& rules = line.rules().positions;
   for (double x = rules.position_min; x <= rules.position_max + 1e-9; x += 0.05) {
-    const span::SpanBalance b = span::run_balance(with_arrangement(s.span, line.types()[0], {x}), tables, on_tables);
+    const span::SpanBalance b =
+        span::run_balance(with_arrangement(s.span, line.types()[0], Arrangement{{x}, std::nullopt}), tables, on_tables);
     if (b.summary.all_converged()) grid.emplace_back(b.summary.max_stress_fymax, x);
   }
   std::sort(grid.begin(), grid.end());
@@ -115,6 +117,36 @@ TEST(LineSchedule, ARecommendationOfNPerEndIsUnsafeWithOneFewer) {
     EXPECT_EQ(a.balance.summary.undamped_max_stress_fymax, row.undamped_max_stress);
   }
   EXPECT_GE(checked_two, 1) << "no span of the line needed two dampers per end: the rule's check did not run";
+}
+
+// A span with two warning spheres: its row (the dampers at the ends and those
+// beside the spheres) is its span file's balance, the masses and every damper
+// written there; its largest judged stress and its place, and the undamped one, to 1e-9.
+TEST(LineSchedule, TheRowOfASpanWithSpheresIsItsSpanFilesBalance) {
+  std::string text = verification_line();
+  text = text.substr(0, text.find("[[span]]"));
+  const std::string points = "points = 30\nsearch_points = 20";
+  text.replace(text.find(points), points.size(), "points = 16\nsearch_points = 10");
+  text += "sphere_distance_min = 1.5\nsphere_distance_max = 1.5\n"  // one distance: the scan is the unit tests'
+          "[[span]]\nid = \"spheres\"\nlength = 400\ntension_fraction = 0.15\n"
+          "[[span.mass]]\nname = \"sphere\"\nmass = 12.5\npositions = [150, 250]\n";
+  const io::LineFile file = io::load_line_text(text, "line(text=...)");
+  TableCache cache;
+  const ScheduleRow row = schedule_span(file.line, 0, cache).row;
+  ASSERT_EQ(row.converged, row.points);
+  ASSERT_GE(row.per_end, 1);
+  EXPECT_EQ(row.sphere_dampers, 4);
+  EXPECT_EQ(row.sphere_distance, 1.5);
+  const io::SpanFile again = io::load_span_text(io::span_file_text(file, row), "details");
+  ASSERT_EQ(again.span.masses().size(), 1u);
+  ASSERT_EQ(again.span.dampers().size(), static_cast<std::size_t>(row.per_end) + 1);
+  span::AnalysisOptions options;
+  options.balance = again.balance;
+  const span::SpanAnalysis a =
+      span::analyse_span(again.span, span::band_frequencies(again.span, file.line.rules().points), options);
+  EXPECT_NEAR(a.balance.summary.max_judged_stress, row.max_stress, 1e-9 * row.max_stress);
+  EXPECT_EQ(a.balance.summary.max_judged_stress_place, row.governing_place);
+  EXPECT_EQ(a.balance.summary.undamped_max_judged_stress, row.undamped_max_stress);
 }
 
 }  // namespace

@@ -63,7 +63,8 @@ class DesignStudy {
  public:
   /// Throws InvalidParameter naming the field: a variable or tie that names no
   /// number of the base damper, min >= max, a tie to something that is not a
-  /// variable, a position variable for spans without dampers, a non-positive budget.
+  /// variable, a position variable for spans without dampers at the ends, a
+  /// non-positive budget.
   DesignStudy(damper::DamperDescription base, std::vector<DesignSpan> spans, Objective objective,
               std::vector<DesignVariable> variables, std::vector<DesignTie> ties, DesignConstraints constraints,
               int points = 100);
@@ -77,7 +78,8 @@ class DesignStudy {
   /// Frequencies of each span's band (as `stockbridge span --points`).
   int points() const { return points_; }
 
-  /// The base design's values of the variables (the position: the spans' first damper's).
+  /// The base design's values of the variables (the position: the first span's first
+  /// damper at the ends).
   std::vector<double> base_values() const;
   /// The damper of a candidate: the variables and ties set; an arm whose mass
   /// changes while its inertia is neither a variable nor tied keeps its radius of
@@ -91,8 +93,10 @@ class DesignStudy {
   std::optional<double> position_on(std::size_t k, const std::vector<double>& x) const;
   /// Span k's shortest loop c / (2 f_max), m.
   double shortest_loop(std::size_t k) const;
-  /// Span k with the candidate's damper in place of every damper of its file, at the
-  /// candidate's position (every damper moved together) or the file's.
+  /// Span k with the candidate's damper in place of every damper of its file (those
+  /// along the span too, where the file has them: beside its masses), at the
+  /// candidate's position (every damper at the ends moved together; those along the
+  /// span stay at the file's positions) or the file's. Its masses kept.
   span::Span span_with(std::size_t k, const damper::Damper& damper, std::optional<double> position) const;
 
  private:
@@ -111,6 +115,9 @@ struct SpanFigures {
   double max_stress = std::numeric_limits<double>::quiet_NaN();           ///< Pa
   double undamped_max_stress = std::numeric_limits<double>::quiet_NaN();  ///< Pa, the same span without dampers
   double life_years = std::numeric_limits<double>::quiet_NaN();           ///< with the span's climate
+  /// Where its largest stress lies: "span clamp 1", "span clamp 2" or a mass's clamp
+  /// ("sphere at 120 m"): BalanceSummary::max_judged_stress_place.
+  std::string governing_place;
   /// The candidate's dampers raise the span's largest stress above its undamped one.
   bool worse_than_undamped() const { return max_stress > undamped_max_stress; }
 };
@@ -133,6 +140,7 @@ struct Evaluation {
   double max_stress = std::numeric_limits<double>::quiet_NaN();        ///< Pa, where the ratio is largest
   double frequency_at_max_hz = std::numeric_limits<double>::quiet_NaN();
   std::size_t span_at_max = 0;
+  std::string place_at_max;  ///< on that span: its governing_place
   double total_mass = std::numeric_limits<double>::quiet_NaN();        ///< kg
   double messenger_curvature_max = std::numeric_limits<double>::quiet_NaN();  ///< 1/m
   double shortest_life_years = std::numeric_limits<double>::quiet_NaN();     ///< with objective life

@@ -62,6 +62,13 @@ enum class UndampedRule { balance, tb273 };
 UndampedRule parse_undamped_rule(std::string_view name);
 std::string_view undamped_rule_name(UndampedRule rule);
 
+/// Whether a span's masses (warning spheres, markers) get dampers of their own: one on
+/// either side of each mass, of the type at the span's ends (both_sides), or none.
+enum class SphereDampers { both_sides, none };
+/// "both sides" or "none"; InvalidParameter naming "sphere_dampers" otherwise.
+SphereDampers parse_sphere_dampers(std::string_view name);
+std::string_view sphere_dampers_name(SphereDampers rule);
+
 /// The schedule's rules (the line file's [dampers] table, docs/line.md).
 struct ScheduleRules {
   int min_per_end = 0;  ///< 0: a span safe without dampers gets none
@@ -81,17 +88,35 @@ struct ScheduleRules {
   UndampedRule undamped_rule = UndampedRule::balance;
   int points = 100;             ///< frequencies of each arrangement's polished balance over the band
   int search_points = 40;       ///< frequencies of the position search's balances (tables alone)
+  /// A span with masses: every arrangement also gets a damper on either side of each
+  /// mass (both_sides), at one distance from it for the whole span, chosen within
+  /// [sphere_distance_min, sphere_distance_max] (m from the mass's clamp). By default
+  /// from 1 m (clear of a 600-800 mm sphere and the armour rods under its clamp) to 3 m.
+  SphereDampers sphere_dampers = SphereDampers::both_sides;
+  double sphere_distance_min = 1.0;
+  double sphere_distance_max = 3.0;
 
   /// Throws InvalidParameter naming the field as the line file spells it
-  /// ("dampers.max_per_end", "dampers.life_target", "dampers.position_step").
+  /// ("dampers.max_per_end", "dampers.life_target", "dampers.position_step",
+  /// "dampers.sphere_distance_max").
   void validate() const;
+};
+
+/// Where a span's dampers of one type go: `positions` (m from the clamp, increasing)
+/// at both ends, and, with `sphere_distance`, one on either side of every mass at that
+/// distance from it.
+struct Arrangement {
+  std::vector<double> positions;
+  std::optional<double> sphere_distance;
 };
 
 class Line {
  public:
   /// Throws InvalidParameter naming the field: "span" (none), "span[3].id" (empty or
   /// repeated), "dampers.types" (none), a rule; "dampers.objective" for the life
-  /// without a climate on some span.
+  /// without a climate on some span; "dampers.sphere_distance_max" where the dampers
+  /// beside a span's masses would come within spacing_min of each other or of the end
+  /// dampers' range.
   Line(std::vector<LineSpan> spans, std::vector<DamperType> types, ScheduleRules rules);
 
   const std::vector<LineSpan>& spans() const { return spans_; }
@@ -104,8 +129,17 @@ class Line {
   ScheduleRules rules_;
 };
 
-/// `span` with `per_end` dampers of `type` at `positions` (m from the clamp,
-/// increasing), at both ends.
-span::Span with_arrangement(const span::Span& span, const DamperType& type, const std::vector<double>& positions);
+/// Whether a span's arrangements get dampers beside its masses under `rules`: it has
+/// masses and the rule is both_sides.
+bool gets_sphere_dampers(const span::Span& span, const ScheduleRules& rules);
+
+/// The positions (m from end 1, increasing) of the dampers `distance` m on either
+/// side of each of the span's masses.
+std::vector<double> sphere_damper_positions(const span::Span& span, double distance);
+
+/// `span` with dampers of `type` as `arrangement` places them: one at each of its
+/// positions at both ends (in that order), then, with a sphere distance, one damper
+/// along the span at sphere_damper_positions (span::SpanDamper::along).
+span::Span with_arrangement(const span::Span& span, const DamperType& type, const Arrangement& arrangement);
 
 }  // namespace stockbridge::line

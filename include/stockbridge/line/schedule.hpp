@@ -5,7 +5,9 @@
 // (span::optimise_positions on the tables alone, then rounded to position_step),
 // whose polished balance makes the span safe; among the types that need that many,
 // the best by the objective. A span no arrangement makes safe gets the best of
-// max_per_end, unsafe, with a warning. One span is one task: the CLI deals them to
+// max_per_end, unsafe, with a warning. A span with masses (warning spheres) also gets,
+// in every arrangement, a damper of the type on either side of each mass, at one
+// distance chosen for the span (ScheduleRules::sphere_dampers). One span is one task: the CLI deals them to
 // threads and MPI ranks; the impedance tables come from a TableCache shared by all.
 
 #include <functional>
@@ -48,12 +50,20 @@ struct ScheduleRow {
   std::string damper_type;         ///< empty with no dampers
   int per_end = 0;
   std::vector<double> positions;   ///< m from the clamp, increasing; both ends alike
+  /// The dampers of the type beside the span's masses (two a mass position; 0: none)
+  /// and their distance from each mass, m (NaN: none).
+  int sphere_dampers = 0;
+  double sphere_distance = std::numeric_limits<double>::quiet_NaN();
   /// The largest stress the criterion judges over the converged points (fymax, or
   /// Poffenberger-Swart under the microstrain criterion), and the top of a measured
   /// sheet's band there (NaN without one).
   double max_stress = 0.0;
   double max_stress_high = std::numeric_limits<double>::quiet_NaN();
   double max_stress_frequency = 0.0;  ///< Hz
+  /// Where that largest stress is: "span clamp 1", "span clamp 2" or a mass's clamp
+  /// ("sphere at 120 m"): BalanceSummary::max_judged_stress_place; empty where
+  /// nothing converged.
+  std::string governing_place;
   double life_years = 0.0;         ///< as undamped_life_years
   span::Verdict verdict = span::Verdict::unknown;
   /// What judged the span without dampers safe where it gets none: "balance" (its
@@ -90,7 +100,8 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
 /// and `stockbridge span` reproduces): the same balance schedule_span made.
 span::SpanAnalysis analyse_arrangement(const Line& line, const ScheduleRow& row, TableCache& cache);
 
-/// The bill of materials: dampers of each type over the line (two ends a span).
+/// The bill of materials: dampers of each type over the line (2 per_end a span, and
+/// those beside its masses).
 struct BillLine {
   std::string damper_type;
   int dampers = 0;

@@ -46,6 +46,10 @@ std::string span_outcome_record(const SpanOutcome& outcome);
 /// The outcome of a record (InvalidParameter naming "record" where it is none: a
 /// record cut short). A record without the "failed" mark is a scheduled span's.
 SpanOutcome parse_span_outcome(std::string_view record);
+/// Whether a record is a schedule record of an earlier program (span-v1, span-v2:
+/// before the dampers beside the masses and the governing place), which
+/// parse_span_outcome refuses: its span is computed again.
+bool earlier_span_record(std::string_view record);
 
 /// Deals tasks to workers: runs `run(t)` for every t of `todo` on `threads` threads
 /// (and, for the command line's, on other ranks), passing each result to

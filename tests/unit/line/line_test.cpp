@@ -37,6 +37,9 @@ ScheduleRow a_row() {
   r.damper_type = "sb1";
   r.per_end = 2;
   r.positions = {1.33, 4.1};
+  r.sphere_dampers = 6;
+  r.sphere_distance = 1.25;
+  r.governing_place = "sphere\tat 150 m";
   r.max_stress = 7.130785512570936e6;
   r.max_stress_frequency = 6.076401576332188;
   r.life_years = std::numeric_limits<double>::infinity();
@@ -61,11 +64,27 @@ TEST(ScheduleRecord, GivesItsRowBackBitForBit) {
   EXPECT_EQ(back.catenary_parameter, r.catenary_parameter);
   EXPECT_TRUE(std::isinf(back.life_years));
   EXPECT_EQ(back.verdict, span::Verdict::safe);
+  EXPECT_EQ(back.sphere_dampers, 6);
+  EXPECT_EQ(back.sphere_distance, 1.25);
+  EXPECT_EQ(back.governing_place, r.governing_place);
   // The CSV row of the record's row is the row's.
   EXPECT_EQ(requests::schedule_table().values(back).csv(), requests::schedule_table().values(r).csv());
   ScheduleRow missing = r;
   missing.max_stress = std::numeric_limits<double>::quiet_NaN();
   EXPECT_TRUE(std::isnan(requests::parse_schedule_record(requests::schedule_record(missing)).max_stress));
+  ScheduleRow no_spheres = r;
+  no_spheres.sphere_dampers = 0;
+  no_spheres.sphere_distance = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(requests::parse_schedule_record(requests::schedule_record(no_spheres)).sphere_distance));
+}
+
+// A record of the program before the dampers beside the masses (span-v2) is not a
+// schedule record: --resume computes its span again rather than write a row without
+// its governing place.
+TEST(ScheduleRecord, ARecordOfTheEarlierFormIsRefused) {
+  std::string record = requests::schedule_record(a_row());
+  record.replace(0, 7, "span-v2");
+  EXPECT_THROW(requests::parse_schedule_record(record), InvalidParameter);
 }
 
 TEST(ScheduleRecord, ARecordCutShortIsRefused) {
@@ -79,9 +98,12 @@ TEST(ScheduleCsv, StressesOfABalanceNotConvergedThroughoutAreLeftEmpty) {
   ScheduleRow r = a_row();
   const std::string csv = requests::schedule_table().values(r).csv();
   // converged 99 of 100: max_stress_mpa, life and the ratio empty; the undamped figures kept
-  EXPECT_NE(csv.find(",49.59895173457283,0.001538996328427709,2,,,,,,,0,99,100,125"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",49.59895173457283,0.001538996328427709,2,6,1.25,,,,,,,0,99,100,125"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("sphere\tat"), std::string::npos) << "the governing place of a balance not converged throughout";
   r.converged = 100;
-  EXPECT_NE(requests::schedule_table().values(r).csv().find(",2,7.130785512570936,"), std::string::npos);
+  const std::string converged = requests::schedule_table().values(r).csv();
+  EXPECT_NE(converged.find(",2,6,1.25,7.130785512570936,"), std::string::npos) << converged;
+  EXPECT_NE(converged.find("a | b\",sphere\tat 150 m,420,"), std::string::npos) << converged;
 }
 
 TEST(ScheduleRules, AreCheckedAsTheLineFileSpellsThem) {
@@ -112,6 +134,14 @@ TEST(ScheduleRules, AreCheckedAsTheLineFileSpellsThem) {
   r = ScheduleRules{};
   r.life_target = -1.0;
   EXPECT_EQ(field_of(r), "dampers.life_target");
+  r = ScheduleRules{};
+  r.sphere_distance_min = 0.0;
+  EXPECT_EQ(field_of(r), "dampers.sphere_distance_min");
+  r = ScheduleRules{};
+  r.sphere_distance_max = 0.9;  // below the default minimum of 1 m
+  EXPECT_EQ(field_of(r), "dampers.sphere_distance_max");
+  r.sphere_distance_min = r.sphere_distance_max;  // one distance
+  EXPECT_EQ(field_of(r), "(accepted)");
 }
 
 std::string line_text(const std::string& extra_dampers, const std::string& spans) {

@@ -2,8 +2,10 @@
 // known by the example vendor's measured sheet (nothing solved: each span takes a
 // fraction of a second): CIGRE TB 273's rule for the spans needing no damper, the
 // type chosen by mass or price among those equally good, the bill's price, and an
-// uncertain verdict accepted or not.
+// uncertain verdict accepted or not; the dampers beside a span's warning spheres.
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -178,6 +180,62 @@ TEST(LineSchedule, AnUncertainArrangementIsSafeOnlyWhereTheRulesAcceptIt) {
   EXPECT_GT(accepting.row.max_stress_high, accepting.row.endurance_limit);
   EXPECT_EQ(schedule_counts({strict.row, accepting.row}).uncertain, 1);
   EXPECT_EQ(schedule_counts({strict.row, accepting.row}).safe, 1);
+}
+
+/// A 400 m ASTER570 span at H/w 1300 m with three 12.5 kg warning spheres.
+const std::string kSphereSpan =
+    "[[span]]\nid = \"S\"\nlength = 400\ncatenary_parameter = 1300\n"
+    "[[span.mass]]\nname = \"sphere\"\nmass = 12.5\npositions = [100, 200, 300]\n";
+
+/// The largest stress at the masses' clamps over an analysis's points, Pa.
+double largest_sphere_stress(const span::SpanAnalysis& a) {
+  double largest = 0.0;
+  for (const span::BalancePoint& p : a.balance.points) {
+    for (const span::MassAtBalance& m : p.masses) largest = std::max(largest, m.clamp_stress);
+  }
+  return largest;
+}
+
+// By default every arrangement of a span with masses has a damper of its type on
+// either side of each mass, at one of the distances tried (1, 2 and 3 m): the row
+// counts them, names the governing place, and the bill counts them with the ends';
+// sphere_dampers = "none" leaves the masses alone, and their clamps then take more.
+TEST(LineSchedule, ASpanWithSpheresGetsADamperOnEitherSideOfEach) {
+  const std::string rules = "max_per_end = 1\nposition_max = 4.0\n";
+  const std::string points = "points = 12\nsearch_points = 8\n";
+  TableCache cache;
+  const io::LineFile beside = load_sheet_line(sheet_line(kVendor, rules, kSphereSpan, "AAAC ASTER570", points));
+  const SpanSchedule s = schedule_span(beside.line, 0, cache);
+  const ScheduleRow& row = s.row;
+  ASSERT_GE(row.per_end, 1);
+  ASSERT_EQ(row.converged, row.points);
+  EXPECT_EQ(row.sphere_dampers, 6);
+  const double d = row.sphere_distance;
+  EXPECT_TRUE(d == 1.0 || d == 2.0 || d == 3.0) << d;
+  const std::vector<span::SpanDamper>& dampers = s.analysis.span.dampers();
+  ASSERT_EQ(dampers.size(), static_cast<std::size_t>(row.per_end) + 1);
+  EXPECT_EQ(dampers.back().along, (std::vector<double>{100 - d, 100 + d, 200 - d, 200 + d, 300 - d, 300 + d}));
+  EXPECT_EQ(dampers.back().name, "vendor");
+  EXPECT_FALSE(row.governing_place.empty());
+  EXPECT_EQ(row.governing_place, s.analysis.balance.summary.max_judged_stress_place);
+  EXPECT_EQ(row.max_stress, s.analysis.balance.summary.max_judged_stress);
+  // The row is its arrangement's balance (what --details writes).
+  EXPECT_EQ(analyse_arrangement(beside.line, row, cache).balance.summary.max_judged_stress, row.max_stress);
+  const std::vector<BillLine> bill = bill_of_materials(beside.line, {row});
+  ASSERT_EQ(bill.size(), 1u);
+  EXPECT_EQ(bill[0].dampers, 2 * row.per_end + 6);
+  EXPECT_NEAR(*bill[0].mass, 2.4 * (2 * row.per_end + 6), 1e-12);
+
+  const io::LineFile none =
+      load_sheet_line(sheet_line(kVendor, rules + "sphere_dampers = \"none\"\n", kSphereSpan, "AAAC ASTER570", points));
+  const SpanSchedule n = schedule_span(none.line, 0, cache);
+  EXPECT_EQ(n.row.sphere_dampers, 0);
+  EXPECT_TRUE(std::isnan(n.row.sphere_distance));
+  for (const span::SpanDamper& damper : n.analysis.span.dampers()) EXPECT_FALSE(damper.in_span());
+  EXPECT_EQ(bill_of_materials(none.line, {n.row})[0].dampers, 2 * n.row.per_end);
+  EXPECT_EQ(n.row.undamped_max_stress, row.undamped_max_stress);  // the same span without dampers
+  ASSERT_EQ(n.row.converged, n.row.points);
+  EXPECT_LT(largest_sphere_stress(s.analysis), largest_sphere_stress(n.analysis));
 }
 
 }  // namespace

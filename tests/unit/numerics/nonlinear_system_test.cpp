@@ -90,5 +90,25 @@ TEST(NonlinearSystem, AResidualThatCannotBeEvaluatedIsAnInnerFailure) {
   EXPECT_EQ(s.summary.termination, Termination::inner_failure);
 }
 
+// A point that is not a number (a step off a singular Jacobian) is never handed to
+// the residual, which may not survive it (the polish's clamp velocity exp(u)): the
+// solve ends unconverged.
+TEST(NonlinearSystem, APointThatIsNotANumberIsNeverEvaluated) {
+  int evaluated = 0;
+  const Residual r = [&evaluated](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    ++evaluated;
+    f = Eigen::VectorXd::Constant(1, 1.0 - x[0]);
+    return true;
+  };
+  const ResidualJacobian j = [](const Eigen::VectorXd&, Eigen::MatrixXd& jac) {
+    jac = Eigen::MatrixXd::Constant(1, 1, -1.0);
+    return true;
+  };
+  const Eigen::VectorXd nan = Eigen::VectorXd::Constant(1, std::nan(""));
+  EXPECT_FALSE(solve_fixed_point(r, j, nan, NonlinearSystemOptions{}).summary.converged());
+  EXPECT_EQ(solve_nonlinear_system(r, j, nan, NonlinearSystemOptions{}).summary.termination, Termination::inner_failure);
+  EXPECT_EQ(evaluated, 0);
+}
+
 }  // namespace
 }  // namespace stockbridge::numerics
