@@ -18,6 +18,7 @@
 #endif
 
 #include "stockbridge/core/parallel.hpp"
+#include "stockbridge/requests/design_request.hpp"
 #include "stockbridge/requests/line_run.hpp"
 
 namespace stockbridge::cli {
@@ -35,7 +36,7 @@ bool launched_by_mpirun() {
 #ifdef STOCKBRIDGE_WITH_MPI
 
 /// Evaluations and summaries to bytes and back (the ranks are the same program on the same
-/// kind of machine: raw doubles keep every bit).
+/// kind of machine).
 class Bytes {
  public:
   void put(const void* data, std::size_t size) {
@@ -50,22 +51,9 @@ class Bytes {
     put<std::uint64_t>(text.size());
     put(text.data(), text.size());
   }
-  void put(const design::Evaluation& e) {
-    put<std::uint64_t>(e.x.size());
-    put(e.x.data(), e.x.size() * sizeof(double));
-    put<std::int32_t>(static_cast<std::int32_t>(e.termination));
-    for (const double v : {e.objective, e.max_stress_ratio, e.max_stress, e.frequency_at_max_hz, e.total_mass,
-                           e.messenger_curvature_max, e.shortest_life_years}) {
-      put(v);
-    }
-    put<std::uint64_t>(e.span_at_max);
-    put(e.failure);
-    put(e.infeasibility);
-    put<std::uint64_t>(e.spans.size());
-    for (const design::SpanFigures& f : e.spans) {
-      for (const double v : {f.max_stress_ratio, f.max_stress, f.undamped_max_stress, f.life_years}) put(v);
-    }
-  }
+  /// An evaluation as the journal's record (requests::evaluation_record): one format
+  /// for both, every double in its shortest exact form.
+  void put(const design::Evaluation& e) { put(requests::evaluation_record(e)); }
   void put(const SolverSummary& s) {
     put<std::int32_t>(static_cast<std::int32_t>(s.termination));
     put<std::int32_t>(s.evaluations);
@@ -97,24 +85,7 @@ class Reader {
     get(s.data(), s.size());
     return s;
   }
-  design::Evaluation evaluation() {
-    design::Evaluation e;
-    e.x.resize(get<std::uint64_t>());
-    get(e.x.data(), e.x.size() * sizeof(double));
-    e.termination = static_cast<Termination>(get<std::int32_t>());
-    for (double* v : {&e.objective, &e.max_stress_ratio, &e.max_stress, &e.frequency_at_max_hz, &e.total_mass,
-                      &e.messenger_curvature_max, &e.shortest_life_years}) {
-      *v = get<double>();
-    }
-    e.span_at_max = get<std::uint64_t>();
-    e.failure = text();
-    e.infeasibility = text();
-    e.spans.resize(get<std::uint64_t>());
-    for (design::SpanFigures& f : e.spans) {
-      for (double* v : {&f.max_stress_ratio, &f.max_stress, &f.undamped_max_stress, &f.life_years}) *v = get<double>();
-    }
-    return e;
-  }
+  design::Evaluation evaluation() { return requests::parse_evaluation_record(text()); }
   SolverSummary summary() {
     SolverSummary s;
     s.termination = static_cast<Termination>(get<std::int32_t>());

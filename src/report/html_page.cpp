@@ -65,10 +65,14 @@ std::string tone_class(Tone tone) {
   return "neutral";
 }
 
+/// A number, a list of them ("0.63; 4.73") or the placeholder "-": right-aligned and
+/// kept on one line. A cell with words ("4 at 1 m", "7.99 at sphere at 130 m") is text
+/// and wraps.
 bool numeric_cell(std::string_view cell) {
   if (cell.empty()) return false;
   const char c = cell.front();
-  return std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.';
+  const bool starts = std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.';
+  return starts && cell.find_first_not_of("0123456789+-.eE;, ") == std::string_view::npos;
 }
 
 }  // namespace

@@ -20,9 +20,11 @@ std::string positions(const line::ScheduleRow& r) {
   return out.empty() ? "-" : out;
 }
 
-/// The dampers beside the span's masses: "8 at 1.5 m" ("-": none).
+/// The dampers beside the span's masses: "8 beside masses at 1.5 m" ("-": none).
 std::string beside_masses(const line::ScheduleRow& r) {
-  return r.sphere_dampers > 0 ? fmt::format("{} at {} m", r.sphere_dampers, parts::number(r.sphere_distance, 4)) : "-";
+  return r.sphere_dampers > 0
+             ? fmt::format("{} beside masses at {} m", r.sphere_dampers, parts::number(r.sphere_distance, 4))
+             : "-";
 }
 
 /// The span's terrain category and whether its H/w is within CIGRE TB 273's limit for it: "4, within".
@@ -165,7 +167,8 @@ std::string line_report(const io::LineFile& file, const requests::LineSchedule& 
   // (the page must fit an A4 print).
   const bool any_band =
       std::any_of(rows.begin(), rows.end(), [](const line::ScheduleRow& r) { return std::isfinite(r.max_stress_high); });
-  // Columns for the masses only where a span has some: the dampers beside them, and where the largest stress lies.
+  // Where a span has masses: the dampers beside them with the span's dampers per end, and where the largest stress
+  // lies with it (no columns of their own: the page must fit an A4 print).
   const bool any_masses = std::any_of(rows.begin(), rows.end(), [](const line::ScheduleRow& r) {
     return r.sphere_dampers > 0 || (!r.governing_place.empty() && !r.governing_place.starts_with("span clamp"));
   });
@@ -175,10 +178,11 @@ std::string line_report(const io::LineFile& file, const requests::LineSchedule& 
     const bool trusted = r.converged == r.points;
     std::vector<std::string> cells{r.id, parts::number(r.length), parts::number(100.0 * r.tension_fraction, 3),
                                    parts::number(r.catenary_parameter), terrain_cell(r), arrangement(r), positions(r)};
-    if (any_masses) cells.push_back(beside_masses(r));
+    if (r.sphere_dampers > 0) cells[5] += "; " + beside_masses(r);
     cells.push_back(parts::number(r.undamped_max_stress / 1e6, 3));
-    cells.push_back(r.per_end > 0 ? stress_cell(r.max_stress, trusted) : "-");
-    if (any_masses) cells.push_back(trusted && !r.governing_place.empty() ? r.governing_place : "-");
+    std::string max = r.per_end > 0 || r.sphere_dampers > 0 ? stress_cell(r.max_stress, trusted) : "-";
+    if (any_masses && trusted && !r.governing_place.empty() && max != "-") max += " at " + r.governing_place;
+    cells.push_back(std::move(max));
     if (any_band)
       cells.push_back(std::isfinite(r.max_stress_high) && trusted ? parts::number(r.max_stress_high / 1e6, 3) : "-");
     cells.push_back(trusted ? parts::number(100.0 * (1.0 - r.stress_ratio()), 3) : "-");
@@ -189,10 +193,8 @@ std::string line_report(const io::LineFile& file, const requests::LineSchedule& 
   }
   std::vector<std::string> header{"span", "length (m)", "tension (% RTS)", "H/w (m)", "terrain (TB 273)", "dampers per end",
                                   "positions (m)"};
-  if (any_masses) header.emplace_back("beside masses");
   header.emplace_back("undamped max (MPa)");
   header.emplace_back("max (MPa)");
-  if (any_masses) header.emplace_back("at");
   if (any_band) header.emplace_back("band top (MPa)");
   for (const char* name : {"margin (%)", "life (years)", "verdict"}) header.emplace_back(name);
   page.table(header, table, tones);

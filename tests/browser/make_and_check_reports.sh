@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Writes the HTML pages of `span`, `impedance`, `line` and `design` (--report) and of
+# Writes the HTML pages of `span` (a span, and one with spheres along it), `impedance`,
+# `line` and `design` (--report) and of
 # `datasheet` on the examples, then checks them in headless chromium with
 # check_page.py: nothing outside the page, no request, no console error, a screenshot
 # that shows something, every figure on one A4 page, a PDF.
@@ -35,6 +36,7 @@ run() {
 
 start=$SECONDS
 run span examples/aster570_400m.toml --points 40 -o "$out/span.csv" --report "$out/span.html" --quiet
+run span examples/opgw_600m_spheres.toml --points 40 -o "$out/span_spheres.csv" --report "$out/span_spheres.html" --quiet
 run impedance examples/sauter2003.toml --velocity 0.2,0.05 --fmin 5 --fmax 100 --points 60 \
   -o "$out/impedance.csv" --report "$out/impedance.html"
 run line examples/line_short.toml -o "$out/line.csv" --report "$out/line.html" --quiet
@@ -44,7 +46,7 @@ run datasheet examples/sauter2003.toml --spans examples/aster570_400m.toml -o "$
 echo "commands: $((SECONDS - start)) s"
 
 pages=()
-for name in span impedance line design datasheet; do
+for name in span span_spheres impedance line design datasheet; do
   if [ -f "$out/$name.html" ]; then
     pages+=("$out/$name.html")
   else

@@ -359,7 +359,7 @@ TEST(LineCli, ASpanWithSpheresGetsDampersBesideThemFromScheduleToSpanFile) {
   EXPECT_EQ(read_text(dir / "again.csv"), read_text(dir / "spans/S.csv"));
   const std::string html = read_text(dir / "line.html");
   EXPECT_NE(html.find("beside masses"), std::string::npos);
-  EXPECT_NE(html.find("6 at " + distance + " m"), std::string::npos);
+  EXPECT_NE(html.find("6 beside masses at " + distance + " m"), std::string::npos);
 
   // The journal cut after its first span's record: --resume computes the other.
   const std::vector<std::string> journal = lines_of(read_text(dir / "schedule.csv.journal"));
