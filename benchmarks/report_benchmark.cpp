@@ -21,7 +21,7 @@ const requests::SpanResult& example_result() {
     const io::SpanFile file = io::load_span_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/aster570_400m.toml");
     requests::SpanRequest request;
     request.points = 400;
-    return requests::run_span(file.span, file.balance, request);
+    return requests::run_span(file.span, file.balance, requests::check_span_request(request));
   }();
   return result;
 }

@@ -86,7 +86,7 @@ int run_datasheet_command(const DatasheetOptions& options, Invocation& invocatio
   for (std::size_t k = 0; k < span_files.size(); ++k) {
     const span::Span s = span_with_datasheet_damper(span_files[k], options.spans[k], damper, name);
     input.span_names.push_back(std::filesystem::path(options.spans[k]).stem().string());
-    input.spans.push_back(requests::run_span(s, span_files[k].balance, request));
+    input.spans.push_back(requests::run_span(s, span_files[k].balance, requests::check_span_request(request)));
     print_warnings(invocation, input.spans.back().analysis.warnings);
   }
   io::write_file_atomically(options.output, report::datasheet(input, invocation.report_context()));

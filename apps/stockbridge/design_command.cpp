@@ -198,7 +198,7 @@ std::string design_report(const DesignOptions& options, const design::DesignStud
     request.threads = options.threads;
     for (std::size_t k = 0; k < study.spans().size(); ++k) {
       const span::Span s = study.span_with(k, damper, study.position_on(k, build->x));
-      input.best_spans.push_back(requests::run_span(s, study.spans()[k].balance, request));
+      input.best_spans.push_back(requests::run_span(s, study.spans()[k].balance, requests::check_span_request(request)));
     }
   }
   return report::design_report(input, context);

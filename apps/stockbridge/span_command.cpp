@@ -51,7 +51,7 @@ struct SpanOptions {
   std::optional<std::string> profile;
 };
 
-requests::SpanRequest span_request_of(const SpanOptions& options) {
+requests::CheckedSpanRequest span_request_of(const SpanOptions& options) {
   requests::SpanRequest request;
   if (options.frequencies) request.frequencies = parse_number_list(*options.frequencies, "--frequencies");
   request.points = options.points;
@@ -72,8 +72,7 @@ requests::SpanRequest span_request_of(const SpanOptions& options) {
   request.spacing_min = options.spacing_min;
   request.objective = options.objective;
   request.threads = options.threads;
-  requests::validate(request);
-  return request;
+  return requests::check_span_request(request);
 }
 
 std::string span_csv(const span::SpanAnalysis& a) {
@@ -189,13 +188,13 @@ void print_span_report(const requests::SpanResult& result) {
 }
 
 int run_span_command(const SpanOptions& options, Invocation& invocation) {
-  const requests::SpanRequest request = span_request_of(options);
+  const requests::CheckedSpanRequest request = span_request_of(options);
   check_report_path(options.report);
   const io::SpanFile file = read_span_input(
       invocation, options.span_file,
       {{"-o", options.output}, {"--report", options.report.value_or("")}, {"--profile", options.profile.value_or("")}},
       slip_policy(options.allow_unusual));
-  requests::validate(request, file.span);  // a refusal prints its one line alone, before the file's warnings
+  requests::check_against_span(request, file.span);  // a refusal before the progress starts
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress(invocation, "span: impedance tables", options.quiet);
   const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));

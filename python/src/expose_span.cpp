@@ -80,7 +80,7 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   request.spacing_min = spacing_min;
   request.objective = objective;
   request.threads = threads;
-  requests::validate(request);
+  const requests::CheckedSpanRequest checked = requests::check_span_request(request);
   io::SpanFile file =
       path ? io::load_span_file(*path, slip_policy(allow_unusual))
            : io::load_span_text(*text, "span(text=...)", base.value_or(std::string()), slip_policy(allow_unusual));
@@ -88,7 +88,7 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   std::optional<requests::SpanResult> result;
   {
     py::gil_scoped_release release;
-    result.emplace(requests::run_span(file.span, file.balance, request));
+    result.emplace(requests::run_span(file.span, file.balance, checked));
   }
   const span::SpanAnalysis& a = result->analysis;
   const std::vector<std::size_t> shape{a.balance.points.size()};

@@ -13,6 +13,7 @@
 #include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/io/conductor_file.hpp"
 #include "stockbridge/io/csv_reader.hpp"
+#include "stockbridge/io/span_names.hpp"
 #include "stockbridge/io/damper_file.hpp"
 #include "stockbridge/io/input_file.hpp"
 #include "stockbridge/span/tension_figures.hpp"
@@ -370,7 +371,7 @@ line::ScheduleRules read_rules(const TomlTable& d, const std::optional<TomlTable
   r.positions.spacing_min = d.optional_number("spacing_min").value_or(r.positions.spacing_min);
   if (const auto objective = d.optional_string("objective")) {
     try {
-      r.positions.objective = span::parse_position_objective(*objective);
+      r.positions.objective = io::parse_position_objective(*objective);
     } catch (const InvalidParameter& e) {
       throw InputError(d.location("objective") + e.within("dampers").what());
     }

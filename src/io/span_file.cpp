@@ -18,6 +18,7 @@
 #include "stockbridge/io/input_file.hpp"
 #include "stockbridge/io/measured_impedance_file.hpp"
 #include "stockbridge/io/sn_curve_file.hpp"
+#include "stockbridge/io/span_names.hpp"
 #include "stockbridge/span/stranded_conductor.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 #include "sheet_fit.hpp"
@@ -453,7 +454,7 @@ span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
   table->accept_only({"damper_model", "polish", "polish_tolerance", "max_polish_evaluations",
                             "amplitude_min_over_diameter", "amplitude_max_over_diameter", "table"});
   if (const auto model = table->optional_string("damper_model")) {
-    options.damper_model = span_parsed_name(*table, "damper_model", *model, span::parse_damper_model);
+    options.damper_model = span_parsed_name(*table, "damper_model", *model, io::parse_damper_model);
   }
   options.polish = table->optional_boolean("polish").value_or(options.polish);
   options.polish_tolerance = table->optional_number("polish_tolerance").value_or(options.polish_tolerance);

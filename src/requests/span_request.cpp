@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/io/span_names.hpp"
 #include "stockbridge/requests/conductor_request.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 
@@ -83,14 +84,17 @@ std::vector<double> span_positions(const span::Span& span) {
 
 }  // namespace
 
-void validate(const SpanRequest& request) {
+CheckedSpanRequest check_span_request(const SpanRequest& request) {
   check_span_frequencies(request.frequencies);
   if (request.frequencies.empty()) require_in_range("points", request.points, 2, kSpanMaxPoints);
-  if (request.damper_model) span::parse_damper_model(*request.damper_model);
   require_in_range("threads", request.threads, 1, 1024);
+  CheckedSpanRequest checked(request);
+  if (request.damper_model) checked.damper_model_ = io::parse_damper_model(*request.damper_model);
   if (request.position_min.has_value() != request.position_max.has_value()) {
     throw InvalidParameter("optimize_position", ": expected both ends of the range, AMIN:AMAX (m)");
   }
+  require_non_negative("spacing_min", request.spacing_min, "m");
+  const span::PositionObjective objective = io::parse_position_objective(request.objective);
   if (request.position_min) {
     const double lo = *request.position_min, hi = *request.position_max;
     if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0.0 && hi > lo)) {
@@ -101,35 +105,31 @@ void validate(const SpanRequest& request) {
     if (request.no_dampers) {
       throw InvalidParameter("optimize_position", ": given with no_dampers: there is no damper to place");
     }
+    span::PositionRules rules;
+    rules.position_min = lo;
+    rules.position_max = hi;
+    rules.spacing_min = request.spacing_min;
+    rules.objective = objective;
+    checked.positions_ = rules;
   }
-  require_non_negative("spacing_min", request.spacing_min, "m");
-  span::parse_position_objective(request.objective);
+  return checked;
 }
 
-void validate(const SpanRequest& request, const span::Span& span) {
-  validate(request);
-  if (!request.position_min) return;
+void check_against_span(const CheckedSpanRequest& checked, const span::Span& span) {
+  if (!checked.positions()) return;
   if (span.dampers().empty()) throw InvalidParameter("optimize_position", ": the span file has no [[damper]] to place");
-  if (span::parse_position_objective(request.objective) == span::PositionObjective::life && !span.fatigue().life) {
+  if (checked.positions()->objective == span::PositionObjective::life && !span.fatigue().life) {
     throw InvalidParameter("objective", " = \"life\": the span gives no climate ([fatigue] wind_weibull and "
                                         "aeolian_fraction) to compute a life with");
   }
 }
 
-span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const SpanRequest& request) {
-  validate(request);
+span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const CheckedSpanRequest& checked) {
   span::AnalysisOptions options;
   options.balance = file;
-  if (request.damper_model) options.balance.damper_model = span::parse_damper_model(*request.damper_model);
-  options.balance.table.threads = request.threads;
-  if (request.position_min) {
-    span::PositionRules rules;
-    rules.position_min = *request.position_min;
-    rules.position_max = *request.position_max;
-    rules.spacing_min = request.spacing_min;
-    rules.objective = span::parse_position_objective(request.objective);
-    options.positions = rules;
-  }
+  if (checked.damper_model()) options.balance.damper_model = *checked.damper_model();
+  options.balance.table.threads = checked.request().threads;
+  options.positions = checked.positions();
   options.validate();
   return options;
 }
@@ -149,10 +149,11 @@ span::Span span_as_asked(const span::Span& file_span, const SpanRequest& request
 
 }  // namespace
 
-SpanResult run_span(const span::Span& file_span, const span::BalanceOptions& file, const SpanRequest& request,
+SpanResult run_span(const span::Span& file_span, const span::BalanceOptions& file, const CheckedSpanRequest& checked,
                     const damper::SweepProgress& progress) {
-  validate(request, file_span);
-  const span::AnalysisOptions options = analysis_options(file, request);
+  check_against_span(checked, file_span);
+  const SpanRequest& request = checked.request();
+  const span::AnalysisOptions options = analysis_options(file, checked);
   const span::Span span = span_as_asked(file_span, request);
   std::vector<double> frequencies =
       request.frequencies.empty() ? span::band_frequencies(span, request.points) : request.frequencies;

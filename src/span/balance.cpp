@@ -15,12 +15,6 @@
 
 namespace stockbridge::span {
 
-DamperModel parse_damper_model(std::string_view name) {
-  if (name == "travelling") return DamperModel::travelling;
-  if (name == "weak") return DamperModel::weak;
-  throw InvalidParameter("damper_model", fmt::format(" = '{}': expected travelling or weak", name));
-}
-
 std::string_view damper_model_name(DamperModel model) { return model == DamperModel::weak ? "weak" : "travelling"; }
 
 void BalanceOptions::validate() const {

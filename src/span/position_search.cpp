@@ -13,14 +13,6 @@
 
 namespace stockbridge::span {
 
-PositionObjective parse_position_objective(std::string_view name) {
-  if (name == "max_stress") return PositionObjective::max_stress;
-  if (name == "life") return PositionObjective::life;
-  throw InvalidParameter("objective", fmt::format(" = \"{}\": expected \"max_stress\" (the largest fymax stress over the "
-                                                  "endurance limit) or \"life\"",
-                                                  printable(name)));
-}
-
 std::string_view position_objective_name(PositionObjective objective) {
   return objective == PositionObjective::life ? "life" : "max_stress";
 }

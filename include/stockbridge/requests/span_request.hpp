@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "stockbridge/damper/sweep.hpp"
@@ -25,7 +26,7 @@ struct SpanRequest {
   /// Balance the span without its masses and the dampers along it (the dampers at
   /// its ends kept): the same span "without the warning spheres".
   bool no_attachments = false;
-  /// travelling | weak (span::parse_damper_model), instead of the span file's [balance] damper_model.
+  /// travelling | weak, instead of the span file's [balance] damper_model.
   std::optional<std::string> damper_model;
   /// Search every damper's position in [min, max] (m from the span end's clamp),
   /// dampers at least spacing_min apart, minimising `objective` (max_stress or life),
@@ -36,20 +37,39 @@ struct SpanRequest {
   int threads = 1;                  ///< for the dampers' impedance tables
 };
 
-/// Checks what can be checked without the span (InvalidParameter naming the
-/// setting: "frequencies[1]", "points", "damper_model", "optimize_position", "threads").
-void validate(const SpanRequest& request);
+/// A span request validated once, its names parsed into the balance's types: what
+/// run_span computes from. check_span_request is the only way to one, so a checked
+/// request is never checked again.
+class CheckedSpanRequest {
+ public:
+  const SpanRequest& request() const { return request_; }
+  /// The damper model asked for instead of the span file's; none: the file's.
+  std::optional<span::DamperModel> damper_model() const { return damper_model_; }
+  /// The position search asked for; none: the dampers stay where the span has them.
+  const std::optional<span::PositionRules>& positions() const { return positions_; }
+
+ private:
+  friend CheckedSpanRequest check_span_request(const SpanRequest& request);
+  explicit CheckedSpanRequest(SpanRequest request) : request_(std::move(request)) {}
+  SpanRequest request_;
+  std::optional<span::DamperModel> damper_model_;
+  std::optional<span::PositionRules> positions_;
+};
+
+/// Checks what can be checked without the span and parses the names (InvalidParameter
+/// naming the setting: "frequencies[1]", "points", "damper_model", "optimize_position",
+/// "spacing_min", "objective", "threads").
+CheckedSpanRequest check_span_request(const SpanRequest& request);
 
 /// Checks the request against the span it is for (the span file's, before
 /// no_dampers drops its dampers), before anything is computed: InvalidParameter
 /// "optimize_position" (a position search of a span without dampers) or "objective"
-/// (the life, of a span without a climate). A front end calls it before it starts
-/// (and prints the inputs' warnings); run_span calls it too.
-void validate(const SpanRequest& request, const span::Span& span);
+/// (the life, of a span without a climate). run_span calls it first; a front end that
+/// wants the refusal before anything else of its own may call it before.
+void check_against_span(const CheckedSpanRequest& request, const span::Span& span);
 
-/// The analysis's options: the span file's balance options with the request's
-/// changes (validated).
-span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const SpanRequest& request);
+/// The analysis's options: the span file's balance options with the request's changes.
+span::AnalysisOptions analysis_options(const span::BalanceOptions& file, const CheckedSpanRequest& request);
 
 /// What a span request computed: the analysis (its span as balanced: without
 /// dampers, or with them at the position found) and the damper model it used.
@@ -58,11 +78,11 @@ struct SpanResult {
   span::DamperModel damper_model = span::DamperModel::travelling;
 };
 
-/// Validates the request against the span (validate(request, span)) and
-/// runs the analysis (span::analyse_span) at the request's frequencies, with the
-/// span file's balance options (`file`) and the request's changes; `progress`
-/// counts the tables' nodes. Non-convergence is in the points, never an exception.
-SpanResult run_span(const span::Span& span, const span::BalanceOptions& file, const SpanRequest& request,
+/// Checks the request against the span (check_against_span) and runs the analysis
+/// (span::analyse_span) at the request's frequencies, with the span file's balance
+/// options (`file`) and the request's changes; `progress` counts the tables' nodes.
+/// Non-convergence is in the points, never an exception.
+SpanResult run_span(const span::Span& span, const span::BalanceOptions& file, const CheckedSpanRequest& request,
                     const damper::SweepProgress& progress = {});
 
 /// How the per-damper columns name each damper: the span's names (the damper files'

@@ -36,8 +36,7 @@
 namespace stockbridge::span {
 
 enum class DamperModel { travelling, weak };
-/// "travelling" or "weak"; InvalidParameter naming "damper_model" otherwise.
-DamperModel parse_damper_model(std::string_view name);
+/// Its name in outputs ("travelling", "weak"; a user's name is parsed by io::parse_damper_model).
 std::string_view damper_model_name(DamperModel model);
 
 /// How a span is balanced. Each default is here; a span file's [balance] table sets

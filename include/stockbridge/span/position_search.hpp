@@ -20,8 +20,7 @@ namespace stockbridge::span {
 /// endurance limit; life, log10 of Miner's damage per year (the span file must give
 /// the climate).
 enum class PositionObjective { max_stress, life };
-/// "max_stress" or "life"; InvalidParameter naming "objective" otherwise.
-PositionObjective parse_position_objective(std::string_view name);
+/// Its name in outputs ("max_stress", "life"; a user's name is parsed by io::parse_position_objective).
 std::string_view position_objective_name(PositionObjective objective);
 
 struct PositionRules {
