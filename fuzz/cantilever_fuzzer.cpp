@@ -18,6 +18,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/LU>  // determinant()
+
 #include "fuzz_support.hpp"
 #include "stockbridge/cable/bouc_wen_cable_law.hpp"
 #include "stockbridge/cable/cantilever.hpp"
