@@ -176,9 +176,9 @@ std::string line_report(const io::LineFile& file, const requests::LineSchedule& 
   std::vector<Tone> tones;
   for (const line::ScheduleRow& r : rows) {
     const bool trusted = r.converged == r.points;
+    const std::string dampers = r.sphere_dampers > 0 ? arrangement(r) + "; " + beside_masses(r) : arrangement(r);
     std::vector<std::string> cells{r.id, parts::number(r.length), parts::number(100.0 * r.tension_fraction, 3),
-                                   parts::number(r.catenary_parameter), terrain_cell(r), arrangement(r), positions(r)};
-    if (r.sphere_dampers > 0) cells[5] += "; " + beside_masses(r);
+                                   parts::number(r.catenary_parameter), terrain_cell(r), dampers, positions(r)};
     cells.push_back(parts::number(r.undamped_max_stress / 1e6, 3));
     std::string max = r.per_end > 0 || r.sphere_dampers > 0 ? stress_cell(r.max_stress, trusted) : "-";
     if (any_masses && trusted && !r.governing_place.empty() && max != "-") max += " at " + r.governing_place;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/numerics/solver_summary.hpp"
+#include "stockbridge/requests/span_modes_request.hpp"
 #include "stockbridge/span/fatigue.hpp"
 #include "stockbridge/span/profile.hpp"
 #include "stockbridge/span/tension_figures.hpp"
@@ -260,7 +261,10 @@ void span_figures(HtmlPage& page, const span::SpanAnalysis& a, std::string_view 
   if (!a.span.dampers().empty()) power.series.push_back({"dampers", f, column(v, "damper_power_w"), LineStyle::solid, 0});
   power.top = SecondaryAxis{"wind speed (m/s)", wind_scale};
   page.figure(svg(power), "The powers at the balance: what the wind brings in equals what the conductor and the dampers dissipate.");
-  if (a.span.has_attachments() && m.converged > 0) span_profile_figure(page, a, name);
+  if (a.span.has_attachments() && m.converged > 0) {
+    span_profile_figure(page, a, name);
+    span_modes_figure(page, a, name);
+  }
 }
 
 void span_profile_figure(HtmlPage& page, const span::SpanAnalysis& a, std::string_view name) {
@@ -286,6 +290,42 @@ void span_profile_figure(HtmlPage& page, const span::SpanAnalysis& a, std::strin
                           "stress is: {}): the displacement amplitude and, dashed, the antinode amplitude of each stretch "
                           "between attachments; the marks above show where the masses and dampers hang.",
                           number(profile.frequency_hz, 3), a.balance.summary.max_judged_stress_place));
+}
+
+void span_modes_figure(HtmlPage& page, const span::SpanAnalysis& a, std::string_view name) {
+  const double governing = span::governing_point(a.span, a.balance).frequency_hz;
+  const bool measured =
+      std::any_of(a.span.dampers().begin(), a.span.dampers().end(), [](const span::SpanDamper& d) { return d.measured(); });
+  requests::SpanModesRequest request;
+  request.fmax = 1.2 * governing;
+  request.dampers = measured ? "removed" : "linear";  // a sheet has no linear impedance of its own
+  const span::SpanModes m = requests::run_span_modes(a.span, request).modes;
+  if (m.modes.empty()) return;
+  // One shape: on a long span at tens of Hz, two overlaid are no longer readable.
+  const span::SpanMode& mode = *std::min_element(m.modes.begin(), m.modes.end(), [&](const auto& p, const auto& q) {
+    return std::abs(p.frequency_hz - governing) < std::abs(q.frequency_hz - governing);
+  });
+  Chart chart(fmt::format("{}: the natural mode nearest {} Hz", name, number(governing, 3)),
+              Axis("distance from end 1 (m)"), Axis("Y / largest |Y|"));
+  chart.series.push_back({fmt::format("mode {}, {} Hz", mode.number, number(mode.frequency_hz, 4)), m.x, mode.shape,
+                          LineStyle::solid, 0});
+  Series masses{"masses", {}, {}, LineStyle::square, 3}, dampers{"dampers", {}, {}, LineStyle::ring, 2};
+  for (const span::ModeAttachment& at : m.attachments) {
+    Series& s = at.kind == span::AttachmentKind::mass ? masses : dampers;
+    s.x.push_back(at.position);
+    s.y.push_back(1.1);
+  }
+  if (!masses.x.empty()) chart.series.push_back(std::move(masses));
+  if (!dampers.x.empty()) chart.series.push_back(std::move(dampers));
+  const double bare = m.wave_speed / (2.0 * m.length);
+  page.figure(svg(chart),
+              fmt::format("The span's natural mode nearest the governing frequency ({} Hz), with its masses as rigid "
+                          "masses and its dampers {}; the bare span's mode n would be at n x {} Hz. {} modes lie below "
+                          "{} Hz (stockbridge span --modes lists them all).",
+                          number(governing, 3),
+                          measured ? "removed (a measured sheet has no linear impedance)"
+                                   : "at their linear impedance (every element sticking)",
+                          number(bare, 4), m.modes.size(), number(m.max_frequency_hz, 3)));
 }
 
 std::vector<std::string> span_caveats(bool life) {

@@ -39,6 +39,10 @@ void span_figures(HtmlPage& page, const span::SpanAnalysis& analysis, std::strin
 /// The standing wave along the span at the governing frequency, the attachments marked
 /// (a span with masses or dampers along it).
 void span_profile_figure(HtmlPage& page, const span::SpanAnalysis& analysis, std::string_view name);
+/// The span's natural mode nearest the governing frequency (span --modes), its shape
+/// along the span with the attachments marked: a span with masses or dampers along
+/// it, where the modes are no longer the bare string's sines.
+void span_modes_figure(HtmlPage& page, const span::SpanAnalysis& analysis, std::string_view name);
 
 /// The stress chart alone (the data sheet's per-span figure).
 Chart span_stress_chart(const span::SpanAnalysis& analysis, std::string_view title);

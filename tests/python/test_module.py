@@ -439,7 +439,16 @@ def test_span_masses_and_profile_are_the_programs(tmp_path):
     spheres = text + '\n[[mass]]\nname = "sphere"\nmass = 10.0\npositions = [100, 250]\n'
     (tmp_path / "spheres.toml").write_text(spheres)
     out = subprocess.run([CLI, "span", "spheres.toml", "--frequencies", "12,24", "--json", "-o", "s.csv",
-                          "--profile", "along.csv"], cwd=tmp_path, check=True, capture_output=True, text=True).stdout
+                          "--profile", "along.csv", "--report", "r.html"], cwd=tmp_path, check=True,
+                         capture_output=True, text=True).stdout
+    # The report draws the natural mode nearest the governing frequency: one span --modes lists.
+    html = (tmp_path / "r.html").read_text()
+    modes = json.loads(subprocess.run([CLI, "span", "spheres.toml", "--modes", "--json", "-o", "m.csv"], cwd=tmp_path,
+                                      check=True, capture_output=True, text=True).stdout)
+    shown = re.findall(r"mode (\d+), ([0-9.]+) Hz", html)
+    assert len(shown) == 1 and "the natural mode nearest" in html
+    for number, frequency in shown:
+        assert float(frequency) == pytest.approx(modes["frequencies_hz"][int(number) - 1], rel=1e-3)
     s = sb.span(SPAN, frequencies=f, masses=[(10.0, [100.0, 250.0], "sphere")])
     rows = read_csv(tmp_path / "s.csv")
     assert s["columns"] == list(rows[0].keys())

@@ -13,6 +13,7 @@
 
 #include "aster570.hpp"
 #include "stockbridge/core/error.hpp"
+#include "stockbridge/io/span_file.hpp"
 #include "stockbridge/span/balance.hpp"
 #include "stockbridge/span/fatigue.hpp"
 #include "support/damper_fixtures.hpp"
@@ -80,6 +81,47 @@ TEST(SpanAttachments, ZeroMassesGiveTheSpanWithoutThem) {
   }
   EXPECT_EQ(b.summary.verdict, a.summary.verdict);
   expect_relative(b.summary.max_judged_stress, a.summary.max_judged_stress, 1e-9);
+}
+
+/// The span examples, by file name (examples/*.toml with a [span] table).
+constexpr const char* kSpanExamples[] = {"aster570_400m.toml",    "aster570_800m.toml",
+                                          "aster570_recorder.toml", "drake_300m.toml",
+                                          "drake_one_velocity_sheet.toml", "opgw_600m_spheres.toml"};
+
+// Every shipped span example, its dampers at the ends only and no masses, against the
+// same span with zero masses at three places (one near an end): the same figures to
+// 1e-9, each example with its own balance options, the polish converged to 1e-12.
+TEST(SpanAttachments, ZeroMassesGiveEveryShippedExampleBack) {
+  for (const char* name : kSpanExamples) {
+    SCOPED_TRACE(name);
+    const io::SpanFile file = io::load_span_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/" + name);
+    std::vector<SpanDamper> at_ends;
+    for (const SpanDamper& d : file.span.dampers()) {
+      if (!d.in_span()) at_ends.push_back(d);
+    }
+    const Span bare = file.span.with_dampers(at_ends).with_masses({});
+    const double length = bare.length();
+    const Span zero = bare.with_masses({SpanMass{"nothing", 0.0, {0.004 * length, 0.31 * length, 0.77 * length}, 1.0}});
+    BalanceOptions tight = file.balance;
+    tight.polish_tolerance = 1e-12;
+    const std::vector<double> frequencies = band_frequencies(bare, stockbridge::testing::scaled(4, 2));
+    const SpanBalance a = balance_of(bare, frequencies, tight), b = balance_of(zero, frequencies, tight);
+    ASSERT_EQ(a.points.size(), b.points.size());
+    for (std::size_t i = 0; i < a.points.size(); ++i) {
+      const BalancePoint &p = a.points[i], &q = b.points[i];
+      SCOPED_TRACE(p.frequency_hz);
+      ASSERT_TRUE(p.converged() && q.converged()) << brief_report(q.summary);
+      expect_relative(q.amplitude, p.amplitude, 1e-9);
+      expect_relative(q.stress_fymax, p.stress_fymax, 1e-9);
+      expect_relative(q.stress_poffenberger_swart, p.stress_poffenberger_swart, 1e-9);
+      expect_relative(q.undamped_amplitude, p.undamped_amplitude, 1e-9);
+      expect_relative(q.wind_power, p.wind_power, 1e-9);
+      for (std::size_t d = 0; d < p.dampers.size(); ++d) {
+        expect_relative(q.dampers[d].clamp_velocity, p.dampers[d].clamp_velocity, 1e-9);
+      }
+    }
+    EXPECT_EQ(b.summary.verdict, a.summary.verdict);
+  }
 }
 
 /// The string's wave from end 1 through one mass M at a, worked by hand: Y = sin(kx)/k
