@@ -31,17 +31,6 @@ TEST(ImpedanceCli, SweepOfTheShippedExample) {
   EXPECT_NE(lines[1].find(",1,"), std::string::npos);  // converged
 }
 
-std::vector<std::string> cells_of(const std::string& line) {
-  std::vector<std::string> cells;
-  std::size_t from = 0;
-  for (std::size_t comma = line.find(','); comma != std::string::npos; comma = line.find(',', from)) {
-    cells.push_back(line.substr(from, comma - from));
-    from = comma + 1;
-  }
-  cells.push_back(line.substr(from));
-  return cells;
-}
-
 const std::vector<std::string> kAsymmetricFigures{"messenger_curvature_max_per_m", "long_power_w", "long_mass_amplitude_m",
                                                   "short_power_w", "short_mass_amplitude_m"};
 
@@ -53,11 +42,11 @@ TEST(ImpedanceCli, DesignFiguresNamedByTheArms) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto lines = lines_of(read_text(dir / "z.csv"));
   ASSERT_EQ(lines.size(), 3u);
-  const std::vector<std::string> header = cells_of(lines[0]);
+  const std::vector<std::string> header = csv_cells(lines[0]);
   ASSERT_GT(header.size(), kAsymmetricFigures.size());
   EXPECT_EQ(std::vector<std::string>(header.end() - 5, header.end()), kAsymmetricFigures) << lines[0];
   for (const int row : {1, 2}) {
-    const std::vector<std::string> cells = cells_of(lines[row]);
+    const std::vector<std::string> cells = csv_cells(lines[row]);
     ASSERT_EQ(cells.size(), header.size()) << lines[row];
     for (std::size_t c = header.size() - 5; c < header.size(); ++c) {
       ASSERT_FALSE(cells[c].empty()) << header[c] << " in " << lines[row];
@@ -89,7 +78,7 @@ TEST(ImpedanceCli, NonConvergedPointsAreFlaggedAndExitThree) {
   const auto lines = lines_of(read_text(dir / "z.csv"));
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_NE(lines[1].find(",,,,,,0,"), std::string::npos) << lines[1];  // numbers empty, converged 0
-  const std::vector<std::string> header = cells_of(lines[0]), cells = cells_of(lines[1]);
+  const std::vector<std::string> header = csv_cells(lines[0]), cells = csv_cells(lines[1]);
   ASSERT_EQ(cells.size(), header.size());
   EXPECT_EQ(header[header.size() - 5], "messenger_curvature_max_per_m");
   for (std::size_t c = header.size() - 5; c < header.size(); ++c) EXPECT_EQ(cells[c], "") << header[c];  // figures too
@@ -196,7 +185,7 @@ TEST(ResponseCli, DesignFiguresAgreeWithTheImpedanceSweep) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto lines = lines_of(read_text(dir / "z.csv"));
   ASSERT_EQ(lines.size(), 2u);
-  const std::vector<std::string> header = cells_of(lines[0]), cells = cells_of(lines[1]);
+  const std::vector<std::string> header = csv_cells(lines[0]), cells = csv_cells(lines[1]);
   ASSERT_EQ(cells.size(), header.size());
   for (const std::string& figure : kAsymmetricFigures) {
     const auto at = std::find(header.begin(), header.end(), figure);

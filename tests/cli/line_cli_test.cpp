@@ -113,33 +113,18 @@ TEST(LineCli, EveryRowIsReproducedBySpanOnItsDetailsFile) {
   const auto dir = line_folder("line-details");
   const CliResult r = run_cli("line line.toml -o schedule.csv --details spans --quiet", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::vector<std::string> rows = lines_of(read_text(dir / "schedule.csv"));
+  const std::string schedule = read_text(dir / "schedule.csv");
+  const std::vector<std::string> rows = lines_of(schedule);
   ASSERT_EQ(rows.size(), 5u);
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const std::string id = rows[i].substr(0, rows[i].find(','));
     const CliResult span = run_cli("span spans/" + id + ".toml --points 30 -o again.csv --json", dir);
     ASSERT_EQ(span.exit_code, 0) << id << ": " << span.err;
-    // The schedule's max_stress_mpa, by its header's place.
-    const auto cells_of = [](const std::string& line) {  // a quoted cell may hold ','
-      std::vector<std::string> cells(1);
-      bool quoted = false;
-      for (const char ch : line) {
-        if (ch == '"') quoted = !quoted;
-        if (ch == ',' && !quoted) {
-          cells.emplace_back();
-        } else {
-          cells.back() += ch;
-        }
-      }
-      return cells;
-    };
-    const std::vector<std::string> header = cells_of(rows[0]), cells = cells_of(rows[i]);
-    const auto column = static_cast<std::size_t>(std::find(header.begin(), header.end(), "max_stress_mpa") - header.begin());
     const std::string key = "\"max_stress_fymax_mpa\": ";
     const std::size_t at = span.out.find(key);
     ASSERT_NE(at, std::string::npos) << span.out;
     const double from_span = std::stod(span.out.substr(at + key.size()));
-    EXPECT_NEAR(from_span, std::stod(cells.at(column)), 1e-9 * from_span) << id;
+    EXPECT_NEAR(from_span, std::stod(csv_cell(schedule, i, "max_stress_mpa")), 1e-9 * from_span) << id;
     EXPECT_EQ(read_text(dir / "again.csv"), read_text(dir / ("spans/" + id + ".csv"))) << id;
   }
 }
@@ -306,26 +291,6 @@ catenary_parameter = 1300
 )";
 }
 
-/// A schedule CSV's cell of row `row` (1: the first span) in column `name`.
-std::string schedule_cell(const std::string& csv, std::size_t row, const std::string& name) {
-  const auto cells_of = [](const std::string& line) {  // a quoted cell may hold ','
-    std::vector<std::string> cells(1);
-    bool quoted = false;
-    for (const char ch : line) {
-      if (ch == '"') quoted = !quoted;
-      if (ch == ',' && !quoted) {
-        cells.emplace_back();
-      } else {
-        cells.back() += ch;
-      }
-    }
-    return cells;
-  };
-  const std::vector<std::string> rows = lines_of(csv);
-  const std::vector<std::string> header = cells_of(rows.at(0)), cells = cells_of(rows.at(row));
-  return cells.at(static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin()));
-}
-
 // The span with spheres end to end: dampers beside each sphere in its row and the
 // bill; its details span file gives `stockbridge span` the row's largest stress and
 // place, and the same balance CSV; the report shows them; a journal cut after the
@@ -335,14 +300,14 @@ TEST(LineCli, ASpanWithSpheresGetsDampersBesideThemFromScheduleToSpanFile) {
   const CliResult r = run_cli("line line.toml -o schedule.csv --details spans --report line.html --quiet", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string schedule = read_text(dir / "schedule.csv");
-  EXPECT_EQ(schedule_cell(schedule, 1, "id"), "S");
-  EXPECT_EQ(schedule_cell(schedule, 1, "sphere_dampers"), "6");
-  const std::string distance = schedule_cell(schedule, 1, "sphere_damper_distance_m");
+  EXPECT_EQ(csv_cell(schedule, 1, "id"), "S");
+  EXPECT_EQ(csv_cell(schedule, 1, "sphere_dampers"), "6");
+  const std::string distance = csv_cell(schedule, 1, "sphere_damper_distance_m");
   EXPECT_TRUE(distance == "1" || distance == "2" || distance == "3") << distance;
-  EXPECT_EQ(schedule_cell(schedule, 2, "sphere_dampers"), "0");
-  EXPECT_EQ(schedule_cell(schedule, 2, "sphere_damper_distance_m"), "");
-  const int per_end_s = std::stoi(schedule_cell(schedule, 1, "dampers_per_end"));
-  const int per_end_p = std::stoi(schedule_cell(schedule, 2, "dampers_per_end"));
+  EXPECT_EQ(csv_cell(schedule, 2, "sphere_dampers"), "0");
+  EXPECT_EQ(csv_cell(schedule, 2, "sphere_damper_distance_m"), "");
+  const int per_end_s = std::stoi(csv_cell(schedule, 1, "dampers_per_end"));
+  const int per_end_p = std::stoi(csv_cell(schedule, 2, "dampers_per_end"));
   const std::string bill = read_text(dir / "schedule_bill.csv");
   EXPECT_NE(bill.find("vendor," + std::to_string(2 * per_end_s + 6 + 2 * per_end_p) + ",2,"), std::string::npos) << bill;
 
@@ -352,8 +317,8 @@ TEST(LineCli, ASpanWithSpheresGetsDampersBesideThemFromScheduleToSpanFile) {
   const std::size_t at = span.out.find(key);
   ASSERT_NE(at, std::string::npos) << span.out;
   const double from_span = std::stod(span.out.substr(at + key.size()));
-  EXPECT_NEAR(from_span, std::stod(schedule_cell(schedule, 1, "max_stress_mpa")), 1e-9 * from_span);
-  const std::string place = schedule_cell(schedule, 1, "governing_place");
+  EXPECT_NEAR(from_span, std::stod(csv_cell(schedule, 1, "max_stress_mpa")), 1e-9 * from_span);
+  const std::string place = csv_cell(schedule, 1, "governing_place");
   EXPECT_FALSE(place.empty());
   EXPECT_NE(span.out.find("\"governing_place\": \"" + place + "\""), std::string::npos) << place << "\n" << span.out;
   EXPECT_EQ(read_text(dir / "again.csv"), read_text(dir / "spans/S.csv"));

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the stockbridge program as a user would and captures what it says.
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -44,6 +45,30 @@ inline std::vector<std::string> lines_of(const std::string& text) {
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
+}
+
+/// The cells of a CSV line; a quoted cell may hold ',' (its quotes kept).
+inline std::vector<std::string> csv_cells(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (const char ch : line) {
+    if (ch == '"') quoted = !quoted;
+    if (ch == ',' && !quoted) {
+      cells.emplace_back();
+    } else {
+      cells.back() += ch;
+    }
+  }
+  return cells;
+}
+
+/// A CSV text's cell of row `row` (1: the first after the header) in column `name`.
+inline std::string csv_cell(const std::string& csv, std::size_t row, const std::string& name) {
+  const std::vector<std::string> rows = lines_of(csv);
+  const std::vector<std::string> header = csv_cells(rows.at(0)), cells = csv_cells(rows.at(row));
+  const auto column = std::find(header.begin(), header.end(), name);
+  if (column == header.end()) return "(no column " + name + ")";
+  return cells.at(static_cast<std::size_t>(column - header.begin()));
 }
 
 /// A fresh, empty directory for one test's files.
