@@ -65,15 +65,10 @@ std::string span_file_text(const LineFile& file, const line::ScheduleRow& row) {
   const std::filesystem::path& base = file.base_directory;
   if (!s.conductor.empty()) {
     toml::table c;
-    if (s.conductor.ends_with(".toml")) {
-      c.insert("file", s.conductor);
-      absolute_path_value(c, "file", base);
-    } else {
-      c.insert("type", s.conductor);
-    }
+    c.insert(s.conductor.ends_with(".toml") ? "file" : "type", s.conductor);
     doc.insert_or_assign("conductor", std::move(c));
   }
-  absolute_path_value(*doc.get_as<toml::table>("conductor"), "file", base);
+  absolute_path_value(*doc.get_as<toml::table>("conductor"), "file", base);  // the span's or the line's
   toml::table& wind = *doc.get_as<toml::table>("wind");
   absolute_path_value(wind, "table", base);
   wind.insert_or_assign("speed_min", s.span.wind().speed_min);  // the span's own where it has one
