@@ -1,7 +1,8 @@
 // The span analysis of examples/aster570_400m.toml (ASTER570, 400 m, the
 // dissertation's damper 1 m from both ends) over 100 frequencies of the wind band,
 // one core: the impedance tables, the balance with and without the direct-solve
-// polish, and the whole analysis (tables and polished balance) with one, two (1.0
+// polish, one balance of a position search (40 frequencies on its finer tables),
+// and the whole analysis (tables and polished balance) with one, two (1.0
 // and 2.0 m) and three (1.0, 2.2 and 3.6 m) dampers per end; and the analysis with
 // the damper known by a measured sheet of its own Z (13 velocities x 150
 // frequencies), the sheet's error estimate included.
@@ -47,6 +48,22 @@ void BM_SpanBalance(benchmark::State& state) {
   state.counters["direct_solves"] = summary.direct_solves;
 }
 BENCHMARK(BM_SpanBalance)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+/// One balance on the position search's tables (40 frequencies, no polish) with 1, 2
+/// or 3 dampers per end: what a search repeats for every arrangement it tries (its
+/// tables and the span's undamped figures made once, before the timing).
+void BM_SearchBalance(benchmark::State& state) {
+  const std::vector<std::vector<double>> layouts{{1.0}, {1.0, 2.0}, {1.0, 2.2, 3.6}};
+  const Span span = with_dampers_at(layouts.at(static_cast<std::size_t>(state.range(0) - 1)));
+  BalanceOptions options;
+  options.polish = false;
+  const SpanTables tables(span, band_frequencies(span, 40), options.table.for_position_search());
+  const UndampedFigures undamped(span, tables, options);
+  BalanceSummary summary;
+  for (auto _ : state) summary = run_balance(span, tables, options, &undamped).summary;
+  state.counters["converged_points"] = summary.converged;
+}
+BENCHMARK(BM_SearchBalance)->DenseRange(1, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// The whole analysis (tables and the polished balance) with 1, 2 or 3 dampers per end.
 void BM_SpanDampersPerEnd(benchmark::State& state) {

@@ -320,7 +320,7 @@ std::string check_sheet_velocities(const Span& span, const SpanTables& tables, s
 }
 
 BalancePoint balance_at(const Span& span, const SpanTables& tables, std::size_t i, Polish* polish,
-                        const BalanceOptions& options, const UndampedSpan& undamped) {
+                        const BalanceOptions& options, const UndampedFigures& undamped) {
   BalancePoint p;
   p.frequency_hz = tables.frequencies()[i];
   p.wind_speed = span.wind().wind_speed(p.frequency_hz, span.conductor().diameter);
@@ -366,7 +366,27 @@ BalancePoint balance_at(const Span& span, const SpanTables& tables, std::size_t 
 
 }  // namespace
 
-SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options) {
+UndampedFigures::UndampedFigures(const Span& span, const SpanTables& tables, const BalanceOptions& options) {
+  const UndampedSpan undamped(span, tables, options);
+  points_.resize(tables.frequencies().size());
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    points_[i].frequency_hz = tables.frequencies()[i];
+    undamped.fill(i, points_[i]);
+  }
+}
+
+void UndampedFigures::fill(std::size_t i, BalancePoint& p) const {
+  const BalancePoint& u = points_.at(i);
+  p.undamped_amplitude = u.undamped_amplitude;
+  p.undamped_stress_fymax = u.undamped_stress_fymax;
+  p.undamped_bending_amplitude = u.undamped_bending_amplitude;
+  p.undamped_stress_poffenberger_swart = u.undamped_stress_poffenberger_swart;
+  p.undamped_judged_stress = u.undamped_judged_stress;
+  p.undamped_life_stress = u.undamped_life_stress;
+}
+
+SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
+                        const UndampedFigures* undamped) {
   options.validate();
   if (tables.tables().size() != span.dampers().size()) {
     throw std::invalid_argument(
@@ -375,9 +395,10 @@ SpanBalance run_balance(const Span& span, const SpanTables& tables, const Balanc
   SpanBalance out;
   std::optional<Polish> polish;
   if (options.polish && !span.dampers().empty()) polish.emplace(span, options);
-  const UndampedSpan undamped(span, tables, options);
+  std::optional<UndampedFigures> own;
+  if (!undamped) undamped = &own.emplace(span, tables, options);
   for (std::size_t i = 0; i < tables.frequencies().size(); ++i) {
-    out.points.push_back(balance_at(span, tables, i, polish ? &*polish : nullptr, options, undamped));
+    out.points.push_back(balance_at(span, tables, i, polish ? &*polish : nullptr, options, *undamped));
   }
   out.summary = summarise(span, out.points);
   out.summary.impedance_nodes = tables.nodes();

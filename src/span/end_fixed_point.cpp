@@ -1,8 +1,10 @@
 #include "stockbridge/span/end_fixed_point.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
+#include <Eigen/LU>
 #include <fmt/format.h>
 
 #include "../numerics/nonlinear_system.hpp"
@@ -21,14 +23,9 @@ namespace {
 /// The end of one antinode amplitude, its responses counted.
 class EndProblem {
  public:
-  EndProblem(const StringWave& wave, const std::vector<double>& positions, const EndAttachments& attachments,
-             const ClampImpedance& impedance, double antinode, const FixedPointOptions& options)
-      : wave_(wave),
-        positions_(positions),
-        attachments_(attachments),
-        impedance_(impedance),
-        antinode_(antinode),
-        options_(options) {}
+  EndProblem(const EndChain& chain, const ClampImpedance& impedance, const ClampImpedanceSlope& slope, double antinode,
+             const FixedPointOptions& options)
+      : chain_(chain), wave_(chain.wave()), impedance_(impedance), slope_(slope), antinode_(antinode), options_(options) {}
 
   /// The impedances at velocities v; none (and `unknown_` says where) if one is not known.
   std::optional<std::vector<std::complex<double>>> impedances(const std::vector<double>& v) {
@@ -45,7 +42,7 @@ class EndProblem {
   }
   EndResponse response(const std::vector<std::complex<double>>& z) {
     ++evaluations_;
-    return end_response(wave_, positions_, z, antinode_, attachments_);
+    return chain_.response(z, antinode_);
   }
   /// log of damper j's velocity in a response (held at the floor at a node).
   double log_velocity(const EndResponse& r, std::size_t j) const {
@@ -57,16 +54,22 @@ class EndProblem {
   std::optional<double> consistent_velocity(std::vector<double> v, std::size_t j);
   /// Every velocity at once (Powell's hybrid method), from v.
   numerics::NonlinearSystemResult solve_system(const std::vector<double>& v);
+  /// Every velocity at once by Newton's method from v; into v where max |g| <= the
+  /// tolerance (true), else false (the caller goes on from its own start).
+  bool solve_newton(std::vector<double>& v, double& residual);
 
-  const std::vector<double>& positions() const { return positions_; }
+  std::size_t size() const { return chain_.dampers(); }
   int evaluations() const { return evaluations_; }
   const std::string& unknown() const { return unknown_; }
 
  private:
+  /// Z and dZ/du of damper j at velocity v: the given slope, or central differences.
+  std::optional<TableImpedance> impedance_with_slope(std::size_t j, double v);
+
+  const EndChain& chain_;
   const StringWave& wave_;
-  const std::vector<double>& positions_;
-  const EndAttachments& attachments_;
   const ClampImpedance& impedance_;
+  const ClampImpedanceSlope& slope_;
   double antinode_;
   const FixedPointOptions& options_;
   int evaluations_ = 0;
@@ -149,7 +152,7 @@ numerics::NonlinearSystemResult EndProblem::solve_system(const std::vector<doubl
       if (!hi || !lo) return false;
       std::vector<std::complex<double>> direction(n, 0.0);
       direction[m] = (*hi - *lo) / (2.0 * kStep);
-      const EndResponseTangent t = end_response_tangent(wave_, positions_, *z, direction, antinode_, attachments_);
+      const EndResponseTangent t = chain_.tangent(*z, direction, antinode_);
       for (std::size_t j = 0; j < n; ++j) {
         // A damper held at the velocity floor (near a node) does not move with the others.
         const bool floored = wave_.angular_frequency * std::abs(r.damper_displacement[j]) <= options_.velocity_floor;
@@ -166,18 +169,93 @@ numerics::NonlinearSystemResult EndProblem::solve_system(const std::vector<doubl
   return numerics::solve_nonlinear_system(residual, jacobian, u, system);
 }
 
+std::optional<TableImpedance> EndProblem::impedance_with_slope(std::size_t j, double v) {
+  if (slope_) return slope_(j, v);
+  constexpr double kStep = 1e-4;
+  const auto z = impedance_(j, v), hi = impedance_(j, v * std::exp(kStep)), lo = impedance_(j, v * std::exp(-kStep));
+  if (!z || !hi || !lo) return std::nullopt;
+  return TableImpedance{*z, (*hi - *lo) / (2.0 * kStep)};
+}
+
+bool EndProblem::solve_newton(std::vector<double>& v, double& residual) {
+  constexpr int kMaxSize = 8;   // larger ends go to the general solvers
+  constexpr double kMaxStep = 2.0;  // in ln v: a factor e^2 a step at most
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSize, 1>;
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSize, kMaxSize>;
+  const auto n = static_cast<Eigen::Index>(v.size());
+  if (n == 0 || n > kMaxSize) return false;
+  // A point of the iteration: u = ln v, its impedances, slopes, displacements and g.
+  struct Point {
+    Vector u, g;
+    std::array<std::complex<double>, kMaxSize> z, slope, y;
+    double norm = 0.0;
+  };
+  const auto evaluate = [&](Point& p) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const auto zj = impedance_with_slope(static_cast<std::size_t>(j), std::exp(p.u[j]));
+      if (!zj) return false;
+      p.z[static_cast<std::size_t>(j)] = zj->z;
+      p.slope[static_cast<std::size_t>(j)] = zj->slope;
+    }
+    ++evaluations_;
+    chain_.displacements(p.z.data(), antinode_, p.y.data());
+    p.g.resize(n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      p.g[j] = std::log(std::max(wave_.angular_frequency * std::abs(p.y[static_cast<std::size_t>(j)]), options_.velocity_floor)) - p.u[j];
+    }
+    p.norm = p.g.cwiseAbs().maxCoeff();
+    return std::isfinite(p.norm);
+  };
+  Point at, trial;
+  at.u.resize(n);
+  for (Eigen::Index j = 0; j < n; ++j) at.u[j] = std::log(std::max(v[static_cast<std::size_t>(j)], options_.velocity_floor));
+  if (!evaluate(at)) return false;
+  std::array<double, kMaxSize * kMaxSize> jacobian{};
+  for (int evaluations = 1; at.norm > options_.tolerance; ) {
+    chain_.log_displacement_jacobian(at.z.data(), at.slope.data(), jacobian.data());
+    Matrix dg = -Matrix::Identity(n, n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      // A damper held at the velocity floor (near a node) does not move with the others.
+      if (wave_.angular_frequency * std::abs(at.y[static_cast<std::size_t>(j)]) <= options_.velocity_floor) continue;
+      for (Eigen::Index m = 0; m < n; ++m) dg(j, m) += jacobian[static_cast<std::size_t>(j * n + m)];
+    }
+    const Eigen::PartialPivLU<Matrix> lu(dg);
+    Vector step = lu.solve(-at.g);
+    if (!step.allFinite()) return false;
+    if (const double longest = step.cwiseAbs().maxCoeff(); longest > kMaxStep) step *= kMaxStep / longest;
+    // The full step, or halved until max |g| falls.
+    bool accepted = false;
+    for (int halving = 0; halving < 8 && !accepted; ++halving, step *= 0.5) {
+      if (++evaluations > options_.max_sweeps) return false;
+      trial.u = at.u + step;
+      accepted = evaluate(trial) && trial.norm < at.norm;
+    }
+    if (!accepted) return false;
+    std::swap(at, trial);
+  }
+  for (Eigen::Index j = 0; j < n; ++j) v[static_cast<std::size_t>(j)] = std::exp(at.u[j]);
+  residual = at.norm;
+  return true;
+}
+
 }  // namespace
 
 EndSolution solve_end(const StringWave& wave, const std::vector<double>& positions, const ClampImpedance& impedance,
                       double antinode, const FixedPointOptions& options, std::vector<double> start,
                       const EndAttachments& attachments) {
-  EndProblem problem(wave, positions, attachments, impedance, antinode, options);
+  return solve_end(EndChain(wave, positions, attachments), impedance, {}, antinode, options, std::move(start));
+}
+
+EndSolution solve_end(const EndChain& chain, const ClampImpedance& impedance, const ClampImpedanceSlope& slope,
+                      double antinode, const FixedPointOptions& options, std::vector<double> start) {
+  const StringWave& wave = chain.wave();
+  EndProblem problem(chain, impedance, slope, antinode, options);
   EndSolution out;
   std::vector<double>& v = out.velocities;
   v = std::move(start);
-  if (v.size() != positions.size()) {
+  if (v.size() != chain.dampers()) {
     v.clear();
-    for (const double a : positions) {
+    for (const double a : chain.positions()) {
       v.push_back(std::max(wave.angular_frequency * antinode * std::abs(std::sin(wave.wavenumber * a)), options.velocity_floor));
     }
   }
@@ -188,8 +266,10 @@ EndSolution solve_end(const StringWave& wave, const std::vector<double>& positio
     summary.evaluations = problem.evaluations();
     return out;
   };
-  bool solved = false;
-  if (v.size() >= 2) {
+  std::vector<double> newton = v;
+  bool solved = problem.solve_newton(newton, summary.residual);
+  if (solved) v = std::move(newton);
+  if (!solved && v.size() >= 2) {
     const numerics::NonlinearSystemResult system = problem.solve_system(v);
     if (system.summary.converged()) {
       for (std::size_t j = 0; j < v.size(); ++j) v[j] = std::exp(system.x[static_cast<Eigen::Index>(j)]);

@@ -128,10 +128,18 @@ FrequencyBalance::FrequencyBalance(const Span& span, const SpanTables& tables, s
   wave_.angular_frequency = 2.0 * std::numbers::pi * frequency_;
   wave_.wavenumber = wavenumber(c, span.tension(), frequency_);
   wave_.wave_impedance = wave_impedance(c, span.tension());
+  for (const EndLayout& layout : layouts_) chains_.emplace_back(wave_, layout.positions, layout.attachments);
+  mirrored_ = layouts_.size() == 2 && layouts_[1].mirrors(layouts_[0]);
   last_velocities_.resize(layouts_.size());
+  last_amplitude_.assign(layouts_.size(), 0.0);
   fixed_.resize(layouts_.size());
   curvatures_.resize(layouts_.size());
+  lowest_node_.resize(layouts_.size());
   for (std::size_t e = 0; e < layouts_.size(); ++e) {
+    for (const std::size_t j : layouts_[e].damper) {
+      const std::optional<Interval> range = tables.tables()[j].velocity_range(index);
+      lowest_node_[e].push_back(range ? range->lo : 0.0);
+    }
     fixed_[e].resize(layouts_[e].positions.size());
     curvatures_[e].assign(layouts_[e].positions.size(), std::numeric_limits<double>::quiet_NaN());
   }
@@ -170,6 +178,14 @@ double FrequencyBalance::net_power_slope(double y) {
 EndsAtAmplitude FrequencyBalance::dampers(double y) {
   EndsAtAmplitude out;
   for (std::size_t e = 0; e < layouts_.size(); ++e) {
+    // A mirror image of end 1 (the same dampers, masses and impedances held): its solution.
+    if (e == 1 && mirrored_ && fixed_[1] == fixed_[0]) {
+      last_velocities_[1] = last_velocities_[0];
+      last_amplitude_[1] = last_amplitude_[0];
+      out.absorbed += out.ends[0].response.absorbed_power;
+      out.ends.push_back(out.ends[0]);
+      continue;
+    }
     EndSolution s = end(e, y);
     if (!s.converged()) {
       out.summary.termination = Termination::inner_failure;
@@ -177,6 +193,7 @@ EndsAtAmplitude FrequencyBalance::dampers(double y) {
       return out;
     }
     last_velocities_[e] = s.velocities;
+    last_amplitude_[e] = y;
     out.absorbed += s.response.absorbed_power;
     out.ends.push_back(std::move(s));
   }
@@ -189,16 +206,20 @@ StableRoot FrequencyBalance::balanced_amplitude() {
   // The ends' fixed points start again from the undamped velocities (not the last
   // amplitude's): a scan over the amplitudes then gives the same balance each time.
   for (auto& v : last_velocities_) v.clear();
+  std::fill(last_amplitude_.begin(), last_amplitude_.end(), 0.0);
+  held_ = Held{};
   SolverSummary ends;  // the first end that failed on the way
   const auto net_power = [&](double y) {
     if (const std::optional<double> per_square = absorbed_per_square()) {
       return net_power_in_proportion(y) - *per_square * y * y;
     }
+    if (y <= held_.until) return wind(held_.unit, y) - self_damping(held_.unit, y) - held_.per_square * y * y;
     const EndsAtAmplitude at = dampers(y);
     if (!at.summary.converged()) {
       if (ends.termination == Termination::not_run) ends = at.summary;
       return std::numeric_limits<double>::quiet_NaN();
     }
+    note_held(at, y);
     return wind(at.subspans) - self_damping(at.subspans) - at.absorbed;
   };
   const double d = span_.conductor().diameter;
@@ -211,6 +232,24 @@ StableRoot FrequencyBalance::balanced_amplitude() {
     root.summary.where = fmt::format("(the wind's power exceeds the dissipation {})", root.summary.where);
   }
   return root;
+}
+
+void FrequencyBalance::note_held(const EndsAtAmplitude& at, double y) {
+  if (y <= held_.until) return;
+  double until = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < at.ends.size(); ++e) {
+    for (std::size_t j = 0; j < at.ends[e].velocities.size(); ++j) {
+      if (fixed_[e][j]) continue;
+      const double v = at.ends[e].velocities[j], lowest = lowest_node_[e][j];
+      if (!(v < lowest)) return;  // on the table's slope: not held
+      until = std::min(until, y * lowest / v);
+    }
+  }
+  if (!std::isfinite(until)) return;
+  held_.until = until;
+  held_.per_square = at.absorbed / (y * y);
+  held_.unit = at.subspans;
+  for (SubSpan& s : held_.unit) s.amplitude /= y;
 }
 
 std::optional<std::complex<double>> FrequencyBalance::table_impedance(std::size_t damper, double v) const {
@@ -248,9 +287,7 @@ std::optional<double> FrequencyBalance::absorbed_per_square() {
 EndResponseTangent FrequencyBalance::end_tangent(std::size_t e, const std::vector<std::complex<double>>& z,
                                                  const std::vector<std::complex<double>>& direction) const {
   const std::vector<double>& positions = layouts_[e].positions;
-  if (options_.damper_model == DamperModel::travelling) {
-    return end_response_tangent(wave_, positions, z, direction, 1.0, layouts_[e].attachments);
-  }
+  if (options_.damper_model == DamperModel::travelling) return chains_[e].tangent(z, direction, 1.0);
   // The weak form: Y_j = sin(k a_j) whatever the impedances, P_d = sum Re Z_j w^2 Y_j^2 / 2.
   EndResponseTangent t;
   t.log_displacement.assign(positions.size(), 0.0);
@@ -271,7 +308,17 @@ EndSolution FrequencyBalance::end(std::size_t e, double y) const {
   };
   if (options_.damper_model == DamperModel::weak) return weak_end(layout, z, y);
   if (all_fixed(e)) return fixed_end(e, y);
-  return solve_end(wave_, layout.positions, z, y, options_.fixed_point, last_velocities_[e], layout.attachments);
+  const ClampImpedanceSlope with_slope = [&](std::size_t j, double v) -> std::optional<TableImpedance> {
+    if (fixed_[e][j]) return TableImpedance{*fixed_[e][j], 0.0};
+    return tables_.tables()[layout.damper[j]].at_with_slope(index_, v);
+  };
+  // From the last amplitude's velocities in proportion (where the impedances hold
+  // still, the fixed point itself).
+  std::vector<double> start = last_velocities_[e];
+  if (last_amplitude_[e] > 0.0) {
+    for (double& v : start) v *= y / last_amplitude_[e];
+  }
+  return solve_end(chains_[e], z, with_slope, y, options_.fixed_point, std::move(start));
 }
 
 bool FrequencyBalance::all_fixed(std::size_t e) const {
@@ -285,7 +332,7 @@ bool FrequencyBalance::all_fixed(std::size_t e) const {
 EndSolution FrequencyBalance::fixed_end(std::size_t e, double y) const {
   EndSolution s;
   for (const auto& z : fixed_[e]) s.impedances.push_back(*z);
-  s.response = end_response(wave_, layouts_[e].positions, s.impedances, y, layouts_[e].attachments);
+  s.response = chains_[e].response(s.impedances, y);
   for (const std::complex<double>& yj : s.response.damper_displacement) {
     s.velocities.push_back(std::max(wave_.angular_frequency * std::abs(yj), options_.fixed_point.velocity_floor));
   }

@@ -106,6 +106,19 @@ class FrequencyBalance {
   std::vector<SubSpan> subspans(const std::vector<EndSolution>& ends, double y) const;
   /// P_w - P_s with every stretch's amplitude `ratio` times y (unit_subspans_).
   double net_power_in_proportion(double y) const;
+  /// After the ends' dampers were solved at y (`at`): where every damper on a table
+  /// moves slower than the table's lowest node, its Z is held there and the ends are
+  /// linear up to the amplitude where the fastest reaches it: then the balance's
+  /// powers below it follow from these in proportion (held_).
+  void note_held(const EndsAtAmplitude& at, double y);
+
+  /// The ends while every impedance is held at its table's lowest node: up to
+  /// `until` (m) they absorb `per_square` y^2 and the stretches stand at `unit` y.
+  struct Held {
+    double until = 0.0;
+    double per_square = 0.0;
+    std::vector<SubSpan> unit;
+  };
 
   const Span& span_;
   const SpanTables& tables_;
@@ -114,12 +127,17 @@ class FrequencyBalance {
   const BalanceOptions& options_;
   std::vector<EndLayout> layouts_;
   StringWave wave_;
+  std::vector<EndChain> chains_;  ///< per end: its chain at this frequency
+  bool mirrored_ = false;         ///< end 2's chain is end 1's mirror image
   std::vector<std::vector<double>> last_velocities_;  ///< per end: where its next fixed point starts
+  std::vector<double> last_amplitude_;  ///< per end: the antinode amplitude last_velocities_ were solved at
   /// Per end and damper: the impedance fixed by the polish (none: the table's at v).
   std::vector<std::vector<std::optional<std::complex<double>>>> fixed_;
   std::vector<std::vector<double>> curvatures_;  ///< per end and damper: the last direct solve's messenger curvature
   std::optional<double> absorbed_per_square_;    ///< cached by absorbed_per_square()
   std::vector<SubSpan> unit_subspans_;           ///< with it: the stretches at amplitude 1
+  std::vector<std::vector<double>> lowest_node_;  ///< per end and damper: its table's lowest velocity here (m/s; 0: none)
+  Held held_;                                    ///< of the current balanced_amplitude()
 };
 
 }  // namespace stockbridge::span

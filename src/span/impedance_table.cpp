@@ -39,6 +39,12 @@ double table_hermite(double t, double h, double y0, double y1, double m0, double
   return (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * h * m0 + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * h * m1;
 }
 
+/// d/du of table_hermite, u = u_k + t h.
+double table_hermite_slope(double t, double h, double y0, double y1, double m0, double m1) {
+  const double t2 = t * t;
+  return ((6 * t2 - 6 * t) * y0 + (-6 * t2 + 6 * t) * y1) / h + (3 * t2 - 4 * t + 1) * m0 + (3 * t2 - 2 * t) * m1;
+}
+
 }  // namespace
 
 ImpedanceTable::Column ImpedanceTable::make_column(const std::vector<double>& log_v,
@@ -143,6 +149,12 @@ std::vector<std::size_t> ImpedanceTable::solved_frequencies(const std::vector<do
 }
 
 std::optional<std::complex<double>> ImpedanceTable::at(std::size_t i, double velocity) const {
+  const std::optional<TableImpedance> z = at_with_slope(i, velocity);
+  if (!z) return std::nullopt;
+  return z->z;
+}
+
+std::optional<TableImpedance> ImpedanceTable::at_with_slope(std::size_t i, double velocity) const {
   if (i >= frequencies_.size()) throw std::out_of_range("ImpedanceTable::at: no such frequency");
   const std::size_t k = static_cast<std::size_t>(std::lower_bound(solved_.begin(), solved_.end(), i) - solved_.begin());
   if (solved_[k] == i) return column_at(k, velocity);
@@ -150,21 +162,27 @@ std::optional<std::complex<double>> ImpedanceTable::at(std::size_t i, double vel
   if (!lo || !hi) return std::nullopt;
   const double t = std::log(frequencies_[i] / frequencies_[solved_[k - 1]]) /
                    std::log(frequencies_[solved_[k]] / frequencies_[solved_[k - 1]]);
-  return (1.0 - t) * *lo + t * *hi;
+  return TableImpedance{(1.0 - t) * lo->z + t * hi->z, (1.0 - t) * lo->slope + t * hi->slope};
 }
 
-std::optional<std::complex<double>> ImpedanceTable::column_at(std::size_t column, double velocity) const {
+std::optional<TableImpedance> ImpedanceTable::column_at(std::size_t column, double velocity) const {
   const Column& c = columns_[column];
   const std::size_t n = c.log_v.size();
   if (n < 2) return std::nullopt;
   const double u = std::log(velocity);
-  if (u <= c.log_v.front()) return c.z.front();
-  if (u >= c.log_v.back()) return c.z.back();
+  if (u <= c.log_v.front()) return TableImpedance{c.z.front(), 0.0};
+  if (u >= c.log_v.back()) return TableImpedance{c.z.back(), 0.0};
   const std::size_t k = static_cast<std::size_t>(std::upper_bound(c.log_v.begin(), c.log_v.end(), u) - c.log_v.begin()) - 1;
   if (c.gap_after[k]) return std::nullopt;
   const double h = c.log_v[k + 1] - c.log_v[k], t = (u - c.log_v[k]) / h;
-  return std::complex<double>(table_hermite(t, h, c.z[k].real(), c.z[k + 1].real(), c.slope[k].real(), c.slope[k + 1].real()),
-                              table_hermite(t, h, c.z[k].imag(), c.z[k + 1].imag(), c.slope[k].imag(), c.slope[k + 1].imag()));
+  const auto part = [&](auto component) {
+    return std::pair{table_hermite(t, h, component(c.z[k]), component(c.z[k + 1]), component(c.slope[k]), component(c.slope[k + 1])),
+                     table_hermite_slope(t, h, component(c.z[k]), component(c.z[k + 1]), component(c.slope[k]),
+                                         component(c.slope[k + 1]))};
+  };
+  const auto [re, re_slope] = part([](std::complex<double> q) { return q.real(); });
+  const auto [im, im_slope] = part([](std::complex<double> q) { return q.imag(); });
+  return TableImpedance{{re, im}, {re_slope, im_slope}};
 }
 
 }  // namespace stockbridge::span

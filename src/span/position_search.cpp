@@ -77,14 +77,24 @@ std::vector<std::size_t> placed_dampers(const Span& span) {
   return order;
 }
 
+BalanceOptions with_polish_off(BalanceOptions options) {
+  options.polish = false;  // on the tables alone
+  return options;
+}
+
 /// One search: the dampers' order (by their positions in the span), the balances
 /// made and the best arrangement seen.
 class PositionObjectiveRun {
  public:
   PositionObjectiveRun(const Span& span, const SpanTables& tables, const BalanceOptions& options,
                        const PositionRules& rules, const std::function<bool()>& stop)
-      : span_(span), tables_(tables), options_(options), rules_(rules), stop_(stop), order_(placed_dampers(span)) {
-    options_.polish = false;
+      : span_(span),
+        tables_(tables),
+        options_(with_polish_off(options)),
+        rules_(rules),
+        stop_(stop),
+        order_(placed_dampers(span)),
+        undamped_(span, tables, options_) {
     best_.objective = std::numeric_limits<double>::infinity();
     best_.criterion = rules.objective;
   }
@@ -95,7 +105,7 @@ class PositionObjectiveRun {
     std::vector<SpanDamper> dampers = span_.dampers();
     for (std::size_t k = 0; k < order_.size(); ++k) dampers[order_[k]].position = sorted[k];
     ++best_.balances;
-    const SpanBalance b = run_balance(span_.with_dampers(std::move(dampers)), tables_, options_);
+    const SpanBalance b = run_balance(span_.with_dampers(std::move(dampers)), tables_, options_, &undamped_);
     const double value = position_objective(b, rules_.objective);
     // COBYLA may try arrangements a little inside the spacing on its way: never the answer.
     bool spaced = true;
@@ -125,6 +135,7 @@ class PositionObjectiveRun {
   const PositionRules& rules_;
   const std::function<bool()>& stop_;
   std::vector<std::size_t> order_;
+  UndampedFigures undamped_;  ///< the same for every arrangement
   PositionSearch best_;
   std::vector<double> best_sorted_;
 };

@@ -266,9 +266,24 @@ struct SpanBalance {
 /// The frequencies of the wind band f = St U / D, U from speed_min to speed_max, log-spaced.
 std::vector<double> band_frequencies(const Span& span, int points);
 
+/// The span's figures without its dampers (its masses kept) at each of the tables'
+/// frequencies, the undamped_* fields of a BalancePoint: the same for every
+/// arrangement of the dampers, so a position search works them out once.
+class UndampedFigures {
+ public:
+  UndampedFigures(const Span& span, const SpanTables& tables, const BalanceOptions& options);
+  /// Point i's undamped_* fields.
+  void fill(std::size_t i, BalancePoint& p) const;
+
+ private:
+  std::vector<BalancePoint> points_;
+};
+
 /// The balance at every frequency of the tables (made for this span's dampers, or
 /// for dampers alike: only the dampers' positions may differ; none without dampers).
-/// std::invalid_argument when the tables are not one per damper.
-SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options);
+/// `undamped`: the span's, made with the same tables and options (none: worked out
+/// here). std::invalid_argument when the tables are not one per damper.
+SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
+                        const UndampedFigures* undamped = nullptr);
 
 }  // namespace stockbridge::span

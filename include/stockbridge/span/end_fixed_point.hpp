@@ -3,13 +3,15 @@
 // damper's impedance depends on its own clamp velocity amplitude v_j = w |Y_j|,
 // which depends on every damper's impedance (travelling_wave.hpp). A fixed point
 // in v, the root in u = log v of g_j(u) = log(w |Y_j(Z(v))|) - u_j:
-// * one damper: bracketed outward from the last value and closed by regula falsi
-//   (Illinois). g > 0 for small v (Z tends to the all-stick value, Y_j stays finite)
-//   and g < 0 for large v, so a root exists;
-// * several: all velocities as one system, Powell's hybrid method with the
-//   Jacobian dg/du = d log|Y| / dZ . diag(dZ_j / du_j) - I (end_response_tangent,
-//   dZ/du by central differences of the impedance), and where that fails, one
-//   damper at a time as above (Gauss-Seidel sweeps).
+// * first Newton's method on all velocities at once with the exact Jacobian
+//   dg/du = d log|Y| / dZ . diag(dZ_j / du_j) - I (the chain's tangent, and dZ/du
+//   the table interpolant's own slope, or central differences of the impedance
+//   where no slope is given), the steps halved until max |g| falls;
+// * where that does not converge, Powell's hybrid method on the same system
+//   (several dampers), and then one damper at a time (Gauss-Seidel sweeps), each
+//   velocity bracketed outward from the last value and closed by regula falsi
+//   (Illinois): g > 0 for small v (Z tends to the all-stick value, Y_j stays
+//   finite) and g < 0 for large v, so a root exists.
 
 #include <complex>
 #include <functional>
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "stockbridge/numerics/solver_summary.hpp"
+#include "stockbridge/span/impedance_table.hpp"
 #include "stockbridge/span/travelling_wave.hpp"
 
 namespace stockbridge::span {
@@ -25,6 +28,8 @@ namespace stockbridge::span {
 /// Z (N s/m) of the end's damper j at clamp velocity amplitude v (m/s); none where
 /// it is not known (a table without converged nodes there).
 using ClampImpedance = std::function<std::optional<std::complex<double>>(std::size_t damper, double velocity)>;
+/// The same with its slope dZ/d(ln v) (a table's interpolant: TableImpedance).
+using ClampImpedanceSlope = std::function<std::optional<TableImpedance>(std::size_t damper, double velocity)>;
 
 struct FixedPointOptions {
   /// On every |g_j| (several dampers), or the relative change of every velocity
@@ -55,5 +60,9 @@ struct EndSolution {
 EndSolution solve_end(const StringWave& wave, const std::vector<double>& positions, const ClampImpedance& impedance,
                       double antinode, const FixedPointOptions& options, std::vector<double> start = {},
                       const EndAttachments& attachments = {});
+/// The same on a chain made once (the balance's many amplitudes), with the
+/// impedances' slopes where known (empty: central differences of `impedance`).
+EndSolution solve_end(const EndChain& chain, const ClampImpedance& impedance, const ClampImpedanceSlope& slope,
+                      double antinode, const FixedPointOptions& options, std::vector<double> start = {});
 
 }  // namespace stockbridge::span

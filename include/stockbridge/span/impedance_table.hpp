@@ -18,6 +18,13 @@
 
 namespace stockbridge::span {
 
+/// A table's Z at one clamp velocity amplitude, and its change along ln v there: the
+/// interpolant's own derivative (zero where Z is held beyond the nodes).
+struct TableImpedance {
+  std::complex<double> z;      ///< N s/m
+  std::complex<double> slope;  ///< dZ / d(ln v), N s/m
+};
+
 struct ImpedanceTableOptions {
   double velocity_min = 1e-3;  ///< m/s, lowest node
   double velocity_max = 3.0;   ///< m/s, highest node
@@ -56,6 +63,9 @@ class ImpedanceTable {
   /// none where fewer than two nodes of that frequency converged, or v lies between
   /// two converged nodes with a failed node between them.
   std::optional<std::complex<double>> at(std::size_t i, double velocity) const;
+  /// at(i, velocity) with its slope dZ/d(ln v): exact for the interpolant (the
+  /// fixed points' Newton steps on the table take it).
+  std::optional<TableImpedance> at_with_slope(std::size_t i, double velocity) const;
   /// Nodes that did not converge, of all.
   int failed_nodes() const { return failed_; }
   int nodes() const { return static_cast<int>(solved_.size() * velocities_.size()); }
@@ -75,7 +85,7 @@ class ImpedanceTable {
   };
   static Column make_column(const std::vector<double>& log_v, const std::vector<std::optional<std::complex<double>>>& z);
 
-  std::optional<std::complex<double>> column_at(std::size_t column, double velocity) const;
+  std::optional<TableImpedance> column_at(std::size_t column, double velocity) const;
 
   std::vector<double> frequencies_;
   std::vector<double> velocities_;

@@ -81,4 +81,44 @@ EndResponseTangent end_response_tangent(const StringWave& wave, const std::vecto
                                         const std::vector<std::complex<double>>& direction, double antinode,
                                         const EndAttachments& attachments = {});
 
+/// One end's chain at one frequency with its stretches' transfers (cos k d, sin k d)
+/// worked out once: a balance asks for the same end's response at hundreds of
+/// impedances and amplitudes. response() and tangent() are end_response and
+/// end_response_tangent; displacements() and log_displacement_jacobian() are the
+/// fixed point's hot path, into the caller's buffers, without allocating.
+class EndChain {
+ public:
+  EndChain(const StringWave& wave, const std::vector<double>& positions, const EndAttachments& attachments = {});
+
+  const StringWave& wave() const { return wave_; }
+  std::size_t dampers() const { return positions_.size(); }
+  const std::vector<double>& positions() const { return positions_; }
+
+  EndResponse response(const std::vector<std::complex<double>>& impedances, double antinode) const;
+  EndResponseTangent tangent(const std::vector<std::complex<double>>& impedances,
+                             const std::vector<std::complex<double>>& direction, double antinode) const;
+  /// Y_j at every damper (`out`, dampers() of them) at antinode amplitude `antinode`.
+  void displacements(const std::complex<double>* impedances, double antinode, std::complex<double>* out) const;
+  /// d ln|Y_j| / d s_m for a change dZ_m = `slopes`[m] ds_m of damper m's impedance
+  /// alone, every j and m: `out`[j * n + m] (n = dampers(); 0 for a damper at a node).
+  /// It does not depend on the antinode amplitude.
+  void log_displacement_jacobian(const std::complex<double>* impedances, const std::complex<double>* slopes,
+                                 double* out) const;
+
+ private:
+  enum class Kind { split, mass, damper };
+  struct Step {
+    Kind kind;
+    std::size_t index;        ///< the split's, mass's or damper's
+    double cos_kd, sin_kd;    ///< the transfer over the stretch before it
+    std::complex<double> jk_ratio;  ///< j k Z / Z0 of a mass (a damper's comes with its Z)
+  };
+  /// (y, slope) carried over the stretch before `step`.
+  void propagate(const Step& step, std::complex<double>& y, std::complex<double>& slope) const;
+
+  StringWave wave_;
+  std::vector<double> positions_;  ///< the dampers', m from the end
+  std::vector<Step> steps_;
+};
+
 }  // namespace stockbridge::span

@@ -16,6 +16,8 @@
 #include "stockbridge/span/balance.hpp"
 #include "stockbridge/span/fatigue.hpp"
 #include "stockbridge/span/position_search.hpp"
+#include "stockbridge/span/travelling_wave.hpp"
+#include "stockbridge/span/undamped.hpp"
 #include "support/damper_fixtures.hpp"
 #include "support/test_scale.hpp"
 
@@ -239,6 +241,40 @@ TEST(SpanBalance, OneDamperPerEndIsAsBeforeTheSystemSolve) {
     ASSERT_TRUE(b.points[i].converged()) << brief_report(b.points[i].summary);
     expect_relative(b.points[i].amplitude, amplitude[i], 1e-6);
     expect_relative(b.points[i].dampers[0].clamp_velocity, velocity[i], 1e-6);
+  }
+}
+
+// Below its table's lowest node a damper's Z is held there: where every damper is
+// that slow, the ends are linear and the balance (which then takes the powers in
+// proportion to the amplitude instead of solving the ends again) is the root of
+// P_w - P_s - c Y^2 of the string with those impedances, c from the travelling waves.
+TEST(SpanBalance, DampersSlowerThanTheirTablesLowestNodeBalanceAsALinearString) {
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}});
+  const std::vector<double> f = damper::log_spaced(6.0, 40.0, 6);
+  BalanceOptions options;
+  options.polish = false;
+  options.table.velocity_min = 0.5;  // Z held below 0.5 m/s: everywhere in this balance
+  options.table.velocity_max = 0.6;
+  options.table.velocities = 2;
+  const SpanTables tables(span, f, options.table);
+  const SpanBalance b = run_balance(span, tables, options);
+  const Conductor& c = span.conductor();
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    SCOPED_TRACE(f[i]);
+    ASSERT_TRUE(b.points[i].converged()) << brief_report(b.points[i].summary);
+    ASSERT_LT(b.points[i].dampers[0].clamp_velocity, 0.5);
+    const double w = 2.0 * std::numbers::pi * f[i];
+    const StringWave wave{w, wavenumber(c, span.tension(), f[i]), wave_impedance(c, span.tension())};
+    const std::complex<double> z = *tables.tables()[0].at(i, 0.1);
+    const double per_square = 2.0 * end_response(wave, {1.0}, {z}, 1.0).absorbed_power;
+    const auto net = [&](double y) {
+      return span.wind().power(y, f[i], c.diameter, span.length()) -
+             span.self_damping().power(y, f[i], c, span.tension(), span.length()) - per_square * y * y;
+    };
+    const StableRoot linear = smallest_stable_root(net, options.amplitude_min_over_diameter * c.diameter,
+                                                   options.amplitude_max_over_diameter * c.diameter, options.root);
+    ASSERT_TRUE(linear.converged());
+    expect_relative(b.points[i].amplitude, linear.amplitude, 1e-9);
   }
 }
 

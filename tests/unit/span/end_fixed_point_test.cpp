@@ -81,5 +81,30 @@ TEST(EndFixedPoint, AnUnknownImpedanceIsAFailureNotANumber) {
   EXPECT_NE(brief_report(s.summary).find("damper 1"), std::string::npos) << brief_report(s.summary);
 }
 
+// The balance hands the fixed point the impedances' slopes (the table's own): the
+// velocities are those found with central differences of Z, and Newton's steps on
+// the exact Jacobian close on them in a few evaluations of the response.
+TEST(EndFixedPoint, GivenSlopesTheSameVelocitiesInAFewSteps) {
+  const std::vector<double> positions{0.8, 1.6, 2.9};
+  const ClampImpedance z = [](std::size_t j, double v) { return std::optional<std::complex<double>>(softening(v) * (1.0 + 0.3 * j)); };
+  const ClampImpedanceSlope slope = [](std::size_t j, double v) {
+    // d softening / d ln v = v d softening / dv
+    const double d = v * 0.05 / ((v + 0.05) * (v + 0.05));
+    return std::optional<TableImpedance>(TableImpedance{softening(v) * (1.0 + 0.3 * j), (200.0 * d - 120.0 * d * 1i) * (1.0 + 0.3 * j)});
+  };
+  for (const double f : {8.0, 20.0, 45.0}) {
+    const EndChain chain(wave_at(f), positions);
+    for (const double antinode : {1e-4, 3e-3, 2e-2}) {
+      const EndSolution exact = solve_end(chain, z, slope, antinode, {});
+      const EndSolution differenced = solve_end(chain, z, {}, antinode, {});
+      ASSERT_TRUE(exact.converged() && differenced.converged());
+      EXPECT_LE(exact.summary.evaluations, 8) << f << " Hz, " << antinode << " m";
+      for (std::size_t j = 0; j < positions.size(); ++j) {
+        EXPECT_NEAR(exact.velocities[j], differenced.velocities[j], 1e-9 * exact.velocities[j]);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace stockbridge::span

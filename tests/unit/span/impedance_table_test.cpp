@@ -60,5 +60,35 @@ TEST(ImpedanceTableColumns, InterpolateLinearlyInLogFrequencyBetweenTheSolvedOne
   EXPECT_THROW(table.at(7, 0.1), std::out_of_range);
 }
 
+// The span's fixed point takes dZ/d(ln v) from the table: the interpolant's own
+// derivative, against central differences of at(), at a solved and an interpolated
+// frequency; zero where Z is held beyond the nodes.
+TEST(ImpedanceTableColumns, GiveTheSlopeOfTheirInterpolant) {
+  const damper::Damper damper =
+      stockbridge::testing::damper_of({stockbridge::testing::sauter_arm(), stockbridge::testing::sauter_arm()});
+  const std::vector<double> f = damper::log_spaced(10.0, 14.0, 7);
+  ImpedanceTableOptions options;
+  options.velocities = 5;
+  options.column_ratio = 1.12;
+  const ImpedanceTable table(damper, f, options);
+  for (const std::size_t i : {0u, 3u}) {
+    for (const double v : {0.0021, 0.013, 0.05, 0.31, 1.7}) {
+      SCOPED_TRACE(::testing::Message() << f[i] << " Hz, " << v << " m/s");
+      const auto at = table.at_with_slope(i, v);
+      ASSERT_TRUE(at);
+      EXPECT_EQ(at->z, *table.at(i, v));
+      const double h = 1e-6;
+      const std::complex<double> difference = (*table.at(i, v * std::exp(h)) - *table.at(i, v * std::exp(-h))) / (2.0 * h);
+      EXPECT_NEAR(std::abs(at->slope - difference), 0.0, 1e-6 * std::max(1.0, std::abs(difference)));
+      EXPECT_GT(std::abs(at->slope), 0.0);
+    }
+    for (const double v : {1e-4, 10.0}) {  // below the lowest node and above the highest: held
+      const auto at = table.at_with_slope(i, v);
+      ASSERT_TRUE(at);
+      EXPECT_EQ(at->slope, std::complex<double>(0.0));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace stockbridge::span

@@ -140,5 +140,43 @@ TEST(TravellingWave, TheTangentIsTheDifferenceQuotientOfTheResponse) {
   }
 }
 
+// The balance's fixed point takes its Newton steps on this: a chain made once gives
+// end_response's displacements, and every column of its Jacobian d ln|Y_j| / d s_m
+// (dZ_m = slope_m ds_m) is end_response_tangent along that damper alone, with a
+// mass in the chain.
+TEST(TravellingWave, AChainsJacobianIsTheTangentAlongEachDamper) {
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 30; ++trial) {
+    const StringWave wave = aster_wave(5.0 + 40.0 * u(random));
+    RandomEnd end = random_end(random, trial, 1.5, 300.0, 400.0);
+    for (std::complex<double>& zj : end.z) zj += 50.0;
+    EndAttachments masses;
+    masses.mass_positions = {0.5 * end.positions.back() + 0.3, end.positions.back() + 4.0};
+    masses.masses = {8.0, 15.0};
+    const double antinode = 0.01;
+    const std::size_t n = end.z.size();
+    const EndChain chain(wave, end.positions, masses);
+    const EndResponse r = end_response(wave, end.positions, end.z, antinode, masses);
+    std::vector<std::complex<double>> y(n), slopes;
+    chain.displacements(end.z.data(), antinode, y.data());
+    for (std::size_t j = 0; j < n; ++j) {
+      EXPECT_NEAR(std::abs(y[j] - r.damper_displacement[j]), 0.0, 1e-14 * std::abs(r.damper_displacement[j])) << trial;
+      slopes.emplace_back(u(random) - 0.5, u(random) - 0.5);
+    }
+    std::vector<double> jacobian(n * n);
+    chain.log_displacement_jacobian(end.z.data(), slopes.data(), jacobian.data());
+    for (std::size_t m = 0; m < n; ++m) {
+      std::vector<std::complex<double>> direction(n, 0.0);
+      direction[m] = slopes[m];
+      const EndResponseTangent t = end_response_tangent(wave, end.positions, end.z, direction, antinode, masses);
+      for (std::size_t j = 0; j < n; ++j) {
+        EXPECT_NEAR(jacobian[j * n + m], t.log_displacement[j], 1e-12 * std::max(1.0, std::abs(t.log_displacement[j])))
+            << trial << ": damper " << j << " along " << m;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace stockbridge::span
