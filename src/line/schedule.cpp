@@ -157,9 +157,22 @@ Candidate searched_candidate(const Line& line, std::size_t index, std::size_t ty
   const span::PositionSearch found = span::optimise_positions(trial, *tables, s.balance, rules.positions, stop);
   if (stop && stop()) throw Interrupted("the schedule was stopped");
   // The search gives every damper's position, the ends' first (with_arrangement's order).
-  const auto ends = found.positions.begin() + static_cast<std::ptrdiff_t>(arrangement.positions.size());
-  arrangement.positions = rounded_positions({found.positions.begin(), ends}, rules);
-  Candidate c = polished_candidate(line, index, type, std::move(arrangement), cache);
+  const auto end_positions = [&](const std::vector<double>& positions) {
+    const auto ends = positions.begin() + static_cast<std::ptrdiff_t>(arrangement.positions.size());
+    return rounded_positions({positions.begin(), ends}, rules);
+  };
+  Arrangement best = arrangement;
+  best.positions = end_positions(found.positions);
+  Candidate c = polished_candidate(line, index, type, best, cache);
+  // Unsafe once polished: the other local searches' bests, which the tables' error
+  // may have ranked below it, polished in turn until one is safe.
+  for (const std::vector<double>& other : found.runners_up) {
+    Arrangement next = arrangement;
+    next.positions = end_positions(other);
+    if (next.positions == c.arrangement.positions) continue;
+    Candidate d = polished_candidate(line, index, type, std::move(next), cache);
+    if (d.safe != c.safe ? d.safe : d.objective < c.objective) c = std::move(d);
+  }
   c.balances = found.balances;
   return c;
 }

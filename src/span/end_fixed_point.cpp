@@ -252,13 +252,14 @@ EndSolution solve_end(const EndChain& chain, const ClampImpedance& impedance, co
   EndProblem problem(chain, impedance, slope, antinode, options);
   EndSolution out;
   std::vector<double>& v = out.velocities;
-  v = std::move(start);
-  if (v.size() != chain.dampers()) {
-    v.clear();
+  // The undamped string's velocities, w Y |sin(k a_j)|, where no start is given.
+  if (start.size() != chain.dampers()) {
+    start.clear();
     for (const double a : chain.positions()) {
-      v.push_back(std::max(wave.angular_frequency * antinode * std::abs(std::sin(wave.wavenumber * a)), options.velocity_floor));
+      start.push_back(std::max(wave.angular_frequency * antinode * std::abs(std::sin(wave.wavenumber * a)), options.velocity_floor));
     }
   }
+  v = std::move(start);
   SolverSummary& summary = out.summary;
   const auto fail = [&](Termination termination, std::string where) {
     summary.termination = termination;
@@ -266,17 +267,19 @@ EndSolution solve_end(const EndChain& chain, const ClampImpedance& impedance, co
     summary.evaluations = problem.evaluations();
     return out;
   };
-  std::vector<double> newton = v;
-  bool solved = problem.solve_newton(newton, summary.residual);
-  if (solved) v = std::move(newton);
-  if (!solved && v.size() >= 2) {
-    const numerics::NonlinearSystemResult system = problem.solve_system(v);
-    if (system.summary.converged()) {
-      for (std::size_t j = 0; j < v.size(); ++j) v[j] = std::exp(system.x[static_cast<Eigen::Index>(j)]);
-      summary.residual = system.summary.residual;
-      solved = true;
-    }
-  }
+  // Newton's method, then Powell's (several dampers).
+  const auto solve_from = [&](std::vector<double> from) {
+    if (problem.solve_newton(from, summary.residual)) return std::optional(std::move(from));
+    if (from.size() < 2) return std::optional<std::vector<double>>();
+    const numerics::NonlinearSystemResult system = problem.solve_system(from);
+    if (!system.summary.converged()) return std::optional<std::vector<double>>();
+    for (std::size_t j = 0; j < from.size(); ++j) from[j] = std::exp(system.x[static_cast<Eigen::Index>(j)]);
+    summary.residual = system.summary.residual;
+    return std::optional(std::move(from));
+  };
+  std::optional<std::vector<double>> found = solve_from(v);
+  bool solved = found.has_value();
+  if (found) v = std::move(*found);
   // One damper, or several one at a time (Gauss-Seidel sweeps) where the system solve failed.
   double change = 0.0;
   for (int sweep = 1; !solved && sweep <= options.max_sweeps; ++sweep) {

@@ -313,12 +313,16 @@ EndSolution FrequencyBalance::end(std::size_t e, double y) const {
     return tables_.tables()[layout.damper[j]].at_with_slope(index_, v);
   };
   // From the last amplitude's velocities in proportion (where the impedances hold
-  // still, the fixed point itself).
-  std::vector<double> start = last_velocities_[e];
+  // still, the fixed point itself); where that finds none (past a fold of the
+  // dampers' velocities), from the last amplitude's velocities themselves.
+  const std::vector<double>& last = last_velocities_[e];
   if (last_amplitude_[e] > 0.0) {
-    for (double& v : start) v *= y / last_amplitude_[e];
+    std::vector<double> scaled = last;
+    for (double& v : scaled) v *= y / last_amplitude_[e];
+    EndSolution s = solve_end(chains_[e], z, with_slope, y, options_.fixed_point, std::move(scaled));
+    if (s.converged()) return s;
   }
-  return solve_end(chains_[e], z, with_slope, y, options_.fixed_point, std::move(start));
+  return solve_end(chains_[e], z, with_slope, y, options_.fixed_point, last);
 }
 
 bool FrequencyBalance::all_fixed(std::size_t e) const {

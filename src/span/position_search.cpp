@@ -115,14 +115,32 @@ class PositionObjectiveRun {
       best_.max_stress_fymax = b.summary.max_stress_fymax;
       best_sorted_ = sorted;
     }
+    if (spaced && value < basin_.first) basin_ = {value, sorted};
     return value;
+  }
+
+  /// A local search begins: its best is kept apart from the others'.
+  void begin_basin(const std::vector<double>& start, double value) { basin_ = {value, start}; }
+  /// The best of the local search that just ended.
+  void end_basin() {
+    if (std::isfinite(basin_.first)) basins_.push_back(basin_);
   }
 
   PositionSearch result() const {
     PositionSearch out = best_;
     for (const SpanDamper& d : span_.dampers()) out.positions.push_back(d.position);
     if (best_sorted_.empty()) return out;  // no arrangement converged: the span's own
-    for (std::size_t k = 0; k < order_.size(); ++k) out.positions[order_[k]] = best_sorted_[k];
+    const auto placed = [&](const std::vector<double>& sorted) {
+      std::vector<double> positions = out.positions;
+      for (std::size_t k = 0; k < order_.size(); ++k) positions[order_[k]] = sorted[k];
+      return positions;
+    };
+    std::vector<std::pair<double, std::vector<double>>> others = basins_;
+    std::stable_sort(others.begin(), others.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [value, sorted] : others) {
+      if (sorted != best_sorted_) out.runners_up.push_back(placed(sorted));
+    }
+    out.positions = placed(best_sorted_);
     return out;
   }
   const std::vector<double>& best_sorted() const { return best_sorted_; }
@@ -138,6 +156,8 @@ class PositionObjectiveRun {
   UndampedFigures undamped_;  ///< the same for every arrangement
   PositionSearch best_;
   std::vector<double> best_sorted_;
+  std::pair<double, std::vector<double>> basin_{std::numeric_limits<double>::infinity(), {}};  ///< this local search's best
+  std::vector<std::pair<double, std::vector<double>>> basins_;  ///< each finished local search's best
 };
 
 /// One damper: a scan for the best basin (the objective over the position has a
@@ -294,7 +314,9 @@ PositionSearch optimise_positions(const Span& span, const SpanTables& tables, co
   std::stable_sort(starts.begin(), starts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::size_t s = 0; s < static_cast<std::size_t>(rules.local_searches) && s < starts.size(); ++s) {
     if (!std::isfinite(starts[s].first)) break;
+    run.begin_basin(starts[s].second, starts[s].first);
     search_locally(run, rules, starts[s].second);
+    run.end_basin();
   }
   return run.result();
 }

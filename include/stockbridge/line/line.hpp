@@ -42,7 +42,7 @@ inline span::PositionRules line_position_rules() {
   span::PositionRules rules;
   rules.scan_points = 21;
   rules.max_evaluations = 40;
-  rules.local_searches = 1;
+  rules.local_searches = 2;
   return rules;
 }
 

@@ -43,6 +43,11 @@ struct PositionSearch {
   double objective = 0.0;         ///< at `positions`, on the tables alone
   double max_stress_fymax = 0.0;  ///< Pa, the same
   int balances = 0;               ///< balance runs made
+  /// Several dampers: the best arrangement of each other local search (every
+  /// damper's positions, span order), best first. On the tables alone two basins'
+  /// objectives can rank otherwise than their polished balances do: a caller may
+  /// balance these too.
+  std::vector<std::vector<double>> runners_up;
 };
 
 /// The objective of a balance: +inf where a point did not converge (or, for the
