@@ -164,8 +164,8 @@ Candidate searched_candidate(const Line& line, std::size_t index, std::size_t ty
   Arrangement best = arrangement;
   best.positions = end_positions(found.positions);
   Candidate c = polished_candidate(line, index, type, best, cache);
-  // Unsafe once polished: the other local searches' bests, which the tables' error
-  // may have ranked below it, polished in turn until one is safe.
+  // The other local searches' bests polished too: the tables' error can rank two
+  // basins otherwise than their polished balances do. The better kept (safe first).
   for (const std::vector<double>& other : found.runners_up) {
     Arrangement next = arrangement;
     next.positions = end_positions(other);
