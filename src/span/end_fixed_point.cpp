@@ -58,7 +58,6 @@ class EndProblem {
   /// tolerance (true), else false (the caller goes on from its own start).
   bool solve_newton(std::vector<double>& v, double& residual);
 
-  std::size_t size() const { return chain_.dampers(); }
   int evaluations() const { return evaluations_; }
   const std::string& unknown() const { return unknown_; }
 

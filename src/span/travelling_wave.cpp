@@ -169,18 +169,24 @@ EndResponse EndChain::response(const std::vector<std::complex<double>>& impedanc
   return r;
 }
 
-void EndChain::displacements(const std::complex<double>* impedances, double antinode, std::complex<double>* out) const {
+void EndChain::unit_wave(const std::complex<double>* impedances, std::complex<double>* at, std::complex<double>& y,
+                         std::complex<double>& slope) const {
   const std::complex<double> jk(0.0, wave_.wavenumber);
-  std::complex<double> y = 0.0, slope = 1.0;
+  y = 0.0, slope = 1.0;
   for (const Step& step : steps_) {
     propagate(step, y, slope);
     if (step.kind == Kind::mass) slope += step.jk_ratio * y;
     if (step.kind == Kind::damper) {
-      out[step.index] = y;
+      at[step.index] = y;
       slope += jk * (impedances[step.index] / wave_.wave_impedance) * y;
     }
   }
-  const double scale = antinode / local_antinode(y, slope, jk);
+}
+
+void EndChain::displacements(const std::complex<double>* impedances, double antinode, std::complex<double>* out) const {
+  std::complex<double> y, slope;
+  unit_wave(impedances, out, y, slope);
+  const double scale = antinode / local_antinode(y, slope, std::complex<double>(0.0, wave_.wavenumber));
   for (std::size_t j = 0; j < positions_.size(); ++j) out[j] *= scale;
 }
 
@@ -193,15 +199,8 @@ void EndChain::log_displacement_jacobian(const std::complex<double>* impedances,
   std::array<std::complex<double>, 8> local{};
   std::vector<std::complex<double>> heap(n > local.size() ? n : 0);
   std::complex<double>* at = n > local.size() ? heap.data() : local.data();
-  std::complex<double> y = 0.0, slope = 1.0;
-  for (const Step& step : steps_) {
-    propagate(step, y, slope);
-    if (step.kind == Kind::mass) slope += step.jk_ratio * y;
-    if (step.kind == Kind::damper) {
-      at[step.index] = y;
-      slope += jk * (impedances[step.index] / z0) * y;
-    }
-  }
+  std::complex<double> y, slope;
+  unit_wave(impedances, at, y, slope);
   const std::complex<double> b = 0.5 * (y + slope / jk), a = 0.5 * (y - slope / jk);
   const double sum = std::abs(a) + std::abs(b);
   // Damper m's impedance moves the wave from its own place on: the tangent is zero

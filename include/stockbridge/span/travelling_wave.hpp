@@ -113,6 +113,10 @@ class EndChain {
     double cos_kd, sin_kd;    ///< the transfer over the stretch before it
     std::complex<double> jk_ratio;  ///< j k Z / Z0 of a mass (a damper's comes with its Z)
   };
+  /// The wave of unit slope at the clamp: Y_j at every damper into `at`, and (y, slope)
+  /// past the last attachment.
+  void unit_wave(const std::complex<double>* impedances, std::complex<double>* at, std::complex<double>& y,
+                 std::complex<double>& slope) const;
   /// (y, slope) carried over the stretch before `step`.
   void propagate(const Step& step, std::complex<double>& y, std::complex<double>& slope) const;
 
