@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "input_files.hpp"
+#include "journal_file.hpp"
 #include "option_parsing.hpp"
 #include "progress.hpp"
 #include "report_output.hpp"
@@ -59,6 +60,36 @@ requests::SweepRequest sweep_request(const ImpedanceOptions& options) {
   return request;
 }
 
+/// The sweep's rows written to `output` as they are final (a temporary file renamed
+/// at the end), its summary figures running; the points themselves kept only for a
+/// report. Throws Interrupted at Ctrl-C (the temporary file removed).
+struct StreamedSweep {
+  requests::SweepSummary summary;
+  std::vector<damper::SweepRun> runs;  ///< empty unless kept for the report
+};
+StreamedSweep stream_to_csv(const damper::Damper& damper, const damper::SweepSpec& spec, const std::string& output,
+                            bool keep_points, ProgressReport& progress) {
+  StreamedSweep sweep;
+  if (keep_points) {
+    for (const double amplitude : spec.amplitudes) sweep.runs.push_back({amplitude, {}});
+  }
+  const requests::Table<damper::ImpedancePoint> table = requests::impedance_table(damper);
+  io::AtomicFileWriter file(output);
+  file.write(table.values(std::vector<const damper::ImpedancePoint*>{}).csv());
+  const InterruptRequest interrupt;
+  damper::stream_sweep(
+      damper, spec,
+      [&](std::size_t a, std::size_t, damper::ImpedancePoint&& point) {
+        if (InterruptRequest::requested()) throw Interrupted("the sweep was stopped");
+        file.write(table.values(point).csv(false));
+        sweep.summary.add(spec.amplitudes[a], point);
+        if (keep_points) sweep.runs[a].points.push_back(std::move(point));
+      },
+      std::ref(progress));
+  file.commit();
+  return sweep;
+}
+
 int run_impedance_command(const ImpedanceOptions& options, Invocation& invocation) {
   const requests::SweepRequest request = sweep_request(options);
   const damper::SweepSpec spec = requests::sweep_spec(request);
@@ -69,27 +100,25 @@ int run_impedance_command(const ImpedanceOptions& options, Invocation& invocatio
   warn_unusual_options(invocation, requests::unusual_values(request), slip_policy(options.allow_unusual));
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress(invocation, "impedance", options.quiet);
-  const std::vector<damper::SweepRun> runs = damper::run_sweep(damper, spec, std::ref(progress));
+  std::optional<StreamedSweep> streamed;
+  try {
+    streamed.emplace(stream_to_csv(damper, spec, options.output, options.report.has_value(), progress));
+  } catch (const Interrupted&) {
+    fmt::print(stderr, "impedance: interrupted; nothing written\n");
+    return kInterrupted;
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::string report;
   if (options.report) {
     const requests::ModesResult modes = requests::run_modes(damper);
-    report = report::impedance_report({std::filesystem::path(options.damper_file).stem().string(), &damper, &runs,
-                                       spec.constant_displacement, &modes},
-                                      invocation.report_context());
+    io::write_file_atomically(
+        *options.report, report::impedance_report({std::filesystem::path(options.damper_file).stem().string(), &damper,
+                                                   &streamed->runs, spec.constant_displacement, &modes},
+                                                  invocation.report_context()));
   }
-  io::write_file_atomically(options.output, requests::impedance_table(damper).values(requests::sweep_points(runs)).csv());
-  if (options.report) io::write_file_atomically(*options.report, report);
 
-  const requests::SweepTally tally = requests::tally(runs);
-  std::vector<std::string> failures;
-  for (const damper::SweepRun& run : runs) {
-    for (const damper::ImpedancePoint& p : run.points) {
-      if (!p.converged()) failures.push_back(fmt::format("  f = {:.4g} Hz, amplitude {}: {}", p.frequency_hz, run.amplitude, p.failure));
-    }
-  }
+  const requests::SweepTally& tally = streamed->summary.tally();
   const int failed = tally.points - tally.converged;
-  if (options.json) fmt::print("{}\n", requests::sweep_summary(runs, options.solver.method(), seconds).str());
+  if (options.json) fmt::print("{}\n", streamed->summary.json(options.solver.method(), seconds).str());
   fmt::print(stderr, "impedance: {} points ({} method) in {:.2f} s, {} converged, largest energy error {}{}\n", tally.points,
              options.solver.method(), seconds, tally.converged,
              tally.max_energy_error ? fmt::format("{:.2g}", *tally.max_energy_error) : "none (no point converged)",
@@ -97,7 +126,11 @@ int run_impedance_command(const ImpedanceOptions& options, Invocation& invocatio
   if (failed == 0) return kSuccess;
   fmt::print(stderr, "impedance: {} points did not converge (converged = 0, numbers left empty in {}):\n", failed,
              options.output);
-  for (std::size_t i = 0; i < failures.size() && i < 10; ++i) fmt::print(stderr, "{}\n", failures[i]);
+  const std::vector<requests::SweepSummary::Failure>& failures = streamed->summary.failures();
+  for (std::size_t i = 0; i < failures.size() && i < 10; ++i) {
+    fmt::print(stderr, "  f = {:.4g} Hz, amplitude {}: {}\n", failures[i].frequency_hz, failures[i].amplitude,
+               failures[i].reason);
+  }
   if (failures.size() > 10) fmt::print(stderr, "  ... and {} more\n", failures.size() - 10);
   return kNotConverged;
 }

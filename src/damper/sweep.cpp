@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <mutex>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -76,9 +78,9 @@ std::vector<Block> cut_into_blocks(const SweepSpec& spec, std::size_t distinct_a
 
 /// One arm's continuation over a block: from a cold start kWarmUp frequencies
 /// before it (where there are), as the sweep itself would arrive, the warm-up's
-/// solutions discarded.
-void continue_arm(const Arm& arm, const SweepSpec& spec, const Block& block, std::vector<ArmSolution>& solutions,
-                  const std::function<void()>& tick) {
+/// solutions discarded. Each block frequency's solution goes to `deliver(i, solution)`.
+void continue_arm(const Arm& arm, const SweepSpec& spec, const Block& block,
+                  const std::function<void(std::size_t, ArmSolution&&)>& deliver) {
   constexpr std::size_t kWarmUp = 1;
   ArmTracker tracker(arm, spec.solver, spec.constant_displacement ? HeldAmplitude::displacement : HeldAmplitude::velocity);
   const double amplitude = spec.amplitudes[block.amplitude];
@@ -86,77 +88,130 @@ void continue_arm(const Arm& arm, const SweepSpec& spec, const Block& block, std
     tracker.solve(spec.excitation(spec.frequencies[i], amplitude));
   }
   for (std::size_t i = block.begin; i < block.end; ++i) {
-    solutions[i] = tracker.solve(spec.excitation(spec.frequencies[i], amplitude));
-    tick();
+    deliver(i, tracker.solve(spec.excitation(spec.frequencies[i], amplitude)));
   }
 }
 
-/// Flags both ends of every interval where an arm's Jacobian sign changes.
-void flag_folds(const std::vector<ArmSolution>& arm, const std::string& arm_label, std::vector<ImpedancePoint>& points) {
-  for (std::size_t i = 1; i < arm.size(); ++i) {
-    const int a = arm[i - 1].jacobian_sign, b = arm[i].jacobian_sign;
-    if (a != 0 && b != 0 && a != b) {
-      const std::string note = fmt::format("{}: the response curve folds between {:.4g} and {:.4g} Hz "
-                                           "(Jacobian determinant changes sign): several steady states coexist",
-                                           arm_label, points[i - 1].frequency_hz, points[i].frequency_hz);
-      for (const std::size_t k : {i - 1, i}) {
-        if (!points[k].converged()) continue;
-        points[k].non_unique = true;
-        if (points[k].note.empty()) points[k].note = note;
+/// The note of a fold between frequencies f1 and f2 of an arm.
+std::string fold_note(const std::string& arm_label, double f1, double f2) {
+  return fmt::format("{}: the response curve folds between {:.4g} and {:.4g} Hz "
+                     "(Jacobian determinant changes sign): several steady states coexist",
+                     arm_label, f1, f2);
+}
+
+/// Two Jacobian signs that differ (neither unknown): the curve folds between them.
+bool folds(int a, int b) { return a != 0 && b != 0 && a != b; }
+
+/// The points of a sweep made final in their order, from arm solutions that arrive
+/// in any order: point (a, i) is combined once every distinct arm's solution at i
+/// is in, and handed on once those at i + 1 are too (a fold between i and i + 1
+/// flags it). Only the solutions of points not yet handed on are held, so memory
+/// follows the threads' spread over the blocks, not the number of points.
+class OrderedPoints {
+ public:
+  OrderedPoints(const Damper& damper, const SweepSpec& spec, const SweepSink& sink)
+      : damper_(damper), spec_(spec), sink_(sink), distinct_(damper.distinct()),
+        pending_(spec.amplitudes.size() * distinct_.size()), previous_sign_(pending_.size(), 0),
+        task_column_(damper.arms().size()) {
+    for (std::size_t k = 0; k < task_column_.size(); ++k) {  // each arm's representative among the distinct
+      task_column_[k] = static_cast<std::size_t>(
+          std::find(distinct_.begin(), distinct_.end(), damper.representative()[k]) - distinct_.begin());
+    }
+  }
+
+  /// Takes the solution of distinct arm `column` at amplitude `a`, frequency `i`;
+  /// hands on every point this makes final. Not thread-safe (the caller serialises).
+  void add(std::size_t a, std::size_t column, std::size_t i, ArmSolution&& solution) {
+    pending_[a * distinct_.size() + column].emplace(i, std::move(solution));
+    while (amplitude_ < spec_.amplitudes.size() && ready(amplitude_, frequency_)) {
+      hand_on(amplitude_, frequency_);
+      if (++frequency_ == spec_.frequencies.size()) {
+        frequency_ = 0;
+        ++amplitude_;
       }
     }
   }
-}
+
+ private:
+  bool in(std::size_t a, std::size_t i) const {
+    for (std::size_t d = 0; d < distinct_.size(); ++d) {
+      if (!pending_[a * distinct_.size() + d].contains(i)) return false;
+    }
+    return true;
+  }
+  bool ready(std::size_t a, std::size_t i) const { return in(a, i) && (i + 1 == spec_.frequencies.size() || in(a, i + 1)); }
+
+  void hand_on(std::size_t a, std::size_t i) {
+    std::vector<const ArmSolution*> per_arm(task_column_.size());
+    for (std::size_t k = 0; k < per_arm.size(); ++k) per_arm[k] = &pending_[a * distinct_.size() + task_column_[k]].at(i);
+    ImpedancePoint point =
+        combine(damper_, spec_.excitation(spec_.frequencies[i], spec_.amplitudes[a]), per_arm, spec_.solver.energy_tolerance);
+    // The amplitude the user gave, as given (V = W X computed back may differ in the last bit).
+    (spec_.constant_displacement ? point.displacement_amplitude : point.velocity_amplitude) = spec_.amplitudes[a];
+    const std::vector<double>& f = spec_.frequencies;
+    for (std::size_t d = 0; d < distinct_.size(); ++d) {
+      std::map<std::size_t, ArmSolution>& arm = pending_[a * distinct_.size() + d];
+      const int sign = arm.at(i).jacobian_sign;
+      int& before = previous_sign_[a * distinct_.size() + d];
+      const std::string label = damper_.arm_label(distinct_[d]);
+      if (point.converged() && i > 0 && folds(before, sign)) flag(point, fold_note(label, f[i - 1], f[i]));
+      if (point.converged() && i + 1 < f.size() && folds(sign, arm.at(i + 1).jacobian_sign)) {
+        flag(point, fold_note(label, f[i], f[i + 1]));
+      }
+      before = i + 1 < f.size() ? sign : 0;
+      arm.erase(i);
+    }
+    sink_(a, i, std::move(point));
+  }
+  static void flag(ImpedancePoint& point, const std::string& note) {
+    point.non_unique = true;
+    if (point.note.empty()) point.note = note;
+  }
+
+  const Damper& damper_;
+  const SweepSpec& spec_;
+  const SweepSink& sink_;
+  const std::vector<std::size_t>& distinct_;
+  std::vector<std::map<std::size_t, ArmSolution>> pending_;  ///< per (amplitude, distinct arm): by frequency index
+  std::vector<int> previous_sign_;                           ///< per (amplitude, distinct arm): at the last point handed on
+  std::vector<std::size_t> task_column_;
+  std::size_t amplitude_ = 0, frequency_ = 0;  ///< the next point to hand on
+};
 
 }  // namespace
 
-std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, const SweepProgress& progress) {
+void stream_sweep(const Damper& damper, const SweepSpec& spec, const SweepSink& sink, const SweepProgress& progress) {
   spec.validate();
-  const std::vector<std::size_t>& distinct = damper.distinct();
-  const std::vector<Block> blocks = cut_into_blocks(spec, distinct.size());
-  // Per (amplitude, distinct arm): every frequency's solution.
-  std::vector<std::vector<ArmSolution>> results(spec.amplitudes.size() * distinct.size(),
-                                                std::vector<ArmSolution>(spec.frequencies.size()));
+  const std::size_t distinct = damper.distinct().size();
+  const std::vector<Block> blocks = cut_into_blocks(spec, distinct);
   // Progress in points (amplitude x frequency), not arm solves: a point is counted
   // once as many arm solves as it needs have been done in all.
   const int total_points = static_cast<int>(spec.amplitudes.size() * spec.frequencies.size());
-  std::mutex progress_mutex;
+  std::mutex mutex;
   std::size_t solves = 0;
   int reported = 0;
-  auto tick = [&] {
-    if (!progress) return;
-    const std::lock_guard<std::mutex> lock(progress_mutex);
-    const int points = static_cast<int>(++solves / distinct.size());
-    while (reported < points) progress(++reported, total_points);
-  };
+  OrderedPoints points(damper, spec, sink);
   parallel_for(blocks.size(), spec.threads, [&](std::size_t b) {
     const Block& block = blocks[b];
-    continue_arm(damper.arms()[distinct[block.task_column]], spec, block,
-                 results[block.amplitude * distinct.size() + block.task_column], tick);
+    continue_arm(damper.arms()[damper.distinct()[block.task_column]], spec, block,
+                 [&](std::size_t i, ArmSolution&& solution) {
+                   const std::lock_guard<std::mutex> lock(mutex);
+                   points.add(block.amplitude, block.task_column, i, std::move(solution));
+                   if (!progress) return;
+                   const int done = static_cast<int>(++solves / distinct);
+                   while (reported < done) progress(++reported, total_points);
+                 });
   });
+}
 
-  // Each arm's solutions: those of its representative among the distinct arms.
-  std::vector<std::size_t> task_column(damper.arms().size());
-  for (std::size_t k = 0; k < task_column.size(); ++k) {
-    task_column[k] = static_cast<std::size_t>(
-        std::find(distinct.begin(), distinct.end(), damper.representative()[k]) - distinct.begin());
-  }
+std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec, const SweepProgress& progress) {
   std::vector<SweepRun> runs(spec.amplitudes.size());
-  for (std::size_t a = 0; a < spec.amplitudes.size(); ++a) {
+  for (std::size_t a = 0; a < runs.size(); ++a) {
     runs[a].amplitude = spec.amplitudes[a];
-    for (std::size_t i = 0; i < spec.frequencies.size(); ++i) {
-      std::vector<const ArmSolution*> per_arm(task_column.size());
-      for (std::size_t k = 0; k < per_arm.size(); ++k) per_arm[k] = &results[a * distinct.size() + task_column[k]][i];
-      ImpedancePoint point =
-          combine(damper, spec.excitation(spec.frequencies[i], spec.amplitudes[a]), per_arm, spec.solver.energy_tolerance);
-      // The amplitude the user gave, as given (V = W X computed back may differ in the last bit).
-      (spec.constant_displacement ? point.displacement_amplitude : point.velocity_amplitude) = spec.amplitudes[a];
-      runs[a].points.push_back(std::move(point));
-    }
-    for (std::size_t d = 0; d < distinct.size(); ++d) {
-      flag_folds(results[a * distinct.size() + d], damper.arm_label(distinct[d]), runs[a].points);
-    }
+    runs[a].points.reserve(spec.frequencies.size());
   }
+  stream_sweep(damper, spec, [&](std::size_t a, std::size_t, ImpedancePoint&& point) { runs[a].points.push_back(std::move(point)); },
+               progress);
   return runs;
 }
 

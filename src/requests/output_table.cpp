@@ -24,13 +24,14 @@ const TableValues::Column& TableValues::column(std::string_view name) const {
   throw std::out_of_range(fmt::format("no column {}", name));
 }
 
-std::string TableValues::csv() const {
+std::string TableValues::csv(bool header) const {
   std::size_t labels = 0;
   while (labels < columns.size() && columns[labels].kind == ColumnKind::label) ++labels;
   for (std::size_t c = labels; c < columns.size(); ++c) {
     if (columns[c].kind == ColumnKind::label) throw std::logic_error("TableValues::csv: a label after a number");
   }
   io::CsvWriter csv(names());
+  const std::size_t header_size = header ? 0 : csv.text().size();
   std::vector<std::string> label_row(labels);
   std::vector<double> number_row(columns.size() - labels);
   for (std::size_t r = 0; r < rows; ++r) {
@@ -38,7 +39,7 @@ std::string TableValues::csv() const {
     for (std::size_t c = labels; c < columns.size(); ++c) number_row[c - labels] = columns[c].numbers[r];
     csv.add_row(label_row, number_row);
   }
-  return csv.text();
+  return csv.text().substr(header_size);
 }
 
 io::JsonObject TableValues::json_row(std::size_t r) const {

@@ -176,19 +176,48 @@ std::vector<std::string> arm_column_prefixes(const damper::Damper& damper) {
   return column_prefixes(names, "arm", {"dissipated", "shaker"});
 }
 
-SweepTally tally(const std::vector<damper::SweepRun>& runs) {
-  SweepTally t;
-  for (const damper::SweepRun& run : runs) {
-    for (const damper::ImpedancePoint& p : run.points) {
-      ++t.points;
-      t.non_unique += p.non_unique;
-      if (!p.converged()) continue;
-      ++t.converged;
-      t.max_energy_error = std::max(t.max_energy_error.value_or(0.0), p.energy_error);
-    }
+void SweepSummary::add(double amplitude, const damper::ImpedancePoint& p) {
+  ++tally_.points;
+  tally_.non_unique += p.non_unique;
+  if (!p.converged()) {
+    failures_.push_back({p.frequency_hz, amplitude, p.termination, p.failure});
+    return;
   }
-  return t;
+  ++tally_.converged;
+  tally_.max_energy_error = std::max(tally_.max_energy_error.value_or(0.0), p.energy_error);
 }
+
+io::JsonObject SweepSummary::json(std::string_view method, std::optional<double> seconds) const {
+  std::vector<io::JsonObject> failed;
+  for (const Failure& f : failures_) {
+    failed.push_back(io::JsonObject()
+                         .add("frequency_hz", f.frequency_hz)
+                         .add("amplitude", f.amplitude)
+                         .add("termination", std::string(termination_name(f.termination)))
+                         .add("reason", f.reason));
+  }
+  io::JsonObject json;
+  json.add("method", std::string(method))
+      .add("points", tally_.points)
+      .add("converged", tally_.converged)
+      .add("non_unique", tally_.non_unique)
+      .add("max_energy_error", tally_.max_energy_error.value_or(std::numeric_limits<double>::quiet_NaN()));  // null when none
+  if (seconds) json.add("seconds", *seconds);
+  json.add("failed", failed);
+  return json;
+}
+
+namespace {
+SweepSummary summary_of(const std::vector<damper::SweepRun>& runs) {
+  SweepSummary summary;
+  for (const damper::SweepRun& run : runs) {
+    for (const damper::ImpedancePoint& p : run.points) summary.add(run.amplitude, p);
+  }
+  return summary;
+}
+}  // namespace
+
+SweepTally tally(const std::vector<damper::SweepRun>& runs) { return summary_of(runs).tally(); }
 
 std::vector<const damper::ImpedancePoint*> sweep_points(const std::vector<damper::SweepRun>& runs) {
   std::vector<const damper::ImpedancePoint*> points;
@@ -210,27 +239,7 @@ Table<damper::ImpedancePoint> impedance_point_notes_table() {
 
 io::JsonObject sweep_summary(const std::vector<damper::SweepRun>& runs, std::string_view method,
                              std::optional<double> seconds) {
-  const SweepTally t = tally(runs);
-  std::vector<io::JsonObject> failed;
-  for (const damper::SweepRun& run : runs) {
-    for (const damper::ImpedancePoint& p : run.points) {
-      if (p.converged()) continue;
-      failed.push_back(io::JsonObject()
-                           .add("frequency_hz", p.frequency_hz)
-                           .add("amplitude", run.amplitude)
-                           .add("termination", std::string(termination_name(p.termination)))
-                           .add("reason", p.failure));
-    }
-  }
-  io::JsonObject json;
-  json.add("method", std::string(method))
-      .add("points", t.points)
-      .add("converged", t.converged)
-      .add("non_unique", t.non_unique)
-      .add("max_energy_error", t.max_energy_error.value_or(std::numeric_limits<double>::quiet_NaN()));  // null when none
-  if (seconds) json.add("seconds", *seconds);
-  json.add("failed", failed);
-  return json;
+  return summary_of(runs).json(method, seconds);
 }
 
 }  // namespace stockbridge::requests

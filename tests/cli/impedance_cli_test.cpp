@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
@@ -29,6 +30,40 @@ TEST(ImpedanceCli, SweepOfTheShippedExample) {
   EXPECT_EQ(lines[0].rfind("frequency_hz,velocity_m_s,re_z_n_s_m,im_z_n_s_m,abs_z_n_s_m,phase_deg,power_w,converged", 0), 0u);
   EXPECT_NE(r.out.find("\"converged\": 24"), std::string::npos) << r.out;
   EXPECT_NE(lines[1].find(",1,"), std::string::npos);  // converged
+}
+
+/// The hidden temporary file a streamed output is written to beside `output`, or
+/// an empty path while there is none.
+std::filesystem::path temporary_beside(const std::filesystem::path& dir, const std::string& output) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().filename().string().starts_with("." + output + ".tmp-")) return entry.path();
+  }
+  return {};
+}
+
+// The rows are written as they are final: a long sweep's temporary file grows while
+// it runs. Ctrl-C then ends it with status 130, the temporary file removed and no
+// output file: nothing partial is left.
+TEST(ImpedanceCli, RowsAreStreamedAndCtrlCLeavesNothing) {
+  const auto dir = scratch_directory("impedance-streamed");
+  std::filesystem::path seen;
+  const int status = run_cli_stopped_when(
+      "impedance '" + kDamperExample + "' --velocity 0.1 --points 1000000 -o z.csv --quiet", dir,
+      [&] {
+        const std::filesystem::path temporary = temporary_beside(dir, "z.csv");
+        std::error_code ec;
+        if (temporary.empty() || std::filesystem::file_size(temporary, ec) < 4096 || ec) return false;
+        seen = temporary;
+        return true;
+      },
+      SIGINT);
+  ASSERT_FALSE(seen.empty()) << "no rows in a temporary file within five minutes";
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << read_text(dir / "run.err");
+  EXPECT_NE(read_text(dir / "run.err").find("impedance: interrupted; nothing written"), std::string::npos)
+      << read_text(dir / "run.err");
+  EXPECT_FALSE(std::filesystem::exists(dir / "z.csv"));
+  EXPECT_TRUE(temporary_beside(dir, "z.csv").empty());
 }
 
 const std::vector<std::string> kAsymmetricFigures{"messenger_curvature_max_per_m", "long_power_w", "long_mass_amplitude_m",

@@ -5,6 +5,7 @@
 // ThreadSanitizer preset (`ctest --preset tsan`) runs the tests here with "Threads"
 // in their names.
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,36 @@ TEST(SweepThreads, ThreadsGiveExactlyTheSingleThreadResult) {
       ASSERT_EQ(parallel[a].points.size(), serial[a].points.size());
       for (std::size_t i = 0; i < serial[a].points.size(); ++i) expect_same_points(parallel[a].points[i], serial[a].points[i]);
     }
+  }
+}
+
+// The streamed sweep hands each point on once, in the runs' order (amplitude by
+// amplitude, each frequency in turn), on several threads too, with exactly the
+// gathered sweep's numbers and flags; a sink that throws stops the sweep and its
+// exception comes back, no point handed on after it.
+TEST(SweepThreads, StreamedPointsComeInOrderWithTheGatheredNumbers) {
+  const Damper damper = two_kinds_of_arm();
+  const std::vector<SweepRun> gathered = run_sweep(damper, spec_with_threads(1));
+  for (const int threads : {1, 2, 4}) {
+    SCOPED_TRACE(threads);
+    const SweepSpec spec = spec_with_threads(threads);
+    std::size_t next = 0;
+    stream_sweep(damper, spec, [&](std::size_t a, std::size_t i, ImpedancePoint&& point) {
+      EXPECT_EQ(a * spec.frequencies.size() + i, next++);
+      expect_same_points(point, gathered.at(a).points.at(i));
+    });
+    EXPECT_EQ(next, spec.amplitudes.size() * spec.frequencies.size());
+
+    int handed_on = 0;
+    try {
+      stream_sweep(damper, spec, [&](std::size_t, std::size_t, ImpedancePoint&&) {
+        if (++handed_on == 5) throw std::runtime_error("the sink stops");
+      });
+      ADD_FAILURE() << "the sink's exception did not come back";
+    } catch (const std::runtime_error& error) {
+      EXPECT_STREQ(error.what(), "the sink stops");
+    }
+    EXPECT_EQ(handed_on, 5);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -103,10 +104,10 @@ inline int journal_records(const std::filesystem::path& journal) {
 }
 
 /// Runs `stockbridge <arguments>` in `directory` in the background (stdout to
-/// run.log, stderr to run.err) and sends it `signal` once `journal` holds `records`
-/// records (within five minutes); its wait status.
-inline int run_cli_stopped(const std::string& arguments, const std::filesystem::path& directory,
-                           const std::filesystem::path& journal, int records, int signal) {
+/// run.log, stderr to run.err) and sends it `signal` once `ready()` holds (or five
+/// minutes have passed); its wait status.
+inline int run_cli_stopped_when(const std::string& arguments, const std::filesystem::path& directory,
+                                const std::function<bool()>& ready, int signal) {
   const std::string command = "cd '" + directory.string() + "' && exec '" + STOCKBRIDGE_CLI + "' " + arguments +
                               " > run.log 2> run.err";
   const pid_t pid = ::fork();
@@ -115,13 +116,19 @@ inline int run_cli_stopped(const std::string& arguments, const std::filesystem::
     ::_exit(127);
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
-  while (journal_records(journal) < records && std::chrono::steady_clock::now() < deadline) {
+  while (!ready() && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   ::kill(pid, signal);
   int status = 0;
   ::waitpid(pid, &status, 0);
   return status;
+}
+
+/// run_cli_stopped_when `journal` holds `records` records.
+inline int run_cli_stopped(const std::string& arguments, const std::filesystem::path& directory,
+                           const std::filesystem::path& journal, int records, int signal) {
+  return run_cli_stopped_when(arguments, directory, [&] { return journal_records(journal) >= records; }, signal);
 }
 
 }  // namespace stockbridge::testing

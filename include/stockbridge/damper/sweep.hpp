@@ -44,8 +44,21 @@ struct SweepRun {
 /// several distinct arms a point counts when as many arm solves as it needs are done.
 using SweepProgress = std::function<void(int, int)>;
 
-/// Runs every amplitude over every frequency. Never throws for non-convergence:
-/// such points have converged == false and a message.
+/// Called with each point as it is final, in the runs' order (each amplitude's
+/// frequencies in turn): (amplitude index, frequency index, the point); calls are
+/// serialised, never two at once.
+using SweepSink = std::function<void(std::size_t, std::size_t, ImpedancePoint&&)>;
+
+/// Runs every amplitude over every frequency, handing each point to `sink` as soon
+/// as it is final (a fold is flagged once its neighbour is in), in order. What it
+/// holds meanwhile is the points the threads have solved ahead of the first one not
+/// yet final: memory does not grow with the number of points. Never throws for
+/// non-convergence: such points have converged == false and a message. An
+/// exception `sink` throws stops the sweep and is rethrown.
+void stream_sweep(const Damper& damper, const SweepSpec& spec, const SweepSink& sink,
+                  const SweepProgress& progress = {});
+
+/// stream_sweep's points, gathered: one run per amplitude.
 std::vector<SweepRun> run_sweep(const Damper& damper, const SweepSpec& spec,
                                 const SweepProgress& progress = {});
 

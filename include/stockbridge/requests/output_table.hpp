@@ -78,8 +78,9 @@ struct TableValues {
   std::vector<std::string> names() const;
   /// The column of that name; std::out_of_range if there is none.
   const Column& column(std::string_view name) const;
-  /// The CSV text (io::CsvWriter: the label columns first, then the rest).
-  std::string csv() const;
+  /// The CSV text (io::CsvWriter: the label columns first, then the rest); without
+  /// its header row with `header` false (rows streamed to a file one by one).
+  std::string csv(bool header = true) const;
   /// Row r as a JSON object: a number (null where NaN), a count as an integer, a
   /// flag as true or false (null where NaN), a label as a string.
   io::JsonObject json_row(std::size_t r) const;

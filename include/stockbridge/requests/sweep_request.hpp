@@ -72,6 +72,29 @@ struct SweepTally {
 };
 SweepTally tally(const std::vector<damper::SweepRun>& runs);
 
+/// A sweep's summary built as its points arrive (stream_sweep's order): the tally
+/// and the points that did not converge, nothing kept of a converged point.
+class SweepSummary {
+ public:
+  /// A point that did not converge.
+  struct Failure {
+    double frequency_hz = 0.0;
+    double amplitude = 0.0;  ///< as given (V or X)
+    Termination termination = Termination::not_run;
+    std::string reason;
+  };
+
+  void add(double amplitude, const damper::ImpedancePoint& point);
+  const SweepTally& tally() const { return tally_; }
+  const std::vector<Failure>& failures() const { return failures_; }
+  /// What `impedance --json` prints (sweep_summary).
+  io::JsonObject json(std::string_view method, std::optional<double> seconds = std::nullopt) const;
+
+ private:
+  SweepTally tally_;
+  std::vector<Failure> failures_;
+};
+
 /// The sweep's points in the CSV's order: each amplitude's frequencies in turn.
 std::vector<const damper::ImpedancePoint*> sweep_points(const std::vector<damper::SweepRun>& runs);
 
