@@ -277,7 +277,7 @@ int run_design_command(const DesignOptions& options, Invocation& invocation) {
   const std::optional<design::Evaluation> rounded = requests::rounded_best(file.study, result, options.round_digits);
   const std::string report =
       options.report ? design_report(options, file.study, result, rounded, invocation.report_context()) : std::string();
-  io::write_file_atomically(options.output, requests::design_table(file.study).values(result.evaluations).csv());
+  requests::write_csv_file(options.output, requests::design_table(file.study), result.evaluations);
   const auto best = requests::best_damper_file(file.study, result, std::filesystem::path(options.design_file).filename().string(),
                                                rounded ? &*rounded : nullptr);
   if (best) io::write_file_atomically(options.best, *best);

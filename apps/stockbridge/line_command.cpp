@@ -165,7 +165,7 @@ void write_line_details(const std::filesystem::path& directory, const io::LineFi
                         const line::ScheduleRow& row, const span::SpanAnalysis& analysis) {
   const std::string stem = line_file_stem(row.id);
   io::write_file_atomically(directory / (stem + ".toml"), io::span_file_text(file, row));
-  io::write_file_atomically(directory / (stem + ".csv"), requests::span_table(analysis.span).values(analysis.balance.points).csv());
+  requests::write_csv_file(directory / (stem + ".csv"), requests::span_table(analysis.span), analysis.balance.points);
 }
 
 /// The line file, its outputs checked apart from every file it reads, its warnings printed.

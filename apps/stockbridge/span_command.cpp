@@ -75,10 +75,6 @@ requests::CheckedSpanRequest span_request_of(const SpanOptions& options) {
   return requests::check_span_request(request);
 }
 
-std::string span_csv(const span::SpanAnalysis& a) {
-  return requests::span_table(a.span).values(a.balance.points).csv();
-}
-
 std::string span_megapascal(double pascal) { return fmt::format("{:.3g} MPa", pascal / 1e6); }
 
 std::string span_years(const span::LifeEstimate& life) {
@@ -205,7 +201,7 @@ int run_span_command(const SpanOptions& options, Invocation& invocation) {
   const std::string profile =
       options.profile ? requests::span_profile_table().values(requests::span_profile_rows(requests::governing_profile(result))).csv()
                       : std::string();
-  io::write_file_atomically(options.output, span_csv(a));
+  requests::write_csv_file(options.output, requests::span_table(a.span), a.balance.points);
   if (options.report) io::write_file_atomically(*options.report, report);
   if (options.profile) io::write_file_atomically(*options.profile, profile);
 

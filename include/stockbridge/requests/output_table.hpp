@@ -10,14 +10,17 @@
 // the docs' table (a test compares them with docs/) all follow from it.
 
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "stockbridge/io/atomic_file.hpp"
 #include "stockbridge/io/json_writer.hpp"
 
 namespace stockbridge::requests {
@@ -187,6 +190,23 @@ class Table {
   Members members_;
   std::vector<Expanded> columns_;
 };
+
+/// Writes `rows` (Row values or pointers) to a CSV file at `path` as
+/// `table.values(rows).csv()` gives them, row by row: nothing but one row's text is
+/// held, and the file appears whole (io::AtomicFileWriter).
+template <class Row, class Rows>
+void write_csv_file(const std::filesystem::path& path, const Table<Row>& table, const Rows& rows) {
+  io::AtomicFileWriter file(path);
+  file.write(table.values(std::vector<const Row*>{}).csv());
+  for (const auto& row : rows) {
+    if constexpr (std::is_pointer_v<std::decay_t<decltype(row)>>) {
+      file.write(table.values(*row).csv(false));
+    } else {
+      file.write(table.values(row).csv(false));
+    }
+  }
+  file.commit();
+}
 
 /// The markdown table the docs give for these quantities:
 /// "| column | unit | meaning |" rows, names in backticks, '|' in a meaning escaped.

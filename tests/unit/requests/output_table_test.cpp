@@ -3,7 +3,10 @@
 // row (NaN as null, a count as an integer, a masked flag null) and the docs' rows.
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -50,6 +53,27 @@ TEST(OutputTable, ValuesGiveTheCsvWithLabelsFirstAndEmptyCellsForNaN) {
             "site,load_n,left_x_m,left_twice_x_m,right_x_m,right_twice_x_m,steps,ok\n"
             "a,3,0.5,1,,,3,1\n"
             "b,4,1.5,3,2.5,5,4,0\n");
+}
+
+// Rows written to a file one by one (rows or pointers to them) give the text the
+// whole table's values give, header included; no rows give the header alone.
+TEST(OutputTable, ACsvFileWrittenRowByRowIsTheWholeTablesCsv) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Reading> rows{{"a,b", 3.0, {0.5, nan}, 1.0}, {"c", 4.0, {1.5, 2.5}, 0.0}};
+  const Table<Reading> table = reading_table({"left", "right"});
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "stockbridge-rows-streamed.csv";
+  const auto text_of = [&] {
+    std::ostringstream text;
+    text << std::ifstream(path, std::ios::binary).rdbuf();
+    return text.str();
+  };
+  write_csv_file(path, table, rows);
+  EXPECT_EQ(text_of(), table.values(rows).csv());
+  write_csv_file(path, table, std::vector<const Reading*>{&rows[1]});
+  EXPECT_EQ(text_of(), table.values(rows[1]).csv());
+  write_csv_file(path, table, std::vector<Reading>{});
+  EXPECT_EQ(text_of(), "site,load_n,left_x_m,left_twice_x_m,right_x_m,right_twice_x_m,steps,ok\n");
+  std::filesystem::remove(path);
 }
 
 TEST(OutputTable, AJsonRowHasNullForNaNIntegersForCountsAndNullForAMaskedFlag) {
