@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/test_scale.hpp"
 
 namespace stockbridge::testing {
 namespace {
@@ -256,13 +257,17 @@ TEST(LineCli, BadSpansAreNamedByFileLineAndKey) {
   }
 }
 
+/// The frequencies the sphere line balances a span at: fewer under the sanitizers,
+/// where its search (three distances, eight dampers) is most of their run.
+int sphere_line_points() { return scaled(12, 6); }
+
 /// A line of two spans on the vendor's measured sheet (nothing solved: seconds), one
 /// with three warning spheres in a [[span.mass]] table, the other plain.
 std::string sphere_line() {
   return R"([line]
 name = "spheres"
-points = 12
-search_points = 10
+points = )" + std::to_string(sphere_line_points()) + R"(
+search_points = )" + std::to_string(scaled(10, 6)) + R"(
 [conductor]
 type = "AAAC ASTER570"
 [wind]
@@ -311,7 +316,8 @@ TEST(LineCli, ASpanWithSpheresGetsDampersBesideThemFromScheduleToSpanFile) {
   const std::string bill = read_text(dir / "schedule_bill.csv");
   EXPECT_NE(bill.find("vendor," + std::to_string(2 * per_end_s + 6 + 2 * per_end_p) + ",2,"), std::string::npos) << bill;
 
-  const CliResult span = run_cli("span spans/S.toml --points 12 -o again.csv --json", dir);
+  const CliResult span =
+      run_cli("span spans/S.toml --points " + std::to_string(sphere_line_points()) + " -o again.csv --json", dir);
   ASSERT_EQ(span.exit_code, 0) << span.err;
   const std::string key = "\"max_judged_stress_mpa\": ";
   const std::size_t at = span.out.find(key);
