@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseLU>
@@ -102,6 +103,27 @@ BeamModel::BeamModel(const BeamProperties& properties, int elements) : propertie
   stiffness_.setFromTriplets(stiffness.begin(), stiffness.end());
 }
 
+Eigen::SparseMatrix<double> BeamModel::damping(const std::vector<PointDashpot>& dashpots) const {
+  std::vector<Eigen::Triplet<double>> triplets;
+  const double h = element_length();
+  for (std::size_t i = 0; i < dashpots.size(); ++i) {
+    const PointDashpot& d = dashpots[i];
+    if (!(d.position_m > 0.0 && d.position_m < properties_.length)) {
+      throw_invalid(fmt::format("dashpots[{}].position", i), d.position_m,
+                    fmt::format("a distance from end 1 > 0 and < the span's length, {} m", properties_.length));
+    }
+    require_positive(fmt::format("dashpots[{}].coefficient", i), d.coefficient_n_s_m, "N s/m");
+    const int e = std::clamp(static_cast<int>(d.position_m / h), 0, elements_ - 1);
+    const double s = d.position_m / h - e;
+    const Eigen::Vector4d n(1 - 3 * s * s + 2 * s * s * s, h * (s - 2 * s * s + s * s * s), 3 * s * s - 2 * s * s * s,
+                            h * (s * s * s - s * s));
+    add_element(triplets, element_dofs(*this, e), d.coefficient_n_s_m * n * n.transpose());
+  }
+  Eigen::SparseMatrix<double> out(size(), size());
+  out.setFromTriplets(triplets.begin(), triplets.end());
+  return out;
+}
+
 std::vector<double> BeamModel::natural_frequencies(int count) const {
   require_in_range("count", count, 1, size());
   const Eigen::MatrixXd k(stiffness_), m(mass_);
@@ -130,27 +152,34 @@ template std::pair<double, double> BeamModel::at(const Eigen::VectorXd&, double)
 template std::pair<std::complex<double>, std::complex<double>> BeamModel::at(const Eigen::VectorXcd&, double) const;
 
 NewmarkStepper::NewmarkStepper(const BeamModel& model, double dt, const Eigen::VectorXd& u0, const Eigen::VectorXd& v0,
-                               const Eigen::VectorXd& load0)
-    : model_(model), dt_(dt), u_(u0), v_(v0) {
+                               const Eigen::VectorXd& load0, Eigen::SparseMatrix<double> damping)
+    : model_(model), damping_(std::move(damping)), dt_(dt), u_(u0), v_(v0) {
   require_positive("dt", dt, "s");
   if (u0.size() != model.size() || v0.size() != model.size() || load0.size() != model.size()) {
     throw InvalidParameter("initial state", fmt::format(": expected {} values (the free degrees of freedom)", model.size()));
   }
+  if (damping_.size() == 0) damping_.resize(model.size(), model.size());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> mass(model.mass());
-  a_ = mass.solve(load0 - model.stiffness() * u0);
-  const Eigen::SparseMatrix<double> effective = model.mass() + (0.25 * dt * dt) * model.stiffness();
+  a_ = mass.solve(load0 - model.stiffness() * u0 - damping_ * v0);
+  const Eigen::SparseMatrix<double> effective =
+      model.mass() + (0.5 * dt) * damping_ + (0.25 * dt * dt) * model.stiffness();
   effective_.compute(effective);
-  if (effective_.info() != Eigen::Success) throw NumericalError("Newmark: M + dt^2 K / 4 is not positive definite");
+  if (effective_.info() != Eigen::Success) throw NumericalError("Newmark: M + dt C / 2 + dt^2 K / 4 is not positive definite");
 }
 
-// With beta = 1/4: u+ = u + dt v + dt^2 (a + a+) / 4, so (M + dt^2 K / 4) a+ = F+ - K (u + dt v + dt^2 a / 4).
+// With beta = 1/4, gamma = 1/2: u+ = u + dt v + dt^2 (a + a+) / 4 and v+ = v + dt (a + a+) / 2,
+// so (M + dt C / 2 + dt^2 K / 4) a+ = F+ - C (v + dt a / 2) - K (u + dt v + dt^2 a / 4).
 void NewmarkStepper::step(const Eigen::VectorXd& load_next) {
-  const Eigen::VectorXd predicted = u_ + dt_ * v_ + (0.25 * dt_ * dt_) * a_;
-  rhs_ = load_next - model_.stiffness() * predicted;
+  const Eigen::VectorXd predicted_u = u_ + dt_ * v_ + (0.25 * dt_ * dt_) * a_;
+  const Eigen::VectorXd predicted_v = v_ + (0.5 * dt_) * a_;
+  rhs_ = load_next - model_.stiffness() * predicted_u - damping_ * predicted_v;
   const Eigen::VectorXd a_next = effective_.solve(rhs_);
-  u_ = predicted + (0.25 * dt_ * dt_) * a_next;
-  v_ += (0.5 * dt_) * (a_ + a_next);
+  const Eigen::VectorXd v_before = v_;
+  u_ = predicted_u + (0.25 * dt_ * dt_) * a_next;
+  v_ = predicted_v + (0.5 * dt_) * a_next;
   a_ = a_next;
+  const Eigen::VectorXd v_sum = v_before + v_;
+  dissipated_ += 0.25 * dt_ * v_sum.dot(damping_ * v_sum);
   time_ += dt_;
 }
 
@@ -192,7 +221,8 @@ bool settled(const std::vector<double>& envelope, double tolerance) {
 
 }  // namespace
 
-EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWindOptions& options) {
+EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWindOptions& options,
+                                  const std::vector<PointDashpot>& dashpots) {
   require_positive("frequency", options.frequency_hz, "Hz");
   require_positive("duration", options.duration_s, "s");
   require_in_range("elements_per_wavelength", options.elements_per_wavelength, 4, 1000);
@@ -267,9 +297,10 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   Eigen::VectorXcd y = u0.cast<std::complex<double>>();  // the standing wave at t = 0
   Eigen::VectorXcd load_amplitude = damping_load(y);
   const auto load_at = [&](double t) -> Eigen::VectorXd { return (load_amplitude * std::polar(1.0, w * t)).real(); };
-  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load_at(0.0));
+  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load_at(0.0), model.damping(dashpots));
   const int periods = static_cast<int>(std::ceil(options.duration_s * f));
   Eigen::VectorXcd accumulated(model.size());
+  int quiet_periods = 0;
   for (int period = 0; period < periods; ++period) {
     accumulated.setZero();
     for (int s = 0; s < steps; ++s) {
@@ -279,15 +310,19 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
     }
     y = accumulated;  // y(t) = Re(y^ e^{jwt}) over the last period
     load_amplitude = damping_load(y);
-    double envelope = 0.0;
-    for (int i = 0; i <= elements; ++i) envelope = std::max(envelope, local_antinode(model, y, i * model.element_length(), k));
-    out.envelope_m.push_back(envelope);
-    if (settled(out.envelope_m, options.settled_change)) {
+    out.envelope_m.push_back(local_antinode(model, y, 0.5 * length, k));
+    // Settled for 20 periods in a row: a start's transient (the drive mode reshaped
+    // by the dashpots) can look settled for a moment.
+    quiet_periods = settled(out.envelope_m, options.settled_change) ? quiet_periods + 1 : 0;
+    if (quiet_periods >= 20) {
       out.settled = true;
       break;
     }
   }
   out.time_s = stepper.time();
+  for (const PointDashpot& d : dashpots) {  // c w^2 |y^(x)|^2 / 2 over the last period
+    out.dashpot_power_w.push_back(0.5 * d.coefficient_n_s_m * w * w * std::norm(model.at(y, d.position_m).first));
+  }
   out.antinode_amplitude_m = out.envelope_m.back();
   for (int i = 0; i <= elements; ++i) {
     const double x = i * model.element_length();

@@ -39,6 +39,13 @@ std::string_view beam_ends_name(BeamEnds ends);
 /// "pinned" or "clamped"; InvalidParameter naming "ends" otherwise.
 BeamEnds parse_beam_ends(std::string_view name);
 
+/// A linear dashpot on the conductor: F = -c y_t at its position (a damper of
+/// impedance Z = c, real and constant: the closed-form check of the balance).
+struct PointDashpot {
+  double position_m = 0.0;        ///< from end 1, in (0, L)
+  double coefficient_n_s_m = 0.0; ///< c > 0
+};
+
 /// A beam's numbers (SI): length L, mass per length m, tension T, bending stiffness EI.
 struct BeamProperties {
   double length = 0.0;
@@ -68,6 +75,10 @@ class BeamModel {
   Eigen::Index size() const { return mass_.rows(); }
   const Eigen::SparseMatrix<double>& mass() const { return mass_; }
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
+  /// The damping matrix of dashpots, sum c N(x) N(x)^T (N the shape functions at
+  /// x): InvalidParameter naming "dashpots[i]" where one is off the span or c <= 0.
+  Eigen::SparseMatrix<double> damping(const std::vector<PointDashpot>& dashpots) const;
+
   /// The lowest `count` natural frequencies, Hz (a dense generalised eigenproblem:
   /// for checks, a few thousand degrees of freedom at most).
   std::vector<double> natural_frequencies(int count) const;
@@ -86,13 +97,15 @@ class BeamModel {
   Eigen::SparseMatrix<double> mass_, stiffness_;
 };
 
-/// Newmark's average acceleration rule (beta = 1/4, gamma = 1/2) on M u'' + K u = F(t)
-/// with M + (dt^2 / 4) K factored once (sparse LDL^T in the nodes' order: banded).
+/// Newmark's average acceleration rule (beta = 1/4, gamma = 1/2) on
+/// M u'' + C u' + K u = F(t), with M + (dt / 2) C + (dt^2 / 4) K factored once (sparse
+/// LDL^T in the nodes' order: banded).
 class NewmarkStepper {
  public:
-  /// From rest-free initial displacement u0 and velocity v0; F0 the load at t = 0.
+  /// From initial displacement u0 and velocity v0; F0 the load at t = 0; `damping`
+  /// C (empty: none).
   NewmarkStepper(const BeamModel& model, double dt, const Eigen::VectorXd& u0, const Eigen::VectorXd& v0,
-                 const Eigen::VectorXd& load0);
+                 const Eigen::VectorXd& load0, Eigen::SparseMatrix<double> damping = {});
 
   /// One step to t + dt under the load at t + dt.
   void step(const Eigen::VectorXd& load_next);
@@ -102,9 +115,15 @@ class NewmarkStepper {
   const Eigen::VectorXd& velocity() const { return v_; }
   /// Kinetic plus strain energy, (v^T M v + u^T K u) / 2, J.
   double energy() const;
+  /// The energy the damping took so far, J: the rule's own balance, each step
+  /// (dt / 4) (v + v+)^T C (v + v+), so that energy() + dissipated() stays at its
+  /// start to round-off without load.
+  double dissipated() const { return dissipated_; }
 
  private:
   const BeamModel& model_;
+  Eigen::SparseMatrix<double> damping_;
+  double dissipated_ = 0.0;
   double dt_;
   double time_ = 0.0;
   Eigen::VectorXd u_, v_, a_;
@@ -120,7 +139,8 @@ struct EbmWindOptions {
   int steps_per_period = 40;             ///< >= 8
   double start_amplitude_m = 0.0;        ///< the mode's antinode amplitude at t = 0 (> 0)
   /// Settled: the envelope's distance from the value it approaches (extrapolated
-  /// from its changes over the last 20 periods), relative, below it.
+  /// from its changes over the last 20 periods), relative, below it for 20 periods
+  /// in a row.
   double settled_change = 1e-3;
 };
 
@@ -131,17 +151,24 @@ struct EbmWindHistory {
   double dt_s = 0.0;
   bool settled = false;
   double time_s = 0.0;               ///< simulated
-  std::vector<double> envelope_m;    ///< per period: the largest antinode amplitude Y(x) along the span
+  /// Per period: the local antinode amplitude Y at mid-span, where a symmetric
+  /// span's wave carries no energy either way (toward the dampers Y grows: part of
+  /// the wave travels there).
+  std::vector<double> envelope_m;
   double antinode_amplitude_m = 0.0; ///< the last period's
   std::vector<double> x_m;           ///< the nodes
   std::vector<double> amplitude_m;   ///< |y^| at the nodes, the last period
+  /// Per dashpot, the mean power it took over the last period, W.
+  std::vector<double> dashpot_power_w;
 };
 
-/// The span without its dampers, its wind (a) of MODEL.md 16 and self-damping as the
-/// span file gives them, stepped until the envelope settles or `duration_s` is
-/// reached. The drive is the pinned or clamped beam's natural mode nearest
-/// `frequency_hz`, started at `start_amplitude_m`. InvalidParameter naming the
-/// option where one is out of range.
-EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWindOptions& options);
+/// The span's conductor under its wind (a) of MODEL.md 16 and self-damping as the
+/// span file gives them, with `dashpots` on it (the span's own dampers are not
+/// modelled in time yet: they are left out), stepped until the envelope settles or
+/// `duration_s` is reached. The drive is the pinned or clamped beam's natural mode
+/// nearest `frequency_hz` (without the dashpots), started at `start_amplitude_m`.
+/// InvalidParameter naming the option where one is out of range.
+EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWindOptions& options,
+                                  const std::vector<PointDashpot>& dashpots = {});
 
 }  // namespace stockbridge::span

@@ -4,6 +4,7 @@
 // wind the span without dampers settles on the EBM's amplitude.
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -15,7 +16,9 @@
 
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/io/span_file.hpp"
+#include "stockbridge/span/balance.hpp"
 #include "stockbridge/span/conductor_in_time.hpp"
+#include "stockbridge/span/impedance_sheet.hpp"
 #include "stockbridge/span/undamped.hpp"
 #include "support/test_scale.hpp"
 #include "unit/span/aster570.hpp"
@@ -103,6 +106,33 @@ double ebm_amplitude(const Span& span, double f) {
   return *undamped_amplitude(span.wind(), span.self_damping(), span.conductor(), span.tension(), span.length(), f);
 }
 
+// Dashpots take energy and the rule accounts for it: without load, the energy left
+// plus the energy the dashpots took stays at the start's to 1e-9 over 5 s, while
+// the dashpots take most of it.
+TEST(ConductorInTime, DashpotsTakeTheEnergyTheBeamLoses) {
+  const BeamProperties beam{50.0, aster570().mass_per_length, aster570_tension, aster570().ei_min, BeamEnds::clamped};
+  const BeamModel model(beam, 60);
+  std::mt19937 random(11);
+  std::normal_distribution<double> normal(0.0, 1e-3);
+  Eigen::VectorXd u0(model.size()), v0(model.size());
+  for (Eigen::Index i = 0; i < model.size(); ++i) {
+    u0(i) = normal(random);
+    v0(i) = 50.0 * normal(random);
+  }
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
+  NewmarkStepper stepper(model, 2e-4, u0, v0, zero, model.damping({{1.0, 100.0}, {49.0, 100.0}, {20.3, 30.0}}));
+  const double e0 = stepper.energy();
+  double worst = 0.0;
+  while (stepper.time() < 5.0) {
+    stepper.step(zero);
+    worst = std::max(worst, std::abs((stepper.energy() + stepper.dissipated()) / e0 - 1.0));
+  }
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_GT(stepper.dissipated(), 0.5 * e0);
+  EXPECT_THROW(model.damping({{50.0, 10.0}}), InvalidParameter);  // at the clamp
+  EXPECT_THROW(model.damping({{10.0, 0.0}}), InvalidParameter);
+}
+
 // The example span without its dampers under the EBM's wind (a), started 10 % below
 // the EBM's amplitude (and at 30 Hz also 10 % above): it settles on it within 2 % at
 // three frequencies of the band, at the mode nearest each (within half a mode's
@@ -153,6 +183,39 @@ TEST(ConductorInTime, TheEbmWindGrowsASmallMotionAndTakesALargeOneDown) {
     EXPECT_NEAR(*std::max_element(history.amplitude_m.begin(), history.amplitude_m.end()),
                 history.antinode_amplitude_m, 0.05 * history.antinode_amplitude_m);
   }
+}
+
+// A light dashpot (10 N s/m, 1 m from each clamp; it takes a quarter of the span's
+// amplitude at 30 Hz) under the EBM's wind: the amplitude at mid-span settles within
+// 2 % of the balance's with a damper of the same impedance (a measured sheet of
+// constant Z = 10 N s/m), and the dashpots take the power the balance gives them.
+TEST(ConductorInTime, ALightDashpotSettlesWhereTheBalanceSays) {
+  const double c = 10.0, position = 1.0, f = 30.0;
+  damper::ImpedanceMeasurement sheet;
+  for (const double v : {0.001, 3.0}) {
+    for (const double fr : {1.0, 10.0, 50.0, 200.0}) sheet.points.push_back({damper::Excitation::from_velocity(fr, v), {c, 0.0}});
+  }
+  SpanDamper dashpot;
+  dashpot.position = position;
+  dashpot.name = "dashpot";
+  dashpot.sheet = std::make_shared<const ImpedanceSheet>(sheet, "dashpot");
+  const Span span = example_span().with_dampers({dashpot}).with_masses({});
+  EbmWindOptions options;
+  options.frequency_hz = f;
+  options.duration_s = 120.0;
+  options.start_amplitude_m = 0.9 * ebm_amplitude(span, f);  // the undamped span's
+  const EbmWindHistory history =
+      settle_on_ebm_wind(span, BeamEnds::pinned, options, {{position, c}, {span.length() - position, c}});
+  const BalanceOptions balance_options;
+  const SpanBalance balance = run_balance(span, SpanTables(span, {history.frequency_hz}, balance_options.table), balance_options);
+  ASSERT_TRUE(balance.points.at(0).converged());
+  const BalancePoint& p = balance.points[0];
+  EXPECT_TRUE(history.settled) << history.time_s << " s";
+  EXPECT_LT(p.amplitude, 0.85 * ebm_amplitude(span, history.frequency_hz));  // the dashpots matter
+  EXPECT_NEAR(history.antinode_amplitude_m / p.amplitude, 1.0, 0.02) << history.antinode_amplitude_m << " m against " << p.amplitude;
+  ASSERT_EQ(history.dashpot_power_w.size(), 2u);
+  EXPECT_NEAR(history.dashpot_power_w[0] / p.dampers.at(0).power, 1.0, 0.03)
+      << history.dashpot_power_w[0] << " W against " << p.dampers.at(0).power;
 }
 
 TEST(ConductorInTime, RefusesWhatItCannotModel) {
