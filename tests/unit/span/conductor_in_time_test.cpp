@@ -10,6 +10,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -72,19 +73,30 @@ TEST(ConductorInTime, ClampedEndsStiffenTheBeam) {
   }
 }
 
+/// The example's conductor on a clamped 50 m span in 60 elements.
+BeamModel clamped_50m() {
+  return BeamModel({50.0, aster570().mass_per_length, aster570_tension, aster570().ei_min, BeamEnds::clamped}, 60);
+}
+
+/// Random displacements (about 1 mm) and velocities (about 50 mm/s) of every free
+/// degree of freedom.
+std::pair<Eigen::VectorXd, Eigen::VectorXd> random_motion(const BeamModel& model, unsigned seed) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> normal(0.0, 1e-3);
+  Eigen::VectorXd u(model.size()), v(model.size());
+  for (Eigen::Index i = 0; i < model.size(); ++i) {
+    u(i) = normal(random);
+    v(i) = 50.0 * normal(random);
+  }
+  return {u, v};
+}
+
 // Without load or damping, Newmark's average acceleration conserves the energy of
 // any motion (here a random mix of displacements and velocities on a clamped span)
 // to round-off: within 1e-6 at every step of 10 s.
 TEST(ConductorInTime, TheUndampedBeamKeepsItsEnergy) {
-  const BeamProperties beam{50.0, aster570().mass_per_length, aster570_tension, aster570().ei_min, BeamEnds::clamped};
-  const BeamModel model(beam, 60);
-  std::mt19937 random(7);
-  std::normal_distribution<double> normal(0.0, 1e-3);
-  Eigen::VectorXd u0(model.size()), v0(model.size());
-  for (Eigen::Index i = 0; i < model.size(); ++i) {
-    u0(i) = normal(random);
-    v0(i) = 50.0 * normal(random);
-  }
+  const BeamModel model = clamped_50m();
+  const auto [u0, v0] = random_motion(model, 7);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
   NewmarkStepper stepper(model, 2e-4, u0, v0, zero);
   const double e0 = stepper.energy();
@@ -110,15 +122,8 @@ double ebm_amplitude(const Span& span, double f) {
 // plus the energy the dashpots took stays at the start's to 1e-9 over 5 s, while
 // the dashpots take most of it.
 TEST(ConductorInTime, DashpotsTakeTheEnergyTheBeamLoses) {
-  const BeamProperties beam{50.0, aster570().mass_per_length, aster570_tension, aster570().ei_min, BeamEnds::clamped};
-  const BeamModel model(beam, 60);
-  std::mt19937 random(11);
-  std::normal_distribution<double> normal(0.0, 1e-3);
-  Eigen::VectorXd u0(model.size()), v0(model.size());
-  for (Eigen::Index i = 0; i < model.size(); ++i) {
-    u0(i) = normal(random);
-    v0(i) = 50.0 * normal(random);
-  }
+  const BeamModel model = clamped_50m();
+  const auto [u0, v0] = random_motion(model, 11);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
   NewmarkStepper stepper(model, 2e-4, u0, v0, zero, model.damping({{1.0, 100.0}, {49.0, 100.0}, {20.3, 30.0}}));
   const double e0 = stepper.energy();
