@@ -242,14 +242,21 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   Eigen::SparseLU<Eigen::SparseMatrix<double>> shift_invert(shifted);
   if (shift_invert.info() != Eigen::Success) throw NumericalError("the drive frequency is a natural frequency to round-off");
   Eigen::VectorXd mode = Eigen::VectorXd::Ones(model.size());
-  double w2 = w_asked * w_asked;
-  for (int iteration = 0; iteration < 200; ++iteration) {
+  double w2 = w_asked * w_asked, change = 0.0;
+  bool found = false;
+  for (int iteration = 0; iteration < 200 && !found; ++iteration) {
     mode = shift_invert.solve(model.mass() * mode);
     mode /= std::sqrt(mode.dot(model.mass() * mode));
     const double next = mode.dot(model.stiffness() * mode);
-    const bool done = std::abs(next - w2) <= 1e-14 * w2;
+    change = std::abs(next - w2) / w2;
+    found = change <= 1e-14;
     w2 = next;
-    if (done) break;
+  }
+  if (!found) {  // two modes about equally near the drive: the iteration cannot pick one
+    throw NumericalError(fmt::format("the span's natural mode nearest {} Hz: inverse iteration did not converge in 200 "
+                                     "iterations (w^2 still changing by {:.2g} relative); two modes lie about equally "
+                                     "near: ask for a frequency nearer one of them",
+                                     options.frequency_hz, change));
   }
   const double wn = std::sqrt(w2);
   // Newmark's average acceleration lengthens the period: tan(w dt / 2) = wn dt / 2.
