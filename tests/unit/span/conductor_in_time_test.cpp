@@ -144,6 +144,7 @@ TEST(ConductorInTime, DashpotsTakeTheEnergyTheBeamLoses) {
 // spacing, and Newmark's period elongation of (pi / steps)^2 / 3), from either side
 // to within 0.5 % of each other.
 TEST(ConductorInTime, TheEbmWindSettlesTheSpanOnTheEbmsAmplitude) {
+  if (stockbridge::testing::short_tests()) GTEST_SKIP() << "minutes of simulated time: the Release build runs it";
   const Span span = example_span();
   const double spacing = 0.5 * std::sqrt(span.tension() / span.conductor().mass_per_length) / span.length();
   for (const double f : {12.0, 20.0, 30.0}) {
@@ -195,6 +196,7 @@ TEST(ConductorInTime, TheEbmWindGrowsASmallMotionAndTakesALargeOneDown) {
 // 2 % of the balance's with a damper of the same impedance (a measured sheet of
 // constant Z = 10 N s/m), and the dashpots take the power the balance gives them.
 TEST(ConductorInTime, ALightDashpotSettlesWhereTheBalanceSays) {
+  if (stockbridge::testing::short_tests()) GTEST_SKIP() << "minutes of simulated time: the Release build runs it";
   const double c = 10.0, position = 1.0, f = 30.0;
   damper::ImpedanceMeasurement sheet;
   for (const double v : {0.001, 3.0}) {
