@@ -36,12 +36,17 @@ std::string mass_line_error(const std::string& text) {
   return "(accepted)";
 }
 
-const std::filesystem::path kCsvFolder = std::filesystem::temp_directory_path() / "stockbridge-line-masses";
+/// A folder of the running test's own: ctest runs the tests of this file side by
+/// side, and one folder for all of them let one test read another's spans.csv.
+std::filesystem::path csv_folder() {
+  return std::filesystem::temp_directory_path() /
+         (std::string("stockbridge-line-masses-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+}
 
 /// The line with its spans in `csv` (written as spans.csv beside it).
 LineFile csv_line(const std::string& csv, SlipPolicy policy = SlipPolicy::refuse) {
-  testing::write_temp_file(kCsvFolder, "spans.csv", csv);
-  return load_line_text("spans = \"spans.csv\"\n" + mass_line("", ""), "line(text=...)", kCsvFolder, policy);
+  testing::write_temp_file(csv_folder(), "spans.csv", csv);
+  return load_line_text("spans = \"spans.csv\"\n" + mass_line("", ""), "line(text=...)", csv_folder(), policy);
 }
 
 std::string csv_line_error(const std::string& csv) {
@@ -95,7 +100,7 @@ TEST(LineFileMasses, AreReadFromTheCsvColumnGroupedByTheirMass) {
 }
 
 TEST(LineFileMasses, ABadCellIsNamedByItsFileLineAndColumn) {
-  const std::string file = (kCsvFolder / "spans.csv").string();
+  const std::string file = (csv_folder() / "spans.csv").string();
   const std::string expected = "<kg>@<m from end 1> entries, ';'-separated (e.g. 12.5@30;12.5@90), or an empty cell for none";
   EXPECT_EQ(csv_line_error("id,length_m,tension_fraction,masses\nA,400,0.15,12.5@100;12.5@\n"),
             file + ":2: column 'masses' = '12.5@100;12.5@': '12.5@' is not a mass at a position: expected " + expected);
