@@ -73,6 +73,30 @@ void add_element(std::vector<Eigen::Triplet<double>>& triplets, const std::array
   }
 }
 
+/// The element's shape functions N(s) and their slopes N'(s) at s = (x - x_e) / h in [0, 1].
+Eigen::Vector4d shape(double s, double h) {
+  return {1 - 3 * s * s + 2 * s * s * s, h * (s - 2 * s * s + s * s * s), 3 * s * s - 2 * s * s * s, h * (s * s * s - s * s)};
+}
+Eigen::Vector4d shape_slope(double s, double h) {
+  return {(-6 * s + 6 * s * s) / h, 1 - 4 * s + 3 * s * s, (6 * s - 6 * s * s) / h, 3 * s * s - 2 * s};
+}
+
+/// The element of x and where in it (s in [0, 1]).
+std::pair<int, double> element_at(const BeamModel& model, double x) {
+  const double h = model.element_length();
+  const int e = std::clamp(static_cast<int>(x / h), 0, model.elements() - 1);
+  return {e, std::clamp(x / h - e, 0.0, 1.0)};
+}
+
+/// Element e's four values of the free vector u (0 where held).
+template <class Scalar>
+Eigen::Matrix<Scalar, 4, 1> gather(const BeamModel& model, int e, const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& u) {
+  const std::array<Eigen::Index, 4> dofs = element_dofs(model, e);
+  Eigen::Matrix<Scalar, 4, 1> q;
+  for (int i = 0; i < 4; ++i) q(i) = dofs[i] >= 0 ? u(dofs[i]) : Scalar(0);
+  return q;
+}
+
 }  // namespace
 
 BeamModel::BeamModel(const BeamProperties& properties, int elements) : properties_(properties), elements_(elements) {
@@ -113,10 +137,8 @@ Eigen::SparseMatrix<double> BeamModel::damping(const std::vector<PointDashpot>& 
                     fmt::format("a distance from end 1 > 0 and < the span's length, {} m", properties_.length));
     }
     require_positive(fmt::format("dashpots[{}].coefficient", i), d.coefficient_n_s_m, "N s/m");
-    const int e = std::clamp(static_cast<int>(d.position_m / h), 0, elements_ - 1);
-    const double s = d.position_m / h - e;
-    const Eigen::Vector4d n(1 - 3 * s * s + 2 * s * s * s, h * (s - 2 * s * s + s * s * s), 3 * s * s - 2 * s * s * s,
-                            h * (s * s * s - s * s));
+    const auto [e, s] = element_at(*this, d.position_m);
+    const Eigen::Vector4d n = shape(s, h);
     add_element(triplets, element_dofs(*this, e), d.coefficient_n_s_m * n * n.transpose());
   }
   Eigen::SparseMatrix<double> out(size(), size());
@@ -136,17 +158,10 @@ std::vector<double> BeamModel::natural_frequencies(int count) const {
 
 template <class Scalar>
 std::pair<Scalar, Scalar> BeamModel::at(const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& u, double x) const {
-  const double h = element_length();
-  const int e = std::clamp(static_cast<int>(x / h), 0, elements_ - 1);
-  const double s = std::clamp(x / h - e, 0.0, 1.0);
-  const std::array<Eigen::Index, 4> dofs = element_dofs(*this, e);
-  std::array<Scalar, 4> q{};
-  for (int i = 0; i < 4; ++i) q[i] = dofs[i] >= 0 ? u(dofs[i]) : Scalar(0);
-  const double n1 = 1 - 3 * s * s + 2 * s * s * s, n2 = h * (s - 2 * s * s + s * s * s), n3 = 3 * s * s - 2 * s * s * s,
-               n4 = h * (s * s * s - s * s);
-  const double d1 = (-6 * s + 6 * s * s) / h, d2 = 1 - 4 * s + 3 * s * s, d3 = (6 * s - 6 * s * s) / h,
-               d4 = 3 * s * s - 2 * s;
-  return {n1 * q[0] + n2 * q[1] + n3 * q[2] + n4 * q[3], d1 * q[0] + d2 * q[1] + d3 * q[2] + d4 * q[3]};
+  const auto [e, s] = element_at(*this, x);
+  const Eigen::Matrix<Scalar, 4, 1> q = gather(*this, e, u);
+  return {shape(s, element_length()).template cast<Scalar>().dot(q),
+          shape_slope(s, element_length()).template cast<Scalar>().dot(q)};
 }
 template std::pair<double, double> BeamModel::at(const Eigen::VectorXd&, double) const;
 template std::pair<std::complex<double>, std::complex<double>> BeamModel::at(const Eigen::VectorXcd&, double) const;
@@ -287,9 +302,7 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
                          length;
       const std::complex<double> c(0.0, 4.0 * net / (w * amplitude * amplitude));  // j w c
       const std::array<Eigen::Index, 4> dofs = element_dofs(model, e);
-      Eigen::Vector4cd q;
-      for (int i = 0; i < 4; ++i) q(i) = dofs[i] >= 0 ? y(dofs[i]) : 0.0;
-      const Eigen::Vector4cd part = c * (unit * q);
+      const Eigen::Vector4cd part = c * (unit * gather(model, e, y));
       for (int i = 0; i < 4; ++i) {
         if (dofs[i] >= 0) load(dofs[i]) += part(i);
       }
