@@ -153,11 +153,9 @@ class OrderedPoints {
       std::map<std::size_t, ArmSolution>& arm = pending_[a * distinct_.size() + d];
       const int sign = arm.at(i).jacobian_sign;
       int& before = previous_sign_[a * distinct_.size() + d];
-      const std::string label = damper_.arm_label(distinct_[d]);
-      if (point.converged() && i > 0 && folds(before, sign)) flag(point, fold_note(label, f[i - 1], f[i]));
-      if (point.converged() && i + 1 < f.size() && folds(sign, arm.at(i + 1).jacobian_sign)) {
-        flag(point, fold_note(label, f[i], f[i + 1]));
-      }
+      const auto note = [&](double f1, double f2) { return fold_note(damper_.arm_label(distinct_[d]), f1, f2); };
+      if (point.converged() && i > 0 && folds(before, sign)) flag(point, note(f[i - 1], f[i]));
+      if (point.converged() && i + 1 < f.size() && folds(sign, arm.at(i + 1).jacobian_sign)) flag(point, note(f[i], f[i + 1]));
       before = i + 1 < f.size() ? sign : 0;
       arm.erase(i);
     }
