@@ -74,14 +74,13 @@ StreamedSweep stream_to_csv(const damper::Damper& damper, const damper::SweepSpe
     for (const double amplitude : spec.amplitudes) sweep.runs.push_back({amplitude, {}});
   }
   const requests::Table<damper::ImpedancePoint> table = requests::impedance_table(damper);
-  io::AtomicFileWriter file(output);
-  file.write(table.values(std::vector<const damper::ImpedancePoint*>{}).csv());
+  requests::CsvFile<damper::ImpedancePoint> file(output, table);
   const InterruptRequest interrupt;
   damper::stream_sweep(
       damper, spec,
       [&](std::size_t a, std::size_t, damper::ImpedancePoint&& point) {
         if (InterruptRequest::requested()) throw Interrupted("the sweep was stopped");
-        file.write(table.values(point).csv(false));
+        file.add(point);
         sweep.summary.add(spec.amplitudes[a], point);
         if (keep_points) sweep.runs[a].points.push_back(std::move(point));
       },

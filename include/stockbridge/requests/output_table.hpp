@@ -191,18 +191,32 @@ class Table {
   std::vector<Expanded> columns_;
 };
 
-/// Writes `rows` (Row values or pointers) to a CSV file at `path` as
-/// `table.values(rows).csv()` gives them, row by row: nothing but one row's text is
-/// held, and the file appears whole (io::AtomicFileWriter).
+/// A CSV file of `table`'s rows, written as they come: in the end the text
+/// `table.values(rows).csv()` gives, but nothing held beyond one row's text. It
+/// appears whole at `commit` or not at all (io::AtomicFileWriter).
+template <class Row>
+class CsvFile {
+ public:
+  CsvFile(const std::filesystem::path& path, const Table<Row>& table) : table_(table), file_(path) {
+    file_.write(table.values(std::vector<const Row*>{}).csv());
+  }
+  void add(const Row& row) { file_.write(table_.values(row).csv(false)); }
+  void commit() { file_.commit(); }
+
+ private:
+  const Table<Row>& table_;
+  io::AtomicFileWriter file_;
+};
+
+/// Writes `rows` (Row values or pointers) to a CSV file at `path`, row by row (CsvFile).
 template <class Row, class Rows>
 void write_csv_file(const std::filesystem::path& path, const Table<Row>& table, const Rows& rows) {
-  io::AtomicFileWriter file(path);
-  file.write(table.values(std::vector<const Row*>{}).csv());
+  CsvFile<Row> file(path, table);
   for (const auto& row : rows) {
     if constexpr (std::is_pointer_v<std::decay_t<decltype(row)>>) {
-      file.write(table.values(*row).csv(false));
+      file.add(*row);
     } else {
-      file.write(table.values(row).csv(false));
+      file.add(row);
     }
   }
   file.commit();
