@@ -31,5 +31,6 @@ void add_design_command(CLI::App& app, Invocation& invocation);
 void add_line_command(CLI::App& app, Invocation& invocation);
 void add_datasheet_command(CLI::App& app, Invocation& invocation);
 void add_fatigue_tests_command(CLI::App& app, Invocation& invocation);
+void add_simulate_command(CLI::App& app, Invocation& invocation);
 
 }  // namespace stockbridge::cli

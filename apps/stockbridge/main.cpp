@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   cli::add_line_command(app, invocation);
   cli::add_datasheet_command(app, invocation);
   cli::add_fatigue_tests_command(app, invocation);
+  cli::add_simulate_command(app, invocation);
   try {
     cli::reject_misspellings(app, argc, argv);
     app.parse(argc, argv);

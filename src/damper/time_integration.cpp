@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "stockbridge/core/error.hpp"
+#include "arm_newmark.hpp"
 
 namespace stockbridge::damper {
 
@@ -20,6 +21,43 @@ double scaled_max(const Eigen::Vector2d& force_moment, double length) {
   return std::max(std::abs(force_moment(0)), std::abs(force_moment(1)) / length);
 }
 }  // namespace
+
+namespace detail {
+
+ArmStepOutcome solve_arm_step(const ArmStepSystem& system, cable::Cantilever& cantilever, const Eigen::Vector2d& base,
+                              const Eigen::Vector2d& p, Eigen::Vector2d& a) {
+  ArmStepOutcome outcome;
+  for (int iteration = 0;; ++iteration) {
+    const Eigen::Vector2d u = base + system.q * a;
+    const cable::StateDetermination solve = cantilever.set_trial_tip(u(0), u(1));
+    if (!solve.converged()) {
+      cantilever.revert_to_last_commit();
+      outcome.termination = Termination::inner_failure;
+      outcome.cable_failure = solve;
+      return outcome;
+    }
+    const cable::CableState& trial = cantilever.trial();
+    const Eigen::Vector2d f(trial.tip_force, trial.tip_moment(system.length));
+    const Eigen::Vector2d inertia = system.mass * a;
+    const Eigen::Vector2d residual = inertia + f - p;
+    const double scale = std::max({scaled_max(inertia, system.length), scaled_max(f, system.length),
+                                   scaled_max(p, system.length)});
+    const double norm = scaled_max(residual, system.length);
+    if (norm <= system.tolerance * scale) return outcome;
+    if (iteration == system.max_newton || !std::isfinite(norm)) {
+      cantilever.revert_to_last_commit();
+      outcome.termination = std::isfinite(norm) ? Termination::max_iterations : Termination::non_finite;
+      outcome.iterations = iteration;
+      outcome.residual = scale > 0.0 ? norm / scale : norm;
+      return outcome;
+    }
+    // d residual / d a = M + (h^2/4) K_t, i.e. (h^2/4) (K_t + (4/h^2) M).
+    const Eigen::Matrix2d tangent = system.mass + system.q * trial.tip_stiffness(system.length);
+    a -= tangent.inverse() * residual;
+  }
+}
+
+}  // namespace detail
 
 Eigen::Vector4d linear_discrete_start(const Arm& arm, const Excitation& excitation, int steps_per_period) {
   excitation.validate();
@@ -99,42 +137,24 @@ bool NewmarkStepper::step(int j, SolverSummary& failure) {
   const double q = 0.25 * h_ * h_;  // u_{n+1} = base + q a_{n+1}
   const Eigen::Vector2d base = u_ + h_ * v_ + q * a_;
   Eigen::Vector2d a = a_;  // predictor: constant acceleration
-  Eigen::Vector2d u;
-  auto where = [&] {
-    return fmt::format("in the time step to t = {:.9g} s (step {} of {} in period {} since the start)",
-                       time() + (j + 1) * h_, j + 1, steps_, periods_since_place_ + 1);
-  };
-  for (int iteration = 0;; ++iteration) {
-    u = base + q * a;
-    const cable::StateDetermination solve = cantilever_.set_trial_tip(u(0), u(1));
-    if (!solve.converged()) {
-      cantilever_.revert_to_last_commit();
+  const detail::ArmStepOutcome outcome =
+      detail::solve_arm_step({mass_, length_, q, max_newton_, newton_tolerance_}, cantilever_, base, p, a);
+  if (outcome.termination != Termination::converged) {
+    const std::string where = fmt::format("in the time step to t = {:.9g} s (step {} of {} in period {} since the start)",
+                                          time() + (j + 1) * h_, j + 1, steps_, periods_since_place_ + 1);
+    if (outcome.termination == Termination::inner_failure) {
       failure = summary_of(Termination::inner_failure,
-                                fmt::format("cable state determination {}: {}", where(), brief_report(solve)));
-      return false;
+                           fmt::format("cable state determination {}: {}", where, brief_report(outcome.cable_failure)));
+    } else {
+      failure = summary_of(outcome.termination, fmt::format("{} (relative to the largest term)", where));
+      failure.newton_iterations = outcome.iterations;
+      failure.residual = outcome.residual;
     }
-    const cable::CableState& trial = cantilever_.trial();
-    const Eigen::Vector2d f(trial.tip_force, trial.tip_moment(length_));
-    const Eigen::Vector2d inertia = mass_ * a;
-    const Eigen::Vector2d residual = inertia + f - p;
-    const double scale = std::max({scaled_max(inertia, length_), scaled_max(f, length_), scaled_max(p, length_)});
-    const double norm = scaled_max(residual, length_);
-    if (norm <= newton_tolerance_ * scale) break;
-    if (iteration == max_newton_ || !std::isfinite(norm)) {
-      cantilever_.revert_to_last_commit();
-      failure = summary_of(std::isfinite(norm) ? Termination::max_iterations : Termination::non_finite,
-                                fmt::format("{} (relative to the largest term)", where()));
-      failure.newton_iterations = iteration;
-      failure.residual = scale > 0.0 ? norm / scale : norm;
-      return false;
-    }
-    // d residual / d a = M + (h^2/4) K_t, i.e. (h^2/4) (K_t + (4/h^2) M).
-    const Eigen::Matrix2d tangent = mass_ + q * trial.tip_stiffness(length_);
-    a -= tangent.inverse() * residual;
+    return false;
   }
   cantilever_.commit();
   v_ += 0.5 * h_ * (a_ + a);
-  u_ = u;
+  u_ = base + q * a;
   a_ = a;
   return true;
 }

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <cmath>
 #include <numbers>
 #include <utility>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <Eigen/SparseLU>
 #include <fmt/format.h>
 
@@ -15,6 +17,15 @@
 #include "stockbridge/span/wind.hpp"
 
 namespace stockbridge::span {
+
+std::string_view settled_by_name(SettledBy rule) {
+  switch (rule) {
+    case SettledBy::envelope: return "envelope";
+    case SettledBy::mean: return "mean";
+    case SettledBy::not_settled: break;
+  }
+  return "not_settled";
+}
 
 std::string_view beam_ends_name(BeamEnds ends) { return ends == BeamEnds::pinned ? "pinned" : "clamped"; }
 
@@ -83,9 +94,17 @@ Eigen::Vector4d shape_slope(double s, double h) {
 
 /// The element of x and where in it (s in [0, 1]).
 std::pair<int, double> element_at(const BeamModel& model, double x) {
-  const double h = model.element_length();
-  const int e = std::clamp(static_cast<int>(x / h), 0, model.elements() - 1);
-  return {e, std::clamp(x / h - e, 0.0, 1.0)};
+  const std::vector<double>& nodes = model.nodes();
+  const auto above = std::upper_bound(nodes.begin() + 1, nodes.end() - 1, x);
+  const int e = static_cast<int>(above - nodes.begin()) - 1;
+  return {e, std::clamp((x - nodes[e]) / model.element_length(e), 0.0, 1.0)};
+}
+
+std::vector<double> uniform_nodes(double length, int elements) {
+  require_in_range("elements", elements, 2, 1000000);
+  std::vector<double> nodes(elements + 1);
+  for (int i = 0; i <= elements; ++i) nodes[i] = length * i / elements;
+  return nodes;
 }
 
 /// Element e's four values of the free vector u (0 where held).
@@ -99,27 +118,34 @@ Eigen::Matrix<Scalar, 4, 1> gather(const BeamModel& model, int e, const Eigen::M
 
 }  // namespace
 
-BeamModel::BeamModel(const BeamProperties& properties, int elements) : properties_(properties), elements_(elements) {
+BeamModel::BeamModel(const BeamProperties& properties, int elements)
+    : BeamModel(properties, uniform_nodes(properties.length, elements)) {}
+
+BeamModel::BeamModel(const BeamProperties& properties, std::vector<double> nodes)
+    : properties_(properties), nodes_(std::move(nodes)) {
   require_positive("length", properties.length, "m");
   require_positive("mass_per_length", properties.mass_per_length, "kg/m");
   require_positive("tension", properties.tension, "N");
   if (!(properties.ei >= 0.0) || !std::isfinite(properties.ei)) throw_invalid("ei", properties.ei, "a finite value >= 0 (N m^2)");
-  require_in_range("elements", elements, 2, 1000000);
-  const int nodes = elements + 1;
-  dof_.assign(2 * nodes, -1);
+  require_in_range("nodes", static_cast<long long>(nodes_.size()), 3, 1000001);
+  bool increasing = nodes_.front() == 0.0 && nodes_.back() == properties.length;
+  for (std::size_t i = 1; i < nodes_.size(); ++i) increasing = increasing && nodes_[i] > nodes_[i - 1];
+  if (!increasing) {
+    throw InvalidParameter("nodes", fmt::format(": expected positions increasing from 0 to the length, {} m", properties.length));
+  }
+  const int elements = this->elements();
+  dof_.assign(2 * nodes_.size(), -1);
   Eigen::Index next = 0;
-  for (int i = 0; i < nodes; ++i) {
+  for (int i = 0; i <= elements; ++i) {
     const bool end = i == 0 || i == elements;
     if (!end) dof_[2 * i] = next++;
     if (!end || properties.ends == BeamEnds::pinned) dof_[2 * i + 1] = next++;
   }
-  const double h = element_length();
-  const Matrix4 m = properties.mass_per_length * unit_mass(h);
-  const Matrix4 k = properties.ei * bending(h) + properties.tension * geometric(h);
   std::vector<Eigen::Triplet<double>> mass, stiffness;
   for (int e = 0; e < elements; ++e) {
-    add_element(mass, element_dofs(*this, e), m);
-    add_element(stiffness, element_dofs(*this, e), k);
+    const double h = element_length(e);
+    add_element(mass, element_dofs(*this, e), properties.mass_per_length * unit_mass(h));
+    add_element(stiffness, element_dofs(*this, e), properties.ei * bending(h) + properties.tension * geometric(h));
   }
   mass_.resize(next, next);
   stiffness_.resize(next, next);
@@ -129,7 +155,6 @@ BeamModel::BeamModel(const BeamProperties& properties, int elements) : propertie
 
 Eigen::SparseMatrix<double> BeamModel::damping(const std::vector<PointDashpot>& dashpots) const {
   std::vector<Eigen::Triplet<double>> triplets;
-  const double h = element_length();
   for (std::size_t i = 0; i < dashpots.size(); ++i) {
     const PointDashpot& d = dashpots[i];
     if (!(d.position_m > 0.0 && d.position_m < properties_.length)) {
@@ -138,7 +163,7 @@ Eigen::SparseMatrix<double> BeamModel::damping(const std::vector<PointDashpot>& 
     }
     require_positive(fmt::format("dashpots[{}].coefficient", i), d.coefficient_n_s_m, "N s/m");
     const auto [e, s] = element_at(*this, d.position_m);
-    const Eigen::Vector4d n = shape(s, h);
+    const Eigen::Vector4d n = shape(s, element_length(e));
     add_element(triplets, element_dofs(*this, e), d.coefficient_n_s_m * n * n.transpose());
   }
   Eigen::SparseMatrix<double> out(size(), size());
@@ -160,42 +185,135 @@ template <class Scalar>
 std::pair<Scalar, Scalar> BeamModel::at(const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& u, double x) const {
   const auto [e, s] = element_at(*this, x);
   const Eigen::Matrix<Scalar, 4, 1> q = gather(*this, e, u);
-  return {shape(s, element_length()).template cast<Scalar>().dot(q),
-          shape_slope(s, element_length()).template cast<Scalar>().dot(q)};
+  return {shape(s, element_length(e)).template cast<Scalar>().dot(q),
+          shape_slope(s, element_length(e)).template cast<Scalar>().dot(q)};
 }
 template std::pair<double, double> BeamModel::at(const Eigen::VectorXd&, double) const;
 template std::pair<std::complex<double>, std::complex<double>> BeamModel::at(const Eigen::VectorXcd&, double) const;
 
+namespace {
+
+/// N(x): the free vector whose dot product with u is the displacement at x.
+Eigen::VectorXd point_vector(const BeamModel& model, double x) {
+  const auto [e, s] = element_at(model, x);
+  const Eigen::Vector4d n = shape(s, model.element_length(e));
+  const std::array<Eigen::Index, 4> dofs = element_dofs(model, e);
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(model.size());
+  for (int i = 0; i < 4; ++i) {
+    if (dofs[i] >= 0) out(dofs[i]) = n(i);
+  }
+  return out;
+}
+
+}  // namespace
+
 NewmarkStepper::NewmarkStepper(const BeamModel& model, double dt, const Eigen::VectorXd& u0, const Eigen::VectorXd& v0,
-                               const Eigen::VectorXd& load0, Eigen::SparseMatrix<double> damping)
-    : model_(model), damping_(std::move(damping)), dt_(dt), u_(u0), v_(v0) {
+                               const Eigen::VectorXd& load0, Eigen::SparseMatrix<double> damping,
+                               std::vector<BeamDamper> dampers)
+    : model_(model), damping_(std::move(damping)), dt_(dt), u_(u0), v_(v0), dampers_(std::move(dampers)) {
   require_positive("dt", dt, "s");
   if (u0.size() != model.size() || v0.size() != model.size() || load0.size() != model.size()) {
     throw InvalidParameter("initial state", fmt::format(": expected {} values (the free degrees of freedom)", model.size()));
   }
   if (damping_.size() == 0) damping_.resize(model.size(), model.size());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> mass(model.mass());
-  a_ = mass.solve(load0 - model.stiffness() * u0 - damping_ * v0);
   const Eigen::SparseMatrix<double> effective =
       model.mass() + (0.5 * dt) * damping_ + (0.25 * dt * dt) * model.stiffness();
   effective_.compute(effective);
   if (effective_.info() != Eigen::Success) throw NumericalError("Newmark: M + dt C / 2 + dt^2 K / 4 is not positive definite");
+  const double length = model.properties().length;
+  attachment_.resize(model.size(), static_cast<Eigen::Index>(dampers_.size()));
+  for (std::size_t d = 0; d < dampers_.size(); ++d) {
+    const double x = dampers_[d].position_m;
+    if (!(x > 0.0 && x < length)) {
+      throw_invalid(fmt::format("dampers[{}].position", d), x,
+                    fmt::format("a distance from end 1 > 0 and < the span's length, {} m", length));
+    }
+    if (dampers_[d].damper.dt() != dt) {
+      throw InvalidParameter(fmt::format("dampers[{}]", d),
+                             fmt::format(" steps by {} s: expected the beam's step, {} s", dampers_[d].damper.dt(), dt));
+    }
+    attachment_.col(static_cast<Eigen::Index>(d)) = point_vector(model, x);
+  }
+  influence_ = effective_.solve(attachment_);
+  coupling_ = attachment_.transpose() * influence_;
+  start_dampers(load0);
+}
+
+// M a0 = F0 - K u0 - C v0 + N F with F_d = -m_c,d a_c,d (the dampers at rest, undeflected:
+// their cables carry nothing yet), a_c = N^T a0: with S_m = M^-1 N and G_m = N^T S_m,
+// (I + G_m diag(m_c)) a_c = N^T M^-1 (F0 - K u0 - C v0).
+void NewmarkStepper::start_dampers(const Eigen::VectorXd& load0) {
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> mass(model_.mass());
+  a_ = mass.solve(load0 - model_.stiffness() * u_ - damping_ * v_);
+  const auto n = static_cast<Eigen::Index>(dampers_.size());
+  forces_ = Eigen::VectorXd::Zero(n);
+  damper_work_ = Eigen::VectorXd::Zero(n);
+  if (n == 0) return;
+  const Eigen::MatrixXd s = mass.solve(attachment_);
+  Eigen::VectorXd clamp_mass(n);
+  for (Eigen::Index d = 0; d < n; ++d) clamp_mass(d) = -dampers_[d].damper.start(0.0).force_per_acceleration_kg;
+  const Eigen::MatrixXd system = Eigen::MatrixXd::Identity(n, n) + (attachment_.transpose() * s) * clamp_mass.asDiagonal();
+  const Eigen::VectorXd clamp = system.partialPivLu().solve(attachment_.transpose() * a_);
+  for (Eigen::Index d = 0; d < n; ++d) forces_(d) = dampers_[d].damper.start(clamp(d)).force_n;
+  a_ += s * forces_;
 }
 
 // With beta = 1/4, gamma = 1/2: u+ = u + dt v + dt^2 (a + a+) / 4 and v+ = v + dt (a + a+) / 2,
-// so (M + dt C / 2 + dt^2 K / 4) a+ = F+ - C (v + dt a / 2) - K (u + dt v + dt^2 a / 4).
+// so (M + dt C / 2 + dt^2 K / 4) a+ = F+ - C (v + dt a / 2) - K (u + dt v + dt^2 a / 4) + N F+.
 void NewmarkStepper::step(const Eigen::VectorXd& load_next) {
   const Eigen::VectorXd predicted_u = u_ + dt_ * v_ + (0.25 * dt_ * dt_) * a_;
   const Eigen::VectorXd predicted_v = v_ + (0.5 * dt_) * a_;
   rhs_ = load_next - model_.stiffness() * predicted_u - damping_ * predicted_v;
-  const Eigen::VectorXd a_next = effective_.solve(rhs_);
+  const Eigen::VectorXd clamps_before = attachment_.transpose() * u_;
+  const Eigen::VectorXd forces_before = forces_;
+  const Eigen::VectorXd a_next = coupled_acceleration(effective_.solve(rhs_));
   const Eigen::VectorXd v_before = v_;
   u_ = predicted_u + (0.25 * dt_ * dt_) * a_next;
   v_ = predicted_v + (0.5 * dt_) * a_next;
   a_ = a_next;
   const Eigen::VectorXd v_sum = v_before + v_;
   dissipated_ += 0.25 * dt_ * v_sum.dot(damping_ * v_sum);
+  if (!dampers_.empty()) {
+    damper_work_ += 0.5 * (attachment_.transpose() * u_ - clamps_before).cwiseProduct(forces_before + forces_);
+  }
   time_ += dt_;
+}
+
+// Newton on r(a_c) = a_c - N^T a0 - G F(a_c), its Jacobian I - G diag(dF/da_c) from the
+// dampers' own tangents; then a+ = a0 + S F.
+Eigen::VectorXd NewmarkStepper::coupled_acceleration(const Eigen::VectorXd& uncoupled) {
+  if (dampers_.empty()) return uncoupled;
+  constexpr int kMaxIterations = 50;
+  constexpr double kTolerance = 1e-11;
+  const auto n = static_cast<Eigen::Index>(dampers_.size());
+  const Eigen::VectorXd free_clamps = attachment_.transpose() * uncoupled;
+  Eigen::VectorXd clamps = free_clamps + coupling_ * forces_;
+  Eigen::VectorXd slopes(n);
+  for (int iteration = 0;; ++iteration) {
+    for (Eigen::Index d = 0; d < n; ++d) {
+      const damper::ClampResponse response = dampers_[d].damper.trial(clamps(d));
+      forces_(d) = response.force_n;
+      slopes(d) = response.force_per_acceleration_kg;
+    }
+    const Eigen::VectorXd pulled = coupling_ * forces_;
+    const Eigen::VectorXd residual = clamps - free_clamps - pulled;
+    const double scale = std::max({clamps.lpNorm<Eigen::Infinity>(), free_clamps.lpNorm<Eigen::Infinity>(),
+                                   pulled.lpNorm<Eigen::Infinity>(), 1e-300});
+    Eigen::Index worst = 0;
+    const double norm = residual.cwiseAbs().maxCoeff(&worst);
+    if (norm <= kTolerance * scale) break;
+    if (iteration == kMaxIterations || !std::isfinite(norm)) {
+      throw NumericalError(fmt::format(
+          "the span and its dampers in the time step to t = {:.9g} s: the clamps' accelerations did not converge in {} "
+          "Newton iterations (residual {:.3g} relative, largest at damper {} at {} m)",
+          time_ + dt_, iteration, norm / scale, worst + 1, dampers_[static_cast<std::size_t>(worst)].position_m));
+    }
+    Eigen::MatrixXd jacobian = Eigen::MatrixXd::Identity(n, n);
+    jacobian -= coupling_ * slopes.asDiagonal();
+    clamps -= jacobian.partialPivLu().solve(residual);
+  }
+  for (BeamDamper& d : dampers_) d.damper.commit();
+  return uncoupled + influence_ * forces_;
 }
 
 double NewmarkStepper::energy() const {
@@ -236,6 +354,198 @@ bool settled(const std::vector<double>& envelope, double tolerance) {
 
 }  // namespace
 
+namespace {
+
+/// The span's dampers at their positions from end 1, each stepped by `dt`, in the
+/// file's order (a damper at both ends: end 1's first).
+std::vector<BeamDamper> dampers_in_time(const Span& span, double dt, const damper::TimeDomainOptions& options,
+                                        std::vector<std::string>& names) {
+  if (!span.masses().empty()) {
+    throw InvalidParameter("mass[0]", ": masses along the span are not modelled in time yet; take them out of the span file "
+                                      "(the balance, `stockbridge span`, models them)");
+  }
+  std::vector<BeamDamper> out;
+  for (std::size_t j = 0; j < span.dampers().size(); ++j) {
+    const SpanDamper& d = span.dampers()[j];
+    if (!d.damper) {
+      throw InvalidParameter(fmt::format("damper[{}]", j),
+                             " is a measured impedance sheet, which has no form in time: give the damper's own file");
+    }
+    std::vector<double> x = d.along;
+    if (!d.in_span()) {
+      x.push_back(d.position);
+      if (d.both_ends) x.push_back(span.length() - d.position);
+    }
+    for (const double position : x) {
+      out.push_back({position, damper::DamperInTime(*d.damper, dt, options)});
+      names.push_back(d.name);
+    }
+  }
+  return out;
+}
+
+/// Nodes about `spacing` apart with one at each of `fixed` (m from end 1).
+std::vector<double> mesh_nodes(double length, double spacing, std::vector<double> fixed) {
+  fixed.push_back(0.0);
+  fixed.push_back(length);
+  std::sort(fixed.begin(), fixed.end());
+  fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
+  std::vector<double> nodes{0.0};
+  for (std::size_t i = 1; i < fixed.size(); ++i) {
+    const double a = fixed[i - 1], b = fixed[i];
+    const int parts = std::max(1, static_cast<int>(std::ceil((b - a) / spacing)));
+    for (int j = 1; j < parts; ++j) nodes.push_back(a + (b - a) * j / parts);
+    nodes.push_back(b);
+  }
+  if (nodes.size() == 2) nodes.insert(nodes.begin() + 1, 0.5 * length);
+  return nodes;
+}
+
+/// The beam's natural mode nearest w_asked (shift-invert about it: one mode by
+/// inverse iteration, a dense solve of the pencil being too large), mass-normalised,
+/// with its w^2.
+std::pair<Eigen::VectorXd, double> drive_mode(const BeamModel& model, double w_asked, double frequency_hz) {
+  const Eigen::SparseMatrix<double> shifted = model.stiffness() - (w_asked * w_asked) * model.mass();
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> shift_invert(shifted);
+  if (shift_invert.info() != Eigen::Success) throw NumericalError("the drive frequency is a natural frequency to round-off");
+  Eigen::VectorXd mode = Eigen::VectorXd::Ones(model.size());
+  double w2 = w_asked * w_asked, change = 0.0;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    mode = shift_invert.solve(model.mass() * mode);
+    mode /= std::sqrt(mode.dot(model.mass() * mode));
+    const double next = mode.dot(model.stiffness() * mode);
+    change = std::abs(next - w2) / w2;
+    w2 = next;
+    if (change <= 1e-14) return {mode, w2};
+  }
+  // Two modes about equally near the drive: the iteration cannot pick one.
+  throw NumericalError(fmt::format("the span's natural mode nearest {} Hz: inverse iteration did not converge in 200 "
+                                   "iterations (w^2 still changing by {:.2g} relative); two modes lie about equally "
+                                   "near: ask for a frequency nearer one of them",
+                                   frequency_hz, change));
+}
+
+/// The EBM's wind (a) and self-damping as a distributed force c(x) y_t on the
+/// velocity's component at the drive: c_e from element e's local antinode
+/// amplitude, so that over a loop mean(q v) = c w^2 Y^2 / 4 is the EBM's net power
+/// per length there, (P_w - P_s) / L.
+class EbmWindLoad {
+ public:
+  EbmWindLoad(const Span& span, const BeamModel& model, double w, double k) : span_(span), model_(model), w_(w), k_(k) {}
+
+  /// The complex amplitude of q = c v at the drive, for the standing wave y^.
+  Eigen::VectorXcd operator()(const Eigen::VectorXcd& y) const {
+    const Conductor& conductor = span_.conductor();
+    const double f = w_ / (2.0 * std::numbers::pi), length = span_.length();
+    Eigen::VectorXcd load = Eigen::VectorXcd::Zero(model_.size());
+    for (int e = 0; e < model_.elements(); ++e) {
+      const double amplitude = local_antinode(model_, y, 0.5 * (model_.nodes()[e] + model_.nodes()[e + 1]), k_);
+      if (!(amplitude > 0.0)) continue;
+      const double net = (span_.wind().power(amplitude, f, conductor.diameter, length) -
+                          span_.self_damping().power(amplitude, f, conductor, span_.tension(), length)) /
+                         length;
+      const std::complex<double> c(0.0, 4.0 * net / (w_ * amplitude * amplitude));  // j w c
+      const std::array<Eigen::Index, 4> dofs = element_dofs(model_, e);
+      const Eigen::Vector4cd part = c * (unit_mass(model_.element_length(e)) * gather(model_, e, y));
+      for (int i = 0; i < 4; ++i) {
+        if (dofs[i] >= 0) load(dofs[i]) += part(i);
+      }
+    }
+    return load;
+  }
+
+ private:
+  const Span& span_;
+  const BeamModel& model_;
+  double w_, k_;
+};
+
+/// A damper's samples over one period: the clamp's force and velocity at each step,
+/// the work and dissipation at the period's start.
+struct DamperPeriod {
+  std::vector<double> force, velocity;
+  double work_start = 0.0, dissipated_start = 0.0;
+};
+
+/// What one period gave: the envelope, the loop amplitudes next to the clamps, the dampers' figures.
+struct PeriodFigures {
+  double envelope = 0.0;
+  std::array<double, 2> end_loop{};
+  std::vector<DamperInTimeFigures> dampers;
+};
+
+/// Whether the envelope's means over consecutive windows have settled (as settled()
+/// does on the envelope itself, on three windows' means).
+bool settled_in_the_mean(const std::vector<double>& envelope, int window, double tolerance) {
+  const std::size_t n = envelope.size(), w = static_cast<std::size_t>(window);
+  if (n < 3 * w || n % w != 0) return false;  // judged once a window
+  auto mean = [&](std::size_t end) {
+    double sum = 0.0;
+    for (std::size_t i = end - w; i < end; ++i) sum += envelope[i];
+    return sum / static_cast<double>(w);
+  };
+  const double m0 = mean(n - 2 * w), m1 = mean(n - w), m2 = mean(n);
+  const double d1 = m1 - m0, d2 = m2 - m1;
+  double remaining = std::abs(d2);
+  if (d1 != 0.0 && d2 / d1 > 0.0 && d2 / d1 < 1.0) remaining = std::abs(d2 * d2 / (d1 - d2));
+  return remaining <= tolerance * m2;
+}
+
+constexpr int kForceHarmonics = 5;
+
+DamperInTimeFigures damper_figures(const DamperPeriod& period, const BeamDamper& d, double work_now, double period_s,
+                                   int steps, std::string name) {
+  DamperInTimeFigures out;
+  out.name = std::move(name);
+  out.position_m = d.position_m;
+  out.power_w = -(work_now - period.work_start) / period_s;
+  out.dissipated_w = (d.damper.dissipated() - period.dissipated_start) / period_s;
+  std::complex<double> velocity = 0.0;
+  for (int h = 1; h <= kForceHarmonics; ++h) {
+    std::complex<double> force = 0.0;
+    for (int j = 0; j < steps; ++j) {
+      const std::complex<double> phasor = std::polar(2.0 / steps, -2.0 * std::numbers::pi * h * (j + 1) / steps);
+      force += period.force[j] * phasor;
+      if (h == 1) velocity += period.velocity[j] * phasor;
+    }
+    out.force_harmonics_n.push_back(std::abs(force));
+  }
+  out.velocity_amplitude_m_s = std::abs(velocity);
+  return out;
+}
+
+/// The steady figures of `out`: means over the last `count` periods of `records`.
+void take_means(const std::vector<PeriodFigures>& records, int count, EbmWindHistory& out) {
+  out.figure_periods = static_cast<int>(std::min<std::size_t>(records.size(), static_cast<std::size_t>(count)));
+  if (out.figure_periods == 0) return;
+  const auto first = records.end() - out.figure_periods;
+  const double n = out.figure_periods;
+  double sum = 0.0, squares = 0.0;
+  out.dampers = first->dampers;
+  for (DamperInTimeFigures& d : out.dampers) {
+    d.power_w = d.dissipated_w = d.velocity_amplitude_m_s = 0.0;
+    std::fill(d.force_harmonics_n.begin(), d.force_harmonics_n.end(), 0.0);
+  }
+  for (auto r = first; r != records.end(); ++r) {
+    sum += r->envelope;
+    squares += r->envelope * r->envelope;
+    for (int e = 0; e < 2; ++e) out.end_loop_amplitude_m[e] += r->end_loop[e] / n;
+    for (std::size_t d = 0; d < out.dampers.size(); ++d) {
+      DamperInTimeFigures& to = out.dampers[d];
+      const DamperInTimeFigures& from = r->dampers[d];
+      to.power_w += from.power_w / n;
+      to.dissipated_w += from.dissipated_w / n;
+      to.velocity_amplitude_m_s += from.velocity_amplitude_m_s / n;
+      for (std::size_t h = 0; h < to.force_harmonics_n.size(); ++h) to.force_harmonics_n[h] += from.force_harmonics_n[h] / n;
+    }
+  }
+  out.antinode_amplitude_m = sum / n;
+  out.envelope_fluctuation = std::sqrt(std::max(0.0, squares / n - out.antinode_amplitude_m * out.antinode_amplitude_m)) /
+                             out.antinode_amplitude_m;
+}
+
+}  // namespace
+
 EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWindOptions& options,
                                   const std::vector<PointDashpot>& dashpots) {
   require_positive("frequency", options.frequency_hz, "Hz");
@@ -244,35 +554,24 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   require_in_range("steps_per_period", options.steps_per_period, 8, 100000);
   require_positive("start_amplitude", options.start_amplitude_m, "m");
   require_positive("settled_change", options.settled_change, "");
+  require_positive("settled_mean_change", options.settled_mean_change, "");
+  within_field("damper", [&] { options.damper.validate(); });
   const Conductor& conductor = span.conductor();
   const BeamProperties beam{span.length(), conductor.mass_per_length, span.tension(), conductor.ei_min, ends};
   const double w_asked = 2.0 * std::numbers::pi * options.frequency_hz;
   const double wavelength = 2.0 * std::numbers::pi / wavenumber(beam, w_asked);
-  const int elements = std::max(2, static_cast<int>(std::ceil(options.elements_per_wavelength * beam.length / wavelength)));
-  const BeamModel model(beam, elements);
 
-  // The mode nearest the drive (shift-invert about the asked frequency: a dense
-  // solve of the pencil is too large here, so one mode by inverse iteration).
-  const Eigen::SparseMatrix<double> shifted = model.stiffness() - (w_asked * w_asked) * model.mass();
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> shift_invert(shifted);
-  if (shift_invert.info() != Eigen::Success) throw NumericalError("the drive frequency is a natural frequency to round-off");
-  Eigen::VectorXd mode = Eigen::VectorXd::Ones(model.size());
-  double w2 = w_asked * w_asked, change = 0.0;
-  bool found = false;
-  for (int iteration = 0; iteration < 200 && !found; ++iteration) {
-    mode = shift_invert.solve(model.mass() * mode);
-    mode /= std::sqrt(mode.dot(model.mass() * mode));
-    const double next = mode.dot(model.stiffness() * mode);
-    change = std::abs(next - w2) / w2;
-    found = change <= 1e-14;
-    w2 = next;
+  // The dampers' positions are the mesh's nodes; their steppers need dt, which
+  // follows from the mesh's drive mode: placed first, stepped once dt is known.
+  std::vector<std::string> names;
+  std::vector<double> fixed;
+  for (const BeamDamper& d : dampers_in_time(span, 1.0, options.damper, names)) fixed.push_back(d.position_m);
+  for (const PointDashpot& d : dashpots) {
+    if (d.position_m > 0.0 && d.position_m < beam.length) fixed.push_back(d.position_m);  // else refused below
   }
-  if (!found) {  // two modes about equally near the drive: the iteration cannot pick one
-    throw NumericalError(fmt::format("the span's natural mode nearest {} Hz: inverse iteration did not converge in 200 "
-                                     "iterations (w^2 still changing by {:.2g} relative); two modes lie about equally "
-                                     "near: ask for a frequency nearer one of them",
-                                     options.frequency_hz, change));
-  }
+  const BeamModel model(beam, mesh_nodes(beam.length, wavelength / options.elements_per_wavelength, fixed));
+  const int elements = model.elements();
+  const auto [mode, w2] = drive_mode(model, w_asked, options.frequency_hz);
   const double wn = std::sqrt(w2);
   // Newmark's average acceleration lengthens the period: tan(w dt / 2) = wn dt / 2.
   // dt is chosen so that the stepped mode's period is exactly steps_per_period steps.
@@ -281,71 +580,98 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   const double w = 2.0 * std::numbers::pi / (steps * dt);
   const double f = w / (2.0 * std::numbers::pi);
   const double k = wavenumber(beam, w);
+  names.clear();
+  std::vector<BeamDamper> dampers = dampers_in_time(span, dt, options.damper, names);
 
   // The start: the mode at its displacement peak, its largest local antinode amplitude as asked.
   const Eigen::VectorXcd mode_c = mode.cast<std::complex<double>>();
   double largest = 0.0;
-  for (int i = 0; i <= elements; ++i) largest = std::max(largest, local_antinode(model, mode_c, i * model.element_length(), k));
+  for (const double x : model.nodes()) largest = std::max(largest, local_antinode(model, mode_c, x, k));
   const Eigen::VectorXd u0 = mode * (options.start_amplitude_m / largest);
 
-  const Matrix4 unit = unit_mass(model.element_length());
   const double length = beam.length;
-  // c_e from element e's local antinode amplitude: over a loop, mean(q v) = c w^2 Y^2 / 4
-  // is the EBM's net power per length there, (P_w - P_s) / L.
-  auto damping_load = [&](const Eigen::VectorXcd& y) {
-    Eigen::VectorXcd load = Eigen::VectorXcd::Zero(model.size());
-    for (int e = 0; e < elements; ++e) {
-      const double amplitude = local_antinode(model, y, (e + 0.5) * model.element_length(), k);
-      if (!(amplitude > 0.0)) continue;
-      const double net = (span.wind().power(amplitude, f, conductor.diameter, length) -
-                          span.self_damping().power(amplitude, f, conductor, span.tension(), length)) /
-                         length;
-      const std::complex<double> c(0.0, 4.0 * net / (w * amplitude * amplitude));  // j w c
-      const std::array<Eigen::Index, 4> dofs = element_dofs(model, e);
-      const Eigen::Vector4cd part = c * (unit * gather(model, e, y));
-      for (int i = 0; i < 4; ++i) {
-        if (dofs[i] >= 0) load(dofs[i]) += part(i);
-      }
-    }
-    return load;  // the complex amplitude of q = c v at the drive frequency
-  };
-
+  const EbmWindLoad wind_load(span, model, w, k);
   EbmWindHistory out;
   out.frequency_hz = f;
   out.elements = elements;
   out.dt_s = dt;
   Eigen::VectorXcd y = u0.cast<std::complex<double>>();  // the standing wave at t = 0
-  Eigen::VectorXcd load_amplitude = damping_load(y);
+  Eigen::VectorXcd load_amplitude = wind_load(y);
   const auto load_at = [&](double t) -> Eigen::VectorXd { return (load_amplitude * std::polar(1.0, w * t)).real(); };
-  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load_at(0.0), model.damping(dashpots));
+  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load_at(0.0), model.damping(dashpots),
+                         std::move(dampers));
+  const std::size_t n_dampers = stepper.dampers().size();
+  std::vector<DamperPeriod> damper_periods(n_dampers);
+  for (DamperPeriod& p : damper_periods) p.force.resize(steps), p.velocity.resize(steps);
   const int periods = static_cast<int>(std::ceil(options.duration_s * f));
+  // Two round trips of a wave along the span: the window of the means.
+  const int window = std::max(20, static_cast<int>(std::lround(4.0 * length / (w / k) * f)));
+  std::vector<PeriodFigures> records;
   Eigen::VectorXcd accumulated(model.size());
+  const int round_trip = std::max(1, static_cast<int>(std::lround(2.0 * length / (w / k) * f)));
+  std::deque<Eigen::VectorXcd> phasors;
+  Eigen::VectorXcd phasor_sum = Eigen::VectorXcd::Zero(model.size());
   int quiet_periods = 0;
-  for (int period = 0; period < periods; ++period) {
+  for (int period = 0; period < periods && !out.interrupted; ++period) {
+    for (std::size_t d = 0; d < n_dampers; ++d) {
+      damper_periods[d].work_start = stepper.dampers_work_of(d);
+      damper_periods[d].dissipated_start = stepper.dampers()[d].damper.dissipated();
+    }
     accumulated.setZero();
     for (int s = 0; s < steps; ++s) {
       const double t = stepper.time() + dt;
       stepper.step(load_at(t));
       accumulated += stepper.displacement().cast<std::complex<double>>() * std::polar(2.0 / steps, -w * t);
+      for (std::size_t d = 0; d < n_dampers; ++d) {
+        damper_periods[d].force[s] = stepper.dampers()[d].damper.force();
+        damper_periods[d].velocity[s] = stepper.clamp_velocity(d);
+      }
+      if (options.observer) options.observer(stepper);
+      if (options.stop && options.stop->load()) {
+        out.interrupted = true;
+        break;
+      }
     }
-    y = accumulated;  // y(t) = Re(y^ e^{jwt}) over the last period
-    load_amplitude = damping_load(y);
-    out.envelope_m.push_back(local_antinode(model, y, 0.5 * length, k));
+    if (out.interrupted) break;  // a part period: the figures stay the whole periods'
+    // y^ at the drive: the mean of the periods' phasors over one round trip of a wave,
+    // whose neighbouring modes (Delta f = c / 2L apart) it cancels.
+    phasors.push_back(accumulated);
+    phasor_sum += accumulated;
+    if (phasors.size() > static_cast<std::size_t>(round_trip)) {
+      phasor_sum -= phasors.front();
+      phasors.pop_front();
+    }
+    y = phasor_sum / static_cast<double>(phasors.size());  // y(t) = Re(y^ e^{jwt})
+    load_amplitude = wind_load(y);
+    PeriodFigures& record = records.emplace_back();
+    record.envelope = local_antinode(model, y, 0.5 * length, k);
+    record.end_loop = {local_antinode(model, y, 0.5 * model.element_length(0), k),
+                       local_antinode(model, y, length - 0.5 * model.element_length(elements - 1), k)};
+    for (std::size_t d = 0; d < n_dampers; ++d) {
+      record.dampers.push_back(damper_figures(damper_periods[d], stepper.dampers()[d], stepper.dampers_work_of(d),
+                                              steps * dt, steps, names[d]));
+    }
+    out.envelope_m.push_back(record.envelope);
     // Settled for 20 periods in a row: a start's transient (the drive mode reshaped
     // by the dashpots) can look settled for a moment.
     quiet_periods = settled(out.envelope_m, options.settled_change) ? quiet_periods + 1 : 0;
     if (quiet_periods >= 20) {
-      out.settled = true;
+      out.settled_by = SettledBy::envelope;
+      break;
+    }
+    if (settled_in_the_mean(out.envelope_m, window, options.settled_mean_change)) {
+      out.settled_by = SettledBy::mean;
       break;
     }
   }
+  out.settled = out.settled_by != SettledBy::not_settled;
   out.time_s = stepper.time();
   for (const PointDashpot& d : dashpots) {  // c w^2 |y^(x)|^2 / 2 over the last period
     out.dashpot_power_w.push_back(0.5 * d.coefficient_n_s_m * w * w * std::norm(model.at(y, d.position_m).first));
   }
-  out.antinode_amplitude_m = out.envelope_m.back();
-  for (int i = 0; i <= elements; ++i) {
-    const double x = i * model.element_length();
+  const int taken = out.settled_by == SettledBy::mean ? window : out.settled_by == SettledBy::envelope ? 20 : 1;
+  take_means(records, taken, out);
+  for (const double x : model.nodes()) {
     out.x_m.push_back(x);
     out.amplitude_m.push_back(std::abs(model.at(y, x).first));
   }
