@@ -74,6 +74,7 @@ int run_simulate_command(SimulateOptions& options, Invocation& invocation) {
   const io::SpanFile file =
       read_span_input(invocation, options.span_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
   invocation.flush_warnings();
+  span::check_in_time(file.span);
   const requests::Table<requests::SimulationRow> table = requests::simulation_table(
       requests::probe_columns(requests::simulation_probes(file.span, options.request)),
       requests::simulation_dampers(file.span));

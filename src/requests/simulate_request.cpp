@@ -97,6 +97,7 @@ SimulateResult run_simulate(const span::Span& span, const span::BalanceOptions& 
                             const std::function<void(const SimulationRow&)>& row,
                             const std::function<void(double, double)>& progress, const std::atomic<bool>* stop) {
   validate(request);
+  span::check_in_time(span);
   SimulateResult result;
   result.asked_frequency_hz = request.frequency_hz;
   result.ends = request.ends;

@@ -239,6 +239,16 @@ NewmarkStepper::NewmarkStepper(const BeamModel& model, double dt, const Eigen::V
   start_dampers(load0);
 }
 
+void NewmarkStepper::set_damping(Eigen::SparseMatrix<double> damping) {
+  damping_ = std::move(damping);
+  effective_.factorize(model_.mass() + (0.5 * dt_) * damping_ + (0.25 * dt_ * dt_) * model_.stiffness());
+  if (effective_.info() != Eigen::Success) throw NumericalError("Newmark: M + dt C / 2 + dt^2 K / 4 is not positive definite");
+  if (attachment_.cols() > 0) {
+    influence_ = effective_.solve(attachment_);
+    coupling_ = attachment_.transpose() * influence_;
+  }
+}
+
 // M a0 = F0 - K u0 - C v0 + N F with F_d = -m_c,d a_c,d (the dampers at rest, undeflected:
 // their cables carry nothing yet), a_c = N^T a0: with S_m = M^-1 N and G_m = N^T S_m,
 // (I + G_m diag(m_c)) a_c = N^T M^-1 (F0 - K u0 - C v0).
@@ -261,18 +271,22 @@ void NewmarkStepper::start_dampers(const Eigen::VectorXd& load0) {
 // With beta = 1/4, gamma = 1/2: u+ = u + dt v + dt^2 (a + a+) / 4 and v+ = v + dt (a + a+) / 2,
 // so (M + dt C / 2 + dt^2 K / 4) a+ = F+ - C (v + dt a / 2) - K (u + dt v + dt^2 a / 4) + N F+.
 void NewmarkStepper::step(const Eigen::VectorXd& load_next) {
-  const Eigen::VectorXd predicted_u = u_ + dt_ * v_ + (0.25 * dt_ * dt_) * a_;
-  const Eigen::VectorXd predicted_v = v_ + (0.5 * dt_) * a_;
-  rhs_ = load_next - model_.stiffness() * predicted_u - damping_ * predicted_v;
-  const Eigen::VectorXd clamps_before = attachment_.transpose() * u_;
+  predicted_u_ = u_ + dt_ * v_ + (0.25 * dt_ * dt_) * a_;
+  predicted_v_ = v_ + (0.5 * dt_) * a_;
+  rhs_ = load_next;
+  rhs_.noalias() -= model_.stiffness() * predicted_u_;
+  rhs_.noalias() -= damping_ * predicted_v_;
+  const Eigen::VectorXd clamps_before = attachment_.transpose() * u_;  // a few values: one per damper
   const Eigen::VectorXd forces_before = forces_;
-  const Eigen::VectorXd a_next = coupled_acceleration(effective_.solve(rhs_));
-  const Eigen::VectorXd v_before = v_;
-  u_ = predicted_u + (0.25 * dt_ * dt_) * a_next;
-  v_ = predicted_v + (0.5 * dt_) * a_next;
+  uncoupled_ = effective_.solve(rhs_);
+  const Eigen::VectorXd& a_next = coupled_acceleration(uncoupled_);
+  velocity_sum_ = v_;
+  u_ = predicted_u_ + (0.25 * dt_ * dt_) * a_next;
+  v_ = predicted_v_ + (0.5 * dt_) * a_next;
   a_ = a_next;
-  const Eigen::VectorXd v_sum = v_before + v_;
-  dissipated_ += 0.25 * dt_ * v_sum.dot(damping_ * v_sum);
+  velocity_sum_ += v_;
+  damped_.noalias() = damping_ * velocity_sum_;
+  dissipated_ += 0.25 * dt_ * velocity_sum_.dot(damped_);
   if (!dampers_.empty()) {
     damper_work_ += 0.5 * (attachment_.transpose() * u_ - clamps_before).cwiseProduct(forces_before + forces_);
   }
@@ -281,7 +295,7 @@ void NewmarkStepper::step(const Eigen::VectorXd& load_next) {
 
 // Newton on r(a_c) = a_c - N^T a0 - G F(a_c), its Jacobian I - G diag(dF/da_c) from the
 // dampers' own tangents; then a+ = a0 + S F.
-Eigen::VectorXd NewmarkStepper::coupled_acceleration(const Eigen::VectorXd& uncoupled) {
+const Eigen::VectorXd& NewmarkStepper::coupled_acceleration(Eigen::VectorXd& uncoupled) {
   if (dampers_.empty()) return uncoupled;
   constexpr int kMaxIterations = 50;
   constexpr double kTolerance = 1e-11;
@@ -313,7 +327,8 @@ Eigen::VectorXd NewmarkStepper::coupled_acceleration(const Eigen::VectorXd& unco
     clamps -= jacobian.partialPivLu().solve(residual);
   }
   for (BeamDamper& d : dampers_) d.damper.commit();
-  return uncoupled + influence_ * forces_;
+  uncoupled.noalias() += influence_ * forces_;
+  return uncoupled;
 }
 
 double NewmarkStepper::energy() const {
@@ -338,11 +353,11 @@ double local_antinode(const BeamModel& model, const Eigen::VectorXcd& y, double 
 /// Whether the envelope has settled: the distance to where it is going, below
 /// `tolerance` of it. The envelope approaches its steady value geometrically (the
 /// net power is linear in the amplitude's distance from it), so the value it goes
-/// to is extrapolated from three envelopes 10 periods apart (Aitken's delta^2);
+/// to is extrapolated from three envelopes `apart` periods apart (Aitken's delta^2);
 /// where the last two changes are not such an approach (growing, or changing
 /// sign), it has settled only if it no longer changes.
-bool settled(const std::vector<double>& envelope, double tolerance) {
-  constexpr std::size_t kApart = 10;
+bool settled(const std::vector<double>& envelope, double tolerance, std::size_t apart) {
+  const std::size_t kApart = apart;
   const std::size_t n = envelope.size();
   if (n <= 2 * kApart) return false;
   const double y0 = envelope[n - 1 - 2 * kApart], y1 = envelope[n - 1 - kApart], y2 = envelope[n - 1];
@@ -354,23 +369,29 @@ bool settled(const std::vector<double>& envelope, double tolerance) {
 
 }  // namespace
 
+void check_in_time(const Span& span) {
+  if (!span.masses().empty()) {
+    throw InvalidParameter("mass[0]", ": masses along the span are not modelled in time yet; take them out of the span file "
+                                      "(the balance, `stockbridge span`, models them)");
+  }
+  for (std::size_t j = 0; j < span.dampers().size(); ++j) {
+    if (!span.dampers()[j].damper) {
+      throw InvalidParameter(fmt::format("damper[{}]", j),
+                             " is a measured impedance sheet, which has no form in time: give the damper's own file");
+    }
+  }
+}
+
 namespace {
 
 /// The span's dampers at their positions from end 1, each stepped by `dt`, in the
 /// file's order (a damper at both ends: end 1's first).
 std::vector<BeamDamper> dampers_in_time(const Span& span, double dt, const damper::TimeDomainOptions& options,
                                         std::vector<std::string>& names) {
-  if (!span.masses().empty()) {
-    throw InvalidParameter("mass[0]", ": masses along the span are not modelled in time yet; take them out of the span file "
-                                      "(the balance, `stockbridge span`, models them)");
-  }
+  check_in_time(span);
   std::vector<BeamDamper> out;
   for (std::size_t j = 0; j < span.dampers().size(); ++j) {
     const SpanDamper& d = span.dampers()[j];
-    if (!d.damper) {
-      throw InvalidParameter(fmt::format("damper[{}]", j),
-                             " is a measured impedance sheet, which has no form in time: give the damper's own file");
-    }
     std::vector<double> x = d.along;
     if (!d.in_span()) {
       x.push_back(d.position);
@@ -441,9 +462,7 @@ class EbmWindLoad {
     for (int e = 0; e < model_.elements(); ++e) {
       const double amplitude = local_antinode(model_, y, 0.5 * (model_.nodes()[e] + model_.nodes()[e + 1]), k_);
       if (!(amplitude > 0.0)) continue;
-      const double net = (span_.wind().power(amplitude, f, conductor.diameter, length) -
-                          span_.self_damping().power(amplitude, f, conductor, span_.tension(), length)) /
-                         length;
+      const double net = span_.wind().power(amplitude, f, conductor.diameter, length) / length;
       const std::complex<double> c(0.0, 4.0 * net / (w_ * amplitude * amplitude));  // j w c
       const std::array<Eigen::Index, 4> dofs = element_dofs(model_, e);
       const Eigen::Vector4cd part = c * (unit_mass(model_.element_length(e)) * gather(model_, e, y));
@@ -452,6 +471,25 @@ class EbmWindLoad {
       }
     }
     return load;
+  }
+
+  /// The self-damping as a damping matrix on the whole velocity, sum_e c_e int N^T N
+  /// over element e, c_e = 4 p_s(Y_e) / (w^2 Y_e^2) from the drive's local amplitude.
+  Eigen::SparseMatrix<double> self_damping(const Eigen::VectorXcd& y) const {
+    const Conductor& conductor = span_.conductor();
+    const double f = w_ / (2.0 * std::numbers::pi), length = span_.length();
+    std::vector<Eigen::Triplet<double>> triplets;
+    for (int e = 0; e < model_.elements(); ++e) {
+      const double amplitude = local_antinode(model_, y, 0.5 * (model_.nodes()[e] + model_.nodes()[e + 1]), k_);
+      // Every element's entries, zero or not: the pattern the factorisation was analysed for.
+      const double c = amplitude > 0.0 ? 4.0 * span_.self_damping().power(amplitude, f, conductor, span_.tension(), length) /
+                                             length / (w_ * w_ * amplitude * amplitude)
+                                       : 0.0;
+      add_element(triplets, element_dofs(model_, e), c * unit_mass(model_.element_length(e)));
+    }
+    Eigen::SparseMatrix<double> out(model_.size(), model_.size());
+    out.setFromTriplets(triplets.begin(), triplets.end());
+    return out;
   }
 
  private:
@@ -597,9 +635,16 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   out.dt_s = dt;
   Eigen::VectorXcd y = u0.cast<std::complex<double>>();  // the standing wave at t = 0
   Eigen::VectorXcd load_amplitude = wind_load(y);
-  const auto load_at = [&](double t) -> Eigen::VectorXd { return (load_amplitude * std::polar(1.0, w * t)).real(); };
-  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load_at(0.0), model.damping(dashpots),
-                         std::move(dampers));
+  // Re(A e^{jwt}) = Re A cos(wt) - Im A sin(wt), into one vector a step.
+  Eigen::VectorXd load_re = load_amplitude.real(), load_im = load_amplitude.imag(), load(model.size());
+  const auto load_at = [&](double t) -> const Eigen::VectorXd& {
+    load = std::cos(w * t) * load_re;
+    load.noalias() -= std::sin(w * t) * load_im;
+    return load;
+  };
+  const Eigen::SparseMatrix<double> dashpot_damping = model.damping(dashpots);
+  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load_at(0.0),
+                         dashpot_damping + wind_load.self_damping(y), std::move(dampers));
   const std::size_t n_dampers = stepper.dampers().size();
   std::vector<DamperPeriod> damper_periods(n_dampers);
   for (DamperPeriod& p : damper_periods) p.force.resize(steps), p.velocity.resize(steps);
@@ -608,6 +653,7 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   const int window = std::max(20, static_cast<int>(std::lround(4.0 * length / (w / k) * f)));
   std::vector<PeriodFigures> records;
   Eigen::VectorXcd accumulated(model.size());
+  Eigen::VectorXd accumulated_re(model.size()), accumulated_im(model.size());  // y^'s parts over the period
   const int round_trip = std::max(1, static_cast<int>(std::lround(2.0 * length / (w / k) * f)));
   std::deque<Eigen::VectorXcd> phasors;
   Eigen::VectorXcd phasor_sum = Eigen::VectorXcd::Zero(model.size());
@@ -617,11 +663,13 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
       damper_periods[d].work_start = stepper.dampers_work_of(d);
       damper_periods[d].dissipated_start = stepper.dampers()[d].damper.dissipated();
     }
-    accumulated.setZero();
+    accumulated_re.setZero();
+    accumulated_im.setZero();
     for (int s = 0; s < steps; ++s) {
       const double t = stepper.time() + dt;
       stepper.step(load_at(t));
-      accumulated += stepper.displacement().cast<std::complex<double>>() * std::polar(2.0 / steps, -w * t);
+      accumulated_re.noalias() += (2.0 / steps * std::cos(w * t)) * stepper.displacement();
+      accumulated_im.noalias() -= (2.0 / steps * std::sin(w * t)) * stepper.displacement();
       for (std::size_t d = 0; d < n_dampers; ++d) {
         damper_periods[d].force[s] = stepper.dampers()[d].damper.force();
         damper_periods[d].velocity[s] = stepper.clamp_velocity(d);
@@ -635,6 +683,8 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
     if (out.interrupted) break;  // a part period: the figures stay the whole periods'
     // y^ at the drive: the mean of the periods' phasors over one round trip of a wave,
     // whose neighbouring modes (Delta f = c / 2L apart) it cancels.
+    accumulated.real() = accumulated_re;
+    accumulated.imag() = accumulated_im;
     phasors.push_back(accumulated);
     phasor_sum += accumulated;
     if (phasors.size() > static_cast<std::size_t>(round_trip)) {
@@ -643,6 +693,9 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
     }
     y = phasor_sum / static_cast<double>(phasors.size());  // y(t) = Re(y^ e^{jwt})
     load_amplitude = wind_load(y);
+    load_re = load_amplitude.real();
+    load_im = load_amplitude.imag();
+    stepper.set_damping(dashpot_damping + wind_load.self_damping(y));
     PeriodFigures& record = records.emplace_back();
     record.envelope = local_antinode(model, y, 0.5 * length, k);
     record.end_loop = {local_antinode(model, y, 0.5 * model.element_length(0), k),
@@ -654,7 +707,9 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
     out.envelope_m.push_back(record.envelope);
     // Settled for 20 periods in a row: a start's transient (the drive mode reshaped
     // by the dashpots) can look settled for a moment.
-    quiet_periods = settled(out.envelope_m, options.settled_change) ? quiet_periods + 1 : 0;
+    // Envelopes a round trip apart at least: y^ is a mean over one.
+    const std::size_t apart = static_cast<std::size_t>(std::max(10, round_trip));
+    quiet_periods = settled(out.envelope_m, options.settled_change, apart) ? quiet_periods + 1 : 0;
     if (quiet_periods >= 20) {
       out.settled_by = SettledBy::envelope;
       break;

@@ -22,8 +22,10 @@ struct SimulateRequest {
   double frequency_hz = 0.0;          ///< the drive (the span's natural mode nearest it is taken)
   double duration_s = 60.0;           ///< simulated at most
   std::string ends = "clamped";       ///< clamped | pinned
-  int elements_per_wavelength = span::EbmWindOptions{}.elements_per_wavelength;
-  int steps_per_period = span::EbmWindOptions{}.steps_per_period;
+  /// Finer than the library's defaults, so that the dampers' third and fifth
+  /// harmonics are resolved too (10 elements a wavelength at 3f; docs/time-domain.md).
+  int elements_per_wavelength = 30;
+  int steps_per_period = 160;
   /// Where the history gives the displacement, m from end 1. Empty: the span clamp's
   /// Y_b point (yb_distance from end 1), each damper, mid-span.
   std::vector<double> probes;

@@ -12,10 +12,12 @@
 // freedom.
 //
 // With the EBM's own wind (`settle_on_ebm_wind`), the span's amplitude in time
-// checks the energy balance's: the wind's input and the self-damping act as a
-// distributed force c(x) y_t on the velocity's component at the drive frequency,
-// c(x) from the local antinode amplitude, so that over a loop the power per length
-// is the EBM's at that amplitude.
+// checks the energy balance's: the wind's input acts as a distributed force
+// c_w(x) y_t on the velocity's component at the drive frequency and the
+// self-damping as a distributed damper c_s(x) on the whole velocity, both from the
+// local antinode amplitude, so that over a loop the net power per length is the
+// EBM's at that amplitude. The span's dampers are stepped by their own models in
+// time and solved with the conductor each step.
 
 #include <array>
 #include <atomic>
@@ -134,6 +136,9 @@ class NewmarkStepper {
                  const Eigen::VectorXd& load0, Eigen::SparseMatrix<double> damping = {},
                  std::vector<BeamDamper> dampers = {});
 
+  /// Another damping matrix C from the next step on (the same pattern: the matrix is
+  /// factored again, numerically only).
+  void set_damping(Eigen::SparseMatrix<double> damping);
   /// One step to t + dt under the load at t + dt. With dampers, NumericalError
   /// naming the time and by how much where the coupled iteration does not converge
   /// (or a damper's own iteration fails).
@@ -162,7 +167,8 @@ class NewmarkStepper {
 
  private:
   void start_dampers(const Eigen::VectorXd& load0);
-  Eigen::VectorXd coupled_acceleration(const Eigen::VectorXd& uncoupled);
+  /// The step's acceleration from the one without the dampers (overwritten).
+  const Eigen::VectorXd& coupled_acceleration(Eigen::VectorXd& uncoupled);
 
   const BeamModel& model_;
   Eigen::SparseMatrix<double> damping_;
@@ -170,7 +176,7 @@ class NewmarkStepper {
   double dt_;
   double time_ = 0.0;
   Eigen::VectorXd u_, v_, a_;
-  Eigen::VectorXd rhs_;
+  Eigen::VectorXd rhs_, predicted_u_, predicted_v_, uncoupled_, velocity_sum_, damped_;  ///< a step's workspace
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> effective_;
   std::vector<BeamDamper> dampers_;
   Eigen::MatrixXd attachment_;  ///< N: a column per damper
@@ -196,7 +202,7 @@ struct EbmWindOptions {
   /// spacing), its means over consecutive windows of two round trips of a wave along
   /// the span: the distance of the last window's mean from the value the means
   /// approach (extrapolated as above from three windows), relative, below this.
-  double settled_mean_change = 5e-3;
+  double settled_mean_change = 2e-3;
   /// The dampers' own Newton iteration (its steps_per_period is not used: the
   /// dampers step with the beam).
   damper::TimeDomainOptions damper;
@@ -273,5 +279,8 @@ struct EbmWindHistory {
 /// "mass[i]" for the masses (not modelled in time yet).
 EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWindOptions& options,
                                   const std::vector<PointDashpot>& dashpots = {});
+/// Whether the span can be stepped in time: InvalidParameter as settle_on_ebm_wind
+/// for a damper known only by its sheet ("damper[i]") or masses ("mass[0]").
+void check_in_time(const Span& span);
 
 }  // namespace stockbridge::span

@@ -262,7 +262,8 @@ TEST(ConductorInTime, ALightDashpotSettlesWhereTheBalanceSays) {
   EXPECT_NEAR(history.antinode_amplitude_m / p.amplitude, 1.0, 0.02) << history.antinode_amplitude_m << " m against " << p.amplitude;
   ASSERT_EQ(history.dashpot_power_w.size(), 2u);
   EXPECT_NEAR(history.dashpot_power_w[0] / p.dampers.at(0).power, 1.0, 0.03)
-      << history.dashpot_power_w[0] << " W against " << p.dampers.at(0).power;
+      << history.dashpot_power_w[0] << " W against " << p.dampers.at(0).power << ", settled by "
+      << settled_by_name(history.settled_by) << " at " << history.time_s << " s, Y " << history.antinode_amplitude_m / p.amplitude;
 }
 
 TEST(ConductorInTime, RefusesWhatItCannotModel) {
