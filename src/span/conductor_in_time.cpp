@@ -357,10 +357,9 @@ double local_antinode(const BeamModel& model, const Eigen::VectorXcd& y, double 
 /// where the last two changes are not such an approach (growing, or changing
 /// sign), it has settled only if it no longer changes.
 bool settled(const std::vector<double>& envelope, double tolerance, std::size_t apart) {
-  const std::size_t kApart = apart;
   const std::size_t n = envelope.size();
-  if (n <= 2 * kApart) return false;
-  const double y0 = envelope[n - 1 - 2 * kApart], y1 = envelope[n - 1 - kApart], y2 = envelope[n - 1];
+  if (n <= 2 * apart) return false;
+  const double y0 = envelope[n - 1 - 2 * apart], y1 = envelope[n - 1 - apart], y2 = envelope[n - 1];
   const double d1 = y1 - y0, d2 = y2 - y1;
   double remaining = std::abs(d2);
   if (d1 != 0.0 && d2 / d1 > 0.0 && d2 / d1 < 1.0) remaining = std::abs(d2 * d2 / (d1 - d2));
@@ -446,15 +445,15 @@ std::pair<Eigen::VectorXd, double> drive_mode(const BeamModel& model, double w_a
                                    frequency_hz, change));
 }
 
-/// The EBM's wind (a) and self-damping as a distributed force c(x) y_t on the
-/// velocity's component at the drive: c_e from element e's local antinode
-/// amplitude, so that over a loop mean(q v) = c w^2 Y^2 / 4 is the EBM's net power
-/// per length there, (P_w - P_s) / L.
+/// The EBM's wind (a) as a distributed force c_w(x) y_t on the velocity's component
+/// at the drive, and its self-damping as a distributed damper c_s(x) on the whole
+/// velocity: c from element e's local antinode amplitude, so that over a loop
+/// mean(c v^2) = c w^2 Y^2 / 4 is the EBM's power per length there (P_w / L, P_s / L).
 class EbmWindLoad {
  public:
   EbmWindLoad(const Span& span, const BeamModel& model, double w, double k) : span_(span), model_(model), w_(w), k_(k) {}
 
-  /// The complex amplitude of q = c v at the drive, for the standing wave y^.
+  /// The complex amplitude of q = c_w v at the drive, for the standing wave y^.
   Eigen::VectorXcd operator()(const Eigen::VectorXcd& y) const {
     const Conductor& conductor = span_.conductor();
     const double f = w_ / (2.0 * std::numbers::pi), length = span_.length();
@@ -462,8 +461,8 @@ class EbmWindLoad {
     for (int e = 0; e < model_.elements(); ++e) {
       const double amplitude = local_antinode(model_, y, 0.5 * (model_.nodes()[e] + model_.nodes()[e + 1]), k_);
       if (!(amplitude > 0.0)) continue;
-      const double net = span_.wind().power(amplitude, f, conductor.diameter, length) / length;
-      const std::complex<double> c(0.0, 4.0 * net / (w_ * amplitude * amplitude));  // j w c
+      const double wind = span_.wind().power(amplitude, f, conductor.diameter, length) / length;
+      const std::complex<double> c(0.0, 4.0 * wind / (w_ * amplitude * amplitude));  // j w c_w
       const std::array<Eigen::Index, 4> dofs = element_dofs(model_, e);
       const Eigen::Vector4cd part = c * (unit_mass(model_.element_length(e)) * gather(model_, e, y));
       for (int i = 0; i < 4; ++i) {
@@ -582,6 +581,124 @@ void take_means(const std::vector<PeriodFigures>& records, int count, EbmWindHis
                              out.antinode_amplitude_m;
 }
 
+
+/// The drive's complex amplitude y^ of the displacement: each period's quadrature,
+/// `(2 / N) sum u(t_i) e^(-j w t_i)`, and their mean over the last round trip of a
+/// wave along the span, whose neighbouring modes (c / 2L apart) it cancels.
+class DrivePhasor {
+ public:
+  DrivePhasor(Eigen::Index size, double w, int steps, int round_trip)
+      : w_(w), steps_(steps), round_trip_(static_cast<std::size_t>(round_trip)), re_(size), im_(size),
+        period_(size), sum_(Eigen::VectorXcd::Zero(size)) {}
+
+  void start_period() {
+    re_.setZero();
+    im_.setZero();
+  }
+  void add(double t, const Eigen::VectorXd& u) {
+    re_.noalias() += (2.0 / steps_ * std::cos(w_ * t)) * u;
+    im_.noalias() -= (2.0 / steps_ * std::sin(w_ * t)) * u;
+  }
+  /// y^ once a period is done: y(t) = Re(y^ e^{jwt}).
+  Eigen::VectorXcd close_period() {
+    period_.real() = re_;
+    period_.imag() = im_;
+    phasors_.push_back(period_);
+    sum_ += period_;
+    if (phasors_.size() > round_trip_) {
+      sum_ -= phasors_.front();
+      phasors_.pop_front();
+    }
+    return sum_ / static_cast<double>(phasors_.size());
+  }
+
+ private:
+  double w_;
+  int steps_;
+  std::size_t round_trip_;
+  Eigen::VectorXd re_, im_;
+  Eigen::VectorXcd period_, sum_;
+  std::deque<Eigen::VectorXcd> phasors_;
+};
+
+/// The wind's force Re(A e^{jwt}) = Re A cos(wt) - Im A sin(wt), into one vector a step.
+class DriveLoad {
+ public:
+  explicit DriveLoad(const Eigen::VectorXcd& amplitude, double w) : w_(w) { set(amplitude); }
+  void set(const Eigen::VectorXcd& amplitude) {
+    re_ = amplitude.real();
+    im_ = amplitude.imag();
+  }
+  const Eigen::VectorXd& at(double t) {
+    load_ = std::cos(w_ * t) * re_;
+    load_.noalias() -= std::sin(w_ * t) * im_;
+    return load_;
+  }
+
+ private:
+  double w_;
+  Eigen::VectorXd re_, im_, load_;
+};
+
+/// Each damper's force and clamp velocity at every step of a period, and its work and
+/// dissipation at the period's start: its figures once the period is done.
+class DamperRecorder {
+ public:
+  DamperRecorder(std::size_t dampers, int steps, std::vector<std::string> names)
+      : periods_(dampers), steps_(steps), names_(std::move(names)) {
+    for (DamperPeriod& p : periods_) p.force.resize(steps), p.velocity.resize(steps);
+  }
+  void start_period(const NewmarkStepper& stepper) {
+    for (std::size_t d = 0; d < periods_.size(); ++d) {
+      periods_[d].work_start = stepper.dampers_work_of(d);
+      periods_[d].dissipated_start = stepper.dampers()[d].damper.dissipated();
+    }
+  }
+  void record(int step, const NewmarkStepper& stepper) {
+    for (std::size_t d = 0; d < periods_.size(); ++d) {
+      periods_[d].force[step] = stepper.dampers()[d].damper.force();
+      periods_[d].velocity[step] = stepper.clamp_velocity(d);
+    }
+  }
+  std::vector<DamperInTimeFigures> figures(const NewmarkStepper& stepper) const {
+    std::vector<DamperInTimeFigures> out;
+    for (std::size_t d = 0; d < periods_.size(); ++d) {
+      out.push_back(damper_figures(periods_[d], stepper.dampers()[d], stepper.dampers_work_of(d), steps_ * stepper.dt(),
+                                   steps_, names_[d]));
+    }
+    return out;
+  }
+
+ private:
+  std::vector<DamperPeriod> periods_;
+  int steps_;
+  std::vector<std::string> names_;
+};
+
+/// The two rules that judge the envelope settled, period by period.
+class Settling {
+ public:
+  Settling(const EbmWindOptions& options, int round_trip, int window)
+      : change_(options.settled_change), mean_change_(options.settled_mean_change),
+        apart_(static_cast<std::size_t>(std::max(10, round_trip))), window_(window) {}
+
+  SettledBy judge(const std::vector<double>& envelope) {
+    // Settled for 20 periods in a row (a start's transient, the drive mode reshaped by
+    // the dampers, can look settled for a moment), from envelopes a round trip apart at
+    // least: y^ is a mean over one.
+    quiet_periods_ = settled(envelope, change_, apart_) ? quiet_periods_ + 1 : 0;
+    if (quiet_periods_ >= 20) return SettledBy::envelope;
+    if (settled_in_the_mean(envelope, window_, mean_change_)) return SettledBy::mean;
+    return SettledBy::not_settled;
+  }
+
+ private:
+  double change_, mean_change_;
+  std::size_t apart_;
+  int window_;
+  int quiet_periods_ = 0;
+};
+
 }  // namespace
 
 EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWindOptions& options,
@@ -634,90 +751,39 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   out.elements = elements;
   out.dt_s = dt;
   Eigen::VectorXcd y = u0.cast<std::complex<double>>();  // the standing wave at t = 0
-  Eigen::VectorXcd load_amplitude = wind_load(y);
-  // Re(A e^{jwt}) = Re A cos(wt) - Im A sin(wt), into one vector a step.
-  Eigen::VectorXd load_re = load_amplitude.real(), load_im = load_amplitude.imag(), load(model.size());
-  const auto load_at = [&](double t) -> const Eigen::VectorXd& {
-    load = std::cos(w * t) * load_re;
-    load.noalias() -= std::sin(w * t) * load_im;
-    return load;
-  };
+  DriveLoad load(wind_load(y), w);
   const Eigen::SparseMatrix<double> dashpot_damping = model.damping(dashpots);
-  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load_at(0.0),
+  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load.at(0.0),
                          dashpot_damping + wind_load.self_damping(y), std::move(dampers));
-  const std::size_t n_dampers = stepper.dampers().size();
-  std::vector<DamperPeriod> damper_periods(n_dampers);
-  for (DamperPeriod& p : damper_periods) p.force.resize(steps), p.velocity.resize(steps);
-  const int periods = static_cast<int>(std::ceil(options.duration_s * f));
-  // Two round trips of a wave along the span: the window of the means.
-  const int window = std::max(20, static_cast<int>(std::lround(4.0 * length / (w / k) * f)));
-  std::vector<PeriodFigures> records;
-  Eigen::VectorXcd accumulated(model.size());
-  Eigen::VectorXd accumulated_re(model.size()), accumulated_im(model.size());  // y^'s parts over the period
   const int round_trip = std::max(1, static_cast<int>(std::lround(2.0 * length / (w / k) * f)));
-  std::deque<Eigen::VectorXcd> phasors;
-  Eigen::VectorXcd phasor_sum = Eigen::VectorXcd::Zero(model.size());
-  int quiet_periods = 0;
-  for (int period = 0; period < periods && !out.interrupted; ++period) {
-    for (std::size_t d = 0; d < n_dampers; ++d) {
-      damper_periods[d].work_start = stepper.dampers_work_of(d);
-      damper_periods[d].dissipated_start = stepper.dampers()[d].damper.dissipated();
-    }
-    accumulated_re.setZero();
-    accumulated_im.setZero();
-    for (int s = 0; s < steps; ++s) {
+  const int window = std::max(20, 2 * round_trip);  // the means' window: two round trips
+  DrivePhasor phasor(model.size(), w, steps, round_trip);
+  DamperRecorder recorder(stepper.dampers().size(), steps, std::move(names));
+  Settling settling(options, round_trip, window);
+  std::vector<PeriodFigures> records;
+  const int periods = static_cast<int>(std::ceil(options.duration_s * f));
+  for (int period = 0; period < periods && out.settled_by == SettledBy::not_settled; ++period) {
+    phasor.start_period();
+    recorder.start_period(stepper);
+    for (int s = 0; s < steps && !out.interrupted; ++s) {
       const double t = stepper.time() + dt;
-      stepper.step(load_at(t));
-      accumulated_re.noalias() += (2.0 / steps * std::cos(w * t)) * stepper.displacement();
-      accumulated_im.noalias() -= (2.0 / steps * std::sin(w * t)) * stepper.displacement();
-      for (std::size_t d = 0; d < n_dampers; ++d) {
-        damper_periods[d].force[s] = stepper.dampers()[d].damper.force();
-        damper_periods[d].velocity[s] = stepper.clamp_velocity(d);
-      }
+      stepper.step(load.at(t));
+      phasor.add(t, stepper.displacement());
+      recorder.record(s, stepper);
       if (options.observer) options.observer(stepper);
-      if (options.stop && options.stop->load()) {
-        out.interrupted = true;
-        break;
-      }
+      out.interrupted = options.stop && options.stop->load();
     }
     if (out.interrupted) break;  // a part period: the figures stay the whole periods'
-    // y^ at the drive: the mean of the periods' phasors over one round trip of a wave,
-    // whose neighbouring modes (Delta f = c / 2L apart) it cancels.
-    accumulated.real() = accumulated_re;
-    accumulated.imag() = accumulated_im;
-    phasors.push_back(accumulated);
-    phasor_sum += accumulated;
-    if (phasors.size() > static_cast<std::size_t>(round_trip)) {
-      phasor_sum -= phasors.front();
-      phasors.pop_front();
-    }
-    y = phasor_sum / static_cast<double>(phasors.size());  // y(t) = Re(y^ e^{jwt})
-    load_amplitude = wind_load(y);
-    load_re = load_amplitude.real();
-    load_im = load_amplitude.imag();
+    y = phasor.close_period();
+    load.set(wind_load(y));
     stepper.set_damping(dashpot_damping + wind_load.self_damping(y));
     PeriodFigures& record = records.emplace_back();
     record.envelope = local_antinode(model, y, 0.5 * length, k);
     record.end_loop = {local_antinode(model, y, 0.5 * model.element_length(0), k),
                        local_antinode(model, y, length - 0.5 * model.element_length(elements - 1), k)};
-    for (std::size_t d = 0; d < n_dampers; ++d) {
-      record.dampers.push_back(damper_figures(damper_periods[d], stepper.dampers()[d], stepper.dampers_work_of(d),
-                                              steps * dt, steps, names[d]));
-    }
+    record.dampers = recorder.figures(stepper);
     out.envelope_m.push_back(record.envelope);
-    // Settled for 20 periods in a row: a start's transient (the drive mode reshaped
-    // by the dashpots) can look settled for a moment.
-    // Envelopes a round trip apart at least: y^ is a mean over one.
-    const std::size_t apart = static_cast<std::size_t>(std::max(10, round_trip));
-    quiet_periods = settled(out.envelope_m, options.settled_change, apart) ? quiet_periods + 1 : 0;
-    if (quiet_periods >= 20) {
-      out.settled_by = SettledBy::envelope;
-      break;
-    }
-    if (settled_in_the_mean(out.envelope_m, window, options.settled_mean_change)) {
-      out.settled_by = SettledBy::mean;
-      break;
-    }
+    out.settled_by = settling.judge(out.envelope_m);
   }
   out.settled = out.settled_by != SettledBy::not_settled;
   out.time_s = stepper.time();

@@ -137,7 +137,8 @@ class NewmarkStepper {
                  std::vector<BeamDamper> dampers = {});
 
   /// Another damping matrix C from the next step on (the same pattern: the matrix is
-  /// factored again, numerically only).
+  /// factored again, numerically only). The energy balances below hold step by step
+  /// for each step's C; across a change the start's acceleration was the old C's.
   void set_damping(Eigen::SparseMatrix<double> damping);
   /// One step to t + dt under the load at t + dt. With dampers, NumericalError
   /// naming the time and by how much where the coupled iteration does not converge

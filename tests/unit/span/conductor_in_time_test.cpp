@@ -205,7 +205,9 @@ TEST(ConductorInTime, TheEbmWindSettlesTheSpanOnTheEbmsAmplitude) {
       EXPECT_LE(std::abs(history.frequency_hz - f), 0.5 * spacing * 1.01 + elongation * f);
       settled_at.push_back(history.antinode_amplitude_m);
     }
-    if (settled_at.size() == 2) EXPECT_NEAR(settled_at[0] / settled_at[1], 1.0, 5e-3);
+    if (settled_at.size() == 2) {
+      EXPECT_NEAR(settled_at[0] / settled_at[1], 1.0, 5e-3);
+    }
   }
 }
 
