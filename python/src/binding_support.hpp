@@ -65,6 +65,7 @@ void expose_damper(py::module_& m);
 void expose_identification(py::module_& m);
 void expose_span(py::module_& m);
 void expose_span_modes(py::module_& m);
+void expose_simulate(py::module_& m);
 void expose_line(py::module_& m);
 void expose_design(py::module_& m);
 

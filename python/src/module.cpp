@@ -37,6 +37,7 @@ PYBIND11_MODULE(_core, m) {
   python::expose_damper(m);
   python::expose_span(m);
   python::expose_span_modes(m);
+  python::expose_simulate(m);
   python::expose_line(m);
   python::expose_design(m);
   python::expose_identification(m);

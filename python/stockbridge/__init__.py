@@ -10,6 +10,7 @@ span, line and impedance return, after ``import stockbridge.plot``).
     z = sb.impedance(damper, [10.0, 20.0], velocity=[0.2, 0.05])
     s = sb.span("examples/aster570_400m.toml", points=50)
     modes = sb.span_modes("examples/aster570_400m.toml", fmax=10)   # natural frequencies, shapes
+    sim = sb.simulate("examples/aster570_400m.toml", frequency=20)  # the span in time beside the balance
     drake = sb.conductor("ACSR Drake")   # the catalogue's [conductor] values, EI_min 44.25 N m^2
     d = sb.design("examples/design_aster570.toml", samples=16, threads=2)
     schedule = sb.line("examples/line_short.toml", threads=2)["schedule"]
@@ -38,7 +39,7 @@ try:
                         load_damper, load_strand, loop, modes, response, strand_bounds)
     from ._core import (_cable_from_toml, _damper_from_toml, _defaults, _design, _identify_impedance, _line,  # noqa: F401
                         _fatigue_tests, _identify_self_damping, _recorder, _span)
-    from ._core import _span_modes  # noqa: F401
+    from ._core import _simulate, _span_modes  # noqa: F401
 except ImportError:  # the plots work from the source tree without the compiled module
     _defaults = {}  # the library's defaults come with it
 
@@ -462,5 +463,35 @@ def span_modes(file=None, fmax=None, dampers="linear", shapes=True, text=None, b
     out = _span_modes(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
                       fmax=None if fmax is None else float(fmax), dampers=dampers, shapes=shapes,
                       allow_unusual=allow_unusual)
+    out["summary"] = json.loads(out.pop("summary_json"))
+    return out
+
+
+def simulate(file=None, frequency=None, duration=60.0, ends="clamped", elements_per_wavelength=30, steps_per_period=160,
+             probes=(), start_amplitude=None, every=1, text=None, base=None, allow_unusual=False):
+    """The span in time under the energy balance's own wind, with its dampers each by
+    its own nonlinear model, beside the balance at the same frequency, as ``stockbridge
+    simulate`` (docs/time-domain.md): the span's natural mode nearest `frequency` (Hz)
+    is the drive, started at `start_amplitude` (m; None: the balance's amplitude) and
+    stepped until it settles or `duration` (s) is simulated; `ends` "clamped" or
+    "pinned"; the mesh and step by `elements_per_wavelength` and `steps_per_period`;
+    the displacement given at `probes` (m from end 1; empty: clamp 1's Y_b point, each
+    damper, mid-span), a row every `every` steps. The span: a span file's path
+    (`file`) or its contents (`text`, relative paths from `base`).
+
+    Returns a dict: one array per column of the history CSV, by its names ('time_s',
+    'y_at_<mm>mm_m', 'damper_<i>_force_n', 'damper_<i>_velocity_m_s'), 'columns'
+    (the CSV's order) and 'summary', the --json summary's keys (settled,
+    antinode_amplitude_m beside ebm_antinode_amplitude_m and their ratio, the dampers'
+    power, velocity and force harmonics, envelope_m, x_m, amplitude_m, ...; a
+    figure None unless the run settled)."""
+    if frequency is None:
+        raise InvalidParameter("frequency: expected the drive's frequency, Hz")
+    out = _simulate(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
+                    frequency=float(frequency), duration=float(duration), ends=ends,
+                    elements_per_wavelength=int(elements_per_wavelength), steps_per_period=int(steps_per_period),
+                    probes=[float(x) for x in probes],
+                    start_amplitude=None if start_amplitude is None else float(start_amplitude), every=int(every),
+                    allow_unusual=allow_unusual)
     out["summary"] = json.loads(out.pop("summary_json"))
     return out

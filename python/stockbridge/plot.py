@@ -1835,6 +1835,81 @@ def span_modes(result, output=None, *, modes=None, label=None):
     return finish(span_modes_figure(table, ModeShapes.from_result(result, name), modes), output)
 
 
+# ---------------------------------------------------------------- the span in time
+
+def simulate_figure(table, summary=None, name="simulate"):
+    """The history of stockbridge simulate: the displacement at each probe over time;
+    with its summary also the envelope per period and the amplitude along the span,
+    each beside the balance's antinode amplitude, the dampers marked."""
+    time = table.required("time_s")
+    probes = [c for c in table.header if re.fullmatch(r"y_at_\d+mm_m", c)]
+    if not probes:
+        raise PlotError(f"{name}: no column y_at_<mm>mm_m: expected the history CSV of stockbridge simulate")
+    panels = 3 if summary else 1
+    figure, axes = plt.subplots(panels, 1, figsize=FIGURE_SIZE, layout="constrained", squeeze=False)
+    axes = [row[0] for row in axes]
+    for k, column in enumerate(probes):
+        millimetres = int(re.fullmatch(r"y_at_(\d+)mm_m", column).group(1))
+        axes[0].plot(time, [1e3 * y for y in table.required(column)], "-", color=f"C{k % 10}", linewidth=0.5,
+                     label=f"{millimetres / 1e3:g} m")
+    axes[0].set_xlabel("t (s)")
+    axes[0].set_ylabel("y (mm)")
+    axes[0].legend(fontsize="small", loc="lower right", bbox_to_anchor=(1.0, 1.0), ncol=min(len(probes), 6),
+                   frameon=False, borderaxespad=0.2, title="probes, from end 1", title_fontsize="small")  # above
+    axes[0].grid(True, alpha=0.3)
+    title = f"{name}: {len(time)} rows, {time[-1]:.4g} s" if len(time) else f"{name}: no rows"
+    if summary:
+        title = simulate_summary_panels(axes[1], axes[2], summary, name)
+    figure.suptitle(textwrap.fill(title, TITLE_WIDTH), fontsize="medium")
+    return figure
+
+
+def simulate_summary_panels(envelope_axis, along_axis, summary, name):
+    """The envelope per period and the amplitude along the span, the balance's antinode
+    amplitude dashed; returns the title."""
+    for key in ("envelope_m", "x_m", "amplitude_m", "frequency_hz", "dt_s", "settled"):
+        if key not in summary:
+            raise PlotError(f"{name}: the summary has no '{key}': expected what stockbridge simulate --json printed")
+    ebm = summary.get("ebm_antinode_amplitude_m")
+    period_s = 1.0 / summary["frequency_hz"]
+    envelope = summary["envelope_m"]
+    envelope_axis.plot([period_s * (i + 1) for i in range(len(envelope))], [1e3 * y for y in envelope], "-",
+                       color="C0", linewidth=1.0, label="simulation, mid-span")
+    along_axis.plot(summary["x_m"], [1e3 * y for y in summary["amplitude_m"]], "-", color="C0", linewidth=0.6,
+                    label="simulation, |y|, last period")
+    for axis in (envelope_axis, along_axis):
+        if ebm is not None:
+            axis.axhline(1e3 * ebm, color="C3", linestyle="--", linewidth=1.0, label="energy balance")
+        axis.grid(True, alpha=0.3)
+        axis.legend(fontsize="small", loc="lower right")
+    for k, damper in enumerate(summary.get("dampers", [])):
+        along_axis.axvline(damper["position_m"], color="0.4", linestyle=":", linewidth=1.0)
+    envelope_axis.set_xlabel("t (s)")
+    envelope_axis.set_ylabel("Y (mm)")
+    along_axis.set_xlabel("x, from end 1 (m); dampers dotted")
+    along_axis.set_ylabel("amplitude (mm)")
+    ratio = summary.get("antinode_amplitude_m_ratio")
+    state = (f"settled, Y / balance's {ratio:.3f}" if summary["settled"] and ratio is not None
+             else "settled" if summary["settled"] else "not settled")
+    return f"{name}: {summary['frequency_hz']:.4g} Hz, {summary.get('simulated_s', 0.0):.4g} s simulated, {state}"
+
+
+def plot_simulate(path, output, summary_path=None):
+    summary = None if summary_path is None else read_json_summary(summary_path, "stockbridge simulate --json")
+    save(simulate_figure(Table(path), summary, os.path.basename(path)), output)
+
+
+def simulate(result, output=None, *, label=None):
+    """plot simulate's figure of what stockbridge.simulate() returns: the displacement
+    at each probe over time, the envelope per period and the amplitude along the span
+    beside the balance's antinode amplitude. Returns the matplotlib Figure; with
+    `output` (a path: .png, .pdf, .svg) also saves it there."""
+    name = label or "simulate"
+    table = result_table(result, "simulate", "time_s", name)
+    check_result(result, "simulate", "summary")
+    return finish(simulate_figure(table, result["summary"], name), output)
+
+
 # ---------------------------------------------------------------- command line
 
 class Parser(argparse.ArgumentParser):
@@ -1889,6 +1964,12 @@ def parser():
     modes.add_argument("--shapes", metavar="FILE.csv", help="the shapes CSV (stockbridge span --modes --shapes): "
                        "the shapes along the span")
     modes.add_argument("--modes", help="the modes whose shapes to draw, e.g. 1,2,5 (default: the first four)")
+    sim = commands.add_parser("simulate", help="the span in time: displacements over time, the envelope and the "
+                              "amplitude along the span beside the energy balance's (stockbridge simulate)")
+    sim.add_argument("csv", help="the history CSV (stockbridge simulate -o)")
+    sim.add_argument("-o", "--output", required=True)
+    sim.add_argument("--summary", metavar="FILE.json", help="what stockbridge simulate --json printed: the envelope, "
+                     "the amplitude along the span and the balance's")
     for name, text in (("loop", "hysteresis loops of a cycle, response or loop file"),
                        ("fit", "measured and fitted loops or impedance (identify ... --fitted)"),
                        ("design", "objective over each variable of a design CSV: feasible, infeasible, polished, "
@@ -1924,6 +2005,8 @@ def run(args):
         plot_line(args.csv, args.output)
     elif args.command == "fatigue-tests":
         plot_fatigue_tests(args.csv, args.output, args.summary)
+    elif args.command == "simulate":
+        plot_simulate(args.csv, args.output, args.summary)
     elif args.command == "span-modes":
         plot_span_modes(args.csv, args.output, args.shapes, None if args.modes is None else mode_numbers(args.modes))
     else:
