@@ -1882,7 +1882,7 @@ def simulate_summary_panels(envelope_axis, along_axis, summary, name):
             axis.axhline(1e3 * ebm, color="C3", linestyle="--", linewidth=1.0, label="energy balance")
         axis.grid(True, alpha=0.3)
         axis.legend(fontsize="small", loc="lower right")
-    for k, damper in enumerate(summary.get("dampers", [])):
+    for damper in summary.get("dampers", []):
         along_axis.axvline(damper["position_m"], color="0.4", linestyle=":", linewidth=1.0)
     envelope_axis.set_xlabel("t (s)")
     envelope_axis.set_ylabel("Y (mm)")
