@@ -86,13 +86,4 @@ double DamperInTime::dissipated() const {
   return sum;
 }
 
-double DamperInTime::kinetic_energy(double clamp_velocity) const {
-  double sum = 0.5 * clamp_mass_ * clamp_velocity * clamp_velocity;
-  for (const ArmState& arm : arms_) {
-    const Eigen::Vector2d v = arm.v + Eigen::Vector2d(clamp_velocity, 0.0);  // (x, phi) absolute
-    sum += 0.5 * arm.count * v.dot(arm.mass * v);
-  }
-  return sum;
-}
-
 }  // namespace stockbridge::damper

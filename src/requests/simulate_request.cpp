@@ -20,9 +20,10 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// "y_at_89mm": the probe's column, its position in whole millimetres.
 std::string probe_column(double x) { return fmt::format("y_at_{}mm", static_cast<long long>(std::llround(x * 1000.0))); }
 
-/// The span clamp's Y_b point, each damper's position (from end 1), mid-span.
-std::vector<double> default_probes(const span::Span& span) {
-  std::vector<double> x{span.fatigue().yb_distance};
+/// Each position of each damper, m from end 1, in the span file's order (a damper at
+/// both ends: end 1's first): the order the simulation steps them in.
+std::vector<double> damper_positions(const span::Span& span) {
+  std::vector<double> x;
   for (const span::SpanDamper& d : span.dampers()) {
     if (d.in_span()) {
       x.insert(x.end(), d.along.begin(), d.along.end());
@@ -31,6 +32,13 @@ std::vector<double> default_probes(const span::Span& span) {
     x.push_back(d.position);
     if (d.both_ends) x.push_back(span.length() - d.position);
   }
+  return x;
+}
+
+/// The span clamp's Y_b point, each damper's position (from end 1), mid-span.
+std::vector<double> default_probes(const span::Span& span) {
+  std::vector<double> x = damper_positions(span);
+  x.push_back(span.fatigue().yb_distance);
   x.push_back(0.5 * span.length());
   std::sort(x.begin(), x.end());
   x.erase(std::unique(x.begin(), x.end(), [](double a, double b) { return probe_column(a) == probe_column(b); }), x.end());
@@ -77,11 +85,7 @@ std::vector<double> simulation_probes(const span::Span& span, const SimulateRequ
   return probes;
 }
 
-std::size_t simulation_dampers(const span::Span& span) {
-  std::size_t n = 0;
-  for (const span::SpanDamper& d : span.dampers()) n += d.in_span() ? d.along.size() : d.both_ends ? 2 : 1;
-  return n;
-}
+std::size_t simulation_dampers(const span::Span& span) { return damper_positions(span).size(); }
 
 std::vector<std::string> probe_columns(const std::vector<double>& probes) {
   std::vector<std::string> out;

@@ -60,9 +60,6 @@ class DamperInTime {
   /// The energy the cables' sliders dissipated since the start, J (each arm counted
   /// as often as the damper has it).
   double dissipated() const;
-  /// The kinetic energy of the masses and the clamp in their absolute motion, J,
-  /// with the clamp's velocity `clamp_velocity` (m/s).
-  double kinetic_energy(double clamp_velocity) const;
 
  private:
   struct ArmState {
