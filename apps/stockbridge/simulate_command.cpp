@@ -15,6 +15,9 @@
 #include "input_files.hpp"
 #include "journal_file.hpp"
 #include "option_parsing.hpp"
+#include "report_output.hpp"
+#include "stockbridge/io/atomic_file.hpp"
+#include "stockbridge/report/reports.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/requests/output_table.hpp"
 #include "stockbridge/requests/simulate_request.hpp"
@@ -33,12 +36,13 @@ struct SimulateOptions {
   bool quiet = false;
   bool allow_unusual = false;
   std::string output;
+  std::optional<std::string> report;
 };
 
 void print_simulation_report(const span::Span& span, const requests::SimulateResult& r) {
   const span::EbmWindHistory& h = r.history;
   fmt::print("simulate: {}{} m, {} ends, at {:.6g} Hz (the mode nearest {:.6g} Hz), {} elements, dt = {:.4g} s\n",
-             span.conductor().name.empty() ? "" : span.conductor().name + ", ", format_value(span.length()), r.ends,
+             span.conductor().name.empty() ? "" : span.conductor().name + ", ", format_value(span.length()), span::beam_ends_name(r.settings.ends),
              h.frequency_hz, r.asked_frequency_hz, h.elements, h.dt_s);
   fmt::print("{:.4g} s simulated ({} periods) from {:.4g} mm: {}\n", h.time_s, h.envelope_m.size(),
              r.start_amplitude_m * 1e3,
@@ -71,8 +75,10 @@ void print_simulation_report(const span::Span& span, const requests::SimulateRes
 int run_simulate_command(SimulateOptions& options, Invocation& invocation) {
   if (options.probes) options.request.probes = parse_number_list(*options.probes, "--probe");
   requests::validate(options.request);
-  const io::SpanFile file =
-      read_span_input(invocation, options.span_file, {{"-o", options.output}}, slip_policy(options.allow_unusual));
+  check_report_path(options.report);
+  const io::SpanFile file = read_span_input(invocation, options.span_file,
+                                            {{"-o", options.output}, {"--report", options.report.value_or("")}},
+                                            slip_policy(options.allow_unusual));
   invocation.flush_warnings();
   span::check_in_time(file.span);
   const requests::Table<requests::SimulationRow> table = requests::simulation_table(
@@ -92,7 +98,7 @@ int run_simulate_command(SimulateOptions& options, Invocation& invocation) {
   std::size_t rows = 0;
   try {
     result = requests::run_simulate(
-        file.span, file.balance, options.request,
+        file, options.request,
         [&](const requests::SimulationRow& row) {
           csv.add(row);
           ++rows;
@@ -106,6 +112,10 @@ int run_simulate_command(SimulateOptions& options, Invocation& invocation) {
   }
   csv.commit();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.report && !result.history.interrupted) {
+    io::write_file_atomically(*options.report, report::simulate_report(file.span, file.balance.damper_model, result,
+                                                                       invocation.report_context()));
+  }
   if (options.json) {
     fmt::print("{}\n", requests::simulate_summary(file.span, result).str());
   } else if (!options.quiet) {
@@ -119,7 +129,7 @@ int run_simulate_command(SimulateOptions& options, Invocation& invocation) {
   }
   if (!result.history.settled) {
     fmt::print(stderr, "simulate: the envelope did not settle within {} s (--duration longer); no steady figure given\n",
-               options.request.duration_s);
+               result.settings.duration_s);
     return kNotConverged;
   }
   return kSuccess;
@@ -134,11 +144,22 @@ void add_simulate_command(CLI::App& app, Invocation& invocation) {
       "simulate", "The span in time under the energy balance's wind, with its dampers' own models: the balance's check");
   sub->add_option("span", options->span_file, "Span description (TOML)")->required();
   sub->add_option("--frequency", r.frequency_hz, "The drive, Hz (the span's natural mode nearest it is taken)")->required();
-  sub->add_option("--duration", r.duration_s, "Simulated time at most, s")->capture_default_str();
-  sub->add_option("--ends", r.ends, "How the span clamps hold the conductor: clamped or pinned")->capture_default_str();
-  sub->add_option("--elements-per-wavelength", r.elements_per_wavelength, "Beam elements per wavelength at the drive")
-      ->capture_default_str();
-  sub->add_option("--steps-per-period", r.steps_per_period, "Time steps per period of the drive")->capture_default_str();
+  const span::TimeSettings defaults;
+  sub->add_option("--duration", r.duration_s,
+                  fmt::format("Simulated time at most, s (default: the span file's [time] duration, else {})",
+                              defaults.duration_s));
+  sub->add_option("--ends", r.ends,
+                  fmt::format("How the span clamps hold the conductor: clamped or pinned (default: the span file's "
+                              "[span] ends, else {})",
+                              span::beam_ends_name(defaults.ends)));
+  sub->add_option("--elements-per-wavelength", r.elements_per_wavelength,
+                  fmt::format("Beam elements per wavelength at the drive (default: the span file's [time] "
+                              "elements_per_wavelength, else {})",
+                              defaults.elements_per_wavelength));
+  sub->add_option("--steps-per-period", r.steps_per_period,
+                  fmt::format("Time steps per period of the drive (default: the span file's [time] steps_per_period, "
+                              "else {})",
+                              defaults.steps_per_period));
   sub->add_option("--probe", options->probes,
                   "Where the history gives the displacement, m from end 1, comma-separated (default: the Y_b point of "
                   "clamp 1, each damper, mid-span)");
@@ -149,6 +170,9 @@ void add_simulate_command(CLI::App& app, Invocation& invocation) {
   sub->add_flag("--quiet", options->quiet, "No progress on stderr");
   add_allow_unusual_flag(*sub, options->allow_unusual);
   sub->add_option("-o,--output", options->output, "History CSV file")->required();
+  add_report_option(*sub, options->report,
+                    "whether the run agrees with the balance, its settings, the figures side by side, the dampers, the "
+                    "envelope and the amplitude along the span");
   sub->callback([options, &invocation] { invocation.set_exit_code(run_simulate_command(*options, invocation)); });
 }
 

@@ -3,6 +3,7 @@
 // limit, the undamped span beside it, the life when the span file gives the
 // climate, and optionally the dampers' best position.
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -15,6 +16,7 @@
 
 #include "commands.hpp"
 #include "input_files.hpp"
+#include "journal_file.hpp"
 #include "option_parsing.hpp"
 #include "progress.hpp"
 #include "report_output.hpp"
@@ -24,6 +26,7 @@
 #include "stockbridge/io/json_writer.hpp"
 #include "stockbridge/report/reports.hpp"
 #include "stockbridge/requests/span_request.hpp"
+#include "stockbridge/requests/time_check.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 
 namespace stockbridge::cli {
@@ -49,6 +52,8 @@ struct SpanOptions {
   std::string output;
   std::optional<std::string> report;
   std::optional<std::string> profile;
+  std::optional<std::string> check_time;         ///< frequencies, Hz
+  std::optional<std::string> check_time_output;  ///< the checks' CSV
 };
 
 requests::CheckedSpanRequest span_request_of(const SpanOptions& options) {
@@ -183,33 +188,86 @@ void print_span_report(const requests::SpanResult& result) {
   }
 }
 
+void print_time_checks(const std::vector<requests::TimeCheck>& checks, bool poffenberger_swart) {
+  fmt::print("checked in time (the simulation's over the balance's; docs/time-domain.md):\n");
+  for (const requests::TimeCheck& c : checks) {
+    if (!c.compared()) {
+      fmt::print("  {:.4g} Hz: nothing compared ({})\n", c.asked_frequency_hz,
+                 !c.result ? "no run" : !c.result->history.settled ? "not settled" : "the balance did not converge");
+      continue;
+    }
+    const requests::ComparedFigure& stress =
+        poffenberger_swart ? c.figures.stress_poffenberger_swart_pa : c.figures.stress_fymax_pa;
+    fmt::print("  {:.4g} Hz (simulated at {:.6g} Hz, {:.3g} s): antinode amplitude {:.3f}, {} stress {:.3f}{}\n",
+               c.asked_frequency_hz, c.result->history.frequency_hz, c.result->history.time_s,
+               c.figures.antinode_amplitude_m.ratio, poffenberger_swart ? "Poffenberger-Swart" : "fymax", stress.ratio,
+               c.agrees() ? "" : fmt::format(" (more than {:.0f} % apart)", 100.0 * requests::kTimeCheckTolerance));
+  }
+}
+
+/// The simulations of --check-time beside the balance; none without it.
+std::vector<requests::TimeCheck> span_time_checks(const SpanOptions& options, const io::SpanFile& file,
+                                                  const requests::CheckedSpanRequest& request,
+                                                  const requests::SpanResult& result, Invocation& invocation) {
+  if (!options.check_time) return {};
+  const std::vector<double> frequencies = parse_number_list(*options.check_time, "--check-time");
+  if (!options.quiet) {
+    fmt::print(stderr, "span: checking {} frequencies in time\n", frequencies.size());
+  }
+  std::vector<requests::TimeCheck> checks = requests::check_span_in_time(
+      requests::span_file_as_balanced(file, request, result), frequencies, options.threads, &InterruptRequest::flag());
+  print_warnings(invocation, requests::time_check_warnings(checks, result.analysis.span.judges_poffenberger_swart()));
+  return checks;
+}
+
 int run_span_command(const SpanOptions& options, Invocation& invocation) {
   const requests::CheckedSpanRequest request = span_request_of(options);
   check_report_path(options.report);
   const io::SpanFile file = read_span_input(
       invocation, options.span_file,
-      {{"-o", options.output}, {"--report", options.report.value_or("")}, {"--profile", options.profile.value_or("")}},
+      {{"-o", options.output},
+       {"--report", options.report.value_or("")},
+       {"--profile", options.profile.value_or("")},
+       {"--check-time-output", options.check_time_output.value_or("")}},
       slip_policy(options.allow_unusual));
-  requests::check_against_span(request, file.span);  // a refusal before the progress starts
+  requests::check_against_span(request, file.span);  // refusals before the progress starts
+  if (options.check_time) {
+    requests::validate_check_frequencies(parse_number_list(*options.check_time, "--check-time"));
+    if (!options.no_dampers && !options.no_attachments) span::check_in_time(file.span);
+  }
+  const InterruptRequest interrupt;
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress(invocation, "span: impedance tables", options.quiet);
   const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const span::SpanAnalysis& a = result.analysis;
   print_warnings(invocation, a.warnings);
-  const std::string report = options.report ? report::span_report(result, invocation.report_context()) : std::string();
+  const std::vector<requests::TimeCheck> checks = span_time_checks(options, file, request, result, invocation);
+  if (InterruptRequest::requested()) {
+    fmt::print(stderr, "span: interrupted while checking in time; nothing written\n");
+    return kInterrupted;
+  }
+  const bool poffenberger_swart = a.span.judges_poffenberger_swart();
+  const std::string report =
+      options.report ? report::span_report(result, invocation.report_context(), checks) : std::string();
   const std::string profile =
       options.profile ? requests::span_profile_table().values(requests::span_profile_rows(requests::governing_profile(result))).csv()
                       : std::string();
   requests::write_csv_file(options.output, requests::span_table(a.span), a.balance.points);
   if (options.report) io::write_file_atomically(*options.report, report);
   if (options.profile) io::write_file_atomically(*options.profile, profile);
+  if (options.check_time_output) {
+    requests::write_csv_file(*options.check_time_output, requests::time_check_table(poffenberger_swart), checks);
+  }
 
   const span::BalanceSummary& summary = a.balance.summary;
   if (options.json) {
-    fmt::print("{}\n", requests::span_summary(result).add("seconds", seconds).str());
+    io::JsonObject json = requests::span_summary(result).add("seconds", seconds);
+    if (options.check_time) json.add("check_time", requests::time_check_rows(checks, poffenberger_swart));
+    fmt::print("{}\n", json.str());
   } else if (!options.quiet) {
     print_span_report(result);
+    if (options.check_time) print_time_checks(checks, poffenberger_swart);
   }
   if (!options.quiet) {
     fmt::print(stderr, "span: {} points in {:.2f} s, {} converged\n", summary.points, seconds, summary.converged);
@@ -218,7 +276,9 @@ int run_span_command(const SpanOptions& options, Invocation& invocation) {
     if (p.several_states) fmt::print(stderr, "  note: f = {:.4g} Hz: {}\n", p.frequency_hz, p.note);
   }
   const int failed = summary.points - summary.converged;
-  if (failed == 0) return kSuccess;
+  const bool checks_compared =
+      std::all_of(checks.begin(), checks.end(), [](const requests::TimeCheck& c) { return c.compared(); });
+  if (failed == 0) return checks_compared ? kSuccess : kNotConverged;
   fmt::print(stderr, "span: {} points did not converge (converged = 0, numbers left empty in {}):\n", failed,
              options.output);
   int shown = 0;
@@ -269,6 +329,14 @@ void add_span_command(CLI::App& app, Invocation& invocation) {
   sub->add_option("--profile", options->profile,
                   "Also write the standing wave along the span at the governing frequency (CSV: attachment, x_m, displacement_m, "
                   "envelope_m)");
+  CLI::Option* check_time = sub->add_option(
+      "--check-time", options->check_time,
+      "Frequencies, Hz, comma-separated: the span also simulated in time at each (as `stockbridge simulate`, the span "
+      "file's [span] ends and [time]), its steady figures over the balance's, a warning where they part by more than "
+      "10 %");
+  sub->add_option("--check-time-output", options->check_time_output,
+                  "With --check-time: write the checks' figures and ratios (CSV)")
+      ->needs(check_time);
   auto modes = std::make_shared<SpanModesFlags>();
   add_span_modes_options(*sub, *modes);
   sub->callback([options, modes, &invocation] {

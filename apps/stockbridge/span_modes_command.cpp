@@ -30,7 +30,8 @@ constexpr std::size_t kModesListed = 12;
 /// The span command's options that --modes cannot take.
 constexpr const char* kBalanceOnlyOptions[] = {"--frequencies", "--points",      "--no-dampers", "--damper-model",
                                                "--optimize-position", "--spacing-min", "--objective", "--threads",
-                                               "--report", "--profile", "--no-attachments"};
+                                               "--report", "--profile", "--no-attachments", "--check-time",
+                                               "--check-time-output"};
 
 /// "sphere (mass, 20 kg) at 133.3, 266.7 m": each attachment's positions under its name.
 std::vector<std::string> modes_attachment_lines(const span::SpanModes& modes) {

@@ -14,6 +14,7 @@
 #include "stockbridge/measurements/recorder.hpp"
 #include "stockbridge/report/fatigue_tests_report.hpp"
 #include "stockbridge/report/reports.hpp"
+#include "stockbridge/requests/time_check.hpp"
 #include "stockbridge/requests/fatigue_tests_request.hpp"
 #include "stockbridge/requests/recorder_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
@@ -60,7 +61,8 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
                       bool no_attachments,
                       const std::optional<std::string>& damper_model,
                       const std::optional<std::pair<double, double>>& optimize_position, double spacing_min,
-                      const std::string& objective, int threads, bool report, bool allow_unusual) {
+                      const std::string& objective, int threads, const std::vector<double>& check_time, bool report,
+                      bool allow_unusual) {
   if (path.has_value() == text.has_value()) {
     throw InvalidParameter("give either file (a span file's path) or text (a span file's contents), one of the two");
   }
@@ -81,14 +83,19 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   request.objective = objective;
   request.threads = threads;
   const requests::CheckedSpanRequest checked = requests::check_span_request(request);
+  if (!check_time.empty()) requests::validate_check_frequencies(check_time);
   io::SpanFile file =
       path ? io::load_span_file(*path, slip_policy(allow_unusual))
            : io::load_span_text(*text, "span(text=...)", base.value_or(std::string()), slip_policy(allow_unusual));
   warn(file.warnings);
   std::optional<requests::SpanResult> result;
+  std::vector<requests::TimeCheck> checks;
   {
     py::gil_scoped_release release;
     result.emplace(requests::run_span(file.span, file.balance, checked));
+    if (!check_time.empty()) {
+      checks = requests::check_span_in_time(requests::span_file_as_balanced(file, checked, *result), check_time, threads);
+    }
   }
   const span::SpanAnalysis& a = result->analysis;
   const std::vector<std::size_t> shape{a.balance.points.size()};
@@ -99,7 +106,15 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   }
   out["dampers"] = requests::span_damper_prefixes(a.span);  // the <damper> of the per-damper columns
   out["columns"] = columns.names();
-  out["summary_json"] = requests::span_summary(*result).str();
+  const bool poffenberger_swart = result->analysis.span.judges_poffenberger_swart();
+  io::JsonObject summary = requests::span_summary(*result);
+  std::vector<std::string> check_warnings;
+  if (!check_time.empty()) {
+    summary.add("check_time", requests::time_check_rows(checks, poffenberger_swart));
+    check_warnings = requests::time_check_warnings(checks, poffenberger_swart);
+    warn(check_warnings);
+  }
+  out["summary_json"] = summary.str();
   out["profile"] = py::none();
   if (a.balance.summary.converged > 0) {
     const span::SpanProfile profile = requests::governing_profile(*result);
@@ -111,7 +126,8 @@ py::dict span_balance(const std::optional<std::string>& path, const std::optiona
   if (report) {
     std::vector<std::string> warnings = file.warnings;
     for (const std::string& w : a.warnings) warnings.push_back(w);
-    out["report_html"] = report::span_report(*result, {report::utc_now(), "", warnings});
+    warnings.insert(warnings.end(), check_warnings.begin(), check_warnings.end());
+    out["report_html"] = report::span_report(*result, {report::utc_now(), "", warnings}, checks);
   }
   return out;
 }
@@ -152,7 +168,7 @@ void expose_span(py::module_& m) {
         py::arg("no_dampers") = false, py::arg("no_attachments") = false, py::arg("damper_model") = py::none(),
         py::arg("optimize_position") = py::none(), py::arg("spacing_min") = requests::SpanRequest{}.spacing_min,
         py::arg("objective") = requests::SpanRequest{}.objective, py::arg("threads") = requests::SpanRequest{}.threads,
-        py::arg("report") = false, py::arg("allow_unusual") = false,
+        py::arg("check_time") = std::vector<double>{}, py::arg("report") = false, py::arg("allow_unusual") = false,
         "The span's energy balance (stockbridge.span wraps it): the span CSV's columns as arrays, "
         "'converged', 'termination', 'messages', 'dampers', 'columns', the --json summary as 'summary_json' and "
         "with report the HTML report's text as 'report_html'.");

@@ -196,7 +196,7 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
          damper=None, positions=None, ends=None, tension=None, tension_fraction=None, catenary_parameter=None,
          length=None, conductor_type=None, spacing_min=_defaults.get("span_spacing_min"),
          objective=_defaults.get("span_objective"), report=None, allow_unusual=False, masses=None,
-         no_attachments=False):
+         no_attachments=False, check_time=()):
     """The energy balance of a span over the wind band, as ``stockbridge span``.
 
     The span: a span file's path (`file`; its relative paths start at its folder), its
@@ -231,23 +231,26 @@ def span(file=None, frequencies=None, points=_defaults.get("span_points"), no_da
     writes it: arrays x_m, displacement_m, envelope_m, attachment, and frequency_hz;
     None where no point converged) and 'summary': the --json summary's keys (None
     where the JSON has null; a life is None where a point is missing,
-    life_missing_points says how many)."""
+    life_missing_points says how many). `check_time` (Hz, as ``span --check-time``):
+    the span also simulated in time at each frequency, the summary's 'check_time' a
+    dict per frequency (the simulation's figures, the balance's and their ratios,
+    'agrees'), a warning where they part by more than 10 %."""
     overrides = (damper, positions, ends, tension, tension_fraction, catenary_parameter, length, conductor_type, masses)
     if spec is None and all(v is None for v in overrides):
         out = _span(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
                     frequencies=frequencies, points=points, no_dampers=no_dampers, no_attachments=no_attachments,
                     damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
-                    spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None,
-                    allow_unusual=allow_unusual)
+                    spacing_min=spacing_min, objective=objective, threads=threads,
+                    check_time=[float(f) for f in check_time], report=report is not None, allow_unusual=allow_unusual)
     else:
         described, folder = _span_spec(file, text, spec, None if base is None else str(base))
         described = _override(described, *overrides)
         out = _span(text=_toml.document(described), base=folder, frequencies=frequencies, points=points,
                     no_dampers=no_dampers, no_attachments=no_attachments, damper_model=damper_model,
                     optimize_position=None if optimize_position is None else tuple(optimize_position),
-                    spacing_min=spacing_min, objective=objective, threads=threads, report=report is not None,
-                    allow_unusual=allow_unusual)
+                    spacing_min=spacing_min, objective=objective, threads=threads,
+                    check_time=[float(f) for f in check_time], report=report is not None, allow_unusual=allow_unusual)
     out["summary"] = json.loads(out.pop("summary_json"))
     _write_report(report, out)
     return out
@@ -467,17 +470,19 @@ def span_modes(file=None, fmax=None, dampers="linear", shapes=True, text=None, b
     return out
 
 
-def simulate(file=None, frequency=None, duration=60.0, ends="clamped", elements_per_wavelength=30, steps_per_period=160,
-             probes=(), start_amplitude=None, every=1, text=None, base=None, allow_unusual=False):
+def simulate(file=None, frequency=None, duration=None, ends=None, elements_per_wavelength=None, steps_per_period=None,
+             probes=(), start_amplitude=None, every=1, text=None, base=None, report=None, allow_unusual=False):
     """The span in time under the energy balance's own wind, with its dampers each by
     its own nonlinear model, beside the balance at the same frequency, as ``stockbridge
     simulate`` (docs/time-domain.md): the span's natural mode nearest `frequency` (Hz)
     is the drive, started at `start_amplitude` (m; None: the balance's amplitude) and
     stepped until it settles or `duration` (s) is simulated; `ends` "clamped" or
-    "pinned"; the mesh and step by `elements_per_wavelength` and `steps_per_period`;
+    "pinned"; the mesh and step by `elements_per_wavelength` and `steps_per_period`
+    (each None: the span file's, [span] ends and [time], else 60 s, clamped, 30, 160);
     the displacement given at `probes` (m from end 1; empty: clamp 1's Y_b point, each
     damper, mid-span), a row every `every` steps. The span: a span file's path
-    (`file`) or its contents (`text`, relative paths from `base`).
+    (`file`) or its contents (`text`, relative paths from `base`). `report` a path:
+    the HTML report `simulate --report` writes is written there too.
 
     Returns a dict: one array per column of the history CSV, by its names ('time_s',
     'y_at_<mm>mm_m', 'damper_<i>_force_n', 'damper_<i>_velocity_m_s'), 'columns'
@@ -488,10 +493,12 @@ def simulate(file=None, frequency=None, duration=60.0, ends="clamped", elements_
     if frequency is None:
         raise InvalidParameter("frequency: expected the drive's frequency, Hz")
     out = _simulate(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
-                    frequency=float(frequency), duration=float(duration), ends=ends,
-                    elements_per_wavelength=int(elements_per_wavelength), steps_per_period=int(steps_per_period),
+                    frequency=float(frequency), duration=None if duration is None else float(duration), ends=ends,
+                    elements_per_wavelength=None if elements_per_wavelength is None else int(elements_per_wavelength),
+                    steps_per_period=None if steps_per_period is None else int(steps_per_period),
                     probes=[float(x) for x in probes],
                     start_amplitude=None if start_amplitude is None else float(start_amplitude), every=int(every),
-                    allow_unusual=allow_unusual)
+                    report=report is not None, allow_unusual=allow_unusual)
+    _write_report(report, out)
     out["summary"] = json.loads(out.pop("summary_json"))
     return out

@@ -163,7 +163,11 @@ span::Conductor read_conductor(const TomlTable& table, const std::filesystem::pa
 }
 
 void read_span_table(const TomlTable& table, SpanReading& reading) {
-  table.accept_only({"length", "tension", "tension_fraction", "catenary_parameter", "terrain", "wind_law_by_terrain"});
+  table.accept_only(
+      {"length", "tension", "tension_fraction", "catenary_parameter", "terrain", "wind_law_by_terrain", "ends"});
+  if (const auto ends = table.optional_string("ends")) {
+    reading.time.ends = span_parsed_name(table, "ends", *ends, span::parse_beam_ends);
+  }
   reading.wind_law_by_terrain = table.optional_boolean("wind_law_by_terrain").value_or(false);
   reading.length = table.number("length");
   reading.tension = table.optional_number("tension");
@@ -184,6 +188,20 @@ void read_span_table(const TomlTable& table, SpanReading& reading) {
     table.fail(given[1], fmt::format("given beside span.{}: expected one of tension (N), tension_fraction and "
                                      "catenary_parameter (H/w, m)",
                                      given[0]));
+  }
+}
+
+/// The [time] table: the mesh, step and length of a run in time.
+void read_time_table(const TomlTable& table, span::TimeSettings& time) {
+  table.accept_only({"elements_per_wavelength", "steps_per_period", "duration"});
+  if (const auto n = table.optional_integer("elements_per_wavelength", 4, 1000)) {
+    time.elements_per_wavelength = static_cast<int>(*n);
+  }
+  if (const auto n = table.optional_integer("steps_per_period", 8, 100000)) time.steps_per_period = static_cast<int>(*n);
+  if (const auto d = table.optional_number("duration", [](std::string_view key, double value) {
+        require_positive(key, value, "s");
+      })) {
+    time.duration_s = *d;
   }
 }
 
@@ -475,7 +493,7 @@ span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
 }
 
 SpanReading read_span_document(const TomlTable& top, const std::filesystem::path& base_directory, SlipPolicy policy) {
-  top.accept_only({"conductor", "span", "wind", "self_damping", "damper", "mass", "fatigue", "balance"});
+  top.accept_only({"conductor", "span", "wind", "self_damping", "damper", "mass", "fatigue", "balance", "time"});
   SpanReading reading;
   reading.policy = policy;
   reading.conductor = read_conductor(top.table("conductor"), base_directory, reading);
@@ -490,6 +508,7 @@ SpanReading read_span_document(const TomlTable& top, const std::filesystem::path
   }
   reading.fatigue = read_fatigue(top.table("fatigue"), base_directory, reading);
   reading.balance = read_balance(top.optional_table("balance"));
+  if (const auto time = top.optional_table("time")) read_time_table(*time, reading.time);
   return reading;
 }
 
@@ -591,7 +610,7 @@ SpanFile build_span(const toml::table& document, const TomlSource& source, const
                       std::move(reading.self_damping), std::move(reading.dampers), std::move(reading.fatigue),
                       reading.terrain, std::move(reading.masses));
   });
-  return SpanFile{std::move(built), reading.balance, std::move(reading.inputs), std::move(reading.warnings)};
+  return SpanFile{std::move(built), reading.balance, std::move(reading.inputs), std::move(reading.warnings), reading.time};
 }
 
 }  // namespace span_reading

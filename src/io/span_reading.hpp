@@ -35,6 +35,7 @@ struct SpanReading {
   std::vector<span::SpanMass> masses;
   span::FatigueSpec fatigue;
   span::BalanceOptions balance;
+  span::TimeSettings time;           ///< [span] ends, [time]
   std::vector<std::filesystem::path> inputs;
   std::vector<std::string> warnings;
   /// The measured sheets read, by path.

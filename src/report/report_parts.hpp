@@ -11,6 +11,7 @@
 #include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
+#include "stockbridge/requests/time_check.hpp"
 
 namespace stockbridge::report::parts {
 
@@ -72,6 +73,10 @@ void modes_table(HtmlPage& page, const requests::ModesResult& modes);
 /// The sweep's points that did not converge, a line each (at most `shown`, then a count).
 std::vector<std::string> sweep_failures(const std::vector<damper::SweepRun>& runs, bool constant_displacement,
                                         std::size_t shown = 12);
+
+/// The span report's section of `span --check-time`: a row per frequency, the
+/// simulation's figures beside the balance's (nothing where there are no checks).
+void time_checks_section(HtmlPage& page, const std::vector<requests::TimeCheck>& checks, bool poffenberger_swart);
 
 /// "1.2, 2.4 m", the dampers' positions.
 std::string positions_text(const span::Span& span);

@@ -5,7 +5,8 @@
 
 namespace stockbridge::report {
 
-std::string span_report(const requests::SpanResult& result, const ReportContext& context) {
+std::string span_report(const requests::SpanResult& result, const ReportContext& context,
+                        const std::vector<requests::TimeCheck>& checks) {
   const span::SpanAnalysis& a = result.analysis;
   const span::Span& s = a.span;
   const span::BalanceSummary& m = a.balance.summary;
@@ -26,6 +27,7 @@ std::string span_report(const requests::SpanResult& result, const ReportContext&
   }
   page.section("Figures");
   parts::span_figures(page, a, name);
+  parts::time_checks_section(page, checks, s.judges_poffenberger_swart());
 
   page.section("Assumptions");
   page.list(parts::span_caveats(s.fatigue().life.has_value()));

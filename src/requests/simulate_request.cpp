@@ -58,10 +58,12 @@ double ratio(double a, double b) { return std::isfinite(a) && std::isfinite(b) &
 
 void validate(const SimulateRequest& request) {
   require_positive("frequency", request.frequency_hz, "Hz");
-  require_positive("duration", request.duration_s, "s");
-  span::parse_beam_ends(request.ends);
-  require_in_range("elements_per_wavelength", request.elements_per_wavelength, 4, 1000);
-  require_in_range("steps_per_period", request.steps_per_period, 8, 100000);
+  if (request.duration_s) require_positive("duration", *request.duration_s, "s");
+  if (request.ends) span::parse_beam_ends(*request.ends);
+  if (request.elements_per_wavelength) {
+    require_in_range("elements_per_wavelength", *request.elements_per_wavelength, 4, 1000);
+  }
+  if (request.steps_per_period) require_in_range("steps_per_period", *request.steps_per_period, 8, 100000);
   for (std::size_t i = 0; i < request.probes.size(); ++i) {
     if (!(request.probes[i] >= 0.0) || !std::isfinite(request.probes[i])) {
       throw_invalid(fmt::format("probes[{}]", i), request.probes[i], "a distance from end 1, m, >= 0");
@@ -69,6 +71,15 @@ void validate(const SimulateRequest& request) {
   }
   if (request.start_amplitude_m) require_positive("start_amplitude", *request.start_amplitude_m, "m");
   require_in_range("every", request.every, 1, 1000000);
+}
+
+span::TimeSettings time_settings(const SimulateRequest& request, const span::TimeSettings& file) {
+  span::TimeSettings settings = file;
+  if (request.ends) settings.ends = span::parse_beam_ends(*request.ends);
+  settings.elements_per_wavelength = request.elements_per_wavelength.value_or(settings.elements_per_wavelength);
+  settings.steps_per_period = request.steps_per_period.value_or(settings.steps_per_period);
+  settings.duration_s = request.duration_s.value_or(settings.duration_s);
+  return settings;
 }
 
 std::vector<double> simulation_probes(const span::Span& span, const SimulateRequest& request) {
@@ -97,14 +108,16 @@ bool SimulateResult::balance_converged() const {
   return balance.converged();
 }
 
-SimulateResult run_simulate(const span::Span& span, const span::BalanceOptions& balance, const SimulateRequest& request,
+SimulateResult run_simulate(const io::SpanFile& file, const SimulateRequest& request,
                             const std::function<void(const SimulationRow&)>& row,
                             const std::function<void(double, double)>& progress, const std::atomic<bool>* stop) {
   validate(request);
+  const span::Span& span = file.span;
+  const span::BalanceOptions& balance = file.balance;
   span::check_in_time(span);
   SimulateResult result;
   result.asked_frequency_hz = request.frequency_hz;
-  result.ends = request.ends;
+  result.settings = time_settings(request, file.time);
   result.probes = simulation_probes(span, request);
   result.probe_columns = probe_columns(result.probes);
   if (request.start_amplitude_m) {
@@ -121,9 +134,9 @@ SimulateResult run_simulate(const span::Span& span, const span::BalanceOptions& 
 
   span::EbmWindOptions options;
   options.frequency_hz = request.frequency_hz;
-  options.duration_s = request.duration_s;
-  options.elements_per_wavelength = request.elements_per_wavelength;
-  options.steps_per_period = request.steps_per_period;
+  options.duration_s = result.settings.duration_s;
+  options.elements_per_wavelength = result.settings.elements_per_wavelength;
+  options.steps_per_period = result.settings.steps_per_period;
   options.start_amplitude_m = result.start_amplitude_m;
   options.stop = stop;
   long long step = 0;
@@ -144,11 +157,11 @@ SimulateResult run_simulate(const span::Span& span, const span::BalanceOptions& 
       row(record);
     }
     if (progress && stepper.time() >= next_progress) {
-      progress(stepper.time(), request.duration_s);
+      progress(stepper.time(), options.duration_s);
       next_progress += 1.0;
     }
   };
-  result.history = span::settle_on_ebm_wind(span, span::parse_beam_ends(request.ends), options);
+  result.history = span::settle_on_ebm_wind(span, result.settings.ends, options);
   result.balance = balance_at(span, balance, result.history.frequency_hz);
   return result;
 }
@@ -174,23 +187,25 @@ Table<SimulationRow> simulation_table(const std::vector<std::string>& probe_colu
 
 namespace {
 
-/// A steady figure beside the balance's: "<name>" (null unless settled),
-/// "ebm_<name>" (null unless the balance converged) and "<name>_ratio".
-void add_compared(io::JsonObject& json, std::string_view name, double simulated, double balanced, bool settled,
-                  bool balance_converged) {
+/// A steady figure beside the balance's: "<name>", "ebm_<name>" and "<name>_ratio".
+void add_compared(io::JsonObject& json, std::string_view name, const ComparedFigure& figure) {
+  json.add(name, figure.simulated);
+  json.add(fmt::format("ebm_{}", name), figure.balanced);
+  json.add(fmt::format("{}_ratio", name), figure.ratio);
+}
+
+ComparedFigure compared(double simulated, double balanced, bool settled, bool balance_converged) {
   const double s = settled ? simulated : kNaN, b = balance_converged ? balanced : kNaN;
-  json.add(name, s);
-  json.add(fmt::format("ebm_{}", name), b);
-  json.add(fmt::format("{}_ratio", name), ratio(s, b));
+  return {s, b, ratio(s, b)};
 }
 
 io::JsonObject damper_summary(const span::DamperInTimeFigures& d, const span::DamperAtBalance* at_balance, bool settled,
                               std::size_t index) {
   io::JsonObject json;
   json.add("column", fmt::format("damper_{}", index + 1)).add("name", d.name).add("position_m", d.position_m);
-  add_compared(json, "power_w", d.power_w, at_balance ? at_balance->power : kNaN, settled, at_balance != nullptr);
-  add_compared(json, "velocity_m_s", d.velocity_amplitude_m_s, at_balance ? at_balance->clamp_velocity : kNaN, settled,
-               at_balance != nullptr);
+  add_compared(json, "power_w", compared(d.power_w, at_balance ? at_balance->power : kNaN, settled, at_balance != nullptr));
+  add_compared(json, "velocity_m_s", compared(d.velocity_amplitude_m_s, at_balance ? at_balance->clamp_velocity : kNaN,
+                                              settled, at_balance != nullptr));
   json.add("dissipated_w", settled ? d.dissipated_w : kNaN);
   json.add("force_harmonics_n", settled ? d.force_harmonics_n : std::vector<double>{});
   double higher = 0.0;
@@ -201,28 +216,42 @@ io::JsonObject damper_summary(const span::DamperInTimeFigures& d, const span::Da
 
 }  // namespace
 
+SteadyComparison steady_comparison(const span::Span& span, const SimulateResult& result) {
+  const span::EbmWindHistory& h = result.history;
+  const bool settled = h.settled, converged = result.balance_converged();
+  const span::BalancePoint& p = result.balance;
+  const span::Conductor& c = span.conductor();
+  const double f = h.frequency_hz, s = h.end_loop_amplitude_m[0], xb = span.fatigue().yb_distance;
+  const double yb = span::bending_amplitude(c, span.tension(), f, s, xb);
+  SteadyComparison out;
+  out.antinode_amplitude_m = compared(h.antinode_amplitude_m, p.amplitude, settled, converged);
+  out.clamp_loop_amplitude_m = compared(s, p.clamp_loop_amplitude, settled, converged);
+  out.bending_amplitude_m = compared(yb, p.bending_amplitude, settled, converged);
+  out.stress_poffenberger_swart_pa = compared(span::poffenberger_swart_stress(c, span.tension(), yb, xb),
+                                              p.stress_poffenberger_swart, settled, converged);
+  out.stress_fymax_pa = compared(span::fymax_stress(c, f, s), p.stress_fymax, settled, converged);
+  return out;
+}
+
 io::JsonObject simulate_summary(const span::Span& span, const SimulateResult& result) {
   const span::EbmWindHistory& h = result.history;
   const bool settled = h.settled, converged = result.balance_converged();
   const span::BalancePoint* p = converged ? &result.balance : nullptr;
-  const span::Conductor& c = span.conductor();
-  const double f = h.frequency_hz, s = h.end_loop_amplitude_m[0];
-  const double yb = span::bending_amplitude(c, span.tension(), f, s, span.fatigue().yb_distance);
   io::JsonObject json;
-  json.add("frequency_hz", f).add("asked_frequency_hz", result.asked_frequency_hz).add("ends", result.ends);
+  json.add("frequency_hz", h.frequency_hz).add("asked_frequency_hz", result.asked_frequency_hz);
+  json.add("ends", span::beam_ends_name(result.settings.ends));
   json.add("elements", h.elements).add("dt_s", h.dt_s).add("simulated_s", h.time_s);
   json.add("periods", static_cast<int>(h.envelope_m.size())).add("settled", settled).add("interrupted", h.interrupted);
   json.add("settled_by", span::settled_by_name(h.settled_by)).add("figure_periods", h.figure_periods);
   json.add("envelope_fluctuation", settled ? h.envelope_fluctuation : kNaN);
   json.add("start_amplitude_m", result.start_amplitude_m).add("ebm_converged", converged);
   json.add("last_envelope_m", h.envelope_m.empty() ? kNaN : h.envelope_m.back());
-  add_compared(json, "antinode_amplitude_m", h.antinode_amplitude_m, p ? p->amplitude : kNaN, settled, converged);
-  add_compared(json, "clamp_loop_amplitude_m", s, p ? p->clamp_loop_amplitude : kNaN, settled, converged);
-  add_compared(json, "bending_amplitude_m", yb, p ? p->bending_amplitude : kNaN, settled, converged);
-  add_compared(json, "stress_poffenberger_swart_pa",
-               span::poffenberger_swart_stress(c, span.tension(), yb, span.fatigue().yb_distance),
-               p ? p->stress_poffenberger_swart : kNaN, settled, converged);
-  add_compared(json, "stress_fymax_pa", span::fymax_stress(c, f, s), p ? p->stress_fymax : kNaN, settled, converged);
+  const SteadyComparison figures = steady_comparison(span, result);
+  add_compared(json, "antinode_amplitude_m", figures.antinode_amplitude_m);
+  add_compared(json, "clamp_loop_amplitude_m", figures.clamp_loop_amplitude_m);
+  add_compared(json, "bending_amplitude_m", figures.bending_amplitude_m);
+  add_compared(json, "stress_poffenberger_swart_pa", figures.stress_poffenberger_swart_pa);
+  add_compared(json, "stress_fymax_pa", figures.stress_fymax_pa);
   std::vector<io::JsonObject> dampers;
   for (std::size_t d = 0; d < h.dampers.size(); ++d) {
     const span::DamperAtBalance* at = nullptr;
@@ -238,6 +267,7 @@ io::JsonObject simulate_summary(const span::Span& span, const SimulateResult& re
   json.add("envelope_m", h.envelope_m);
   json.add("x_m", h.x_m);
   json.add("amplitude_m", h.amplitude_m);
+  json.add("antinode_along_m", h.antinode_along_m);
   json.add("seconds", result.seconds);
   return json;
 }

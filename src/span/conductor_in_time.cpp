@@ -27,14 +27,6 @@ std::string_view settled_by_name(SettledBy rule) {
   return "not_settled";
 }
 
-std::string_view beam_ends_name(BeamEnds ends) { return ends == BeamEnds::pinned ? "pinned" : "clamped"; }
-
-BeamEnds parse_beam_ends(std::string_view name) {
-  if (name == "pinned") return BeamEnds::pinned;
-  if (name == "clamped") return BeamEnds::clamped;
-  throw InvalidParameter(fmt::format("ends = '{}': expected \"pinned\" or \"clamped\"", name));
-}
-
 double BeamProperties::pinned_frequency(int n) const {
   const double kn = n * std::numbers::pi / length;
   return n / (2.0 * length) * std::sqrt(tension / mass_per_length) * std::sqrt(1.0 + kn * kn * ei / tension);
@@ -795,6 +787,7 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   for (const double x : model.nodes()) {
     out.x_m.push_back(x);
     out.amplitude_m.push_back(std::abs(model.at(y, x).first));
+    out.antinode_along_m.push_back(local_antinode(model, y, x, k));
   }
   return out;
 }

@@ -18,6 +18,7 @@
 //   [span]
 //   length = 400                     # m
 //   tension_fraction = 0.15          # or tension = N: exactly one
+//   ends = "clamped"                 # optional: clamped (default) | pinned, in time only
 //   [wind]
 //   law = "cigre"                    # strouhal, speed_min, speed_max optional;
 //                                    # turbulence_intensity (foti); table = "fnc.csv" (table)
@@ -44,6 +45,10 @@
 //   velocity_min = 1e-3              # m/s
 //   velocity_max = 3.0               # m/s
 //   column_ratio = 1.5
+//   [time]                           # optional: a run in time (simulate, span --check-time)
+//   elements_per_wavelength = 30
+//   steps_per_period = 160
+//   duration = 60                    # s simulated at most
 //
 // The reader checks types and keys (a misspelt or unknown key is an error); the
 // span model validates the values (span::Span), and its InvalidParameter, named
@@ -58,6 +63,7 @@
 #include "stockbridge/core/typical_ranges.hpp"
 #include "stockbridge/span/balance.hpp"
 #include "stockbridge/span/span.hpp"
+#include "stockbridge/span/time_settings.hpp"
 
 namespace stockbridge::io {
 
@@ -71,6 +77,9 @@ struct SpanFile {
   span::BalanceOptions balance;
   std::vector<std::filesystem::path> inputs;
   std::vector<std::string> warnings;
+  /// How a run in time steps the span ([span] ends, [time]): `simulate` and
+  /// `span --check-time`; the balance does not use it.
+  span::TimeSettings time;
 };
 
 /// Reads a span file and builds the span; InputError naming the file, line, key,

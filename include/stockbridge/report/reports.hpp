@@ -19,6 +19,7 @@
 #include "stockbridge/requests/line_request.hpp"
 #include "stockbridge/requests/modes_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
+#include "stockbridge/requests/time_check.hpp"
 
 namespace stockbridge::report {
 
@@ -32,8 +33,17 @@ struct ReportContext {
 /// `stockbridge span`: the span's inputs (conductor, length, tension as N, % RTS and
 /// H/w, wind, self-damping, dampers and positions, fatigue and climate), the verdict,
 /// the amplitude, stress (with microstrain) and power curves with and without the
-/// dampers against the endurance limit, the life and its caveats.
-std::string span_report(const requests::SpanResult& result, const ReportContext& context);
+/// dampers against the endurance limit, the life and its caveats; with `checks`
+/// (span --check-time), the simulation in time beside the balance at each frequency.
+std::string span_report(const requests::SpanResult& result, const ReportContext& context,
+                        const std::vector<requests::TimeCheck>& checks = {});
+
+/// `stockbridge simulate`: whether the span in time agrees with the balance at the
+/// frequency (within 10 %), the run's settings, its steady figures beside the
+/// balance's, the dampers' powers, velocities and force harmonics, the envelope per
+/// period and the amplitude along the span.
+std::string simulate_report(const span::Span& span, span::DamperModel model, const requests::SimulateResult& result,
+                            const ReportContext& context);
 
 /// `stockbridge recorder`: the verdict (the measured damage per year and life
 /// against the predicted), the recorded matrix as a picture (Yb against frequency,

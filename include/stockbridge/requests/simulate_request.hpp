@@ -7,11 +7,13 @@
 
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "stockbridge/io/json_writer.hpp"
+#include "stockbridge/io/span_file.hpp"
 #include "stockbridge/requests/output_table.hpp"
 #include "stockbridge/span/analysis.hpp"
 #include "stockbridge/span/conductor_in_time.hpp"
@@ -20,12 +22,11 @@ namespace stockbridge::requests {
 
 struct SimulateRequest {
   double frequency_hz = 0.0;          ///< the drive (the span's natural mode nearest it is taken)
-  double duration_s = 60.0;           ///< simulated at most
-  std::string ends = "clamped";       ///< clamped | pinned
-  /// Finer than the library's defaults, so that the dampers' third and fifth
-  /// harmonics are resolved too (10 elements a wavelength at 3f; docs/time-domain.md).
-  int elements_per_wavelength = 30;
-  int steps_per_period = 160;
+  /// Each given one replaces the span file's (span::TimeSettings: [span] ends, [time]).
+  std::optional<double> duration_s;   ///< simulated at most
+  std::optional<std::string> ends;    ///< clamped | pinned
+  std::optional<int> elements_per_wavelength;
+  std::optional<int> steps_per_period;
   /// Where the history gives the displacement, m from end 1. Empty: the span clamp's
   /// Y_b point (yb_distance from end 1), each damper, mid-span.
   std::vector<double> probes;
@@ -39,6 +40,10 @@ struct SimulateRequest {
 /// ("frequency", "duration", "ends", "elements_per_wavelength", "steps_per_period",
 /// "probes[i]", "start_amplitude", "every").
 void validate(const SimulateRequest& request);
+
+/// The settings the run uses: the request's where it gives them, else the span
+/// file's (`file`: its [span] ends and [time] table).
+span::TimeSettings time_settings(const SimulateRequest& request, const span::TimeSettings& file);
 
 /// The probes the history gives: the request's, or the defaults. InvalidParameter
 /// naming "probes[i]" where one is past the span's length or within 0.5 mm of another.
@@ -61,7 +66,7 @@ struct SimulateResult {
   std::vector<double> probes;              ///< m from end 1, as used
   std::vector<std::string> probe_columns;  ///< "y_at_89mm": the history's column per probe
   double asked_frequency_hz = 0.0;
-  std::string ends;
+  span::TimeSettings settings;             ///< as used
   double start_amplitude_m = 0.0;
   /// The energy balance's point (the span command's balance) at the simulation's frequency.
   span::BalancePoint balance;
@@ -71,16 +76,34 @@ struct SimulateResult {
   bool balance_converged() const;
 };
 
-/// Runs the span in time under the EBM's wind (a) with its dampers, each history row
-/// to `row` as it comes (every `request.every` steps), `progress` (simulated s, s
-/// asked) once a period; `stop` ends it early (`history.interrupted`), with the
-/// periods done. The balance, with `balance` options (the span file's), at the asked
+/// Runs the span file's span in time under the EBM's wind (a) with its dampers, with
+/// the file's time settings but where the request gives its own, each history row to
+/// `row` as it comes (every `request.every` steps), `progress` (simulated s, s
+/// asked) once a second simulated; `stop` ends it early (`history.interrupted`),
+/// with the periods done. The balance, with the file's balance options, at the asked
 /// frequency gives the default start, and at the simulated frequency the comparison.
 /// InvalidParameter as validate() and settle_on_ebm_wind.
-SimulateResult run_simulate(const span::Span& span, const span::BalanceOptions& balance, const SimulateRequest& request,
+SimulateResult run_simulate(const io::SpanFile& file, const SimulateRequest& request,
                             const std::function<void(const SimulationRow&)>& row,
                             const std::function<void(double, double)>& progress = {},
                             const std::atomic<bool>* stop = nullptr);
+
+/// A steady figure of a run beside the balance's: the simulation's (NaN unless the
+/// run settled), the balance's (NaN unless it converged), and their ratio.
+struct ComparedFigure {
+  double simulated = std::numeric_limits<double>::quiet_NaN();
+  double balanced = std::numeric_limits<double>::quiet_NaN();
+  double ratio = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// The figures the span command judges, in time and by the balance: the antinode
+/// amplitude (mid-span), the loop amplitude S next to clamp 1, Y_b there, and the
+/// stresses from them (fatigue.hpp).
+struct SteadyComparison {
+  ComparedFigure antinode_amplitude_m, clamp_loop_amplitude_m, bending_amplitude_m, stress_poffenberger_swart_pa,
+      stress_fymax_pa;
+};
+SteadyComparison steady_comparison(const span::Span& span, const SimulateResult& result);
 
 /// The history CSV's quantities: time_s, <probe>_m (y at each probe), and per damper
 /// (damper_1, damper_2, ... in the summary's order) <damper>_force_n (on the

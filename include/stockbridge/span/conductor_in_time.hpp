@@ -33,18 +33,9 @@
 
 #include "stockbridge/damper/damper_in_time.hpp"
 #include "stockbridge/span/span.hpp"
+#include "stockbridge/span/time_settings.hpp"
 
 namespace stockbridge::span {
-
-/// How the conductor is held at the span's two clamps.
-enum class BeamEnds {
-  pinned,   ///< no displacement, the slope free
-  clamped,  ///< no displacement, no slope (the suspension clamps)
-};
-/// "pinned" or "clamped".
-std::string_view beam_ends_name(BeamEnds ends);
-/// "pinned" or "clamped"; InvalidParameter naming "ends" otherwise.
-BeamEnds parse_beam_ends(std::string_view name);
 
 /// A linear dashpot on the conductor: F = -c y_t at its position (a damper of
 /// impedance Z = c, real and constant: the closed-form check of the balance).
@@ -263,6 +254,9 @@ struct EbmWindHistory {
   std::array<double, 2> end_loop_amplitude_m{};
   std::vector<double> x_m;           ///< the nodes
   std::vector<double> amplitude_m;   ///< |y^| at the nodes, the last period's
+  /// The local antinode amplitude sqrt(|y^|^2 + |y^'/k|^2) at the nodes, the last
+  /// period's: the standing wave's envelope along the span (|y^| samples it).
+  std::vector<double> antinode_along_m;
   /// Per dashpot, the mean power it took over the last period, W.
   std::vector<double> dashpot_power_w;
   /// The span's dampers, each position of each (end 1's first), in the span file's order.

@@ -29,6 +29,7 @@
 #include "stockbridge/requests/response_request.hpp"
 #include "stockbridge/requests/section_loop.hpp"
 #include "stockbridge/requests/simulate_request.hpp"
+#include "stockbridge/requests/time_check.hpp"
 #include "stockbridge/requests/span_modes_request.hpp"
 #include "stockbridge/requests/span_request.hpp"
 #include "stockbridge/requests/sweep_request.hpp"
@@ -73,6 +74,7 @@ std::map<std::string, std::string> documented_output_tables() {
       {"span_modes", documented_table(span_modes_table(SpanModesResult{}))},
       {"span_mode_shapes", documented_table(span_mode_shapes_table(SpanModesResult{}))},
       {"simulate_history", documented_table(simulation_table({"y_at_89mm"}, 1))},
+      {"check_time", documented_table(time_check_table(false))},
   };
 }
 
