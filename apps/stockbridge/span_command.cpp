@@ -212,7 +212,8 @@ std::vector<requests::TimeCheck> span_time_checks(const SpanOptions& options, co
   if (!options.check_time) return {};
   const std::vector<double> frequencies = parse_number_list(*options.check_time, "--check-time");
   if (!options.quiet) {
-    fmt::print(stderr, "span: checking {} frequencies in time\n", frequencies.size());
+    fmt::print(stderr, "span: checking {} {} in time\n", frequencies.size(),
+               frequencies.size() == 1 ? "frequency" : "frequencies");
   }
   std::vector<requests::TimeCheck> checks = requests::check_span_in_time(
       requests::span_file_as_balanced(file, request, result), frequencies, options.threads, &InterruptRequest::flag());

@@ -1875,8 +1875,11 @@ def simulate_summary_panels(envelope_axis, along_axis, summary, name):
     envelope = summary["envelope_m"]
     envelope_axis.plot([period_s * (i + 1) for i in range(len(envelope))], [1e3 * y for y in envelope], "-",
                        color="C0", linewidth=1.0, label="simulation, mid-span")
-    along_axis.plot(summary["x_m"], [1e3 * y for y in summary["amplitude_m"]], "-", color="C0", linewidth=0.6,
-                    label="simulation, |y|, last period")
+    along_axis.plot(summary["x_m"], [1e3 * y for y in summary["amplitude_m"]], "-", color="C0", linewidth=0.4,
+                    alpha=0.5, label="simulation, |y|, last period")
+    if "antinode_along_m" in summary:  # the standing wave's envelope (|y| at the nodes samples it)
+        along_axis.plot(summary["x_m"], [1e3 * y for y in summary["antinode_along_m"]], "-", color="C0",
+                        linewidth=1.2, label="simulation, local antinode amplitude")
     for axis in (envelope_axis, along_axis):
         if ebm is not None:
             axis.axhline(1e3 * ebm, color="C3", linestyle="--", linewidth=1.0, label="energy balance")

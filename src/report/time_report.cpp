@@ -175,6 +175,22 @@ std::string simulate_report(const span::Span& span, span::DamperModel model, con
   return page.html();
 }
 
+namespace {
+
+/// " The runs: ... ." from the first run's settings (all share the span file's).
+std::string time_settings_text(const std::vector<requests::TimeCheck>& checks) {
+  for (const requests::TimeCheck& c : checks) {
+    if (!c.result) continue;
+    const span::TimeSettings& t = c.result->settings;
+    return fmt::format(" The runs: {} ends, {} elements a wavelength, {} steps a period, {} s at most.",
+                       span::beam_ends_name(t.ends), t.elements_per_wavelength, t.steps_per_period,
+                       parts::number(t.duration_s));
+  }
+  return {};
+}
+
+}  // namespace
+
 namespace parts {
 
 void time_checks_section(HtmlPage& page, const std::vector<requests::TimeCheck>& checks, bool poffenberger_swart) {
@@ -184,8 +200,8 @@ void time_checks_section(HtmlPage& page, const std::vector<requests::TimeCheck>&
       "The span was also simulated in time at {} frequencies (stockbridge simulate: the conductor a tensioned beam, "
       "the dampers by their own nonlinear models, the balance's own wind and self-damping). Where the two part by "
       "more than {} %, the balance's assumptions (one standing wave, the travelling-wave picture at the ends, the "
-      "dampers' first harmonic) do not carry the answer there.",
-      checks.size(), parts::number(100.0 * requests::kTimeCheckTolerance, 2)));
+      "dampers' first harmonic) do not carry the answer there.{}",
+      checks.size(), parts::number(100.0 * requests::kTimeCheckTolerance, 2), time_settings_text(checks)));
   std::vector<std::vector<std::string>> rows;
   std::vector<Tone> tones;
   const char* stress = poffenberger_swart ? "Poffenberger-Swart" : "fymax";
