@@ -44,6 +44,10 @@ void print_simulation_report(const span::Span& span, const requests::SimulateRes
   fmt::print("simulate: {}{} m, {} ends, at {:.6g} Hz (the mode nearest {:.6g} Hz), {} elements, dt = {:.4g} s\n",
              span.conductor().name.empty() ? "" : span.conductor().name + ", ", format_value(span.length()), span::beam_ends_name(r.settings.ends),
              h.frequency_hz, r.asked_frequency_hz, h.elements, h.dt_s);
+  if (r.wind == span::WindInTime::wake) {
+    fmt::print("wind: the wake oscillator, shedding at {:.6g} Hz (U = {:.4g} m/s)\n", r.asked_frequency_hz,
+               h.wind_speed_m_s);
+  }
   fmt::print("{:.4g} s simulated ({} periods) from {:.4g} mm: {}\n", h.time_s, h.envelope_m.size(),
              r.start_amplitude_m * 1e3,
              h.settled ? "settled" : h.interrupted ? "interrupted" : "not settled (--duration longer)");
@@ -59,6 +63,7 @@ void print_simulation_report(const span::Span& span, const requests::SimulateRes
   fmt::print("antinode amplitude at mid-span: {:.6g} mm; the balance's {}\n", h.antinode_amplitude_m * 1e3,
              p ? fmt::format("{:.6g} mm (ratio {:.4f})", p->amplitude * 1e3, h.antinode_amplitude_m / p->amplitude)
                : std::string("did not converge"));
+  fmt::print("wind's power {:.4g} W; the self-damping's {:.4g} W\n", h.wind_power_w, h.damping_power_w);
   fmt::print("loop amplitude next to clamp 1: {:.6g} mm; the balance's {}\n", h.end_loop_amplitude_m[0] * 1e3,
              p ? fmt::format("{:.6g} mm (ratio {:.4f})", p->clamp_loop_amplitude * 1e3,
                              h.end_loop_amplitude_m[0] / p->clamp_loop_amplitude)
@@ -160,6 +165,10 @@ void add_simulate_command(CLI::App& app, Invocation& invocation) {
                   fmt::format("Time steps per period of the drive (default: the span file's [time] steps_per_period, "
                               "else {})",
                               defaults.steps_per_period));
+  sub->add_option("--wind", r.wind,
+                  "ebm (the energy balance's own wind: the check) or wake (a wake oscillator per element, the span "
+                  "file's [wake], shedding at --frequency)")
+      ->capture_default_str();
   sub->add_option("--probe", options->probes,
                   "Where the history gives the displacement, m from end 1, comma-separated (default: the Y_b point of "
                   "clamp 1, each damper, mid-span)");

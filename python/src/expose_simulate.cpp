@@ -21,7 +21,7 @@ namespace {
 py::dict simulate_arrays(const std::optional<std::string>& path, const std::optional<std::string>& text,
                          const std::optional<std::string>& base, double frequency, std::optional<double> duration,
                          const std::optional<std::string>& ends, std::optional<int> elements_per_wavelength,
-                         std::optional<int> steps_per_period,
+                         std::optional<int> steps_per_period, const std::string& wind,
                          const std::vector<double>& probes, std::optional<double> start_amplitude, int every,
                          bool report, bool allow_unusual) {
   if (path.has_value() == text.has_value()) {
@@ -33,6 +33,7 @@ py::dict simulate_arrays(const std::optional<std::string>& path, const std::opti
   request.ends = ends;
   request.elements_per_wavelength = elements_per_wavelength;
   request.steps_per_period = steps_per_period;
+  request.wind = wind;
   request.probes = probes;
   request.start_amplitude_m = start_amplitude;
   request.every = every;
@@ -67,7 +68,7 @@ void expose_simulate(py::module_& m) {
   m.def("_simulate", &simulate_arrays, py::arg("file") = py::none(), py::arg("text") = py::none(),
         py::arg("base") = py::none(), py::arg("frequency"), py::arg("duration") = py::none(),
         py::arg("ends") = py::none(), py::arg("elements_per_wavelength") = py::none(),
-        py::arg("steps_per_period") = py::none(), py::arg("probes") = std::vector<double>{},
+        py::arg("steps_per_period") = py::none(), py::arg("wind") = defaults.wind, py::arg("probes") = std::vector<double>{},
         py::arg("start_amplitude") = py::none(), py::arg("every") = defaults.every, py::arg("report") = false,
         py::arg("allow_unusual") = false,
         "The span in time beside the energy balance (stockbridge.simulate wraps it): the history CSV's columns as "

@@ -471,7 +471,7 @@ def span_modes(file=None, fmax=None, dampers="linear", shapes=True, text=None, b
 
 
 def simulate(file=None, frequency=None, duration=None, ends=None, elements_per_wavelength=None, steps_per_period=None,
-             probes=(), start_amplitude=None, every=1, text=None, base=None, report=None, allow_unusual=False):
+             wind="ebm", probes=(), start_amplitude=None, every=1, text=None, base=None, report=None, allow_unusual=False):
     """The span in time under the energy balance's own wind, with its dampers each by
     its own nonlinear model, beside the balance at the same frequency, as ``stockbridge
     simulate`` (docs/time-domain.md): the span's natural mode nearest `frequency` (Hz)
@@ -479,6 +479,8 @@ def simulate(file=None, frequency=None, duration=None, ends=None, elements_per_w
     stepped until it settles or `duration` (s) is simulated; `ends` "clamped" or
     "pinned"; the mesh and step by `elements_per_wavelength` and `steps_per_period`
     (each None: the span file's, [span] ends and [time], else 60 s, clamped, 30, 160);
+    `wind` "ebm" (the balance's own: the check) or "wake" (a wake oscillator per
+    element with the span file's [wake], shedding at `frequency`);
     the displacement given at `probes` (m from end 1; empty: clamp 1's Y_b point, each
     damper, mid-span), a row every `every` steps. The span: a span file's path
     (`file`) or its contents (`text`, relative paths from `base`). `report` a path:
@@ -495,7 +497,7 @@ def simulate(file=None, frequency=None, duration=None, ends=None, elements_per_w
     out = _simulate(file=None if file is None else str(file), text=text, base=None if base is None else str(base),
                     frequency=float(frequency), duration=None if duration is None else float(duration), ends=ends,
                     elements_per_wavelength=None if elements_per_wavelength is None else int(elements_per_wavelength),
-                    steps_per_period=None if steps_per_period is None else int(steps_per_period),
+                    steps_per_period=None if steps_per_period is None else int(steps_per_period), wind=wind,
                     probes=[float(x) for x in probes],
                     start_amplitude=None if start_amplitude is None else float(start_amplitude), every=int(every),
                     report=report is not None, allow_unusual=allow_unusual)

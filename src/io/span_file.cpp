@@ -205,6 +205,16 @@ void read_time_table(const TomlTable& table, span::TimeSettings& time) {
   }
 }
 
+/// The [wake] table: the wake oscillator's parameters (span::WakeParameters).
+void read_wake_table(const TomlTable& table, span::WakeParameters& wake) {
+  table.accept_only({"epsilon", "coupling", "lift_coefficient", "air_density"});
+  const auto positive = [](std::string_view key, double value) { require_positive(key, value, ""); };
+  wake.epsilon = table.optional_number("epsilon", positive).value_or(wake.epsilon);
+  wake.coupling = table.optional_number("coupling", positive).value_or(wake.coupling);
+  wake.lift_coefficient = table.optional_number("lift_coefficient", positive).value_or(wake.lift_coefficient);
+  wake.air_density = table.optional_number("air_density", positive).value_or(wake.air_density);
+}
+
 void read_wind(const TomlTable& table, const std::filesystem::path& base_directory, SpanReading& reading) {
   table.accept_only({"law", "strouhal", "speed_min", "speed_max", "turbulence_intensity", "table", "power_scale"});
   span::WindModel& wind = reading.wind;
@@ -493,7 +503,8 @@ span::BalanceOptions read_balance(const std::optional<TomlTable>& table) {
 }
 
 SpanReading read_span_document(const TomlTable& top, const std::filesystem::path& base_directory, SlipPolicy policy) {
-  top.accept_only({"conductor", "span", "wind", "self_damping", "damper", "mass", "fatigue", "balance", "time"});
+  top.accept_only({"conductor", "span", "wind", "self_damping", "damper", "mass", "fatigue", "balance", "time",
+                   "wake"});
   SpanReading reading;
   reading.policy = policy;
   reading.conductor = read_conductor(top.table("conductor"), base_directory, reading);
@@ -509,6 +520,7 @@ SpanReading read_span_document(const TomlTable& top, const std::filesystem::path
   reading.fatigue = read_fatigue(top.table("fatigue"), base_directory, reading);
   reading.balance = read_balance(top.optional_table("balance"));
   if (const auto time = top.optional_table("time")) read_time_table(*time, reading.time);
+  if (const auto wake = top.optional_table("wake")) read_wake_table(*wake, reading.time.wake);
   return reading;
 }
 

@@ -109,7 +109,15 @@ void time_dampers_table(HtmlPage& page, const requests::SimulateResult& r) {
              rows);
 }
 
-std::vector<std::string> time_assumptions() {
+std::vector<std::string> time_assumptions(span::WindInTime wind) {
+  if (wind == span::WindInTime::wake) {
+    return {"The conductor is a tensioned Euler-Bernoulli beam (EI = EI_min) in cubic Hermite elements, stepped by "
+            "Newmark's average acceleration rule; its ends as the span file's [span] ends say.",
+            "The wind is Facchinetti's wake oscillator, one per element, shedding at the frequency asked (the wind "
+            "speed from the span file's Strouhal number), coupled to the conductor's acceleration; the self-damping "
+            "is the balance's law. The balance beside it has its own wind: the two differ by the wind's model too.",
+            "Each damper is stepped by its own nonlinear model in time and solved with the conductor at every step."};
+  }
   return {"The conductor is a tensioned Euler-Bernoulli beam (EI = EI_min) in cubic Hermite elements, stepped by "
           "Newmark's average acceleration rule; its ends as the span file's [span] ends say.",
           "The wind is the balance's own: its power law and the self-damping law act as distributed forces on the "
@@ -147,6 +155,17 @@ std::string simulate_report(const span::Span& span, span::DamperModel model, con
   inputs.push_back({"frequency", fmt::format("{} Hz (the natural mode nearest the {} Hz asked)",
                                              parts::number(h.frequency_hz, 6), parts::number(r.asked_frequency_hz))});
   inputs.push_back({"ends", std::string(span::beam_ends_name(r.settings.ends))});
+  const span::WakeParameters& wake = r.settings.wake;
+  inputs.push_back({"wind in time",
+                    r.wind == span::WindInTime::ebm
+                        ? std::string("the energy balance's own")
+                        : fmt::format("the wake oscillator at U = {} m/s (epsilon {}, A {}, C_L0 {}, rho {} kg/m^3)",
+                                      parts::number(h.wind_speed_m_s), parts::number(wake.epsilon),
+                                      parts::number(wake.coupling), parts::number(wake.lift_coefficient),
+                                      parts::number(wake.air_density))});
+  inputs.push_back({"powers", h.settled ? fmt::format("the wind's {} W, the self-damping's {} W",
+                                                      parts::number(h.wind_power_w), parts::number(h.damping_power_w))
+                                        : std::string("-")});
   inputs.push_back({"mesh and step", fmt::format("{} elements ({} a wavelength), dt = {} s ({} a period)", h.elements,
                                                  r.settings.elements_per_wavelength, parts::number(h.dt_s),
                                                  r.settings.steps_per_period)});
@@ -169,7 +188,7 @@ std::string simulate_report(const span::Span& span, span::DamperModel model, con
   page.section("Figures");
   time_figures(page, r, name);
   page.section("Assumptions");
-  page.list(time_assumptions());
+  page.list(time_assumptions(r.wind));
   page.section("Warnings");
   page.list(context.warnings, true);
   return page.html();

@@ -64,6 +64,7 @@ void validate(const SimulateRequest& request) {
     require_in_range("elements_per_wavelength", *request.elements_per_wavelength, 4, 1000);
   }
   if (request.steps_per_period) require_in_range("steps_per_period", *request.steps_per_period, 8, 100000);
+  span::parse_wind_in_time(request.wind);
   for (std::size_t i = 0; i < request.probes.size(); ++i) {
     if (!(request.probes[i] >= 0.0) || !std::isfinite(request.probes[i])) {
       throw_invalid(fmt::format("probes[{}]", i), request.probes[i], "a distance from end 1, m, >= 0");
@@ -118,6 +119,7 @@ SimulateResult run_simulate(const io::SpanFile& file, const SimulateRequest& req
   SimulateResult result;
   result.asked_frequency_hz = request.frequency_hz;
   result.settings = time_settings(request, file.time);
+  result.wind = span::parse_wind_in_time(request.wind);
   result.probes = simulation_probes(span, request);
   result.probe_columns = probe_columns(result.probes);
   if (request.start_amplitude_m) {
@@ -138,6 +140,8 @@ SimulateResult run_simulate(const io::SpanFile& file, const SimulateRequest& req
   options.elements_per_wavelength = result.settings.elements_per_wavelength;
   options.steps_per_period = result.settings.steps_per_period;
   options.start_amplitude_m = result.start_amplitude_m;
+  options.wind = result.wind;
+  options.wake = result.settings.wake;
   options.stop = stop;
   long long step = 0;
   double next_progress = 0.0;
@@ -239,13 +243,15 @@ io::JsonObject simulate_summary(const span::Span& span, const SimulateResult& re
   const span::BalancePoint* p = converged ? &result.balance : nullptr;
   io::JsonObject json;
   json.add("frequency_hz", h.frequency_hz).add("asked_frequency_hz", result.asked_frequency_hz);
-  json.add("ends", span::beam_ends_name(result.settings.ends));
+  json.add("ends", span::beam_ends_name(result.settings.ends)).add("wind", span::wind_in_time_name(result.wind));
+  json.add("wind_speed_m_s", result.wind == span::WindInTime::wake ? h.wind_speed_m_s : kNaN);
   json.add("elements", h.elements).add("dt_s", h.dt_s).add("simulated_s", h.time_s);
   json.add("periods", static_cast<int>(h.envelope_m.size())).add("settled", settled).add("interrupted", h.interrupted);
   json.add("settled_by", span::settled_by_name(h.settled_by)).add("figure_periods", h.figure_periods);
   json.add("envelope_fluctuation", settled ? h.envelope_fluctuation : kNaN);
   json.add("start_amplitude_m", result.start_amplitude_m).add("ebm_converged", converged);
   json.add("last_envelope_m", h.envelope_m.empty() ? kNaN : h.envelope_m.back());
+  json.add("wind_power_w", settled ? h.wind_power_w : kNaN).add("damping_power_w", settled ? h.damping_power_w : kNaN);
   const SteadyComparison figures = steady_comparison(span, result);
   add_compared(json, "antinode_amplitude_m", figures.antinode_amplitude_m);
   add_compared(json, "clamp_loop_amplitude_m", figures.clamp_loop_amplitude_m);

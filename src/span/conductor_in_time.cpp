@@ -360,6 +360,44 @@ bool settled(const std::vector<double>& envelope, double tolerance, std::size_t 
 
 }  // namespace
 
+namespace {
+/// Newton's iterations of a wake step: from the start's damping, the residual falls
+/// below round-off in two at 40 steps a period or more; three for margin.
+constexpr int kWakeNewtonIterations = 3;
+}  // namespace
+
+WakeOscillators::WakeOscillators(Eigen::Index count, const WakeParameters& parameters, double shedding_w,
+                                 double diameter, double dt, double q0)
+    : parameters_(parameters), w_(shedding_w), diameter_(diameter), dt_(dt), q_(Eigen::VectorXd::Constant(count, q0)),
+      p_(Eigen::VectorXd::Zero(count)), qa_(Eigen::VectorXd::Constant(count, -shedding_w * shedding_w * q0)) {
+  parameters_.validate();
+  require_positive("shedding_w", shedding_w, "rad/s");
+  require_positive("diameter", diameter, "m");
+  require_positive("dt", dt, "s");
+}
+
+void WakeOscillators::step(const Eigen::VectorXd& acceleration) {
+  // Newmark's rule on q_tt + epsilon w (q^2 - 1) q_t + w^2 q = F, the van der Pol
+  // term taken at the step's end as the rule takes every force: per oscillator a
+  // scalar equation in the end's q_tt, solved by Newton's method from the step with
+  // the start's damping (a few iterations: it is nearly linear over a step).
+  const double h = dt_, w2 = w_ * w_, beta = 0.25 * h * h, gamma = 0.5 * h, e = parameters_.epsilon * w_;
+  const Eigen::ArrayXd force = (parameters_.coupling / diameter_) * acceleration.array();
+  const Eigen::ArrayXd q_predicted = q_.array() + h * p_.array() + beta * qa_.array();
+  const Eigen::ArrayXd p_predicted = p_.array() + gamma * qa_.array();
+  const Eigen::ArrayXd c0 = e * (q_.array().square() - 1.0);
+  Eigen::ArrayXd qa = (force - c0 * p_predicted - w2 * q_predicted) / (1.0 + gamma * c0 + beta * w2);
+  for (int iteration = 0; iteration < kWakeNewtonIterations; ++iteration) {
+    const Eigen::ArrayXd q = q_predicted + beta * qa, p = p_predicted + gamma * qa;
+    const Eigen::ArrayXd residual = qa + e * (q.square() - 1.0) * p + w2 * q - force;
+    const Eigen::ArrayXd slope = 1.0 + e * (2.0 * beta * q * p + gamma * (q.square() - 1.0)) + w2 * beta;
+    qa -= residual / slope;
+  }
+  q_ = (q_predicted + beta * qa).matrix();
+  p_ = (p_predicted + gamma * qa).matrix();
+  qa_ = qa.matrix();
+}
+
 void check_in_time(const Span& span) {
   if (!span.masses().empty()) {
     throw InvalidParameter("mass[0]", ": masses along the span are not modelled in time yet; take them out of the span file "
@@ -489,6 +527,50 @@ class EbmWindLoad {
   double w_, k_;
 };
 
+/// The wake oscillators on the beam: each element's oscillator driven by the beam's
+/// acceleration at the element's middle, its lift (1/4) rho U^2 D C_L0 q uniform over
+/// the element, as the consistent load int N^T dx.
+class WakeLoad {
+ public:
+  WakeLoad(const Span& span, const BeamModel& model, const WakeParameters& parameters, double shedding_hz, double dt)
+      : wind_speed_(shedding_hz * span.conductor().diameter / span.wind().strouhal),
+        lift_scale_(0.25 * parameters.air_density * wind_speed_ * wind_speed_ * span.conductor().diameter *
+                    parameters.lift_coefficient),
+        oscillators_(model.elements(), parameters, 2.0 * std::numbers::pi * shedding_hz, span.conductor().diameter, dt),
+        middles_(model.elements(), model.size()), loads_(model.size(), model.elements()),
+        load_(Eigen::VectorXd::Zero(model.size())) {
+    std::vector<Eigen::Triplet<double>> middle, load;
+    for (int e = 0; e < model.elements(); ++e) {
+      const double h = model.element_length(e);
+      const std::array<double, 4> at_middle{0.5, h / 8.0, 0.5, -h / 8.0};  // the Hermite functions at the middle
+      const std::array<double, 4> integral{0.5 * h, h * h / 12.0, 0.5 * h, -h * h / 12.0};  // int N dx
+      const std::array<Eigen::Index, 4> dofs = element_dofs(model, e);
+      for (int i = 0; i < 4; ++i) {
+        if (dofs[i] < 0) continue;
+        middle.emplace_back(e, dofs[i], at_middle[i]);
+        load.emplace_back(dofs[i], e, integral[i]);
+      }
+    }
+    middles_.setFromTriplets(middle.begin(), middle.end());
+    loads_.setFromTriplets(load.begin(), load.end());
+  }
+
+  double wind_speed() const { return wind_speed_; }
+  /// The lift at the step's end, from the beam's acceleration at its start.
+  const Eigen::VectorXd& step(const Eigen::VectorXd& beam_acceleration) {
+    oscillators_.step(middles_ * beam_acceleration);
+    load_.noalias() = loads_ * (lift_scale_ * oscillators_.q());
+    return load_;
+  }
+  const Eigen::VectorXd& load() const { return load_; }
+
+ private:
+  double wind_speed_, lift_scale_;
+  WakeOscillators oscillators_;
+  Eigen::SparseMatrix<double> middles_, loads_;
+  Eigen::VectorXd load_;
+};
+
 /// A damper's samples over one period: the clamp's force and velocity at each step,
 /// the work and dissipation at the period's start.
 struct DamperPeriod {
@@ -499,6 +581,7 @@ struct DamperPeriod {
 /// What one period gave: the envelope, the loop amplitudes next to the clamps, the dampers' figures.
 struct PeriodFigures {
   double envelope = 0.0;
+  double wind_power = 0.0, damping_power = 0.0;
   std::array<double, 2> end_loop{};
   std::vector<DamperInTimeFigures> dampers;
 };
@@ -556,6 +639,8 @@ void take_means(const std::vector<PeriodFigures>& records, int count, EbmWindHis
     std::fill(d.force_harmonics_n.begin(), d.force_harmonics_n.end(), 0.0);
   }
   for (auto r = first; r != records.end(); ++r) {
+    out.wind_power_w += r->wind_power / n;
+    out.damping_power_w += r->damping_power / n;
     sum += r->envelope;
     squares += r->envelope * r->envelope;
     for (int e = 0; e < 2; ++e) out.end_loop_amplitude_m[e] += r->end_loop[e] / n;
@@ -703,6 +788,7 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   require_positive("settled_change", options.settled_change, "");
   require_positive("settled_mean_change", options.settled_mean_change, "");
   within_field("damper", [&] { options.damper.validate(); });
+  within_field("wake", [&] { options.wake.validate(); });
   const Conductor& conductor = span.conductor();
   const BeamProperties beam{span.length(), conductor.mass_per_length, span.tension(), conductor.ei_min, ends};
   const double w_asked = 2.0 * std::numbers::pi * options.frequency_hz;
@@ -743,9 +829,13 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   out.elements = elements;
   out.dt_s = dt;
   Eigen::VectorXcd y = u0.cast<std::complex<double>>();  // the standing wave at t = 0
-  DriveLoad load(wind_load(y), w);
+  const bool wake = options.wind == WindInTime::wake;
+  DriveLoad load(wake ? Eigen::VectorXcd::Zero(model.size()) : wind_load(y), w);
+  WakeLoad wake_load(span, model, options.wake, options.frequency_hz, dt);  // q = 0: no lift at t = 0
+  if (wake) out.wind_speed_m_s = wake_load.wind_speed();
   const Eigen::SparseMatrix<double> dashpot_damping = model.damping(dashpots);
-  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load.at(0.0),
+  Eigen::VectorXd load_now = load.at(0.0), u_now = u0;
+  NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load_now,
                          dashpot_damping + wind_load.self_damping(y), std::move(dampers));
   const int round_trip = std::max(1, static_cast<int>(std::lround(2.0 * length / (w / k) * f)));
   const int window = std::max(20, 2 * round_trip);  // the means' window: two round trips
@@ -757,9 +847,15 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   for (int period = 0; period < periods && out.settled_by == SettledBy::not_settled; ++period) {
     phasor.start_period();
     recorder.start_period(stepper);
+    const double dissipated_start = stepper.dissipated();
+    double wind_work = 0.0;
     for (int s = 0; s < steps && !out.interrupted; ++s) {
       const double t = stepper.time() + dt;
-      stepper.step(load.at(t));
+      const Eigen::VectorXd& load_next = wake ? wake_load.step(stepper.acceleration()) : load.at(t);
+      stepper.step(load_next);
+      wind_work += 0.5 * (stepper.displacement() - u_now).dot(load_now + load_next);  // the rule's own work
+      u_now = stepper.displacement();
+      load_now = load_next;
       phasor.add(t, stepper.displacement());
       recorder.record(s, stepper);
       if (options.observer) options.observer(stepper);
@@ -767,9 +863,11 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
     }
     if (out.interrupted) break;  // a part period: the figures stay the whole periods'
     y = phasor.close_period();
-    load.set(wind_load(y));
+    if (!wake) load.set(wind_load(y));
     stepper.set_damping(dashpot_damping + wind_load.self_damping(y));
     PeriodFigures& record = records.emplace_back();
+    record.wind_power = wind_work / (steps * dt);
+    record.damping_power = (stepper.dissipated() - dissipated_start) / (steps * dt);
     record.envelope = local_antinode(model, y, 0.5 * length, k);
     record.end_loop = {local_antinode(model, y, 0.5 * model.element_length(0), k),
                        local_antinode(model, y, length - 0.5 * model.element_length(elements - 1), k)};

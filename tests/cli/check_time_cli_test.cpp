@@ -124,6 +124,29 @@ TEST(SpanCheckTime, TheSpanFilesEndsAndTimeTableSteerSimulate) {
   EXPECT_GT(check_time_json_number(options.out, "elements"), check_time_json_number(file.out, "elements"));
 }
 
+// The wake oscillator's wind on the example with its dampers at 30 Hz (the coarse
+// mesh): the run settles, the wind's speed sheds at 30 Hz, and the wind's power is the
+// self-damping's and the dampers' (the rule's own work, within 1 %).
+TEST(SpanCheckTime, TheWakesWindFeedsTheDampingAndTheDampers) {
+  const auto dir = check_time_example("wake-wind");
+  const CliResult r = run_cli("simulate span.toml --frequency 30 --wind wake --duration 300 --every 100000 --json "
+                              "--report wake.html -o h.csv",
+                              dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"wind\": \"wake\""), std::string::npos) << r.out;
+  EXPECT_NEAR(check_time_json_number(r.out, "wind_speed_m_s"), 30.0 * 0.03105 / 0.185, 1e-9);
+  double dampers = 0.0;
+  for (const char* damper : {"\"column\": \"damper_1\"", "\"column\": \"damper_2\""}) {
+    const std::size_t at = r.out.find(damper);
+    ASSERT_NE(at, std::string::npos);
+    dampers += check_time_json_number(r.out, "power_w", at);
+  }
+  const double wind = check_time_json_number(r.out, "wind_power_w");
+  EXPECT_GT(dampers, 0.5 * wind);
+  EXPECT_NEAR((check_time_json_number(r.out, "damping_power_w") + dampers) / wind, 1.0, 0.01);
+  EXPECT_NE(read_text(dir / "wake.html").find("the wake oscillator at U = "), std::string::npos);
+}
+
 void expect_bad_check_time(const std::string& arguments, const std::string& mention, const std::string& extra = "") {
   const auto dir = check_time_example("check-time-bad", extra);
   const CliResult r = run_cli(arguments, dir);
@@ -143,6 +166,10 @@ TEST(SpanCheckTime, BadInputExitsTwoWithOneLineAndNothingWritten) {
   expect_bad_check_time("span span.toml --check-time 20 -o out.csv", "time.steps_per_period", "\n[time]\nsteps_per_period = 4\n");
   expect_bad_check_time("span span.toml --check-time 20 -o out.csv", "time.duration", "\n[time]\nduration = -1\n");
   expect_bad_check_time("span span.toml --check-time 20 -o out.csv", "time.step", "\n[time]\nstep = 1\n");
+  expect_bad_check_time("simulate span.toml --frequency 20 --wind breeze -o out.csv", "wind = 'breeze'");
+  expect_bad_check_time("simulate span.toml --frequency 20 --wind wake -o out.csv", "wake.epsilon = 0",
+                        "\n[wake]\nepsilon = 0\n");
+  expect_bad_check_time("simulate span.toml --frequency 20 -o out.csv", "wake.lift", "\n[wake]\nlift = 0.3\n");
   const auto dir = check_time_example("check-time-bad-ends", "");
   std::string text = read_text(dir / "span.toml");
   text.replace(text.find("[span]\n"), 7, "[span]\nends = \"hinged\"\n");

@@ -27,6 +27,9 @@ struct SimulateRequest {
   std::optional<std::string> ends;    ///< clamped | pinned
   std::optional<int> elements_per_wavelength;
   std::optional<int> steps_per_period;
+  /// "ebm" (the energy balance's own wind, the default) or "wake" (the wake
+  /// oscillator with the span file's [wake] parameters).
+  std::string wind = "ebm";
   /// Where the history gives the displacement, m from end 1. Empty: the span clamp's
   /// Y_b point (yb_distance from end 1), each damper, mid-span.
   std::vector<double> probes;
@@ -38,7 +41,7 @@ struct SimulateRequest {
 
 /// Checks what can be checked without the span: InvalidParameter naming the setting
 /// ("frequency", "duration", "ends", "elements_per_wavelength", "steps_per_period",
-/// "probes[i]", "start_amplitude", "every").
+/// "wind", "probes[i]", "start_amplitude", "every").
 void validate(const SimulateRequest& request);
 
 /// The settings the run uses: the request's where it gives them, else the span
@@ -67,6 +70,7 @@ struct SimulateResult {
   std::vector<std::string> probe_columns;  ///< "y_at_89mm": the history's column per probe
   double asked_frequency_hz = 0.0;
   span::TimeSettings settings;             ///< as used
+  span::WindInTime wind = span::WindInTime::ebm;
   double start_amplitude_m = 0.0;
   /// The energy balance's point (the span command's balance) at the simulation's frequency.
   span::BalancePoint balance;

@@ -140,6 +140,7 @@ class NewmarkStepper {
   const BeamModel& model() const { return model_; }
   const Eigen::VectorXd& displacement() const { return u_; }
   const Eigen::VectorXd& velocity() const { return v_; }
+  const Eigen::VectorXd& acceleration() const { return a_; }
   /// Kinetic plus strain energy of the beam, (v^T M v + u^T K u) / 2, J.
   double energy() const;
   /// The energy the damping took so far, J: the rule's own balance, each step
@@ -178,6 +179,28 @@ class NewmarkStepper {
   Eigen::VectorXd damper_work_;  ///< per damper
 };
 
+/// The wake oscillators of a beam's elements (one at each element's middle), stepped
+/// by Newmark's average acceleration rule (the van der Pol damping at the step's end,
+/// as the rule takes every force: a scalar Newton iteration each), the conductor's
+/// acceleration at the step's start driving it (the beam's step that follows takes the lift at its
+/// end: a staggered coupling, one step behind, at 160 steps a period).
+class WakeOscillators {
+ public:
+  /// `count` oscillators at rest but for q = q0, shedding at w_s (rad/s), for a
+  /// conductor of diameter D, stepped by dt.
+  WakeOscillators(Eigen::Index count, const WakeParameters& parameters, double shedding_w, double diameter, double dt,
+                  double q0 = 0.0);
+  /// One step to t + dt, the conductor's acceleration at each oscillator given (at t).
+  void step(const Eigen::VectorXd& acceleration);
+  const Eigen::VectorXd& q() const { return q_; }
+  const Eigen::VectorXd& q_velocity() const { return p_; }
+
+ private:
+  WakeParameters parameters_;
+  double w_, diameter_, dt_;
+  Eigen::VectorXd q_, p_, qa_;
+};
+
 /// What settle_on_ebm_wind is asked.
 struct EbmWindOptions {
   double frequency_hz = 0.0;             ///< the drive: the beam's natural frequency nearest it is taken
@@ -198,6 +221,11 @@ struct EbmWindOptions {
   /// The dampers' own Newton iteration (its steps_per_period is not used: the
   /// dampers step with the beam).
   damper::TimeDomainOptions damper;
+  /// The wind: the EBM's (a) or the wake oscillator (b), whose shedding frequency is
+  /// frequency_hz (the wind speed U = f D / St) and which starts at rest (q = 0), driven
+  /// by the conductor's motion from start_amplitude_m; the self-damping is the same.
+  WindInTime wind = WindInTime::ebm;
+  WakeParameters wake;
   /// Called after every step (a history's row), where given.
   std::function<void(const NewmarkStepper&)> observer;
   /// Set (from any thread or a signal handler): the run ends after the step under
@@ -257,14 +285,21 @@ struct EbmWindHistory {
   /// The local antinode amplitude sqrt(|y^|^2 + |y^'/k|^2) at the nodes, the last
   /// period's: the standing wave's envelope along the span (|y^| samples it).
   std::vector<double> antinode_along_m;
+  /// Means over figure_periods (the rule's own work, each step (u+ - u) (F + F+) / 2):
+  /// the power the wind put in, W, and the power the self-damping and the dashpots
+  /// took, W (with the dampers' powers, they balance once the motion repeats).
+  double wind_power_w = 0.0;
+  double damping_power_w = 0.0;
+  /// With the wake oscillator: the wind speed whose shedding frequency is the one asked, m/s.
+  double wind_speed_m_s = 0.0;
   /// Per dashpot, the mean power it took over the last period, W.
   std::vector<double> dashpot_power_w;
   /// The span's dampers, each position of each (end 1's first), in the span file's order.
   std::vector<DamperInTimeFigures> dampers;
 };
 
-/// The span's conductor under its wind (a) of MODEL.md 16 and self-damping as the
-/// span file gives them, with the span's dampers on it, each by its own model in
+/// The span's conductor under its wind (a) of MODEL.md 16 (or the wake oscillator,
+/// options.wind) and self-damping as the span file gives them, with the span's dampers on it, each by its own model in
 /// time (damper/damper_in_time.hpp), and `dashpots`, stepped until the envelope
 /// settles or `duration_s` is reached. The mesh has a node at every damper and
 /// dashpot. The drive is the pinned or clamped beam's natural mode nearest

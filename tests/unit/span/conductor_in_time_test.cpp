@@ -268,6 +268,60 @@ TEST(ConductorInTime, ALightDashpotSettlesWhereTheBalanceSays) {
       << settled_by_name(history.settled_by) << " at " << history.time_s << " s, Y " << history.antinode_amplitude_m / p.amplitude;
 }
 
+// Alone (no motion of the conductor), the wake oscillator is a van der Pol oscillator:
+// from q = 0.1 it grows by exp(pi epsilon) over its first period, onto the limit
+// cycle, whose amplitude is 2.00092 and period 1.005611 / f at epsilon = 0.3 (an
+// adaptive integration at 1e-11), the latter longer by Newmark's (pi / steps)^2 / 3.
+TEST(WakeOscillatorInTime, AloneItIsAVanDerPolOscillatorOfAmplitudeTwo) {
+  const double f = 20.0, w = 2.0 * std::numbers::pi * f;
+  const int steps = 160;
+  const double dt = 1.0 / (f * steps);
+  WakeOscillators wake(3, WakeParameters{}, w, 0.031, dt, 0.1);
+  const Eigen::VectorXd still = Eigen::VectorXd::Zero(3);
+  std::vector<double> q, crossings;
+  for (int i = 1; i <= 200 * steps; ++i) {
+    const double before = wake.q()(0);
+    wake.step(still);
+    q.push_back(wake.q()(0));
+    if (before < 0.0 && wake.q()(0) >= 0.0) crossings.push_back((i - 1 + before / (before - wake.q()(0))) * dt);
+  }
+  EXPECT_EQ(wake.q()(0), wake.q()(2));  // each oscillator its own, alike
+  const double largest = *std::max_element(q.end() - 2 * steps, q.end());
+  EXPECT_NEAR(largest, 2.00092, 1e-3);
+  EXPECT_NEAR(*std::max_element(q.begin(), q.begin() + steps), 0.1 * std::exp(std::numbers::pi * 0.3), 0.005);
+  ASSERT_GT(crossings.size(), 100u);
+  const double period = (crossings.back() - crossings[crossings.size() - 51]) / 50.0;
+  const double expected = 1.005611 * (1.0 + std::pow(std::numbers::pi / steps, 2) / 3.0) / f;
+  EXPECT_NEAR(period / expected, 1.0, 2e-4) << period * f;
+}
+
+// The wake's wind on the bare example span, shedding at its mode near 20 Hz (lock-in):
+// from below and from above the span settles on one amplitude (a limit cycle, within
+// 1 %), where the lift's power equals the self-damping's (within 1 %).
+TEST(WakeOscillatorInTime, TheWakeSettlesTheSpanOnOneAmplitudeWhereItsPowerIsTheDampings) {
+  if (stockbridge::testing::short_tests()) GTEST_SKIP() << "minutes of simulated time: the Release build runs it";
+  const Span span = example_span().without_dampers();
+  std::vector<double> settled_at;
+  for (const double start : {0.004, 0.016}) {
+    SCOPED_TRACE(start);
+    EbmWindOptions options;
+    options.frequency_hz = 19.92;  // the bare pinned span's mode 50
+    options.duration_s = 400.0;
+    options.start_amplitude_m = start;
+    options.wind = WindInTime::wake;
+    const EbmWindHistory history = settle_on_ebm_wind(span, BeamEnds::pinned, options);
+    ASSERT_TRUE(history.settled) << history.time_s << " s";
+    EXPECT_NEAR(history.wind_speed_m_s, options.frequency_hz * span.conductor().diameter / span.wind().strouhal, 1e-12);
+    EXPECT_NEAR(history.wind_power_w / history.damping_power_w, 1.0, 0.01)
+        << history.wind_power_w << " W against " << history.damping_power_w << " W";
+    EXPECT_GT(history.damping_power_w, 0.0);
+    settled_at.push_back(history.antinode_amplitude_m);
+  }
+  EXPECT_NEAR(settled_at[0] / settled_at[1], 1.0, 0.01) << settled_at[0] << " m and " << settled_at[1] << " m";
+  EXPECT_GT(settled_at[0], 0.004);
+  EXPECT_LT(settled_at[0], 0.016);
+}
+
 TEST(ConductorInTime, RefusesWhatItCannotModel) {
   BeamProperties beam{100.0, 1.5, 20000.0, 30.0, BeamEnds::pinned};
   EXPECT_THROW(BeamModel(beam, 1), InvalidParameter);
@@ -275,6 +329,11 @@ TEST(ConductorInTime, RefusesWhatItCannotModel) {
   EXPECT_THROW(BeamModel(beam, 10), InvalidParameter);
   EXPECT_EQ(parse_beam_ends("clamped"), BeamEnds::clamped);
   EXPECT_THROW(parse_beam_ends("hinged"), InvalidParameter);
+  EXPECT_EQ(parse_wind_in_time("wake"), WindInTime::wake);
+  EXPECT_THROW(parse_wind_in_time("breeze"), InvalidParameter);
+  WakeParameters wake;
+  wake.epsilon = 0.0;
+  EXPECT_THROW(wake.validate(), InvalidParameter);
 }
 
 }  // namespace
