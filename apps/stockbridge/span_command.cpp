@@ -205,11 +205,14 @@ void print_time_checks(const std::vector<requests::TimeCheck>& checks, bool poff
   }
 }
 
-/// The simulations of --check-time beside the balance; none without it.
+/// The simulations of --check-time beside the balance; none without it. Ctrl-C while
+/// they run ends them (`interrupted`).
 std::vector<requests::TimeCheck> span_time_checks(const SpanOptions& options, const io::SpanFile& file,
                                                   const requests::CheckedSpanRequest& request,
-                                                  const requests::SpanResult& result, Invocation& invocation) {
+                                                  const requests::SpanResult& result, Invocation& invocation,
+                                                  bool& interrupted) {
   if (!options.check_time) return {};
+  const InterruptRequest interrupt;
   const std::vector<double> frequencies = parse_number_list(*options.check_time, "--check-time");
   if (!options.quiet) {
     fmt::print(stderr, "span: checking {} {} in time\n", frequencies.size(),
@@ -217,6 +220,8 @@ std::vector<requests::TimeCheck> span_time_checks(const SpanOptions& options, co
   }
   std::vector<requests::TimeCheck> checks = requests::check_span_in_time(
       requests::span_file_as_balanced(file, request, result), frequencies, options.threads, &InterruptRequest::flag());
+  interrupted = InterruptRequest::requested();
+  if (interrupted) return checks;
   print_warnings(invocation, requests::time_check_warnings(checks, result.analysis.span.judges_poffenberger_swart()));
   return checks;
 }
@@ -236,15 +241,16 @@ int run_span_command(const SpanOptions& options, Invocation& invocation) {
     requests::validate_check_frequencies(parse_number_list(*options.check_time, "--check-time"));
     if (!options.no_dampers && !options.no_attachments) span::check_in_time(file.span);
   }
-  const InterruptRequest interrupt;
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress(invocation, "span: impedance tables", options.quiet);
   const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const span::SpanAnalysis& a = result.analysis;
   print_warnings(invocation, a.warnings);
-  const std::vector<requests::TimeCheck> checks = span_time_checks(options, file, request, result, invocation);
-  if (InterruptRequest::requested()) {
+  bool interrupted = false;
+  const std::vector<requests::TimeCheck> checks =
+      span_time_checks(options, file, request, result, invocation, interrupted);
+  if (interrupted) {
     fmt::print(stderr, "span: interrupted while checking in time; nothing written\n");
     return kInterrupted;
   }

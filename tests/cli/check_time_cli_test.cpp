@@ -5,7 +5,10 @@
 // other; [span] ends and [time] steer `simulate` unless its options say otherwise;
 // bad input exits 2 with one line and nothing written.
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -145,6 +148,21 @@ TEST(SpanCheckTime, TheWakesWindFeedsTheDampingAndTheDampers) {
   EXPECT_GT(dampers, 0.5 * wind);
   EXPECT_NEAR((check_time_json_number(r.out, "damping_power_w") + dampers) / wind, 1.0, 0.01);
   EXPECT_NE(read_text(dir / "wake.html").find("the wake oscillator at U = "), std::string::npos);
+}
+
+// Ctrl-C while the checks run ends them: status 130 and nothing written, the
+// balance's files neither (the run as a whole is not done).
+TEST(SpanCheckTime, CtrlCWhileCheckingWritesNothing) {
+  const auto dir = check_time_example("check-time-stopped", "\n[time]\nduration = 1000\n");
+  const int status = run_cli_stopped_when(
+      "span span.toml --points 10 --check-time 12 --check-time-output checks.csv -o s.csv", dir,
+      [&] { return std::filesystem::exists(dir / "run.err") && read_text(dir / "run.err").find("checking 1 frequency") != std::string::npos; },
+      SIGINT);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << read_text(dir / "run.err");
+  EXPECT_NE(read_text(dir / "run.err").find("interrupted while checking in time; nothing written"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "checks.csv"));
 }
 
 void expect_bad_check_time(const std::string& arguments, const std::string& mention, const std::string& extra = "") {

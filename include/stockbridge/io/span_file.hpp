@@ -49,6 +49,11 @@
 //   elements_per_wavelength = 30
 //   steps_per_period = 160
 //   duration = 60                    # s simulated at most
+//   [wake]                           # optional: simulate --wind wake (Facchinetti's values)
+//   epsilon = 0.3
+//   coupling = 12
+//   lift_coefficient = 0.3
+//   air_density = 1.225              # kg/m^3
 //
 // The reader checks types and keys (a misspelt or unknown key is an error); the
 // span model validates the values (span::Span), and its InvalidParameter, named
