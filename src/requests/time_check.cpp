@@ -47,9 +47,9 @@ std::vector<TimeCheck> check_span_in_time(const io::SpanFile& file, const std::v
   validate_check_frequencies(frequencies);
   span::check_in_time(file.span);
   std::vector<TimeCheck> checks(frequencies.size());
+  for (std::size_t i = 0; i < frequencies.size(); ++i) checks[i].asked_frequency_hz = frequencies[i];
   parallel_for(frequencies.size(), threads, [&](std::size_t i) {
     TimeCheck& check = checks[i];
-    check.asked_frequency_hz = frequencies[i];
     SimulateRequest request;
     request.frequency_hz = frequencies[i];
     try {
