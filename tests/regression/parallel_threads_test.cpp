@@ -48,11 +48,21 @@ TEST(ParallelForThreads, TheFirstExceptionIsRethrownAndNoIndexIsHandedOutAfterIt
   EXPECT_EQ(ran, (std::vector<std::size_t>{0, 1, 2, 3}));
 
   // On several threads: the message of the one that threw first, and every thread joined.
+  // The others' tasks last a millisecond once index 0 has thrown (999 of them would
+  // take a third of a second on three threads), so that the handing out is seen to
+  // stop: with empty tasks, the other threads could take every index while the
+  // exception is still being thrown (slow under the sanitizers).
   std::atomic<int> started{0};
+  std::atomic<bool> thrown{false};
   try {
     parallel_for(1000, 4, [&](std::size_t i) {
       ++started;
-      if (i == 0) throw std::invalid_argument("index 0");
+      if (i == 0) {
+        thrown = true;
+        throw std::invalid_argument("index 0");
+      }
+      while (!thrown) std::this_thread::yield();
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
     });
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
