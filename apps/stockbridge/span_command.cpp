@@ -196,8 +196,7 @@ void print_time_checks(const std::vector<requests::TimeCheck>& checks, bool poff
                  !c.result ? "no run" : !c.result->history.settled ? "not settled" : "the balance did not converge");
       continue;
     }
-    const requests::ComparedFigure& stress =
-        poffenberger_swart ? c.figures.stress_poffenberger_swart_pa : c.figures.stress_fymax_pa;
+    const requests::ComparedFigure& stress = requests::judged_stress(c.figures, poffenberger_swart);
     fmt::print("  {:.4g} Hz (simulated at {:.6g} Hz, {:.3g} s): antinode amplitude {:.3f}, {} stress {:.3f}{}\n",
                c.asked_frequency_hz, c.result->history.frequency_hz, c.result->history.time_s,
                c.figures.antinode_amplitude_m.ratio, poffenberger_swart ? "Poffenberger-Swart" : "fymax", stress.ratio,

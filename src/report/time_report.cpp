@@ -16,11 +16,6 @@ namespace {
 
 std::string time_ratio(double ratio) { return std::isfinite(ratio) ? fmt::format("{:.3f}", ratio) : "-"; }
 
-/// The judged stress's figure and its name.
-const requests::ComparedFigure& time_judged_stress(const requests::SteadyComparison& f, bool poffenberger_swart) {
-  return poffenberger_swart ? f.stress_poffenberger_swart_pa : f.stress_fymax_pa;
-}
-
 /// A compared figure's row: what, in time, by the balance, their ratio.
 std::vector<std::string> time_compared_row(std::string what, const requests::ComparedFigure& f, double scale,
                                            std::string_view unit) {
@@ -43,7 +38,7 @@ std::string time_reason(const requests::SimulateResult& r, const requests::Stead
   return fmt::format(": in time, the antinode amplitude is {} and the {} stress {} of the balance's ({} % apart at most "
                      "counts as agreeing)",
                      time_ratio(f.antinode_amplitude_m.ratio), poffenberger_swart ? "Poffenberger-Swart" : "fymax",
-                     time_ratio(time_judged_stress(f, poffenberger_swart).ratio),
+                     time_ratio(requests::judged_stress(f, poffenberger_swart).ratio),
                      parts::number(100.0 * requests::kTimeCheckTolerance, 2));
 }
 
@@ -88,12 +83,7 @@ void time_dampers_table(HtmlPage& page, const requests::SimulateResult& r) {
   const span::EbmWindHistory& h = r.history;
   std::vector<std::vector<std::string>> rows;
   for (const span::DamperInTimeFigures& d : h.dampers) {
-    const span::DamperAtBalance* at = nullptr;
-    if (r.balance_converged()) {
-      for (const span::DamperAtBalance& b : r.balance.dampers) {
-        if (std::abs(b.position - d.position_m) < 1e-9) at = &b;
-      }
-    }
+    const span::DamperAtBalance* at = r.balance_damper(d.position_m);
     std::string harmonics;
     for (std::size_t k = 0; k < d.force_harmonics_n.size(); k += 2) {
       harmonics += fmt::format("{}{}", harmonics.empty() ? "" : " / ", parts::number(d.force_harmonics_n[k], 3));
@@ -225,7 +215,7 @@ void time_checks_section(HtmlPage& page, const std::vector<requests::TimeCheck>&
   std::vector<Tone> tones;
   const char* stress = poffenberger_swart ? "Poffenberger-Swart" : "fymax";
   for (const requests::TimeCheck& c : checks) {
-    const requests::ComparedFigure& s = time_judged_stress(c.figures, poffenberger_swart);
+    const requests::ComparedFigure& s = requests::judged_stress(c.figures, poffenberger_swart);
     const auto value = [](double v, double scale) { return std::isfinite(v) ? number(scale * v) : std::string("-"); };
     rows.push_back({number(c.asked_frequency_hz),
                     c.result ? number(c.result->history.frequency_hz, 6) : "-",

@@ -109,6 +109,14 @@ bool SimulateResult::balance_converged() const {
   return balance.converged();
 }
 
+const span::DamperAtBalance* SimulateResult::balance_damper(double position_m) const {
+  if (!balance_converged()) return nullptr;
+  for (const span::DamperAtBalance& b : balance.dampers) {
+    if (std::abs(b.position - position_m) < 1e-9) return &b;
+  }
+  return nullptr;
+}
+
 SimulateResult run_simulate(const io::SpanFile& file, const SimulateRequest& request,
                             const std::function<void(const SimulationRow&)>& row,
                             const std::function<void(double, double)>& progress, const std::atomic<bool>* stop) {
@@ -240,7 +248,6 @@ SteadyComparison steady_comparison(const span::Span& span, const SimulateResult&
 io::JsonObject simulate_summary(const span::Span& span, const SimulateResult& result) {
   const span::EbmWindHistory& h = result.history;
   const bool settled = h.settled, converged = result.balance_converged();
-  const span::BalancePoint* p = converged ? &result.balance : nullptr;
   io::JsonObject json;
   json.add("frequency_hz", h.frequency_hz).add("asked_frequency_hz", result.asked_frequency_hz);
   json.add("ends", span::beam_ends_name(result.settings.ends)).add("wind", span::wind_in_time_name(result.wind));
@@ -260,13 +267,7 @@ io::JsonObject simulate_summary(const span::Span& span, const SimulateResult& re
   add_compared(json, "stress_fymax_pa", figures.stress_fymax_pa);
   std::vector<io::JsonObject> dampers;
   for (std::size_t d = 0; d < h.dampers.size(); ++d) {
-    const span::DamperAtBalance* at = nullptr;
-    if (p) {
-      for (const span::DamperAtBalance& b : p->dampers) {
-        if (std::abs(b.position - h.dampers[d].position_m) < 1e-9) at = &b;
-      }
-    }
-    dampers.push_back(damper_summary(h.dampers[d], at, settled, d));
+    dampers.push_back(damper_summary(h.dampers[d], result.balance_damper(h.dampers[d].position_m), settled, d));
   }
   json.add("dampers", dampers);
   json.add("probes_m", result.probes);

@@ -15,11 +15,11 @@ namespace {
 
 bool within_tolerance(double ratio) { return std::abs(ratio - 1.0) <= kTimeCheckTolerance; }
 
+}  // namespace
+
 const ComparedFigure& judged_stress(const SteadyComparison& f, bool poffenberger_swart) {
   return poffenberger_swart ? f.stress_poffenberger_swart_pa : f.stress_fymax_pa;
 }
-
-}  // namespace
 
 bool TimeCheck::compared() const {
   return std::isfinite(figures.antinode_amplitude_m.ratio) && std::isfinite(figures.stress_fymax_pa.ratio);

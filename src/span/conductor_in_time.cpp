@@ -5,6 +5,7 @@
 #include <deque>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <utility>
 
 #include <Eigen/Eigenvalues>
@@ -836,8 +837,11 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
   Eigen::VectorXcd y = u0.cast<std::complex<double>>();  // the standing wave at t = 0
   const bool wake = options.wind == WindInTime::wake;
   DriveLoad load(wake ? Eigen::VectorXcd::Zero(model.size()) : wind_load(y), w);
-  WakeLoad wake_load(span, model, options.wake, options.frequency_hz, dt);  // q = 0: no lift at t = 0
-  if (wake) out.wind_speed_m_s = wake_load.wind_speed();
+  std::optional<WakeLoad> wake_load;  // q = 0: no lift at t = 0
+  if (wake) {
+    wake_load.emplace(span, model, options.wake, options.frequency_hz, dt);
+    out.wind_speed_m_s = wake_load->wind_speed();
+  }
   const Eigen::SparseMatrix<double> dashpot_damping = model.damping(dashpots);
   Eigen::VectorXd load_now = load.at(0.0), u_now = u0;
   NewmarkStepper stepper(model, dt, u0, Eigen::VectorXd::Zero(model.size()), load_now,
@@ -856,7 +860,7 @@ EbmWindHistory settle_on_ebm_wind(const Span& span, BeamEnds ends, const EbmWind
     double wind_work = 0.0;
     for (int s = 0; s < steps && !out.interrupted; ++s) {
       const double t = stepper.time() + dt;
-      const Eigen::VectorXd& load_next = wake ? wake_load.step(stepper.acceleration()) : load.at(t);
+      const Eigen::VectorXd& load_next = wake ? wake_load->step(stepper.acceleration()) : load.at(t);
       stepper.step(load_next);
       wind_work += 0.5 * (stepper.displacement() - u_now).dot(load_now + load_next);  // the rule's own work
       u_now = stepper.displacement();

@@ -78,6 +78,8 @@ struct SimulateResult {
 
   /// Whether the balance's point converged (its figures are usable).
   bool balance_converged() const;
+  /// The balance's damper at `position_m` from end 1; none unless the balance converged.
+  const span::DamperAtBalance* balance_damper(double position_m) const;
 };
 
 /// Runs the span file's span in time under the EBM's wind (a) with its dampers, with

@@ -26,6 +26,10 @@ inline constexpr double kTimeCheckTolerance = 0.10;
 /// kTimeCheckTolerance of the balance's (false where a ratio is missing).
 bool agrees(const SteadyComparison& figures);
 
+/// The stress the span's criterion judges: the Poffenberger-Swart stress from Y_b
+/// (`poffenberger_swart`: the criterion judges the bending strain), else the fymax stress.
+const ComparedFigure& judged_stress(const SteadyComparison& figures, bool poffenberger_swart);
+
 /// One frequency checked in time.
 struct TimeCheck {
   double asked_frequency_hz = 0.0;
