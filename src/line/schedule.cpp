@@ -90,11 +90,14 @@ std::size_t type_index(const Line& line, const std::string& name) {
 /// placed beside the masses (a SpanDamper with all its positions along the span).
 std::size_t damper_count(const Arrangement& a) { return a.positions.size() + (a.sphere_distance ? 1 : 0); }
 
+/// The span's balance with an arrangement (its analysis as `stockbridge span` makes
+/// it), `stop_after` as AnalysisOptions's.
 span::SpanAnalysis analyse_with(const Line& line, std::size_t index, std::size_t type, const Arrangement& arrangement,
-                                TableCache& cache) {
+                                TableCache& cache, std::function<bool(const span::BalancePoint&)> stop_after = {}) {
   const LineSpan& s = line.spans()[index];
   span::AnalysisOptions options;
   options.balance = s.balance;
+  options.stop_after = std::move(stop_after);
   const std::vector<double> f = span::band_frequencies(s.span, line.rules().points);
   if (arrangement.positions.empty()) return span::analyse_span(s.span, f, options);
   const span::TableSource tables = [&](const span::Span&, const std::vector<double>& frequencies,
@@ -129,26 +132,68 @@ std::vector<double> sphere_distances(const ScheduleRules& rules) {
 struct Candidate {
   std::size_t type = 0;
   Arrangement arrangement;
-  span::SpanAnalysis analysis;
+  /// The polished balance; none where the arrangement was proven unsafe before it was
+  /// finished (proven_unsafe).
+  std::optional<span::SpanAnalysis> analysis;
   int balances = 0;
   double objective = std::numeric_limits<double>::infinity();  ///< of the polished balance
   bool safe = false;
 };
 
-/// The polished balance of an arrangement, judged by the rules.
+/// Safe first, then the objective.
+bool judged_better(const Candidate& a, const Candidate& b) { return a.safe != b.safe ? a.safe : a.objective < b.objective; }
+
+/// The largest judged stress an arrangement must stay below to beat `rival` (safe
+/// first, then the objective max_stress), Pa; none where no such bound holds (no
+/// rival or not balanced to the end, another objective or a life target, a rival
+/// neither safe nor unsafe: a point not converged, or only uncertain).
+std::optional<double> stress_to_beat(const Candidate* rival, const ScheduleRules& rules) {
+  if (!rival || !rival->analysis || rules.life_target || rules.positions.objective != span::PositionObjective::max_stress) {
+    return std::nullopt;
+  }
+  const span::BalanceSummary& s = rival->analysis->balance.summary;
+  if (!rival->safe && s.verdict != span::Verdict::unsafe) return std::nullopt;
+  if (!s.all_converged()) return std::nullopt;
+  return s.max_judged_stress;
+}
+
+/// The polished balance of an arrangement, judged by the rules. It is balanced
+/// frequency by frequency from the lowest, and left where a converged point shows
+/// that it cannot be chosen (no analysis, not safe, the objective infinite):
+/// * with `prove_unsafe`, a judged stress above the endurance limit: that point is in
+///   the band's balance whatever the other frequencies give, so the arrangement is
+///   unsafe (not under a life target: a life is the whole band's);
+/// * a judged stress at or above `rival`'s largest (stress_to_beat): its objective
+///   cannot then be below the rival's, nor can it be safe where the rival is not.
 Candidate polished_candidate(const Line& line, std::size_t index, std::size_t type, Arrangement arrangement,
-                             TableCache& cache) {
-  span::SpanAnalysis analysis = analyse_with(line, index, type, arrangement, cache);
-  Candidate c{type, std::move(arrangement), std::move(analysis), 0};
-  c.objective = span::position_objective(c.analysis.balance, line.rules().positions.objective);
-  c.safe = safe_by(verdict_of(c.analysis.balance.summary, line.rules(), false), line.rules());
+                             bool prove_unsafe, const Candidate* rival, TableCache& cache) {
+  const ScheduleRules& rules = line.rules();
+  const span::Span& plain = line.spans()[index].span;
+  const bool limit_decides = prove_unsafe && !rules.life_target;
+  const std::optional<double> rival_stress = stress_to_beat(rival, rules);
+  std::function<bool(const span::BalancePoint&)> settled;
+  if (limit_decides || rival_stress) {
+    settled = [&](const span::BalancePoint& p) {
+      if (!p.converged()) return false;
+      const double stress = span::judged_stress(plain, p);
+      return (limit_decides && stress > plain.endurance_limit()) || (rival_stress && stress >= *rival_stress);
+    };
+  }
+  Candidate c{type, std::move(arrangement), std::nullopt};
+  span::SpanAnalysis a = analyse_with(line, index, type, c.arrangement, cache, settled);
+  if (a.balance.points.size() < a.frequencies.size()) return c;  // left early: cannot be chosen
+  c.objective = span::position_objective(a.balance, rules.positions.objective);
+  c.safe = safe_by(verdict_of(a.balance.summary, rules, false), rules);
+  c.analysis = std::move(a);
   return c;
 }
 
 /// The end dampers searched on the tables with the rest of `arrangement` in place,
-/// rounded, and the polished balance there.
+/// rounded, and the polished balance there (polished_candidate, `prove_unsafe` and
+/// `rival` as there).
 Candidate searched_candidate(const Line& line, std::size_t index, std::size_t type, Arrangement arrangement,
-                             TableCache& cache, const std::function<bool()>& stop) {
+                             bool prove_unsafe, const Candidate* rival, TableCache& cache,
+                             const std::function<bool()>& stop) {
   const LineSpan& s = line.spans()[index];
   const ScheduleRules& rules = line.rules();
   const std::vector<double> f = span::band_frequencies(s.span, rules.search_points);
@@ -163,15 +208,15 @@ Candidate searched_candidate(const Line& line, std::size_t index, std::size_t ty
   };
   Arrangement best = arrangement;
   best.positions = end_positions(found.positions);
-  Candidate c = polished_candidate(line, index, type, best, cache);
+  Candidate c = polished_candidate(line, index, type, best, prove_unsafe, rival, cache);
   // The other local searches' bests polished too: the tables' error can rank two
   // basins otherwise than their polished balances do. The better kept (safe first).
   for (const std::vector<double>& other : found.runners_up) {
     Arrangement next = arrangement;
     next.positions = end_positions(other);
     if (next.positions == c.arrangement.positions) continue;
-    Candidate d = polished_candidate(line, index, type, std::move(next), cache);
-    if (d.safe != c.safe ? d.safe : d.objective < c.objective) c = std::move(d);
+    Candidate d = polished_candidate(line, index, type, std::move(next), prove_unsafe, c.analysis ? &c : rival, cache);
+    if (judged_better(d, c)) c = std::move(d);
   }
   c.balances = found.balances;
   return c;
@@ -181,25 +226,27 @@ Candidate searched_candidate(const Line& line, std::size_t index, std::size_t ty
 /// one of one damper fewer: searched and polished (searched_candidate). Where the span
 /// gets dampers beside its masses, once for each of their distances: the best (safe
 /// before not, then by the objective; the smaller distance where they tie), the
-/// searches' balances added up.
+/// searches' balances added up. `prove_unsafe`: as polished_candidate.
 Candidate search_candidate(const Line& line, std::size_t index, std::size_t type, int per_end,
-                           const std::vector<double>& previous, TableCache& cache, const std::function<bool()>& stop) {
+                           const std::vector<double>& previous, bool prove_unsafe, TableCache& cache,
+                           const std::function<bool()>& stop) {
   const LineSpan& s = line.spans()[index];
   const ScheduleRules& rules = line.rules();
   const double f_max = span::band_frequencies(s.span, rules.search_points).back();
   const Arrangement start{previous.empty() ? span::usual_positions(s.span, f_max, per_end, 0.5, rules.positions)
                                            : extended(previous, rules),
                           std::nullopt};
-  if (!gets_sphere_dampers(s.span, rules)) return searched_candidate(line, index, type, start, cache, stop);
+  if (!gets_sphere_dampers(s.span, rules)) {
+    return searched_candidate(line, index, type, start, prove_unsafe, nullptr, cache, stop);
+  }
   std::optional<Candidate> best;
   int balances = 0;
   for (const double d : sphere_distances(rules)) {
     Arrangement beside = start;
     beside.sphere_distance = d;
-    Candidate c = searched_candidate(line, index, type, std::move(beside), cache, stop);
+    Candidate c = searched_candidate(line, index, type, std::move(beside), prove_unsafe, best ? &*best : nullptr, cache, stop);
     balances += c.balances;
-    const bool better = !best || (c.safe != best->safe ? c.safe : c.objective < best->objective);
-    if (better) best = std::move(c);
+    if (!best || judged_better(c, *best)) best = std::move(c);
   }
   best->balances = balances;
   return std::move(*best);
@@ -313,9 +360,11 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
   std::vector<std::vector<double>> previous(line.types().size());
   std::optional<Candidate> chosen;
   for (int per_end = std::max(1, rules.min_per_end); per_end <= rules.max_per_end && !(chosen && chosen->safe); ++per_end) {
+    // Below the last count an arrangement proven unsafe early is not balanced to the end.
+    const bool prove_unsafe = per_end < rules.max_per_end;
     std::optional<Candidate> best;
     for (std::size_t t = 0; t < line.types().size(); ++t) {
-      Candidate c = search_candidate(line, index, t, per_end, previous[t], cache, stop);
+      Candidate c = search_candidate(line, index, t, per_end, previous[t], prove_unsafe, cache, stop);
       out.row.balances += c.balances;
       previous[t] = c.arrangement.positions;
       const auto better = [&](const Candidate& a, const Candidate& b) {
@@ -331,7 +380,7 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
     }
     chosen = std::move(best);
   }
-  out.analysis = std::move(chosen->analysis);
+  out.analysis = std::move(*chosen->analysis);  // the last count's candidates are all balanced to the end
   fill_arrangement(out.row, line, &*chosen, out.analysis);
   if (!chosen->safe) {
     out.row.warnings.insert(out.row.warnings.begin(),

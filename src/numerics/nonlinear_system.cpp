@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include <Eigen/LU>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <fmt/format.h>
 #include <unsupported/Eigen/NonLinearOptimization>
@@ -195,6 +196,30 @@ std::optional<Eigen::VectorXd> march_along_residual(CountedResidual& h, Eigen::V
   return std::nullopt;
 }
 
+/// Up to options.newton_steps full Newton steps from x on the caller's Jacobian, while
+/// each at least halves max |r|. True where it converged (h.best holds the solution);
+/// false with x the best point reached, where the hybrid method takes over.
+bool newton_phase(CountedResidual& h, const ResidualJacobian& jacobian, Eigen::VectorXd& x, int& jacobians) {
+  constexpr double kContraction = 0.5;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd jac;
+  double last = std::numeric_limits<double>::infinity();
+  for (int step = 0; step <= h.options.newton_steps; ++step) {
+    if (h.exhausted() || !h(x, r)) return false;
+    if (h.converged()) return true;
+    const double size = r.cwiseAbs().maxCoeff();
+    if (!(size <= kContraction * last) || step == h.options.newton_steps) break;
+    ++jacobians;
+    if (!jacobian(x, jac) || !jac.allFinite()) break;
+    last = size;
+    const Eigen::VectorXd next = x - jac.partialPivLu().solve(r);
+    if (!next.allFinite()) break;
+    x = next;
+  }
+  x = h.best.x;
+  return false;
+}
+
 }  // namespace
 
 NonlinearSystemResult solve_fixed_point(const Residual& residual, const ResidualJacobian& jacobian,
@@ -206,7 +231,8 @@ NonlinearSystemResult solve_fixed_point(const Residual& residual, const Residual
   const Residual counted = [&h](const Eigen::VectorXd& x, Eigen::VectorXd& r) { return h(x, r); };
   int jacobians = 0;
   Eigen::VectorXd x = start;
-  while (true) {
+  const bool newton_converged = options.newton_steps > 0 && newton_phase(h, jacobian, x, jacobians);
+  while (!newton_converged && !h.failed) {
     NonlinearSystemOptions system = options;
     system.max_evaluations = options.max_evaluations - h.evaluations;
     const NonlinearSystemResult solved = solve_nonlinear_system(counted, jacobian, x, system);

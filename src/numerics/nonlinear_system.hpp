@@ -20,6 +20,12 @@ struct NonlinearSystemOptions {
   int max_evaluations = 100;  ///< of the residual
   /// The trust region's first radius in x (max-norm steps are at most about this).
   double initial_step = 1.0;
+  /// solve_fixed_point: full Newton steps on the caller's Jacobian (taken afresh at
+  /// every point) first, at most this many, while each step at least halves max |r|;
+  /// then the hybrid method from the best point, within the evaluations left. Where
+  /// the caller's Jacobian is exact or nearly so (the span polish's), Newton needs
+  /// fewer residuals than the hybrid method's Broyden updates. 0: the hybrid method alone.
+  int newton_steps = 0;
 };
 
 /// The residual at x into r; false where it cannot be evaluated (the solve stops
@@ -51,7 +57,7 @@ NonlinearSystemResult solve_nonlinear_system(const Residual& residual, const Res
 /// (no_progress), a march from there along d = h / max|h| in doubling steps until h
 /// turns against it (h . d <= 0), the root of h(u + t d) . d on the last step (TOMS
 /// 748: in one dimension the fixed point itself), and the system again from there,
-/// all within options.max_evaluations. Where that root closes on a jump of h (a
+/// all within options.max_evaluations (options.newton_steps: Newton's method first). Where that root closes on a jump of h (a
 /// bracket narrower than the tolerance with |h| above `noise`): no_progress, `where`
 /// says where and by how much. `noise`: the residual's own scatter, accepted as
 /// converged where such a bracket closes.

@@ -130,7 +130,8 @@ SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, con
     for (std::size_t j = 0; j < placed.size(); ++j) placed[j].position = out.position->positions[j];
     out.span = span.with_dampers(std::move(placed));
   }
-  out.balance = run_balance(out.span, *made, options.balance);
+  out.balance = run_balance(out.span, *made, options.balance, nullptr, options.stop_after);
+  if (out.balance.points.size() < out.frequencies.size()) return out;  // stopped early
   add_sheet_band(out, *made, options.balance);
   add_edge_warning(out);
   return out;

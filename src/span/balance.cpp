@@ -386,7 +386,7 @@ void UndampedFigures::fill(std::size_t i, BalancePoint& p) const {
 }
 
 SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
-                        const UndampedFigures* undamped) {
+                        const UndampedFigures* undamped, const std::function<bool(const BalancePoint&)>& stop_after) {
   options.validate();
   if (tables.tables().size() != span.dampers().size()) {
     throw std::invalid_argument(
@@ -399,6 +399,7 @@ SpanBalance run_balance(const Span& span, const SpanTables& tables, const Balanc
   if (!undamped) undamped = &own.emplace(span, tables, options);
   for (std::size_t i = 0; i < tables.frequencies().size(); ++i) {
     out.points.push_back(balance_at(span, tables, i, polish ? &*polish : nullptr, options, *undamped));
+    if (stop_after && stop_after(out.points.back())) break;
   }
   out.summary = summarise(span, out.points);
   out.summary.impedance_nodes = tables.nodes();

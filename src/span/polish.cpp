@@ -17,6 +17,9 @@ namespace {
 constexpr double kPolishScatter = 10.0;
 /// The step in log v of the tables' slope dZ/du where a frequency starts from them.
 constexpr double kTableSlopeStep = 0.05;
+/// Newton steps on dh/du before the hybrid method: the Jacobian is exact but for the
+/// secant dZ/du, and each frequency starts close to its solution.
+constexpr int kPolishNewtonSteps = 6;
 
 }  // namespace
 
@@ -231,6 +234,7 @@ Polish::Search Polish::search(FrequencyBalance& balance, const Eigen::VectorXd& 
   numerics::NonlinearSystemOptions system;
   system.tolerance = options_.polish_tolerance;
   system.max_evaluations = options_.max_polish_evaluations;
+  system.newton_steps = kPolishNewtonSteps;
   out.solved = numerics::solve_fixed_point(residual, jacobian_at, start, system, kPolishScatter * options_.polish_tolerance);
   return out;
 }

@@ -23,6 +23,9 @@ struct AnalysisOptions {
   /// ImpedanceTableOptions::for_position_search (the search compares arrangements on
   /// the tables alone).
   std::optional<PositionRules> positions;
+  /// Ends the balance after the first point it holds for (run_balance's stop_after):
+  /// the analysis is then of the frequencies balanced so far, without the sheets' band.
+  std::function<bool(const BalancePoint&)> stop_after;
 
   /// Throws InvalidParameter naming the field ("table.velocities", "position_min", "spacing_min").
   void validate() const;

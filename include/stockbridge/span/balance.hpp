@@ -19,6 +19,7 @@
 // one call); this is the balance itself.
 
 #include <complex>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -282,8 +283,11 @@ class UndampedFigures {
 /// The balance at every frequency of the tables (made for this span's dampers, or
 /// for dampers alike: only the dampers' positions may differ; none without dampers).
 /// `undamped`: the span's, made with the same tables and options (none: worked out
-/// here). std::invalid_argument when the tables are not one per damper.
+/// here). `stop_after`: the balance ends after the first point it holds for (the
+/// points and summary then are of the frequencies balanced so far, from the lowest).
+/// std::invalid_argument when the tables are not one per damper.
 SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
-                        const UndampedFigures* undamped = nullptr);
+                        const UndampedFigures* undamped = nullptr,
+                        const std::function<bool(const BalancePoint&)>& stop_after = {});
 
 }  // namespace stockbridge::span

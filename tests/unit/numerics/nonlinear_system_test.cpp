@@ -58,6 +58,58 @@ TEST(NonlinearSystem, AFixedPointIsFoundPastAMinimumOfTheResidualOffTheRoot) {
   EXPECT_NEAR(s.x[0], -0.64, 1e-9);
 }
 
+// Newton's steps first (newton_steps): on an exact Jacobian, from near the root, the
+// residual falls quadratically, so the fixed point takes fewer residuals than the
+// hybrid method's Broyden updates; where a step does not halve the residual (a
+// Jacobian pointing away), the hybrid method takes over from the best point and
+// still finds the root.
+TEST(NonlinearSystem, NewtonStepsFirstTakeFewerResidualsAndHandOverWhereTheyStall) {
+  // h(u) = F(u) - u with F(u) = (cos u_1 + u_2 / 3, sin u_1 / 2): a contraction.
+  int evaluations = 0;
+  const Residual r = [&](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    ++evaluations;
+    f.resize(2);
+    f << std::cos(x[0]) + x[1] / 3.0 - x[0], 0.5 * std::sin(x[0]) - x[1];
+    return true;
+  };
+  const ResidualJacobian exact = [](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
+    jac.resize(2, 2);
+    jac << -std::sin(x[0]) - 1.0, 1.0 / 3.0, 0.5 * std::cos(x[0]), -1.0;
+    return true;
+  };
+  NonlinearSystemOptions options;
+  options.tolerance = 1e-12;
+  const Eigen::Vector2d start(0.9, 0.4);
+  const NonlinearSystemResult hybrid = solve_fixed_point(r, exact, start, options);
+  const int hybrid_evaluations = evaluations;
+  options.newton_steps = 6;
+  evaluations = 0;
+  const NonlinearSystemResult newton = solve_fixed_point(r, exact, start, options);
+  ASSERT_EQ(hybrid.summary.termination, Termination::converged) << brief_report(hybrid.summary);
+  ASSERT_EQ(newton.summary.termination, Termination::converged) << brief_report(newton.summary);
+  EXPECT_LE(newton.summary.residual, 1e-12);
+  EXPECT_NEAR(newton.x[0], hybrid.x[0], 1e-11);
+  EXPECT_NEAR(newton.x[1], hybrid.x[1], 1e-11);
+  EXPECT_EQ(newton.summary.evaluations, evaluations);
+  EXPECT_LE(evaluations, 5);
+  EXPECT_LT(evaluations, hybrid_evaluations);
+  EXPECT_GE(newton.summary.jacobians, 1);
+
+  // The Jacobian's sign flipped: the first Newton step moves away and the residual
+  // grows, so the hybrid method (which gets the same wrong Jacobian but keeps its
+  // trust region and updates it) finishes the solve.
+  const ResidualJacobian flipped = [&](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
+    exact(x, jac);
+    jac = -jac;
+    return true;
+  };
+  evaluations = 0;
+  const NonlinearSystemResult recovered = solve_fixed_point(r, flipped, start, options);
+  ASSERT_EQ(recovered.summary.termination, Termination::converged) << brief_report(recovered.summary);
+  EXPECT_NEAR(recovered.x[0], hybrid.x[0], 1e-9);
+  EXPECT_GT(recovered.summary.evaluations, 2);  // the Newton phase's two, then the hybrid method's
+}
+
 TEST(NonlinearSystem, AJumpOfTheResidualIsNoRootAndSaysWhere) {
   // h = 0.5 for u < 0.3, -0.5 beyond: a bracket closes on the jump, no fixed point.
   const Residual r = [](const Eigen::VectorXd& x, Eigen::VectorXd& f) {

@@ -244,6 +244,36 @@ TEST(SpanBalance, OneDamperPerEndIsAsBeforeTheSystemSolve) {
   }
 }
 
+// stop_after ends the balance after the first point it holds for: the points kept
+// are the whole balance's first ones, bit for bit (each frequency continues from the
+// ones before it, as in the whole balance), and the summary is of them alone.
+TEST(SpanBalance, StoppedAfterAPointItIsTheWholeBalancesFirstPoints) {
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}});
+  const std::vector<double> f = damper::log_spaced(6.0, 40.0, 8);
+  const SpanTables tables(span, f, fast_options().table);
+  const SpanBalance whole = run_balance(span, tables, fast_options());
+  // The first point whose clamp stress exceeds the third's: where the stop must fall.
+  const double threshold = whole.points[2].stress_fymax;
+  std::size_t first = 0;
+  while (!(whole.points[first].stress_fymax > threshold)) ++first;
+  ASSERT_LT(first + 1, f.size()) << "the threshold must stop the balance before its end";
+  int asked = 0;
+  const SpanBalance stopped = run_balance(span, tables, fast_options(), nullptr, [&](const BalancePoint& p) {
+    ++asked;
+    return p.converged() && p.stress_fymax > threshold;
+  });
+  ASSERT_EQ(stopped.points.size(), first + 1);
+  EXPECT_EQ(asked, static_cast<int>(first + 1));
+  double largest = 0.0;
+  for (std::size_t i = 0; i <= first; ++i) {
+    EXPECT_EQ(stopped.points[i].amplitude, whole.points[i].amplitude) << f[i];
+    EXPECT_EQ(stopped.points[i].stress_fymax, whole.points[i].stress_fymax) << f[i];
+    largest = std::max(largest, whole.points[i].stress_fymax);
+  }
+  EXPECT_EQ(stopped.summary.points, static_cast<int>(first + 1));
+  EXPECT_EQ(stopped.summary.max_stress_fymax, largest);
+}
+
 // Below its table's lowest node a damper's Z is held there: where every damper is
 // that slow, the ends are linear and the balance (which then takes the powers in
 // proportion to the amplitude instead of solving the ends again) is the root of
