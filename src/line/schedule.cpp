@@ -132,8 +132,8 @@ std::vector<double> sphere_distances(const ScheduleRules& rules) {
 struct Candidate {
   std::size_t type = 0;
   Arrangement arrangement;
-  /// The polished balance; none where the arrangement was proven unsafe before it was
-  /// finished (proven_unsafe).
+  /// The polished balance; none where it was left early (polished_candidate: proven
+  /// unsafe, or unable to beat its rival).
   std::optional<span::SpanAnalysis> analysis;
   int balances = 0;
   double objective = std::numeric_limits<double>::infinity();  ///< of the polished balance
@@ -380,7 +380,9 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
     }
     chosen = std::move(best);
   }
-  out.analysis = std::move(*chosen->analysis);  // the last count's candidates are all balanced to the end
+  // Balanced to the end: a count's kept candidate is unless proven unsafe, which the
+  // last count never is, or it would have lost to the one it was compared with.
+  out.analysis = std::move(*chosen->analysis);
   fill_arrangement(out.row, line, &*chosen, out.analysis);
   if (!chosen->safe) {
     out.row.warnings.insert(out.row.warnings.begin(),

@@ -213,7 +213,9 @@ bool newton_phase(CountedResidual& h, const ResidualJacobian& jacobian, Eigen::V
     if (!jacobian(x, jac) || !jac.allFinite()) break;
     last = size;
     const Eigen::VectorXd next = x - jac.partialPivLu().solve(r);
-    if (!next.allFinite()) break;
+    // A step beyond the hybrid method's first trust radius: the linear model is not
+    // to be trusted that far (a nearly singular Jacobian); the hybrid method takes over.
+    if (!next.allFinite() || (next - x).cwiseAbs().maxCoeff() > h.options.initial_step) break;
     x = next;
   }
   x = h.best.x;

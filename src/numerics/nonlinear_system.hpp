@@ -21,7 +21,8 @@ struct NonlinearSystemOptions {
   /// The trust region's first radius in x (max-norm steps are at most about this).
   double initial_step = 1.0;
   /// solve_fixed_point: full Newton steps on the caller's Jacobian (taken afresh at
-  /// every point) first, at most this many, while each step at least halves max |r|;
+  /// every point) first, at most this many, while each step is within initial_step
+  /// (max norm) and at least halves max |r|;
   /// then the hybrid method from the best point, within the evaluations left. Where
   /// the caller's Jacobian is exact or nearly so (the span polish's), Newton needs
   /// fewer residuals than the hybrid method's Broyden updates. 0: the hybrid method alone.

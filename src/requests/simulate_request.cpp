@@ -25,12 +25,8 @@ std::string probe_column(double x) { return fmt::format("y_at_{}mm", static_cast
 std::vector<double> damper_positions(const span::Span& span) {
   std::vector<double> x;
   for (const span::SpanDamper& d : span.dampers()) {
-    if (d.in_span()) {
-      x.insert(x.end(), d.along.begin(), d.along.end());
-      continue;
-    }
-    x.push_back(d.position);
-    if (d.both_ends) x.push_back(span.length() - d.position);
+    const std::vector<double> each = d.positions_from_end1(span.length());
+    x.insert(x.end(), each.begin(), each.end());
   }
   return x;
 }

@@ -425,12 +425,7 @@ std::vector<BeamDamper> dampers_in_time(const Span& span, double dt, const dampe
   std::vector<BeamDamper> out;
   for (std::size_t j = 0; j < span.dampers().size(); ++j) {
     const SpanDamper& d = span.dampers()[j];
-    std::vector<double> x = d.along;
-    if (!d.in_span()) {
-      x.push_back(d.position);
-      if (d.both_ends) x.push_back(span.length() - d.position);
-    }
-    for (const double position : x) {
+    for (const double position : d.positions_from_end1(span.length())) {
       out.push_back({position, damper::DamperInTime(*d.damper, dt, options)});
       names.push_back(d.name);
     }

@@ -136,6 +136,12 @@ std::optional<Polish::Trial> Polish::evaluate(FrequencyBalance& balance, const E
   for (std::size_t k = 0; k < unknowns_.size(); ++k) {
     const Unknown& unknown = unknowns_[k];
     const double v = std::exp(u[static_cast<Eigen::Index>(k)]);
+    if (!(v > 0.0 && std::isfinite(v))) {  // a trial the solver stepped out to: no damper moves so
+      failure.termination = Termination::inner_failure;
+      failure.where = fmt::format("end {}, damper {}: the trial clamp velocity {:.4g} m/s is not a finite velocity",
+                                  unknown.slots[0].first + 1, unknown.slots[0].second + 1, v);
+      return std::nullopt;
+    }
     damper::ImpedancePoint direct =
         solve_directly(balance, unknown, damper::Excitation::from_velocity(balance.frequency(), v));
     if (!direct.converged()) {

@@ -187,14 +187,6 @@ void place_mode_masses(const Span& span, std::vector<PlacedAttachment>& placed) 
   }
 }
 
-/// Each damper's positions from end 1: along the span, or from one or both clamps.
-std::vector<double> mode_damper_positions(const Span& span, const SpanDamper& d) {
-  if (d.in_span()) return d.along;
-  std::vector<double> x{d.position};
-  if (d.both_ends) x.push_back(span.length() - d.position);
-  return x;
-}
-
 void place_mode_dampers(const Span& span, std::vector<PlacedAttachment>& placed, std::vector<damper::LinearImpedance>& impedances) {
   for (std::size_t j = 0; j < span.dampers().size(); ++j) {
     const SpanDamper& d = span.dampers()[j];
@@ -205,7 +197,7 @@ void place_mode_dampers(const Span& span, std::vector<PlacedAttachment>& placed,
                                                     j, printable(d.name)));
     }
     impedances.emplace_back(*d.damper, damper::CableLimit::stick);
-    for (const double x : mode_damper_positions(span, d)) {
+    for (const double x : d.positions_from_end1(span.length())) {
       placed.push_back({{AttachmentKind::damper, d.name, x, d.damper->total_mass()}, impedances.size() - 1});
     }
   }

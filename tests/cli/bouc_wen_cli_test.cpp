@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/csv_table.hpp"
 #include "support/test_scale.hpp"
 
@@ -24,17 +25,6 @@ namespace {
 
 const std::string kBoucWenExamples = std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/";
 const std::string kSlenderpy = kBoucWenExamples + "slenderpy_damper.toml";
-
-/// The number after "key": in `json` after `anchor` ("" for the whole text).
-double bouc_wen_json_number(const std::string& json, const std::string& anchor, const std::string& key) {
-  const std::size_t from = anchor.empty() ? 0 : json.find("\"" + anchor + "\"");
-  const std::size_t at = from == std::string::npos ? from : json.find("\"" + key + "\": ", from);
-  if (at == std::string::npos) {
-    ADD_FAILURE() << "no key " << key << " after " << anchor << " in " << json;
-    return std::nan("");
-  }
-  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
-}
 
 /// A damper file of two identical arms with constant Bouc-Wen numbers.
 std::string uniform_bouc_wen_damper(double ei_max, int sections = 30) {
@@ -52,8 +42,8 @@ TEST(BoucWenCli, ImpedanceOfSlenderpysDamperConvergesWithItsEnergyBalance) {
   const auto dir = scratch_directory("bouc-wen-impedance");
   const CliResult r = run_cli("impedance '" + kSlenderpy + "' --velocity 0.2 --frequencies 10,25,60 --json -o z.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(bouc_wen_json_number(r.out, "", "converged"), 3.0) << r.out;
-  EXPECT_LT(bouc_wen_json_number(r.out, "", "max_energy_error"), 1e-4) << r.out;
+  EXPECT_EQ(json_number(r.out, "converged"), 3.0) << r.out;
+  EXPECT_LT(json_number(r.out, "max_energy_error"), 1e-4) << r.out;
   const Csv csv = read_csv(dir / "z.csv");
   for (const double re : csv.column("re_z_n_s_m")) EXPECT_GT(re, 0.0);  // the law dissipates
 }
@@ -92,7 +82,7 @@ TEST(BoucWenCli, ASpanWithTheDamperAtBothEnds) {
     EXPECT_LE(amplitude[i], undamped[i] * (1 + 1e-9)) << "row " << i;
     EXPECT_LT(std::abs(identity[i]), 1e-6) << "row " << i;
   }
-  EXPECT_GT(bouc_wen_json_number(r.out, "", "max_stress_fymax_mpa"), 0.0) << r.out;
+  EXPECT_GT(json_number(r.out, "max_stress_fymax_mpa"), 0.0) << r.out;
 }
 
 // The law's numbers are design variables: a study of arm.left.cable.ei_max (the
@@ -119,7 +109,7 @@ TEST(BoucWenCli, ADesignStudyOfItsNumbers) {
   }
   const std::string best = read_text(dir / "best.toml");
   EXPECT_NE(best.find("law = \"bouc-wen\""), std::string::npos) << best;
-  const double chosen = bouc_wen_json_number(r.out, "rounded", "arm.left.cable.ei_max");
+  const double chosen = json_number_after(r.out, "rounded", "arm.left.cable.ei_max");
   char line[64];
   std::snprintf(line, sizeof line, "ei_max = %.3g   # N m^2", chosen);
   EXPECT_NE(best.find(line), std::string::npos) << line << "\n" << best;
@@ -158,9 +148,9 @@ TEST(BoucWenCli, IdentifyLocalGivesTheLoopsNumbersAsCableKeys) {
   const CliResult r = run_cli("identify local --law bouc-wen --input loop.csv --json -o keys.toml", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("{\"law\": \"bouc-wen\", \"ei_min\": ", 0), 0u) << r.out;
-  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_min"), 2.5, 1e-6);
-  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_max"), 25.0, 1e-5);
-  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "chi0"), 0.03, 1e-8);
+  EXPECT_NEAR(json_number(r.out, "ei_min"), 2.5, 1e-6);
+  EXPECT_NEAR(json_number(r.out, "ei_max"), 25.0, 1e-5);
+  EXPECT_NEAR(json_number(r.out, "chi0"), 0.03, 1e-8);
   std::ofstream(dir / "cable.toml") << "[cable]\nlength = 0.1875\nsections = 40\n" << read_text(dir / "keys.toml");
   const CliResult cycle = run_cli("cycle cable.toml --experiment a --amplitude 0.005 -o cycle.csv", dir);
   EXPECT_EQ(cycle.exit_code, 0) << cycle.err;
@@ -181,9 +171,9 @@ TEST(BoucWenCli, IdentifyImpedanceFitsTheLawToCurvesAndItsCableFileReproducesThe
   const CliResult r = run_cli("identify impedance --damper start.toml --input measured.csv --json -o cable.toml", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("{\"law\": \"bouc-wen\", \"ei_min\": ", 0), 0u) << r.out;
-  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_min"), 2.5, 1e-4) << r.out;
-  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "ei_max"), 25.0, 1e-3) << r.out;
-  EXPECT_NEAR(bouc_wen_json_number(r.out, "", "chi0"), 0.03, 1e-6) << r.out;
+  EXPECT_NEAR(json_number(r.out, "ei_min"), 2.5, 1e-4) << r.out;
+  EXPECT_NEAR(json_number(r.out, "ei_max"), 25.0, 1e-3) << r.out;
+  EXPECT_NEAR(json_number(r.out, "chi0"), 0.03, 1e-6) << r.out;
   EXPECT_NE(r.err.find("identify impedance: ei_min = "), std::string::npos) << r.err;
   EXPECT_NE(read_text(dir / "cable.toml").find("law = \"bouc-wen\""), std::string::npos);
 

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/csv_table.hpp"
 
 namespace stockbridge::testing {
@@ -36,16 +37,6 @@ std::filesystem::path check_time_example(const std::string& name,
   std::filesystem::copy_file(kCheckTimeExamples + "sauter2003.toml", dir / "sauter2003.toml");
   std::ofstream(dir / "span.toml", std::ios::app) << extra;
   return dir;
-}
-
-/// The number after "key": in a JSON text, from `from` (NaN where missing or null).
-double check_time_json_number(const std::string& json, const std::string& key, std::size_t from = 0) {
-  const std::size_t at = json.find("\"" + key + "\": ", from);
-  if (at == std::string::npos) {
-    ADD_FAILURE() << "no key " << key << " in " << json;
-    return std::nan("");
-  }
-  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
 }
 
 // At 20 and 30 Hz on the coarse mesh: each row's figures are `simulate`'s at the
@@ -79,11 +70,11 @@ TEST(SpanCheckTime, EachFrequencyIsTheSimulationBesideTheBalance) {
     ASSERT_EQ(alone.exit_code, 0) << alone.err;
     for (const char* key : {"frequency_hz", "antinode_amplitude_m", "ebm_antinode_amplitude_m", "antinode_amplitude_m_ratio"}) {
       const std::string column = std::string(key) == "antinode_amplitude_m_ratio" ? "antinode_amplitude_ratio" : key;
-      EXPECT_NEAR(checks.column(column)[i], check_time_json_number(alone.out, key), 1e-12 * std::abs(checks.column(column)[i]))
+      EXPECT_NEAR(checks.column(column)[i], json_number(alone.out, key), 1e-12 * std::abs(checks.column(column)[i]))
           << key << " at " << f << " Hz";
     }
-    EXPECT_NEAR(checks.column("stress_fymax_mpa")[i], 1e-6 * check_time_json_number(alone.out, "stress_fymax_pa"), 1e-9);
-    EXPECT_NEAR(checks.column("ebm_stress_fymax_mpa")[i], 1e-6 * check_time_json_number(alone.out, "ebm_stress_fymax_pa"), 1e-9);
+    EXPECT_NEAR(checks.column("stress_fymax_mpa")[i], 1e-6 * json_number(alone.out, "stress_fymax_pa"), 1e-9);
+    EXPECT_NEAR(checks.column("ebm_stress_fymax_mpa")[i], 1e-6 * json_number(alone.out, "ebm_stress_fymax_pa"), 1e-9);
     const double y = checks.column("antinode_amplitude_ratio")[i], s = checks.column("stress_fymax_ratio")[i];
     EXPECT_DOUBLE_EQ(y, checks.column("antinode_amplitude_m")[i] / checks.column("ebm_antinode_amplitude_m")[i]);
     EXPECT_NEAR(s, checks.column("bending_amplitude_ratio")[i], 1e-12);  // both the clamp loop's ratio
@@ -94,8 +85,9 @@ TEST(SpanCheckTime, EachFrequencyIsTheSimulationBesideTheBalance) {
     // The JSON's row for this frequency, and the report's.
     const std::size_t row = r.out.find("\"asked_frequency_hz\": " + std::to_string(static_cast<int>(f)), listed);
     ASSERT_NE(row, std::string::npos) << r.out;
-    EXPECT_DOUBLE_EQ(check_time_json_number(r.out, "antinode_amplitude_ratio", row), y);
-    EXPECT_NE(report.find(">" + std::to_string(static_cast<int>(f)) + "</td>"), std::string::npos) << f;
+    EXPECT_DOUBLE_EQ(json_number(r.out, "antinode_amplitude_ratio", row), y);
+    const std::string cell = std::string(">").append(std::to_string(static_cast<int>(f))).append("</td>");
+    EXPECT_NE(report.find(cell), std::string::npos) << f;
   }
   // The coarse mesh's 30 Hz is a quarter below the balance (docs/time-domain.md).
   EXPECT_LT(checks.column("antinode_amplitude_ratio")[1], 0.9);
@@ -112,8 +104,8 @@ TEST(SpanCheckTime, TheSpanFilesEndsAndTimeTableSteerSimulate) {
   const CliResult file = run_cli("simulate span.toml --frequency 20 --json -o h.csv", dir);
   EXPECT_EQ(file.exit_code, 3) << file.err;  // half a second does not settle
   EXPECT_NE(file.out.find("\"ends\": \"pinned\""), std::string::npos) << file.out;
-  EXPECT_NEAR(check_time_json_number(file.out, "simulated_s"), 0.5, 0.01);
-  const double dt = check_time_json_number(file.out, "dt_s"), f = check_time_json_number(file.out, "frequency_hz");
+  EXPECT_NEAR(json_number(file.out, "simulated_s"), 0.5, 0.01);
+  const double dt = json_number(file.out, "dt_s"), f = json_number(file.out, "frequency_hz");
   EXPECT_NEAR(dt * f, 1.0 / 24.0, 1e-9);
   const CliResult options = run_cli(
       "simulate span.toml --frequency 20 --ends clamped --steps-per-period 30 --elements-per-wavelength 9 "
@@ -121,10 +113,10 @@ TEST(SpanCheckTime, TheSpanFilesEndsAndTimeTableSteerSimulate) {
       dir);
   EXPECT_EQ(options.exit_code, 3) << options.err;
   EXPECT_NE(options.out.find("\"ends\": \"clamped\""), std::string::npos) << options.out;
-  EXPECT_NEAR(check_time_json_number(options.out, "dt_s") * check_time_json_number(options.out, "frequency_hz"),
+  EXPECT_NEAR(json_number(options.out, "dt_s") * json_number(options.out, "frequency_hz"),
               1.0 / 30.0, 1e-9);
-  EXPECT_NEAR(check_time_json_number(options.out, "simulated_s"), 0.25, 0.01);
-  EXPECT_GT(check_time_json_number(options.out, "elements"), check_time_json_number(file.out, "elements"));
+  EXPECT_NEAR(json_number(options.out, "simulated_s"), 0.25, 0.01);
+  EXPECT_GT(json_number(options.out, "elements"), json_number(file.out, "elements"));
 }
 
 // The wake oscillator's wind on the example with its dampers at 30 Hz (the coarse
@@ -137,16 +129,16 @@ TEST(SpanCheckTime, TheWakesWindFeedsTheDampingAndTheDampers) {
                               dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"wind\": \"wake\""), std::string::npos) << r.out;
-  EXPECT_NEAR(check_time_json_number(r.out, "wind_speed_m_s"), 30.0 * 0.03105 / 0.185, 1e-9);
+  EXPECT_NEAR(json_number(r.out, "wind_speed_m_s"), 30.0 * 0.03105 / 0.185, 1e-9);
   double dampers = 0.0;
   for (const char* damper : {"\"column\": \"damper_1\"", "\"column\": \"damper_2\""}) {
     const std::size_t at = r.out.find(damper);
     ASSERT_NE(at, std::string::npos);
-    dampers += check_time_json_number(r.out, "power_w", at);
+    dampers += json_number(r.out, "power_w", at);
   }
-  const double wind = check_time_json_number(r.out, "wind_power_w");
+  const double wind = json_number(r.out, "wind_power_w");
   EXPECT_GT(dampers, 0.5 * wind);
-  EXPECT_NEAR((check_time_json_number(r.out, "damping_power_w") + dampers) / wind, 1.0, 0.01);
+  EXPECT_NEAR((json_number(r.out, "damping_power_w") + dampers) / wind, 1.0, 0.01);
   EXPECT_NE(read_text(dir / "wake.html").find("the wake oscillator at U = "), std::string::npos);
 }
 

@@ -16,20 +16,10 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 
 namespace stockbridge::testing {
 namespace {
-
-/// The number after `key` in a one-line JSON object.
-double conductors_json_number(const std::string& json, const std::string& key) {
-  const std::regex pattern("\"" + key + "\": ([-+0-9.eE]+)");
-  std::smatch match;
-  if (!std::regex_search(json, match, pattern)) {
-    ADD_FAILURE() << "no " << key << " in " << json;
-    return std::nan("");
-  }
-  return std::strtod(match[1].str().c_str(), nullptr);
-}
 
 /// A span file of `conductor_table`, no dampers, three frequencies, judged by the Safe
 /// Border Line (`fatigue`: the [fatigue] table's keys).
@@ -74,9 +64,9 @@ TEST(ConductorsCli, OneEntryAsJson) {
   const CliResult r = run_cli("conductors acsr-drake --json", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"type\": \"ACSR Drake\""), std::string::npos) << r.out;
-  EXPECT_NEAR(conductors_json_number(r.out, "ei_min_n_m2"), 44.25, 0.005);  // MODEL.md section 11
-  EXPECT_EQ(conductors_json_number(r.out, "aluminium_layers"), 2.0);
-  EXPECT_EQ(conductors_json_number(r.out, "outer_wire_diameter_m"), 0.00444);
+  EXPECT_NEAR(json_number(r.out, "ei_min_n_m2"), 44.25, 0.005);  // MODEL.md section 11
+  EXPECT_EQ(json_number(r.out, "aluminium_layers"), 2.0);
+  EXPECT_EQ(json_number(r.out, "outer_wire_diameter_m"), 0.00444);
 }
 
 TEST(ConductorsCli, TheTablePrintedRunsAsTheSpanOfTheType) {
@@ -112,10 +102,10 @@ TEST(ConductorsCli, AnEarthWiresTableNamesItsOuterWiresAndRunsWithItsEnduranceLi
   EXPECT_EQ(read_text(dir / "pasted.csv"), read_text(dir / "typed.csv"));
   // The verdict is against the given 30 MPa.
   EXPECT_NE(typed.out.find("\"criterion\": \"stress\""), std::string::npos) << typed.out;
-  EXPECT_EQ(conductors_json_number(typed.out, "endurance_limit_mpa"), 30.0);
+  EXPECT_EQ(json_number(typed.out, "endurance_limit_mpa"), 30.0);
   const CliResult json = run_cli("conductors \"EHS 3/8\" --json", dir);
   EXPECT_NE(json.out.find("\"outer_wire_material\": \"steel\""), std::string::npos) << json.out;
-  EXPECT_EQ(conductors_json_number(json.out, "aluminium_layers"), 0.0);
+  EXPECT_EQ(json_number(json.out, "aluminium_layers"), 0.0);
 }
 
 TEST(ConductorsCli, ASteelEarthWireUnderTheSafeBorderLineIsExitTwoOneLineNamingEnduranceLimitMpa) {

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/temp_file.hpp"
 
 namespace stockbridge::testing {
@@ -60,17 +60,6 @@ TEST(CycleCli, ElasticCableReproducesClosedFormsB) {
   }
 }
 
-/// The number after "key": in a JSON text.
-double cycle_json_number(const std::string& json, const std::string& key) {
-  const std::regex pattern("\"" + key + "\": ([-+0-9.eE]+)");
-  std::smatch match;
-  if (!std::regex_search(json, match, pattern)) {
-    ADD_FAILURE() << "no number for " << key << " in " << json;
-    return NAN;
-  }
-  return std::stod(match[1].str());
-}
-
 /// The steady cycle of experiment (a) on a uniform cable (ei, one element c, h),
 /// tip deflection +-amplitude, in closed form up to a fine quadrature: the cable is
 /// loaded proportionally, M = F u with u = l - s (Q = 0), so by Masing's rule every
@@ -117,11 +106,11 @@ TEST(CycleCli, JsonSummaryOfTheShippedCable) {
   const CliResult r = run_cli("cycle '" + cable + "' --experiment a --amplitude 0.03 --json -o c.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const SteadyCycle expected = steady_cycle_a(0.3, 2.8, 20.0, 0.7, 0.03);
-  EXPECT_NEAR(cycle_json_number(r.out, R"(force_n": \{"min": [-+0-9.eE]+, "max)"), expected.peak_force,
+  EXPECT_NEAR(json_number_after(r.out, "force_n", "max"), expected.peak_force,
               2e-4 * expected.peak_force) << r.out;
-  EXPECT_NEAR(cycle_json_number(r.out, "last_cycle_dissipation_sliders_j"), expected.dissipated, 1e-3 * expected.dissipated)
+  EXPECT_NEAR(json_number(r.out, "last_cycle_dissipation_sliders_j"), expected.dissipated, 1e-3 * expected.dissipated)
       << r.out;
-  EXPECT_NEAR(cycle_json_number(r.out, "last_cycle_dissipation_loop_j"), expected.dissipated, 1e-3 * expected.dissipated)
+  EXPECT_NEAR(json_number(r.out, "last_cycle_dissipation_loop_j"), expected.dissipated, 1e-3 * expected.dissipated)
       << r.out;
   EXPECT_NE(r.out.find("\"newton_iterations\": {\"max\": "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"failed_points\": 0"), std::string::npos) << r.out;

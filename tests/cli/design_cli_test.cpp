@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/test_scale.hpp"
 
 namespace stockbridge::testing {
@@ -63,17 +64,6 @@ std::string exact(double value) {
   return text;
 }
 
-/// The number after "key": in the JSON text after `anchor` ("" for the whole text).
-double json_value(const std::string& json, const std::string& anchor, const std::string& key) {
-  const std::size_t from = anchor.empty() ? 0 : json.find("\"" + anchor + "\": ");
-  const std::size_t at = from == std::string::npos ? from : json.find("\"" + key + "\": ", from);
-  if (at == std::string::npos) {
-    ADD_FAILURE() << "no key " << key << " after " << anchor << " in " << json;
-    return std::nan("");
-  }
-  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
-}
-
 TEST(DesignCli, ASmallStudyWritesEveryCandidateAndTheBestDamper) {
   const auto dir = study_folder("design-small", small_study());
   const CliResult r = run_cli("design study.toml --json -o designs.csv --best best.toml", dir);
@@ -92,35 +82,35 @@ TEST(DesignCli, ASmallStudyWritesEveryCandidateAndTheBestDamper) {
   EXPECT_NE(r.out.find("\"governing_span\": \"aster570_400m\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"governing_place\": \"span clamp "), std::string::npos) << r.out;
   const int rows = static_cast<int>(std::count(csv.begin(), csv.end(), '\n')) - 1;
-  EXPECT_EQ(rows, static_cast<int>(json_value(r.out, "", "evaluations")));
+  EXPECT_EQ(rows, static_cast<int>(json_number(r.out, "evaluations")));
   EXPECT_GE(rows, 1 + kSamples + 1);
   const std::string best = read_text(dir / "best.toml");
   EXPECT_NE(best.find("# position = "), std::string::npos) << best;
   EXPECT_NE(best.find("[[arm]]\nname = \"right\""), std::string::npos) << best;
-  EXPECT_LE(json_value(r.out, "best", "objective"), json_value(r.out, "base", "objective"));
+  EXPECT_LE(json_number_after(r.out, "best", "objective"), json_number_after(r.out, "base", "objective"));
   EXPECT_NE(r.err.find("design: " + std::to_string(rows) + " candidates in "), std::string::npos) << r.err;
 
   // best.toml is the optimum rounded to build (3 significant digits), feasible here:
   // placed where the rounded design puts it, through `stockbridge span`, the same
   // largest stress over the endurance limit as the rounded design's, to 1e-9.
-  EXPECT_EQ(json_value(r.out, "", "round_digits"), 3.0);
+  EXPECT_EQ(json_number(r.out, "round_digits"), 3.0);
   for (const char* name : {"arm.left.mass", "position"}) {
-    const double optimum = json_value(r.out, "best", name), rounded = json_value(r.out, "rounded", name);
+    const double optimum = json_number_after(r.out, "best", name), rounded = json_number_after(r.out, "rounded", name);
     EXPECT_NEAR(rounded, optimum, 0.005 * optimum) << name;
     EXPECT_EQ(std::stod(fmt_3g(rounded)), rounded) << name << " has at most 3 significant digits";
   }
-  EXPECT_NE(best.find("mass = " + fmt_3g(json_value(r.out, "rounded", "arm.left.mass")) + "   # kg"), std::string::npos)
+  EXPECT_NE(best.find("mass = " + fmt_3g(json_number_after(r.out, "rounded", "arm.left.mass")) + "   # kg"), std::string::npos)
       << best;
   EXPECT_NE(best.find("the optimum itself"), std::string::npos) << best;
   std::string span = read_text(kDesignExamples + "aster570_400m.toml");
   span.replace(span.find("file = \"sauter2003.toml\""), 24, "file = \"best.toml\"");
-  const double position = json_value(r.out, "rounded", "position_m");
+  const double position = json_number_after(r.out, "rounded", "position_m");
   span.replace(span.find("position = 1.0"), 14, "position = " + exact(position));
   std::ofstream(dir / "best_span.toml") << span;
   const CliResult s = run_cli("span best_span.toml --points " + std::to_string(kPoints) + " --json -o span.csv", dir);
   ASSERT_EQ(s.exit_code, 0) << s.err;
-  const double ratio = json_value(s.out, "", "max_stress_fymax_mpa") / json_value(s.out, "", "endurance_limit_mpa");
-  EXPECT_NEAR(ratio, json_value(r.out, "rounded", "objective"), 1e-9 * ratio);
+  const double ratio = json_number(s.out, "max_stress_fymax_mpa") / json_number(s.out, "endurance_limit_mpa");
+  EXPECT_NEAR(ratio, json_number_after(r.out, "rounded", "objective"), 1e-9 * ratio);
 }
 
 TEST(DesignCli, RoundDigitsOutsideOneToFifteenIsRefusedBeforeAnythingIsWritten) {

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/temp_file.hpp"
 #include "support/test_scale.hpp"
 
@@ -25,20 +26,14 @@ std::string fmt_double(double value) {
   return buffer;
 }
 
-/// The first number after "key": in a JSON text (NaN if absent).
-double identify_json_number(const std::string& json, const std::string& key) {
-  const std::size_t at = json.find("\"" + key + "\": ");
-  return at == std::string::npos ? NAN : std::stod(json.substr(at + key.size() + 4));
-}
-
 TEST(IdentifyCli, LocalRecoversTheParametersOfALoopRecord) {
   const auto dir = scratch_directory("identify-local");
   ASSERT_EQ(run_cli("loop --ei 2.8 --jenkin 20:0.7 --amplitude 0.08 --cycles 3 --points 400 -o mk.csv", dir).exit_code, 0);
   const CliResult r = run_cli("identify local --input mk.csv --json -o params.toml", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NEAR(identify_json_number(r.out, "ei"), 2.8, 1e-6) << r.out;
-  EXPECT_NEAR(identify_json_number(r.out, "c"), 20.0, 1e-5) << r.out;
-  EXPECT_NEAR(identify_json_number(r.out, "h"), 0.7, 1e-6) << r.out;
+  EXPECT_NEAR(json_number(r.out, "ei"), 2.8, 1e-6) << r.out;
+  EXPECT_NEAR(json_number(r.out, "c"), 20.0, 1e-5) << r.out;
+  EXPECT_NEAR(json_number(r.out, "h"), 0.7, 1e-6) << r.out;
   // The parameters file holds [cable] keys: a cable file built from it runs.
   const std::string keys = read_text(dir / "params.toml");
   write_temp_file(dir, "cable.toml", "[cable]\nlength = 0.3\nsections = 20\n" + keys);
@@ -82,9 +77,9 @@ TEST(IdentifyCli, GlobalFitOfACycleGivesACableFileCycleAccepts) {
                                     " --length 0.3 --input c.csv --json -o identified.toml" + scale.fit_options,
                                 dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NEAR(identify_json_number(r.out, "ei"), 2.8, 1e-6) << r.out;
-    EXPECT_NEAR(identify_json_number(r.out, "c"), 20.0, 1e-5) << r.out;
-    EXPECT_NEAR(identify_json_number(r.out, "h"), 0.7, 1e-6) << r.out;
+    EXPECT_NEAR(json_number(r.out, "ei"), 2.8, 1e-6) << r.out;
+    EXPECT_NEAR(json_number(r.out, "c"), 20.0, 1e-5) << r.out;
+    EXPECT_NEAR(json_number(r.out, "h"), 0.7, 1e-6) << r.out;
     const CliResult again = run_cli("cycle identified.toml --experiment a --amplitude 0.02 --cycles 1 -o c2.csv", dir);
     EXPECT_EQ(again.exit_code, 0) << again.err;
   }
@@ -133,10 +128,10 @@ TEST(IdentifyCli, GlobalFitOfNoisyCopiesOfCycles) {
                                     " --length 0.3 --input noisy.csv --json" + scale.fit_options,
                                 dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NEAR(identify_json_number(r.out, "ei"), 2.8, 0.02 * 2.8) << experiment << ": " << r.out;
+    EXPECT_NEAR(json_number(r.out, "ei"), 2.8, 0.02 * 2.8) << experiment << ": " << r.out;
     // c from (b) is weakly determined at 1 % noise (docs/identification.md): 5 %.
-    EXPECT_NEAR(identify_json_number(r.out, "c"), 20.0, (std::string(experiment) == "a" ? 0.02 : 0.05) * 20.0) << experiment << ": " << r.out;
-    EXPECT_NEAR(identify_json_number(r.out, "h"), 0.7, 0.02 * 0.7) << experiment << ": " << r.out;
+    EXPECT_NEAR(json_number(r.out, "c"), 20.0, (std::string(experiment) == "a" ? 0.02 : 0.05) * 20.0) << experiment << ": " << r.out;
+    EXPECT_NEAR(json_number(r.out, "h"), 0.7, 0.02 * 0.7) << experiment << ": " << r.out;
   }
 }
 

@@ -15,17 +15,12 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/temp_file.hpp"
 #include "support/test_scale.hpp"
 
 namespace stockbridge::testing {
 namespace {
-
-/// The first number after "key": in a JSON text (NaN if absent).
-double json_number(const std::string& json, const std::string& key) {
-  const std::size_t at = json.find("\"" + key + "\": ");
-  return at == std::string::npos ? NAN : std::stod(json.substr(at + key.size() + 4));
-}
 
 /// A damper of two identical arms of the verification damper's on 12-section
 /// cables with the given cable keys (or a reference to a cable file).

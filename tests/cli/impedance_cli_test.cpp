@@ -5,7 +5,6 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/temp_file.hpp"
 #include "support/test_scale.hpp"
 
@@ -147,17 +147,6 @@ TEST(ImpedanceCli, SingularJacobianPointsAreFlaggedNotPrinted) {
   EXPECT_EQ(singular, 2u) << r.out;
 }
 
-/// The number after "key": in a JSON text.
-double impedance_json_number(const std::string& json, const std::string& key) {
-  const std::regex pattern("\"" + key + "\": ([-+0-9.eE]+)");
-  std::smatch match;
-  if (!std::regex_search(json, match, pattern)) {
-    ADD_FAILURE() << "no number for " << key << " in " << json;
-    return std::nan("");
-  }
-  return std::strtod(match[1].str().c_str(), nullptr);
-}
-
 // examples/cycle_measured_a.csv is the cycle of examples/cable_sauter2003.toml (ei 2.8,
 // c 20, h 0.7, l 0.3) at 0.03 m with noise: its x samples are those of `cycle
 // --amplitude 0.03` (to 5e-10 m), its forces differ from that cycle's by 0.04 N on
@@ -188,9 +177,9 @@ TEST(ExamplesCli, TheShippedExamplesRun) {
                                          "' --json -o cable.toml" + scaled<std::string>("", " --sections 10"),
                                      dir);
   EXPECT_EQ(measured.exit_code, 0) << measured.err;
-  EXPECT_NEAR(impedance_json_number(measured.out, "ei"), 2.8, 0.01 * 2.8) << measured.out;
-  EXPECT_NEAR(impedance_json_number(measured.out, "c"), 20.0, 0.03 * 20.0) << measured.out;
-  EXPECT_NEAR(impedance_json_number(measured.out, "h"), 0.7, 0.01 * 0.7) << measured.out;
+  EXPECT_NEAR(json_number(measured.out, "ei"), 2.8, 0.01 * 2.8) << measured.out;
+  EXPECT_NEAR(json_number(measured.out, "c"), 20.0, 0.03 * 20.0) << measured.out;
+  EXPECT_NEAR(json_number(measured.out, "h"), 0.7, 0.01 * 0.7) << measured.out;
   const CliResult strand = run_cli("strand '" + examples + "strand_19wire.toml'", dir);
   EXPECT_EQ(strand.exit_code, 0) << strand.err;
 }
@@ -227,7 +216,7 @@ TEST(ResponseCli, DesignFiguresAgreeWithTheImpedanceSweep) {
     ASSERT_NE(at, header.end()) << figure;
     const double swept = std::strtod(cells[static_cast<std::size_t>(at - header.begin())].c_str(), nullptr);
     ASSERT_GT(swept, 0.0) << figure;
-    EXPECT_NEAR(impedance_json_number(r.out, figure), swept, 1e-9 * swept) << figure;
+    EXPECT_NEAR(json_number(r.out, figure), swept, 1e-9 * swept) << figure;
   }
   EXPECT_NE(r.err.find("messenger curvature amplitude"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("arm short: P = "), std::string::npos) << r.err;

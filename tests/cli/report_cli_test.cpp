@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/test_scale.hpp"
 
 namespace stockbridge::testing {
@@ -23,16 +24,6 @@ std::size_t count_of(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
-}
-
-/// The number after "key": in a JSON text.
-double report_json_number(const std::string& json, const std::string& key) {
-  const std::size_t at = json.find("\"" + key + "\": ");
-  if (at == std::string::npos) {
-    ADD_FAILURE() << "no key " << key;
-    return 0.0;
-  }
-  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
 }
 
 std::string report_3g(double value) {
@@ -73,8 +64,8 @@ TEST(ReportCli, ASpanReportRestatesTheInputsAndGivesTheVerdictAndFiguresOfTheRun
   ASSERT_NE(verdict, std::string::npos);
   const std::string name = r.out.substr(verdict + 12, r.out.find('"', verdict + 12) - verdict - 12);
   EXPECT_NE(html.find("<strong>" + name + "</strong>"), std::string::npos) << name;
-  EXPECT_NE(html.find(report_3g(report_json_number(r.out, "max_stress_fymax_mpa")) + " MPa at"), std::string::npos);
-  EXPECT_NE(html.find(report_3g(report_json_number(r.out, "life_years")) + " years"), std::string::npos);
+  EXPECT_NE(html.find(report_3g(json_number(r.out, "max_stress_fymax_mpa")) + " MPa at"), std::string::npos);
+  EXPECT_NE(html.find(report_3g(json_number(r.out, "life_years")) + " years"), std::string::npos);
   EXPECT_NE(html.find("Lives are comparative"), std::string::npos);
   // Three figures, each with the wind speed on top; the stress one with microstrain and the limit.
   EXPECT_EQ(count_of(html, "<figure>"), 3u);

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/csv_table.hpp"
 
 namespace stockbridge::testing {
@@ -30,16 +31,6 @@ std::filesystem::path simulate_example(const std::string& name) {
   std::filesystem::copy_file(kSimulateExamples + "aster570_400m.toml", dir / "span.toml");
   std::filesystem::copy_file(kSimulateExamples + "sauter2003.toml", dir / "sauter2003.toml");
   return dir;
-}
-
-/// The number after "key": in a JSON text (NaN where missing or null).
-double simulate_json_number(const std::string& json, const std::string& key, std::size_t from = 0) {
-  const std::size_t at = json.find("\"" + key + "\": ", from);
-  if (at == std::string::npos) {
-    ADD_FAILURE() << "no key " << key << " in " << json;
-    return std::nan("");
-  }
-  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
 }
 
 // At 20 Hz, on a coarse mesh and step (10 elements a wavelength, 40 steps a period:
@@ -57,21 +48,21 @@ TEST(SimulateCli, TheExampleSettlesBesideTheBalance) {
             "damper_1_velocity_m_s,damper_2_force_n,damper_2_velocity_m_s");
   const Csv history = read_csv(dir / "history.csv");
   const std::vector<double> t = history.column("time_s");
-  EXPECT_EQ(static_cast<double>(t.size()), simulate_json_number(r.out, "periods"));
-  const double dt = simulate_json_number(r.out, "dt_s");
+  EXPECT_EQ(static_cast<double>(t.size()), json_number(r.out, "periods"));
+  const double dt = json_number(r.out, "dt_s");
   for (std::size_t i = 1; i < t.size(); ++i) ASSERT_NEAR(t[i] - t[i - 1], 40 * dt, 1e-9);
-  EXPECT_NEAR(t.back(), simulate_json_number(r.out, "simulated_s"), 1e-9);
+  EXPECT_NEAR(t.back(), json_number(r.out, "simulated_s"), 1e-9);
   for (const char* key : {"\"settled\": true", "\"interrupted\": false", "\"ends\": \"clamped\"",
                           "\"asked_frequency_hz\": 20", "\"ebm_converged\": true", "\"column\": \"damper_2\"",
                           "\"probes_m\": [0.089, 1, 200, 399]"}) {
     EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
   }
-  EXPECT_NEAR(simulate_json_number(r.out, "antinode_amplitude_m_ratio"), 1.0, 0.1);
+  EXPECT_NEAR(json_number(r.out, "antinode_amplitude_m_ratio"), 1.0, 0.1);
   for (const char* damper : {"\"column\": \"damper_1\"", "\"column\": \"damper_2\""}) {
     const std::size_t at = r.out.find(damper);
     ASSERT_NE(at, std::string::npos);
-    EXPECT_NEAR(simulate_json_number(r.out, "power_w", at) / simulate_json_number(r.out, "dissipated_w", at), 1.0, 0.02);
-    EXPECT_NEAR(simulate_json_number(r.out, "velocity_m_s_ratio", at), 1.0, 0.05);
+    EXPECT_NEAR(json_number(r.out, "power_w", at) / json_number(r.out, "dissipated_w", at), 1.0, 0.02);
+    EXPECT_NEAR(json_number(r.out, "velocity_m_s_ratio", at), 1.0, 0.05);
   }
   // The history's last rows against the summary: the velocity's amplitude over the
   // last period is the first harmonic's within the harmonics' share.
@@ -94,7 +85,7 @@ TEST(SimulateCli, TooShortARunWritesItsHistoryAndExitsThree) {
                           "\"probes_m\": [100, 200]"}) {
     EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
   }
-  EXPECT_GT(simulate_json_number(r.out, "last_envelope_m"), 0.0);
+  EXPECT_GT(json_number(r.out, "last_envelope_m"), 0.0);
 }
 
 // Ctrl-C ends the run after the step under way: the rows simulated are written

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/csv_table.hpp"
 #include "support/test_scale.hpp"
 
@@ -33,17 +34,6 @@ const std::string kHeader =
     "frequency_hz,wind_speed_m_s,wavelength_m,amplitude_m,amplitude_over_diameter,wind_power_w,self_damping_power_w,"
     "damper_power_w,clamp_loop_amplitude_m,damper_clamp_velocity_m_s,stress_fymax_mpa,stress_ps_mpa,"
     "damper_clamp_stress_mpa,undamped_amplitude_m,undamped_stress_fymax_mpa,converged";
-
-/// The number after "key": in a JSON text (NaN for null or a missing key).
-double span_json_number(const std::string& json, const std::string& key) {
-  const std::size_t at = json.find("\"" + key + "\": ");
-  if (at == std::string::npos) {
-    ADD_FAILURE() << "no key " << key << " in " << json;
-    return std::nan("");
-  }
-  const std::string value = json.substr(at + key.size() + 4);
-  return value.rfind("null", 0) == 0 ? std::nan("") : std::strtod(value.c_str(), nullptr);
-}
 
 /// A scratch folder holding a copy of the example span and its damper file.
 std::filesystem::path example_copy(const std::string& name) {
@@ -117,20 +107,20 @@ TEST(SpanCli, JsonSummaryHasEveryKey) {
   }
   // The band's first frequency, 5.96 Hz, is among the points: 26.1 MPa there, above the 8.73 MPa limit.
   EXPECT_NE(r.out.find("\"verdict\": \"unsafe\""), std::string::npos) << r.out;
-  EXPECT_GT(span_json_number(r.out, "max_stress_fymax_mpa"), span_json_number(r.out, "endurance_limit_mpa"));
-  EXPECT_EQ(span_json_number(r.out, "life_missing_points"), 0.0);
+  EXPECT_GT(json_number(r.out, "max_stress_fymax_mpa"), json_number(r.out, "endurance_limit_mpa"));
+  EXPECT_EQ(json_number(r.out, "life_missing_points"), 0.0);
   EXPECT_NE(r.out.find("\"several_states_hz\": ["), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"position_optimized\": false"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"failed\": []"), std::string::npos) << r.out;
-  EXPECT_EQ(span_json_number(r.out, "position_m"), 1.0);
-  EXPECT_LT(span_json_number(r.out, "max_stress_fymax_mpa"), span_json_number(r.out, "undamped_max_stress_fymax_mpa"));
-  EXPECT_GE(span_json_number(r.out, "life_years"), span_json_number(r.out, "undamped_life_years"));
-  EXPECT_LT(span_json_number(r.out, "max_energy_identity_error"), 1e-6);
+  EXPECT_EQ(json_number(r.out, "position_m"), 1.0);
+  EXPECT_LT(json_number(r.out, "max_stress_fymax_mpa"), json_number(r.out, "undamped_max_stress_fymax_mpa"));
+  EXPECT_GE(json_number(r.out, "life_years"), json_number(r.out, "undamped_life_years"));
+  EXPECT_LT(json_number(r.out, "max_energy_identity_error"), 1e-6);
   // The largest stress is the CSV's largest.
   const Csv csv = read_csv(dir / "span.csv");
   double largest = 0.0;
   for (double s : csv.column("stress_fymax_mpa")) largest = std::max(largest, s);
-  EXPECT_NEAR(span_json_number(r.out, "max_stress_fymax_mpa"), largest, 1e-9 * largest);
+  EXPECT_NEAR(json_number(r.out, "max_stress_fymax_mpa"), largest, 1e-9 * largest);
 }
 
 // MODEL.md section 9's undamped check numbers through the program.
@@ -187,16 +177,16 @@ TEST(SpanCli, TensionFiguresAndFieldFiguresOfTheUndampedSpan) {
   }
   const CliResult json = run_cli("span span.toml --frequencies 10,20 --no-dampers --json -o span2.csv", dir);
   ASSERT_EQ(json.exit_code, 0) << json.err;
-  EXPECT_NEAR(span_json_number(json.out, "catenary_parameter_m"), 1100.0, 1e-9);
-  EXPECT_NEAR(span_json_number(json.out, "tension_n"), 1100.0 * 1.571 * 9.80665, 1e-6);
-  EXPECT_NEAR(span_json_number(json.out, "tension_percent_rts"), 100.0 * 1100.0 * 1.571 * 9.80665 / 185300.0, 1e-9);
-  EXPECT_NEAR(span_json_number(json.out, "span_parameter_m3_kg"), 400.0 * 0.03105 / 1.571, 1e-9);
-  EXPECT_EQ(span_json_number(json.out, "terrain"), 2.0);
-  EXPECT_EQ(span_json_number(json.out, "safe_design_catenary_parameter_m"), 1125.0);
+  EXPECT_NEAR(json_number(json.out, "catenary_parameter_m"), 1100.0, 1e-9);
+  EXPECT_NEAR(json_number(json.out, "tension_n"), 1100.0 * 1.571 * 9.80665, 1e-6);
+  EXPECT_NEAR(json_number(json.out, "tension_percent_rts"), 100.0 * 1100.0 * 1.571 * 9.80665 / 185300.0, 1e-9);
+  EXPECT_NEAR(json_number(json.out, "span_parameter_m3_kg"), 400.0 * 0.03105 / 1.571, 1e-9);
+  EXPECT_EQ(json_number(json.out, "terrain"), 2.0);
+  EXPECT_EQ(json_number(json.out, "safe_design_catenary_parameter_m"), 1125.0);
   EXPECT_NE(json.out.find("\"safe_design_tension\": \"within\""), std::string::npos) << json.out;
-  EXPECT_NEAR(span_json_number(json.out, "max_bending_amplitude_pp_m"), std::max(yb[0], yb[1]), 1e-9);
-  EXPECT_NEAR(span_json_number(json.out, "max_bending_strain_pp_microstrain"), std::max(strain[0], strain[1]), 1e-6);
-  EXPECT_NEAR(span_json_number(json.out, "endurance_limit_pp_microstrain"), limit_strain[0], 1e-6);
+  EXPECT_NEAR(json_number(json.out, "max_bending_amplitude_pp_m"), std::max(yb[0], yb[1]), 1e-9);
+  EXPECT_NEAR(json_number(json.out, "max_bending_strain_pp_microstrain"), std::max(strain[0], strain[1]), 1e-6);
+  EXPECT_NEAR(json_number(json.out, "endurance_limit_pp_microstrain"), limit_strain[0], 1e-6);
 }
 
 // The weak model's dampers sit in the string's own standing wave: v = w Y |sin(k a)|,
@@ -247,9 +237,9 @@ TEST(SpanCli, PointsThatDidNotConvergeNeverEnterTheLifeOrTheVerdict) {
   EXPECT_TRUE(std::isnan(csv.column("stress_fymax_mpa")[0]));
   const CliResult json = run_cli(run + "--json -o span.csv", dir);
   ASSERT_EQ(json.exit_code, 3) << json.err;
-  EXPECT_TRUE(std::isnan(span_json_number(json.out, "life_years"))) << json.out;
-  EXPECT_EQ(span_json_number(json.out, "life_missing_points"), 2.0);
-  EXPECT_GT(span_json_number(json.out, "undamped_life_years"), 0.0);
+  EXPECT_TRUE(std::isnan(json_number(json.out, "life_years"))) << json.out;
+  EXPECT_EQ(json_number(json.out, "life_missing_points"), 2.0);
+  EXPECT_GT(json_number(json.out, "undamped_life_years"), 0.0);
   EXPECT_NE(json.out.find("\"termination\": \"no_root\""), std::string::npos) << json.out;
   // Every converged point within a limit of 1000 MPa, two missing: neither safe nor unsafe.
   std::string text = read_text(dir / "span.toml");
@@ -269,11 +259,11 @@ TEST(SpanCli, PositionSearchReportsAndBalancesAtThePositionFound) {
   const CliResult r = run_cli(band + " --optimize-position 0.5:3 --json -o span.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"position_optimized\": true"), std::string::npos) << r.out;
-  const double position = span_json_number(r.out, "position_m");
+  const double position = json_number(r.out, "position_m");
   EXPECT_GE(position, 0.5);
   EXPECT_LE(position, 3.0);
   // 1.0 m (the file's) is one of the scan's positions: the optimum is no worse.
-  EXPECT_LE(span_json_number(r.out, "max_stress_fymax_mpa"), span_json_number(at_file.out, "max_stress_fymax_mpa") * (1 + 1e-9));
+  EXPECT_LE(json_number(r.out, "max_stress_fymax_mpa"), json_number(at_file.out, "max_stress_fymax_mpa") * (1 + 1e-9));
   const CliResult report = run_cli(band + " --optimize-position 0.5:3 -o span2.csv", dir);
   ASSERT_EQ(report.exit_code, 0) << report.err;
   EXPECT_NE(report.out.find("positions: "), std::string::npos) << report.out;
@@ -322,35 +312,35 @@ TEST(SpanCli, TheJsonRestatesTheInputsAsUsed) {
   EXPECT_NE(conductor.find("\"name\": \"ACSR Drake\""), std::string::npos) << conductor;
   EXPECT_NE(conductor.find("\"source\": \"the catalogue's ACSR Drake\""), std::string::npos) << conductor;
   EXPECT_NE(conductor.find("\"stranding\": \"26/7"), std::string::npos) << conductor;
-  EXPECT_NEAR(span_json_number(conductor, "ei_min_n_m2"), 44.25, 0.01);
-  EXPECT_EQ(span_json_number(conductor, "aluminium_layers"), 2.0);
-  const double rts = span_json_number(conductor, "rated_tensile_strength_n");
-  const double mass = span_json_number(conductor, "mass_per_length_kg_m");
+  EXPECT_NEAR(json_number(conductor, "ei_min_n_m2"), 44.25, 0.01);
+  EXPECT_EQ(json_number(conductor, "aluminium_layers"), 2.0);
+  const double rts = json_number(conductor, "rated_tensile_strength_n");
+  const double mass = json_number(conductor, "mass_per_length_kg_m");
   EXPECT_NEAR(rts, 138.8e3, 0.1e3);
-  EXPECT_EQ(span_json_number(inputs, "length_m"), 300.0);
+  EXPECT_EQ(json_number(inputs, "length_m"), 300.0);
   const std::string tension = span_json_object(inputs, "tension");
-  const double t = span_json_number(tension, "tension_n");
-  EXPECT_NEAR(span_json_number(tension, "fraction_of_rts"), 0.2, 1e-12);
+  const double t = json_number(tension, "tension_n");
+  EXPECT_NEAR(json_number(tension, "fraction_of_rts"), 0.2, 1e-12);
   EXPECT_NEAR(t, 0.2 * rts, 1e-9 * t);
-  EXPECT_NEAR(t, span_json_number(tension, "catenary_parameter_m") * mass * 9.80665, 1e-9 * t);
-  EXPECT_EQ(t, span_json_number(r.out, "tension_n"));  // the summary's own
+  EXPECT_NEAR(t, json_number(tension, "catenary_parameter_m") * mass * 9.80665, 1e-9 * t);
+  EXPECT_EQ(t, json_number(r.out, "tension_n"));  // the summary's own
   const std::string wind = span_json_object(inputs, "wind");
   EXPECT_NE(wind.find("\"law\": \"cigre\""), std::string::npos) << wind;
   EXPECT_EQ(wind.find("turbulence"), std::string::npos) << wind;  // only foti has one
-  EXPECT_EQ(span_json_number(wind, "strouhal"), 0.185);
-  EXPECT_EQ(span_json_number(wind, "speed_max_m_s"), 7.0);
+  EXPECT_EQ(json_number(wind, "strouhal"), 0.185);
+  EXPECT_EQ(json_number(wind, "speed_max_m_s"), 7.0);
   const std::string self_damping = span_json_object(inputs, "self_damping");
   EXPECT_NE(self_damping.find("\"law\": \"noiseux-1991\""), std::string::npos) << self_damping;
   EXPECT_NE(self_damping.find("\"k_source\": \"Lilien's\""), std::string::npos) << self_damping;
   // Lilien's k, D[mm] / sqrt(m RTS[kN]).
-  const double diameter = span_json_number(conductor, "diameter_m");
-  EXPECT_NEAR(span_json_number(self_damping, "k"), 1e3 * diameter / std::sqrt(mass * rts / 1e3), 1e-9);
+  const double diameter = json_number(conductor, "diameter_m");
+  EXPECT_NEAR(json_number(self_damping, "k"), 1e3 * diameter / std::sqrt(mass * rts / 1e3), 1e-9);
   const std::string fatigue = span_json_object(inputs, "fatigue");
   EXPECT_NE(fatigue.find("\"criterion\": \"safe-border-line\""), std::string::npos) << fatigue;
   EXPECT_NE(fatigue.find("\"criterion_description\": \"the CIGRE Safe Border Line at 5e+08 cycles\""),
             std::string::npos)
       << fatigue;
-  EXPECT_EQ(span_json_number(fatigue, "endurance_limit_mpa"), span_json_number(r.out, "endurance_limit_mpa"));
+  EXPECT_EQ(json_number(fatigue, "endurance_limit_mpa"), json_number(r.out, "endurance_limit_mpa"));
 }
 
 /// The example Drake span (examples/drake_300m.toml) with D. Sauter's damper known by
@@ -383,16 +373,16 @@ TEST(SpanCli, TheMicrostrainCriterionJudgesThePoffenbergerSwartStrain) {
   const CliResult r = run_cli("span span.toml --json -o span.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"criterion\": \"microstrain\", \"verdict\": \"unsafe\""), std::string::npos) << r.out;
-  EXPECT_NEAR(span_json_number(r.out, "endurance_limit_mpa"), 0.5e-6 * 150.0 * 68.9e3, 1e-12);
-  EXPECT_NEAR(span_json_number(r.out, "endurance_limit_pp_microstrain"), 150.0, 1e-9);
-  EXPECT_NEAR(span_json_number(r.out, "max_bending_strain_pp_microstrain"), 158.6, 0.05);
+  EXPECT_NEAR(json_number(r.out, "endurance_limit_mpa"), 0.5e-6 * 150.0 * 68.9e3, 1e-12);
+  EXPECT_NEAR(json_number(r.out, "endurance_limit_pp_microstrain"), 150.0, 1e-9);
+  EXPECT_NEAR(json_number(r.out, "max_bending_strain_pp_microstrain"), 158.6, 0.05);
   // The stress judged is the largest Poffenberger-Swart stress, not the fymax one.
   const Csv csv = read_csv(dir / "span.csv");
   const std::vector<double> ps = csv.column("stress_ps_mpa"), fymax = csv.column("stress_fymax_mpa");
-  const double judged = span_json_number(r.out, "max_judged_stress_mpa");
+  const double judged = json_number(r.out, "max_judged_stress_mpa");
   EXPECT_EQ(judged, *std::max_element(ps.begin(), ps.end()));
-  EXPECT_LT(judged, span_json_number(r.out, "max_stress_fymax_mpa"));
-  EXPECT_EQ(span_json_number(r.out, "max_stress_fymax_mpa"), *std::max_element(fymax.begin(), fymax.end()));
+  EXPECT_LT(judged, json_number(r.out, "max_stress_fymax_mpa"));
+  EXPECT_EQ(json_number(r.out, "max_stress_fymax_mpa"), *std::max_element(fymax.begin(), fymax.end()));
   EXPECT_NEAR(judged, 158.6e-6 / 2.0 * 68.9e3, 0.002);  // E_a eps / 2
   const std::string fatigue = span_json_object(span_json_object(r.out, "inputs"), "fatigue");
   EXPECT_NE(fatigue.find("\"criterion\": \"microstrain\", \"criterion_description\": \"150 microstrain peak-to-peak (the "
@@ -417,7 +407,7 @@ TEST(SpanCli, TheJsonSaysWhereTheTurbulenceComesFrom) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string wind = span_json_object(span_json_object(r.out, "inputs"), "wind");
   EXPECT_NE(wind.find("\"law\": \"foti\""), std::string::npos) << wind;
-  EXPECT_NEAR(span_json_number(wind, "turbulence_intensity"), 1.0 / std::log(10.0 / 0.3), 1e-12);
+  EXPECT_NEAR(json_number(wind, "turbulence_intensity"), 1.0 / std::log(10.0 / 0.3), 1e-12);
   EXPECT_NE(wind.find("\"turbulence_source\": \"terrain category 4 (this program's assumed intensity)\""),
             std::string::npos)
       << wind;
@@ -426,7 +416,7 @@ TEST(SpanCli, TheJsonSaysWhereTheTurbulenceComesFrom) {
   const CliResult given = run_cli("span given.toml --frequencies 10,20 --no-dampers --json -o span.csv", dir);
   ASSERT_EQ(given.exit_code, 0) << given.err;
   const std::string own = span_json_object(span_json_object(given.out, "inputs"), "wind");
-  EXPECT_EQ(span_json_number(own, "turbulence_intensity"), 0.05);
+  EXPECT_EQ(json_number(own, "turbulence_intensity"), 0.05);
   EXPECT_NE(own.find("\"turbulence_source\": \"given\""), std::string::npos) << own;
 }
 
@@ -438,9 +428,9 @@ TEST(SpanCli, TheVendorSheetsBandAboveTheLimitMakesTheVerdictUncertain) {
   const CliResult r = run_cli("span span.toml --json -o span.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"verdict\": \"uncertain\""), std::string::npos) << r.out;
-  const double limit = span_json_number(r.out, "endurance_limit_mpa");
-  const double stress = span_json_number(r.out, "max_judged_stress_mpa");
-  const double high = span_json_number(r.out, "max_judged_stress_high_mpa");
+  const double limit = json_number(r.out, "endurance_limit_mpa");
+  const double stress = json_number(r.out, "max_judged_stress_mpa");
+  const double high = json_number(r.out, "max_judged_stress_high_mpa");
   EXPECT_NEAR(limit, 8.73, 0.005);
   EXPECT_LT(stress, limit);
   EXPECT_GT(high, limit);

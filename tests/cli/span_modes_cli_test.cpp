@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 #include "support/csv_table.hpp"
 
 namespace stockbridge::testing {
@@ -32,16 +33,6 @@ std::filesystem::path modes_example(const std::string& name, const std::string& 
 
 const std::string kSphere = "\n[[mass]]\nname = \"sphere\"\nmass = 15.0\npositions = [150.0, 250.0]\n";
 
-/// The number after "key": in a JSON text (NaN where missing).
-double modes_json_number(const std::string& json, const std::string& key) {
-  const std::size_t at = json.find("\"" + key + "\": ");
-  if (at == std::string::npos) {
-    ADD_FAILURE() << "no key " << key << " in " << json;
-    return std::nan("");
-  }
-  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
-}
-
 TEST(SpanModesCli, TheExampleWithASphereWritesTheModesAndShapes) {
   const auto dir = modes_example("span-modes-sphere", kSphere);
   const CliResult r = run_cli("span span.toml --modes --fmax 5 --shapes shapes.csv --json -o modes.csv", dir);
@@ -52,7 +43,7 @@ TEST(SpanModesCli, TheExampleWithASphereWritesTheModesAndShapes) {
             "sphere_1_deflection,sphere_2_deflection,sauter2003_2_deflection");
   const Csv modes = read_csv(dir / "modes.csv");
   const std::vector<double> f = modes.column("frequency_hz");
-  ASSERT_EQ(static_cast<double>(f.size()), modes_json_number(r.out, "modes"));
+  ASSERT_EQ(static_cast<double>(f.size()), json_number(r.out, "modes"));
   ASSERT_GT(f.size(), 20u);
   for (std::size_t i = 0; i < f.size(); ++i) {
     EXPECT_EQ(modes.column("mode")[i], static_cast<double>(i + 1));
@@ -84,7 +75,7 @@ TEST(SpanModesCli, WithTheDampersRemovedTheBareSpanHasItsHarmonics) {
   const auto dir = modes_example("span-modes-bare");
   const CliResult r = run_cli("span span.toml --modes --dampers removed --fmax 3 --json -o modes.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const double c = modes_json_number(r.out, "wave_speed_m_s");
+  const double c = json_number(r.out, "wave_speed_m_s");
   EXPECT_NEAR(c, std::sqrt(0.15 * 185300.0 / 1.571), 1e-9 * c);
   const std::vector<double> f = read_csv(dir / "modes.csv").column("frequency_hz");
   ASSERT_EQ(f.size(), static_cast<std::size_t>(std::floor(3.0 * 800.0 / c)));

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/json_number.hpp"
 
 namespace stockbridge::testing {
 namespace {
@@ -48,8 +49,6 @@ double number_after(const std::string& text, const std::string& prefix) {
   return std::strtod(match[1].str().c_str(), nullptr);
 }
 
-double strand_json_number(const std::string& json, const std::string& key) { return number_after(json, "\"" + key + "\": "); }
-
 TEST(StrandCli, PrintsTheBoundsOfTheExampleAsJson) {
   const auto dir = scratch_directory("strand-json");
   const CliResult r = run_cli("strand " + kStrandExample + " --json", dir);
@@ -57,8 +56,8 @@ TEST(StrandCli, PrintsTheBoundsOfTheExampleAsJson) {
   EXPECT_EQ(r.err, "");
   EXPECT_TRUE(std::regex_match(r.out, std::regex(R"(\{"ei_min_n_m2": [-+0-9.eE]+, "ei_max_n_m2": [-+0-9.eE]+\}\n)")))
       << r.out;
-  EXPECT_NEAR(strand_json_number(r.out, "ei_min_n_m2"), kEiMin, 1e-9 * kEiMin);
-  EXPECT_NEAR(strand_json_number(r.out, "ei_max_n_m2"), kEiMax, 1e-9 * kEiMax);
+  EXPECT_NEAR(json_number(r.out, "ei_min_n_m2"), kEiMin, 1e-9 * kEiMin);
+  EXPECT_NEAR(json_number(r.out, "ei_max_n_m2"), kEiMax, 1e-9 * kEiMax);
 }
 
 TEST(StrandCli, PrintsTheBoundsOfTheExampleAsText) {
@@ -77,8 +76,8 @@ TEST(StrandCli, YoungsModulusIsOptional) {
   const CliResult r = run_cli("strand wire.toml --json", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // One steel wire: E pi r^4 / 4 = 0.16493 N m^2 for both bounds.
-  EXPECT_NEAR(strand_json_number(r.out, "ei_min_n_m2"), kEiMin / 19.0, 1e-12);
-  EXPECT_NEAR(strand_json_number(r.out, "ei_max_n_m2"), kEiMin / 19.0, 1e-12);
+  EXPECT_NEAR(json_number(r.out, "ei_min_n_m2"), kEiMin / 19.0, 1e-12);
+  EXPECT_NEAR(json_number(r.out, "ei_max_n_m2"), kEiMin / 19.0, 1e-12);
 }
 
 constexpr const char* kGood =

@@ -57,6 +57,13 @@ struct SpanDamper {
   bool measured() const { return sheet != nullptr; }
   /// Placed along the span (`along`), not at `position` from the ends.
   bool in_span() const { return !along.empty(); }
+  /// Each of its positions, m from end 1, on a span of `span_length` m: `along`, or
+  /// `position` from end 1's clamp and (both_ends) from end 2's, end 1's first.
+  std::vector<double> positions_from_end1(double span_length) const {
+    if (in_span()) return along;
+    if (both_ends) return {position, span_length - position};
+    return {position};
+  }
 };
 
 /// A rigid mass clamped on the conductor (an aircraft warning sphere, a marker): a

@@ -110,6 +110,31 @@ TEST(NonlinearSystem, NewtonStepsFirstTakeFewerResidualsAndHandOverWhereTheyStal
   EXPECT_GT(recovered.summary.evaluations, 2);  // the Newton phase's two, then the hybrid method's
 }
 
+// Where the residual is nearly flat at the start, the Newton step is enormous (here
+// 740 from u = 5 toward the root at 1 of h = tanh(1 - u)): it is not taken, as the
+// span's polish once took one out to an infinite clamp velocity; the hybrid method
+// starts from there with its trust radius, and nothing is evaluated far away.
+TEST(NonlinearSystem, ANewtonStepBeyondTheFirstTrustRadiusIsLeftToTheHybridMethod) {
+  double farthest = 0.0;
+  const Residual r = [&](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    farthest = std::max(farthest, std::abs(x[0]));
+    f = Eigen::VectorXd::Constant(1, std::tanh(1.0 - x[0]));
+    return true;
+  };
+  const ResidualJacobian j = [](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
+    const double c = std::cosh(1.0 - x[0]);
+    jac = Eigen::MatrixXd::Constant(1, 1, -1.0 / (c * c));
+    return true;
+  };
+  NonlinearSystemOptions options;
+  options.tolerance = 1e-10;
+  options.newton_steps = 6;
+  const NonlinearSystemResult s = solve_fixed_point(r, j, Eigen::VectorXd::Constant(1, 5.0), options);
+  ASSERT_EQ(s.summary.termination, Termination::converged) << brief_report(s.summary);
+  EXPECT_NEAR(s.x[0], 1.0, 1e-9);
+  EXPECT_LT(farthest, 10.0);
+}
+
 TEST(NonlinearSystem, AJumpOfTheResidualIsNoRootAndSaysWhere) {
   // h = 0.5 for u < 0.3, -0.5 beyond: a bracket closes on the jump, no fixed point.
   const Residual r = [](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
