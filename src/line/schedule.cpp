@@ -380,8 +380,8 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
     }
     chosen = std::move(best);
   }
-  // Balanced to the end: a count's kept candidate is unless proven unsafe, which the
-  // last count never is, or it would have lost to the one it was compared with.
+  // The last count's kept candidate was balanced to the end: nothing is proven unsafe
+  // there, and one left early never beats the candidate it was compared with.
   out.analysis = std::move(*chosen->analysis);
   fill_arrangement(out.row, line, &*chosen, out.analysis);
   if (!chosen->safe) {
