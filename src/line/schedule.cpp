@@ -141,16 +141,17 @@ struct Candidate {
 };
 
 /// Safe first, then the objective.
-bool judged_better(const Candidate& a, const Candidate& b) { return a.safe != b.safe ? a.safe : a.objective < b.objective; }
+bool judged_better(const Candidate& a, const Candidate& b) {
+  return a.safe != b.safe ? a.safe : a.objective < b.objective;
+}
 
 /// The largest judged stress an arrangement must stay below to beat `rival` (safe
 /// first, then the objective max_stress), Pa; none where no such bound holds (no
 /// rival or not balanced to the end, another objective or a life target, a rival
 /// neither safe nor unsafe: a point not converged, or only uncertain).
 std::optional<double> stress_to_beat(const Candidate* rival, const ScheduleRules& rules) {
-  if (!rival || !rival->analysis || rules.life_target || rules.positions.objective != span::PositionObjective::max_stress) {
-    return std::nullopt;
-  }
+  const bool by_stress = !rules.life_target && rules.positions.objective == span::PositionObjective::max_stress;
+  if (!rival || !rival->analysis || !by_stress) return std::nullopt;
   const span::BalanceSummary& s = rival->analysis->balance.summary;
   if (!rival->safe && s.verdict != span::Verdict::unsafe) return std::nullopt;
   if (!s.all_converged()) return std::nullopt;
@@ -244,7 +245,8 @@ Candidate search_candidate(const Line& line, std::size_t index, std::size_t type
   for (const double d : sphere_distances(rules)) {
     Arrangement beside = start;
     beside.sphere_distance = d;
-    Candidate c = searched_candidate(line, index, type, std::move(beside), prove_unsafe, best ? &*best : nullptr, cache, stop);
+    const Candidate* rival = best ? &*best : nullptr;
+    Candidate c = searched_candidate(line, index, type, std::move(beside), prove_unsafe, rival, cache, stop);
     balances += c.balances;
     if (!best || judged_better(c, *best)) best = std::move(c);
   }

@@ -197,8 +197,9 @@ std::optional<Eigen::VectorXd> march_along_residual(CountedResidual& h, Eigen::V
 }
 
 /// Up to options.newton_steps full Newton steps from x on the caller's Jacobian, while
-/// each stays within options.initial_step and at least halves max |r|. True where it converged (h.best holds the solution);
-/// false with x the best point reached, where the hybrid method takes over.
+/// each stays within options.initial_step and at least halves max |r|. True where it
+/// converged (h.best holds the solution); false with x the best point reached, where
+/// the hybrid method takes over.
 bool newton_phase(CountedResidual& h, const ResidualJacobian& jacobian, Eigen::VectorXd& x, int& jacobians) {
   constexpr double kContraction = 0.5;
   Eigen::VectorXd r;
