@@ -2,7 +2,9 @@
 command writes a non-empty PNG of the expected size; bad files get one line and
 exit status 2."""
 
+import contextlib
 import csv
+import io
 import json
 import math
 import os
@@ -12,7 +14,10 @@ import struct
 import subprocess
 import sys
 
+import matplotlib.pyplot
 import pytest
+
+import stockbridge.plot
 
 CLI = os.environ["STOCKBRIDGE_CLI"]
 SOURCE = os.environ["STOCKBRIDGE_SOURCE_DIR"]
@@ -23,6 +28,25 @@ def run_cli(*args, cwd):
 
 
 def plot(*args, cwd):
+    """`python3 -m stockbridge.plot ARGS` in `cwd`, run in this process: the module's main(),
+    which its __main__ calls (test_the_module_runs_as_a_program runs that), with what it
+    prints and its exit status. One process for all: matplotlib is imported once."""
+    out, err = io.StringIO(), io.StringIO()
+    here = os.getcwd()
+    os.chdir(cwd)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            try:
+                status = stockbridge.plot.main([str(a) for a in args])
+            except SystemExit as stop:  # argparse's usage errors
+                status = stop.code if isinstance(stop.code, int) else 1
+    finally:
+        os.chdir(here)
+        matplotlib.pyplot.close("all")
+    return subprocess.CompletedProcess(args, status, out.getvalue(), err.getvalue())
+
+
+def plot_program(*args, cwd):
     return subprocess.run([sys.executable, "-m", "stockbridge.plot", *args], cwd=cwd, capture_output=True, text=True)
 
 
@@ -56,6 +80,19 @@ def test_plot_writes_a_png_of_the_expected_size(files, command, source):
     assert result.returncode == 0, result.stderr
     assert os.path.getsize(files / "out.png") > 10000
     assert png_size(files / "out.png") == (800, 600)
+
+
+def test_the_module_runs_as_a_program(files, tmp_path):
+    """python3 -m stockbridge.plot itself: a PNG and exit 0; a bad file one line and exit 2."""
+    made = plot_program("impedance", "z.csv", "-o", "program.png", cwd=files)
+    assert made.returncode == 0 and made.stderr == "", made.stderr
+    assert png_size(files / "program.png") == (800, 600)
+    (tmp_path / "bad.csv").write_text("frequency_hz,velocity_m_s\n1,0.2\n")
+    refused = plot_program("impedance", "bad.csv", "-o", "bad.png", cwd=tmp_path)
+    assert refused.returncode == 2 and refused.stderr.count("\n") == 1 and "bad.csv" in refused.stderr, refused.stderr
+    assert not (tmp_path / "bad.png").exists()
+    usage = plot_program("nonsense", cwd=tmp_path)
+    assert usage.returncode == 2 and "invalid choice" in usage.stderr, usage.stderr
 
 
 def test_impedance_re_im_and_linear_axis(files):
