@@ -385,6 +385,11 @@ void UndampedFigures::fill(std::size_t i, BalancePoint& p) const {
   p.undamped_life_stress = u.undamped_life_stress;
 }
 
+BalancePoint balance_on_tables(const Span& span, const SpanTables& tables, std::size_t i, const BalanceOptions& options,
+                               const UndampedFigures& undamped) {
+  return balance_at(span, tables, i, nullptr, options, undamped);
+}
+
 SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
                         const UndampedFigures* undamped, const std::function<bool(const BalancePoint&)>& stop_after) {
   options.validate();

@@ -5,10 +5,12 @@
 #include <exception>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlopt.hpp>
 
+#include "balance_summary.hpp"
 #include "stockbridge/core/error.hpp"
 
 namespace stockbridge::span {
@@ -94,26 +96,42 @@ class PositionObjectiveRun {
         rules_(rules),
         stop_(stop),
         order_(placed_dampers(span)),
-        undamped_(span, tables, options_) {
+        undamped_(span, tables, options_),
+        frequency_order_(tables.frequencies().size()) {
+    std::iota(frequency_order_.begin(), frequency_order_.end(), std::size_t{0});
+    options_.validate();
+    if (tables.tables().size() != span.dampers().size()) {
+      throw std::invalid_argument(fmt::format("optimise_positions: {} impedance tables for {} dampers",
+                                              tables.tables().size(), span.dampers().size()));
+    }
     best_.objective = std::numeric_limits<double>::infinity();
     best_.criterion = rules.objective;
   }
 
   /// The objective with the dampers at `sorted` (increasing, m); the best kept.
-  double operator()(const std::vector<double>& sorted) {
+  /// `bound`: the caller needs the value only where it is at most this (a scan's or
+  /// a ranking's best so far). With the max_stress objective the frequencies are
+  /// balanced in the order of the best arrangement's stresses, largest first, and an
+  /// arrangement stops at the first point that shows its value above `bound` (a
+  /// stress, or a point not converged: +inf): what it returns then is that point's
+  /// value, above `bound` and at most its own, never the best.
+  double operator()(const std::vector<double>& sorted, double bound = std::numeric_limits<double>::infinity()) {
     if (stop_ && stop_()) throw Interrupted("the position search was stopped");
     std::vector<SpanDamper> dampers = span_.dampers();
     for (std::size_t k = 0; k < order_.size(); ++k) dampers[order_[k]].position = sorted[k];
     ++best_.balances;
-    const SpanBalance b = run_balance(span_.with_dampers(std::move(dampers)), tables_, options_, &undamped_);
-    const double value = position_objective(b, rules_.objective);
+    const Span arranged = span_.with_dampers(std::move(dampers));
+    std::optional<SpanBalance> b = balance_within(arranged, bound);
+    if (!b) return shown_;
+    const double value = position_objective(*b, rules_.objective);
     // COBYLA may try arrangements a little inside the spacing on its way: never the answer.
     bool spaced = true;
     for (std::size_t k = 1; k < sorted.size(); ++k) spaced = spaced && sorted[k] - sorted[k - 1] >= rules_.spacing_min - 1e-9;
     if (spaced && value < best_.objective) {
       best_.objective = value;
-      best_.max_stress_fymax = b.summary.max_stress_fymax;
+      best_.max_stress_fymax = b->summary.max_stress_fymax;
       best_sorted_ = sorted;
+      order_by_stress(arranged, *b);
     }
     if (spaced && value < basin_.first) basin_ = {value, sorted};
     return value;
@@ -147,6 +165,41 @@ class PositionObjectiveRun {
   double best_objective() const { return best_.objective; }
 
  private:
+  /// The balance of `arranged` at every frequency, in frequency_order_; none where a
+  /// point showed the value above `bound` (shown_: what it showed).
+  std::optional<SpanBalance> balance_within(const Span& arranged, double bound) {
+    const bool bounded = rules_.objective == PositionObjective::max_stress;
+    const double limit = arranged.endurance_limit();
+    std::vector<BalancePoint> points(tables_.frequencies().size());
+    double largest = 0.0;  // the judged stress over the points so far, Pa (summarise's Largest)
+    for (const std::size_t i : frequency_order_) {
+      ++best_.points;
+      points[i] = balance_on_tables(arranged, tables_, i, options_, undamped_);
+      if (!points[i].converged()) {
+        shown_ = std::numeric_limits<double>::infinity();  // position_objective's for a point not converged
+        return std::nullopt;
+      }
+      if (const double s = judged_stress(arranged, points[i]); std::isfinite(s) && s > largest) largest = s;
+      if (bounded && largest / limit > bound) {
+        shown_ = largest / limit;
+        return std::nullopt;
+      }
+    }
+    SpanBalance b;
+    b.points = std::move(points);
+    b.summary = summarise(arranged, b.points);
+    return b;
+  }
+
+  /// The frequencies from the largest judged stress of `best` to the smallest: where
+  /// another arrangement most likely shows itself worse first.
+  void order_by_stress(const Span& arranged, const SpanBalance& best) {
+    std::vector<double> stress(best.points.size());
+    for (std::size_t i = 0; i < stress.size(); ++i) stress[i] = judged_stress(arranged, best.points[i]);
+    std::stable_sort(frequency_order_.begin(), frequency_order_.end(),
+                     [&](std::size_t a, std::size_t b) { return stress[a] > stress[b]; });
+  }
+
   const Span& span_;
   const SpanTables& tables_;
   BalanceOptions options_;
@@ -154,6 +207,8 @@ class PositionObjectiveRun {
   const std::function<bool()>& stop_;
   std::vector<std::size_t> order_;
   UndampedFigures undamped_;  ///< the same for every arrangement
+  std::vector<std::size_t> frequency_order_;  ///< the order the tables' frequencies are balanced in
+  double shown_ = 0.0;                        ///< what the last arrangement stopped early showed
   PositionSearch best_;
   std::vector<double> best_sorted_;
   std::pair<double, std::vector<double>> basin_{std::numeric_limits<double>::infinity(), {}};  ///< this local search's best
@@ -167,23 +222,25 @@ void search_one(PositionObjectiveRun& run, const PositionRules& rules) {
   std::size_t k_best = 0;
   double f_best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < rules.scan_points; ++k) {
-    const double f = run({lo0 + k * step});
+    const double f = run({lo0 + k * step}, f_best);  // only a value below the best so far matters
     if (f < f_best) f_best = f, k_best = static_cast<std::size_t>(k);
   }
   double lo = std::max(lo0, lo0 + (static_cast<double>(k_best) - 1.0) * step);
   double hi = std::min(rules.position_max, lo0 + (static_cast<double>(k_best) + 1.0) * step);
   const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-  double f1 = run({x1}), f2 = run({x2});
+  // Each new point is compared with the one kept: where it shows itself above that,
+  // it is the one dropped, and its exact value is not needed.
+  double f1 = run({x1}), f2 = run({x2}, f1);
   while (hi - lo > 1e-3 * step) {
     if (f1 <= f2) {
       hi = x2, x2 = x1, f2 = f1;
       x1 = hi - ratio * (hi - lo);
-      f1 = run({x1});
+      f1 = run({x1}, f2);
     } else {
       lo = x1, x1 = x2, f1 = f2;
       x2 = lo + ratio * (hi - lo);
-      f2 = run({x2});
+      f2 = run({x2}, f1);
     }
   }
 }
@@ -300,16 +357,27 @@ PositionSearch optimise_positions(const Span& span, const SpanTables& tables, co
                         rules.position_max - static_cast<double>(n - 1 - k) * rules.spacing_min);
     if (k > 0) own[k] = std::max(own[k], own[k - 1] + rules.spacing_min);
   }
-  starts.emplace_back(run(own), own);
+  // Only the best `local_searches` starts are searched from: a start shown worse than
+  // all of them stops early.
+  const auto kept_worst = [&] {
+    std::vector<double> values;
+    for (const auto& start : starts) values.push_back(start.first);
+    const std::size_t k = static_cast<std::size_t>(rules.local_searches);
+    if (values.size() < k) return std::numeric_limits<double>::infinity();
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k - 1), values.end());
+    return values[k - 1];
+  };
+  starts.emplace_back(run(own, kept_worst()), own);
   for (const double fraction : {0.3, 0.5, 0.7, 0.9}) {
     std::vector<double> x = usual_positions(span, f_max, count, fraction, fit);
-    starts.emplace_back(run(x), std::move(x));
+    starts.emplace_back(run(x, kept_worst()), std::move(x));
   }
   // The objective has a basin near every node of the shortest waves: a local search
   // stays in its start's. Arrangements spread over all that are allowed find the
   // best basins; the local searches start from the best of everything tried.
   for (std::vector<double>& x : spread_arrangements(n, rules.scan_points * static_cast<int>(n) / 2, rules)) {
-    starts.emplace_back(run(x), std::move(x));
+    const double value = run(x, kept_worst());
+    starts.emplace_back(value, std::move(x));
   }
   std::stable_sort(starts.begin(), starts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::size_t s = 0; s < static_cast<std::size_t>(rules.local_searches) && s < starts.size(); ++s) {

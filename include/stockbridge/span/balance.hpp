@@ -280,6 +280,14 @@ class UndampedFigures {
   std::vector<BalancePoint> points_;
 };
 
+/// Point i of run_balance on the tables alone (options.polish is not used): each
+/// frequency then stands on its own, so a caller may take them in any order (the
+/// position search stops an arrangement as soon as a point shows it cannot win).
+/// run_balance's preconditions: options valid, the tables one per damper;
+/// `undamped` the span's.
+BalancePoint balance_on_tables(const Span& span, const SpanTables& tables, std::size_t i, const BalanceOptions& options,
+                               const UndampedFigures& undamped);
+
 /// The balance at every frequency of the tables (made for this span's dampers, or
 /// for dampers alike: only the dampers' positions may differ; none without dampers).
 /// `undamped`: the span's, made with the same tables and options (none: worked out

@@ -43,6 +43,10 @@ struct PositionSearch {
   double objective = 0.0;         ///< at `positions`, on the tables alone
   double max_stress_fymax = 0.0;  ///< Pa, the same
   int balances = 0;               ///< balance runs made
+  /// Frequencies balanced over all of them: an arrangement shown unable to win stops
+  /// at the point that shows it (max_stress), so this is less than balances times
+  /// the tables' frequencies.
+  int points = 0;
   /// Several dampers: the best arrangement of each other local search (every
   /// damper's positions, span order), best first. On the tables alone two basins'
   /// objectives can rank otherwise than their polished balances do: a caller may

@@ -406,6 +406,51 @@ TEST(SpanBalance, ThePositionSearchFindsTheBestOfAFineScan) {
   EXPECT_NEAR(found.positions[0], best_at, 0.02);
 }
 
+// The search balances an arrangement's frequencies largest stress first and stops it
+// where a point shows it above the arrangement it is compared with: the same scan and
+// golden sections on whole balances end at the same position, with the same
+// objective, and the search balanced fewer points than its balances hold.
+TEST(SpanBalance, APositionShownWorseStopsEarlyAndTheSearchEndsWhereWholeBalancesDo) {
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}});
+  BalanceOptions options = fast_options();
+  options.polish = false;
+  const SpanTables tables(span, band_frequencies(span, 16), options.table);
+  PositionRules rules;
+  rules.position_min = 0.3;
+  rules.position_max = 3.0;
+  rules.scan_points = 11;
+  const PositionSearch found = optimise_positions(span, tables, options, rules);
+  const auto whole = [&](double x) { return position_objective(run_balance(span.with_dampers_at(x), tables, options), rules.objective); };
+  // search_one on whole balances.
+  const double step = (rules.position_max - rules.position_min) / (rules.scan_points - 1);
+  int k_best = 0;
+  double f_best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < rules.scan_points; ++k) {
+    if (const double f = whole(rules.position_min + k * step); f < f_best) f_best = f, k_best = k;
+  }
+  double lo = std::max(rules.position_min, rules.position_min + (k_best - 1.0) * step);
+  double hi = std::min(rules.position_max, rules.position_min + (k_best + 1.0) * step);
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo), f1 = whole(x1), f2 = whole(x2);
+  double best = std::min(f_best, std::min(f1, f2)), best_at = f1 <= f2 ? x1 : x2;
+  if (f_best <= best) best_at = rules.position_min + k_best * step;
+  while (hi - lo > 1e-3 * step) {
+    if (f1 <= f2) {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - ratio * (hi - lo), f1 = whole(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + ratio * (hi - lo), f2 = whole(x2);
+    }
+    for (const auto& [x, f] : {std::pair{x1, f1}, std::pair{x2, f2}}) {
+      if (f < best) best = f, best_at = x;
+    }
+  }
+  ASSERT_EQ(found.positions.size(), 1u);
+  EXPECT_EQ(found.positions[0], best_at);
+  EXPECT_EQ(found.objective, best);
+  const int whole_points = found.balances * static_cast<int>(tables.frequencies().size());
+  EXPECT_LT(found.points, whole_points * 3 / 4) << found.balances << " balances";
+}
+
 // Two dampers per end, each its own position: the search (the usual starts and
 // arrangements spread over the range, then COBYLA) comes within 1 % of the best of a
 // 0.1 m grid of both positions (some 350 balances against its 100), and keeps the
