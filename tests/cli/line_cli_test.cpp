@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <csignal>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <chrono>
 #include <cstdlib>
@@ -15,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
+#include "support/csv_table.hpp"
 #include "support/test_scale.hpp"
 
 namespace stockbridge::testing {
@@ -89,6 +91,46 @@ const std::string& reference_schedule() {
     return read_text(dir / "schedule.csv");
   }();
   return schedule;
+}
+
+/// A schedule's rows by the id they begin with, each row's cells by column name.
+std::map<std::string, std::map<std::string, std::string>> schedule_rows(const std::filesystem::path& path) {
+  std::istringstream in(read_text(path));
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split_csv_line(line);
+  std::map<std::string, std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> cells = split_csv_line(line);
+    std::map<std::string, std::string>& row = rows[cells.at(0)];
+    for (std::size_t c = 0; c < header.size() && c < cells.size(); ++c) row[header[c]] = cells[c];
+  }
+  return rows;
+}
+
+// The example line (44 spans, three conductors) against its schedule as stored
+// (tests/cli/data/line_example_schedule.csv): a faster search must not make it
+// worse. Every span the same damper type and count per end, the same verdict, and
+// its largest stress within 0.5 % of the stored one or lower.
+TEST(LineCli, TheExampleLinesScheduleIsTheStoredOneOrBetter) {
+  const auto dir = scratch_directory("line-example");
+  const CliResult r = run_cli("line '" + std::string(STOCKBRIDGE_SOURCE_DIR) +
+                                  "/examples/line_example.toml' -o schedule.csv --threads 2 --quiet",
+                              dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto stored = schedule_rows(std::filesystem::path(STOCKBRIDGE_SOURCE_DIR) / "tests/cli/data/line_example_schedule.csv");
+  const auto made = schedule_rows(dir / "schedule.csv");
+  ASSERT_EQ(stored.size(), 44u);
+  ASSERT_EQ(made.size(), stored.size());
+  for (const auto& [id, want] : stored) {
+    ASSERT_EQ(made.count(id), 1u) << id;
+    const auto& got = made.at(id);
+    for (const char* column : {"dampers_per_end", "damper_type", "verdict"}) {
+      EXPECT_EQ(got.at(column), want.at(column)) << id << ": " << column;
+    }
+    const double stress = std::stod(got.at("max_stress_mpa")), was = std::stod(want.at("max_stress_mpa"));
+    EXPECT_LE(stress, was * 1.005) << id << ": the largest stress " << stress << " MPa against " << was << " stored";
+  }
 }
 
 TEST(LineCli, TheScheduleIsTheSameOnOneAndTwoThreadsAndTwoRanks) {
