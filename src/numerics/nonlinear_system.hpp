@@ -60,8 +60,8 @@ NonlinearSystemResult solve_nonlinear_system(const Residual& residual, const Res
 /// 748: in one dimension the fixed point itself), and the system again from there,
 /// all within options.max_evaluations (options.newton_steps: Newton's method first).
 /// Where that root closes on a jump of h (a bracket narrower than the tolerance with
-/// |h| above `noise`): no_progress, `where` says where and by how much. `noise`: the residual's own scatter, accepted as
-/// converged where such a bracket closes.
+/// |h| above `noise`): no_progress, `where` says where and by how much. `noise`: the
+/// residual's own scatter, accepted as converged where such a bracket closes.
 NonlinearSystemResult solve_fixed_point(const Residual& residual, const ResidualJacobian& jacobian,
                                         const Eigen::VectorXd& start, const NonlinearSystemOptions& options,
                                         double noise = 0.0);

@@ -31,11 +31,9 @@ design::SearchOptions search_options(const design::SearchOptions& file, const De
 
 namespace {
 
-constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
-
 /// The objective as reported: the stress ratio, or the shortest life in years.
 double reported_objective(design::Objective objective, const design::Evaluation& e) {
-  if (!e.converged()) return kNotComputed;
+  if (!e.converged()) return kNoValue;
   return objective == design::Objective::life ? e.shortest_life_years : e.max_stress_ratio;
 }
 
@@ -97,7 +95,7 @@ DesignQuantity design_figure(std::string name, std::string unit, std::string mea
                              double (*value)(const design::Evaluation&)) {
   return {std::move(name), std::move(unit), std::move(meaning), ColumnKind::number,
           [value](const design::StudyEvaluation& s, std::size_t) {
-            return s.evaluation.converged() ? value(s.evaluation) : kNotComputed;
+            return s.evaluation.converged() ? value(s.evaluation) : kNoValue;
           },
           {}};
 }

@@ -17,8 +17,6 @@ namespace stockbridge::requests {
 
 namespace {
 
-constexpr double kFatigueMpa = 1e6;
-
 /// Whether a row's conductor is the one asked for: the same text, or the same catalogue type.
 bool fatigue_conductor_matches(const std::string& query, const std::string& given) {
   return query == given || io::conductor_type_matches(query, given);
@@ -69,7 +67,7 @@ Table<FatigueTestRow> fatigue_tests_table() {
       {"failed", "", "1: the conductor broke; 0: a runout (censored in the fit)", K::flag,
        [](const R& r, std::size_t) { return r.test->failed ? 1.0 : 0.0; }, {}},
       {"stress_ps_mpa", "MPa", "the Poffenberger-Swart stress K(T) Yb, zero-to-peak", K::number,
-       [](const R& r, std::size_t) { return r.point->stress / kFatigueMpa; }, {}},
+       [](const R& r, std::size_t) { return r.point->stress / kPascalPerMegapascal; }, {}},
       {"microstrain_pp", "microstrain", "the outer wires' peak-to-peak bending strain 2 sigma / E_a", K::number,
        [](const R& r, std::size_t) { return r.point->microstrain_pp; }, {}},
       {"sbl_cycles", "", "the CIGRE Safe Border Line's cycles at that stress, for the conductor's aluminium layers",

@@ -16,8 +16,6 @@ namespace stockbridge::requests {
 
 namespace {
 
-constexpr double kNotModelled = std::numeric_limits<double>::quiet_NaN();
-
 io::JsonObject estimate_json(const identification::ParameterEstimate& e) {
   return io::JsonObject()
       .add("name", e.name)
@@ -145,7 +143,7 @@ Quantity<FittedPoint> measured(std::string name, std::string unit, std::string m
 
 Quantity<FittedPoint> modelled(std::string name, std::string meaning, double (*part)(const std::complex<double>&)) {
   return {std::move(name), "N s/m", std::move(meaning), ColumnKind::number,
-          [part](const FittedPoint& p, std::size_t) { return p.model->converged() ? part(p.model->impedance) : kNotModelled; },
+          [part](const FittedPoint& p, std::size_t) { return p.model->converged() ? part(p.model->impedance) : kNoValue; },
           {}};
 }
 

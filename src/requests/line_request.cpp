@@ -17,12 +17,11 @@ namespace stockbridge::requests {
 namespace {
 
 using Row = line::ScheduleRow;
-constexpr double kLineNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// A stress or life of a balance that converged throughout, NaN otherwise.
 double trusted(const Row& r, double value, bool undamped) {
   if (undamped) return value;  // the undamped balance has no iteration that can fail
-  return r.converged == r.points ? value : kLineNaN;
+  return r.converged == r.points ? value : kNoValue;
 }
 
 std::string positions_text(const std::vector<double>& positions) {
@@ -71,9 +70,9 @@ Table<line::ScheduleRow> schedule_table() {
        number([](const Row& r) { return r.catenary_parameter; }), {}},
       {"span_parameter_m3_kg", "m^3/kg", "L D / m", K::number, number([](const Row& r) { return r.span_parameter; }), {}},
       {"terrain", "", "CIGRE TB 273's terrain category (empty: not given)", K::number,
-       number([](const Row& r) { return r.terrain > 0 ? static_cast<double>(r.terrain) : kLineNaN; }), {}},
+       number([](const Row& r) { return r.terrain > 0 ? static_cast<double>(r.terrain) : kNoValue; }), {}},
       {"terrain_hw_within", "", "1 if H/w is within the terrain's limit for an undamped span, 0 if above", K::flag,
-       number([](const Row& r) { return r.terrain_within < 0 ? kLineNaN : static_cast<double>(r.terrain_within); }), {}},
+       number([](const Row& r) { return r.terrain_within < 0 ? kNoValue : static_cast<double>(r.terrain_within); }), {}},
       {"endurance_limit_mpa", "MPa", "the stress the verdict allows (the criterion's limit as a zero-to-peak stress)",
        K::number,
        number([](const Row& r) { return r.endurance_limit / 1e6; }), {}},
@@ -89,7 +88,7 @@ Table<line::ScheduleRow> schedule_table() {
       {"sphere_dampers", "", "dampers of the type beside the span's masses, one on either side of each (dampers.sphere_dampers)",
        K::count, number([](const Row& r) { return static_cast<double>(r.sphere_dampers); }), {}},
       {"sphere_damper_distance_m", "m", "their distance from each mass's clamp (empty: none)", K::number,
-       number([](const Row& r) { return r.sphere_dampers > 0 ? r.sphere_distance : kLineNaN; }), {}},
+       number([](const Row& r) { return r.sphere_dampers > 0 ? r.sphere_distance : kNoValue; }), {}},
       {"max_stress_mpa", "MPa",
        "the largest stress the criterion judges with those dampers, at the span clamps and the masses' clamps", K::number,
        number([](const Row& r) { return trusted(r, r.max_stress / 1e6, false); }), {}},
@@ -124,9 +123,9 @@ Table<line::BillLine> bill_table() {
        [](const B& b, std::size_t) { return static_cast<double>(b.dampers); }, {}},
       {"spans", "", "spans that get the type", K::count, [](const B& b, std::size_t) { return static_cast<double>(b.spans); }, {}},
       {"mass_kg", "kg", "their mass (empty where the type's mass is not known)", K::number,
-       [](const B& b, std::size_t) { return b.mass.value_or(kLineNaN); }, {}},
+       [](const B& b, std::size_t) { return b.mass.value_or(kNoValue); }, {}},
       {"price", "", "their price, in the line file's currency (empty where the type's price is not given)", K::number,
-       [](const B& b, std::size_t) { return b.price.value_or(kLineNaN); }, {}},
+       [](const B& b, std::size_t) { return b.price.value_or(kNoValue); }, {}},
   });
 }
 
@@ -273,9 +272,9 @@ line::ScheduleRow failed_row(const io::LineFile& file, std::size_t index, std::s
   r.length = s.span.length();
   r.tension = s.span.tension();
   r.tension_fraction = s.span.tension() / s.span.conductor().rated_tensile_strength;
-  r.catenary_parameter = r.span_parameter = r.endurance_limit = kLineNaN;
-  r.undamped_max_stress = r.undamped_life_years = r.max_stress = r.max_stress_frequency = r.life_years = kLineNaN;
-  r.max_stress_high = kLineNaN;
+  r.catenary_parameter = r.span_parameter = r.endurance_limit = kNoValue;
+  r.undamped_max_stress = r.undamped_life_years = r.max_stress = r.max_stress_frequency = r.life_years = kNoValue;
+  r.max_stress_high = kNoValue;
   r.points = 1;
   r.warnings.push_back(fmt::format("not scheduled: {}", message));
   return r;

@@ -45,8 +45,6 @@ namespace {
 using Sample = ResponseSample;
 using ResponseQuantity = Quantity<Sample>;
 
-constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
-
 /// A per-arm quantity of the arm's period at the sample (NaN where the arm's period is shorter).
 template <class Read>
 ResponseQuantity per_arm(std::string name, std::string unit, std::string meaning, Read read) {

@@ -15,8 +15,6 @@ namespace stockbridge::requests {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 /// "y_at_89mm": the probe's column, its position in whole millimetres.
 std::string probe_column(double x) { return fmt::format("y_at_{}mm", static_cast<long long>(std::llround(x * 1000.0))); }
 
@@ -48,7 +46,7 @@ span::BalancePoint balance_at(const span::Span& span, const span::BalanceOptions
   return span::analyse_span(span, {frequency_hz}, options).balance.points.at(0);
 }
 
-double ratio(double a, double b) { return std::isfinite(a) && std::isfinite(b) && b != 0.0 ? a / b : kNaN; }
+double ratio(double a, double b) { return std::isfinite(a) && std::isfinite(b) && b != 0.0 ? a / b : kNoValue; }
 
 }  // namespace
 
@@ -203,7 +201,7 @@ void add_compared(io::JsonObject& json, std::string_view name, const ComparedFig
 }
 
 ComparedFigure compared(double simulated, double balanced, bool settled, bool balance_converged) {
-  const double s = settled ? simulated : kNaN, b = balance_converged ? balanced : kNaN;
+  const double s = settled ? simulated : kNoValue, b = balance_converged ? balanced : kNoValue;
   return {s, b, ratio(s, b)};
 }
 
@@ -211,14 +209,14 @@ io::JsonObject damper_summary(const span::DamperInTimeFigures& d, const span::Da
                               std::size_t index) {
   io::JsonObject json;
   json.add("column", fmt::format("damper_{}", index + 1)).add("name", d.name).add("position_m", d.position_m);
-  add_compared(json, "power_w", compared(d.power_w, at_balance ? at_balance->power : kNaN, settled, at_balance != nullptr));
-  add_compared(json, "velocity_m_s", compared(d.velocity_amplitude_m_s, at_balance ? at_balance->clamp_velocity : kNaN,
+  add_compared(json, "power_w", compared(d.power_w, at_balance ? at_balance->power : kNoValue, settled, at_balance != nullptr));
+  add_compared(json, "velocity_m_s", compared(d.velocity_amplitude_m_s, at_balance ? at_balance->clamp_velocity : kNoValue,
                                               settled, at_balance != nullptr));
-  json.add("dissipated_w", settled ? d.dissipated_w : kNaN);
+  json.add("dissipated_w", settled ? d.dissipated_w : kNoValue);
   json.add("force_harmonics_n", settled ? d.force_harmonics_n : std::vector<double>{});
   double higher = 0.0;
   for (std::size_t h = 1; h < d.force_harmonics_n.size(); ++h) higher += d.force_harmonics_n[h] * d.force_harmonics_n[h];
-  json.add("force_distortion", settled ? ratio(std::sqrt(higher), d.force_harmonics_n.front()) : kNaN);
+  json.add("force_distortion", settled ? ratio(std::sqrt(higher), d.force_harmonics_n.front()) : kNoValue);
   return json;
 }
 
@@ -247,14 +245,14 @@ io::JsonObject simulate_summary(const span::Span& span, const SimulateResult& re
   io::JsonObject json;
   json.add("frequency_hz", h.frequency_hz).add("asked_frequency_hz", result.asked_frequency_hz);
   json.add("ends", span::beam_ends_name(result.settings.ends)).add("wind", span::wind_in_time_name(result.wind));
-  json.add("wind_speed_m_s", result.wind == span::WindInTime::wake ? h.wind_speed_m_s : kNaN);
+  json.add("wind_speed_m_s", result.wind == span::WindInTime::wake ? h.wind_speed_m_s : kNoValue);
   json.add("elements", h.elements).add("dt_s", h.dt_s).add("simulated_s", h.time_s);
   json.add("periods", static_cast<int>(h.envelope_m.size())).add("settled", settled).add("interrupted", h.interrupted);
   json.add("settled_by", span::settled_by_name(h.settled_by)).add("figure_periods", h.figure_periods);
-  json.add("envelope_fluctuation", settled ? h.envelope_fluctuation : kNaN);
+  json.add("envelope_fluctuation", settled ? h.envelope_fluctuation : kNoValue);
   json.add("start_amplitude_m", result.start_amplitude_m).add("ebm_converged", converged);
-  json.add("last_envelope_m", h.envelope_m.empty() ? kNaN : h.envelope_m.back());
-  json.add("wind_power_w", settled ? h.wind_power_w : kNaN).add("damping_power_w", settled ? h.damping_power_w : kNaN);
+  json.add("last_envelope_m", h.envelope_m.empty() ? kNoValue : h.envelope_m.back());
+  json.add("wind_power_w", settled ? h.wind_power_w : kNoValue).add("damping_power_w", settled ? h.damping_power_w : kNoValue);
   const SteadyComparison figures = steady_comparison(span, result);
   add_compared(json, "antinode_amplitude_m", figures.antinode_amplitude_m);
   add_compared(json, "clamp_loop_amplitude_m", figures.clamp_loop_amplitude_m);

@@ -17,8 +17,6 @@ namespace {
 
 // Names in this unnamed namespace are unique across the library (unity batches).
 
-constexpr double kSpanNoValue = std::numeric_limits<double>::quiet_NaN();
-constexpr double kPascalPerMegapascal = 1e6;
 constexpr int kSpanMaxPoints = 100000;
 
 /// One column member of the per-damper family: a damper at one of its places.
@@ -196,7 +194,7 @@ SpanQuantity span_per_damper(std::string name, std::string unit, std::string mea
       [context, value = std::move(value)](const span::BalancePoint& p, std::size_t member) {
         const SpanDamperSlot& slot = context->damper_slots[member];
         const std::size_t i = span_damper_entry(p.dampers, slot.damper, slot.position, context->length);
-        return i < p.dampers.size() ? value(p.dampers[i]) : kSpanNoValue;
+        return i < p.dampers.size() ? value(p.dampers[i]) : kNoValue;
       });
 }
 
@@ -212,12 +210,11 @@ SpanQuantity span_per_mass(std::string name, std::string unit, std::string meani
         for (const span::MassAtBalance& m : p.masses) {
           if (m.mass == mass && std::abs(m.position - position) <= 1e-9 * context->length) return value(m);
         }
-        return kSpanNoValue;
+        return kNoValue;
       });
 }
 
 double span_megapascal_of(double pascal) { return pascal / kPascalPerMegapascal; }
-
 
 std::shared_ptr<const SpanTableContext> span_table_context(const span::Span& span) {
   auto context = std::make_shared<SpanTableContext>();
@@ -258,14 +255,14 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
                   "the clamp velocity amplitude of the damper nearest the span clamp at end 1 (empty without dampers)",
                   [c](const P& p) {
                     // The first entry: the dampers of end 1 by their positions.
-                    return c->dampers && !p.dampers.empty() ? p.dampers.front().clamp_velocity : kSpanNoValue;
+                    return c->dampers && !p.dampers.empty() ? p.dampers.front().clamp_velocity : kNoValue;
                   }),
       span_solved("stress_fymax_mpa", "MPa", "fymax stress at the span clamp",
                   [mpa](const P& p) { return mpa(p.stress_fymax); }),
       span_solved("stress_ps_mpa", "MPa", "Poffenberger-Swart stress at the span clamp",
                   [mpa](const P& p) { return mpa(p.stress_poffenberger_swart); }),
       span_solved("damper_clamp_stress_mpa", "MPa", "the largest stress at a damper clamp (empty without dampers)",
-                  [c, mpa](const P& p) { return c->dampers ? mpa(p.damper_clamp_stress) : kSpanNoValue; }),
+                  [c, mpa](const P& p) { return c->dampers ? mpa(p.damper_clamp_stress) : kNoValue; }),
       span_solved("undamped_amplitude_m", "m", "Y of the same span without dampers",
                   [](const P& p) { return p.undamped_amplitude; }),
       span_solved("undamped_stress_fymax_mpa", "MPa", "its fymax stress",
@@ -286,7 +283,7 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
        "1 where the dampers' clamp velocities passed a fold since the frequency before: several self-consistent "
        "states near here ([several dampers per end](#several-dampers-per-end))",
        ColumnKind::flag,
-       [](const P& p, std::size_t) { return p.converged() ? (p.several_states ? 1.0 : 0.0) : kSpanNoValue; }, {}},
+       [](const P& p, std::size_t) { return p.converged() ? (p.several_states ? 1.0 : 0.0) : kNoValue; }, {}},
       span_solved("bending_amplitude_pp_m", "m",
                   "Yb, the peak-to-peak displacement relative to the span clamp at x_b (fatigue.yb_distance, 89 mm): "
                   "what a vibration recorder measures",

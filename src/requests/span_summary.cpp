@@ -19,9 +19,6 @@ namespace {
 
 // Names in this unnamed namespace are unique across the library (unity batches).
 
-constexpr double kSummaryNoValue = std::numeric_limits<double>::quiet_NaN();
-constexpr double kSummaryPascalPerMegapascal = 1e6;
-
 /// Every damper's position, in the span's order (m).
 std::vector<double> span_positions(const span::Span& span) {
   std::vector<double> positions;
@@ -52,12 +49,12 @@ void add_field_figures(io::JsonObject& json, const span::SpanAnalysis& a) {
   const bool damped = s.converged > 0;
   const bool undamped = s.undamped_points > 0;
   json.add("yb_distance_m", a.span.fatigue().yb_distance)
-      .add("max_bending_amplitude_pp_m", damped ? s.max_bending_amplitude : kSummaryNoValue)
+      .add("max_bending_amplitude_pp_m", damped ? s.max_bending_amplitude : kNoValue)
       .add("max_bending_strain_pp_microstrain",
-           damped ? span::bending_strain_pp_microstrain(c, s.max_stress_poffenberger_swart) : kSummaryNoValue)
-      .add("undamped_max_bending_amplitude_pp_m", undamped ? s.undamped_max_bending_amplitude : kSummaryNoValue)
+           damped ? span::bending_strain_pp_microstrain(c, s.max_stress_poffenberger_swart) : kNoValue)
+      .add("undamped_max_bending_amplitude_pp_m", undamped ? s.undamped_max_bending_amplitude : kNoValue)
       .add("undamped_max_bending_strain_pp_microstrain",
-           undamped ? span::bending_strain_pp_microstrain(c, s.undamped_max_stress_poffenberger_swart) : kSummaryNoValue)
+           undamped ? span::bending_strain_pp_microstrain(c, s.undamped_max_stress_poffenberger_swart) : kNoValue)
       .add("endurance_limit_pp_microstrain", span::bending_strain_pp_microstrain(c, s.endurance_limit));
 }
 
@@ -87,7 +84,7 @@ io::JsonObject span_inputs(const span::Span& span) {
   io::JsonObject self_damping;
   self_damping.add("law", span::self_damping_law_name(sd.law));
   if (sd.law == span::SelfDampingLaw::foti) {
-    self_damping.add("limit_curvature_per_m", sd.limit_curvature.value_or(kSummaryNoValue));
+    self_damping.add("limit_curvature_per_m", sd.limit_curvature.value_or(kNoValue));
   } else {
     const span::PowerLawExponents e = sd.exponents();
     self_damping.add("k", sd.factor(c)).add("k_source", sd.k ? "given" : "Lilien's").add("l", e.l).add("m", e.m).add("n", e.n);
@@ -95,7 +92,7 @@ io::JsonObject span_inputs(const span::Span& span) {
   io::JsonObject fatigue;
   fatigue.add("criterion", span::fatigue_criterion_name(span.fatigue().criterion))
       .add("criterion_description", span.criterion_description())
-      .add("endurance_limit_mpa", span.endurance_limit() / kSummaryPascalPerMegapascal)
+      .add("endurance_limit_mpa", span.endurance_limit() / kPascalPerMegapascal)
       .add("yb_distance_m", span.fatigue().yb_distance);
   std::vector<io::JsonObject> dampers;
   for (const span::SpanDamper& d : span.dampers()) {
@@ -146,7 +143,7 @@ io::JsonObject span_inputs(const span::Span& span) {
 io::JsonObject span_summary(const SpanResult& result) {
   const span::SpanAnalysis& a = result.analysis;
   const span::BalanceSummary& s = a.balance.summary;
-  const auto mpa = [](double pascal) { return pascal / kSummaryPascalPerMegapascal; };
+  const auto mpa = [](double pascal) { return pascal / kPascalPerMegapascal; };
   const bool dampers = !a.span.dampers().empty();
   io::JsonObject json;
   json.add("points", s.points)
@@ -156,32 +153,32 @@ io::JsonObject span_summary(const SpanResult& result) {
       .add("endurance_limit_mpa", mpa(s.endurance_limit))
       .add("criterion", span::fatigue_criterion_name(a.span.fatigue().criterion))
       .add("verdict", span::verdict_name(s.verdict))
-      .add("max_judged_stress_mpa", s.converged > 0 ? mpa(s.max_judged_stress) : kSummaryNoValue)
-      .add("max_judged_stress_high_mpa", s.converged > 0 ? mpa(s.max_judged_stress_high) : kSummaryNoValue)
+      .add("max_judged_stress_mpa", s.converged > 0 ? mpa(s.max_judged_stress) : kNoValue)
+      .add("max_judged_stress_high_mpa", s.converged > 0 ? mpa(s.max_judged_stress_high) : kNoValue)
       .add("governing_place", s.max_judged_stress_place)
-      .add("governing_frequency_hz", s.converged > 0 ? s.max_judged_stress_frequency_hz : kSummaryNoValue)
+      .add("governing_frequency_hz", s.converged > 0 ? s.max_judged_stress_frequency_hz : kNoValue)
       .add("undamped_max_judged_stress_mpa", mpa(s.undamped_max_judged_stress))
-      .add("max_stress_fymax_mpa", s.converged > 0 ? mpa(s.max_stress_fymax) : kSummaryNoValue)
-      .add("max_stress_frequency_hz", s.converged > 0 ? s.max_stress_frequency_hz : kSummaryNoValue)
-      .add("max_damper_clamp_stress_mpa", dampers && s.converged > 0 ? mpa(s.max_damper_clamp_stress) : kSummaryNoValue)
+      .add("max_stress_fymax_mpa", s.converged > 0 ? mpa(s.max_stress_fymax) : kNoValue)
+      .add("max_stress_frequency_hz", s.converged > 0 ? s.max_stress_frequency_hz : kNoValue)
+      .add("max_damper_clamp_stress_mpa", dampers && s.converged > 0 ? mpa(s.max_damper_clamp_stress) : kNoValue)
       .add("undamped_max_stress_fymax_mpa", mpa(s.undamped_max_stress_fymax))
       .add("undamped_max_stress_frequency_hz", s.undamped_max_stress_frequency_hz)
       .add("undamped_verdict", span::verdict_name(s.undamped_verdict))
-      .add("position_m", dampers ? a.span.dampers().front().position : kSummaryNoValue)
+      .add("position_m", dampers ? a.span.dampers().front().position : kNoValue)
       .add("positions_m", span_positions(a.span))
       .add("position_optimized", a.position.has_value());
   add_tension_figures(json, a.span);
   add_field_figures(json, a);
   if (a.span.fatigue().life) {
     const auto add_life = [&json](std::string_view prefix, const std::optional<span::LifeEstimate>& life, int missing) {
-      json.add(fmt::format("{}life_years", prefix), life ? life->life_years : kSummaryNoValue)
-          .add(fmt::format("{}damage_per_year", prefix), life ? life->damage_per_year : kSummaryNoValue)
+      json.add(fmt::format("{}life_years", prefix), life ? life->life_years : kNoValue)
+          .add(fmt::format("{}damage_per_year", prefix), life ? life->damage_per_year : kNoValue)
           .add(fmt::format("{}life_missing_points", prefix), missing);
     };
     add_life("", s.life, s.life_missing_points);
     add_life("undamped_", s.undamped_life, s.undamped_life_missing_points);
   }
-  double identity = kSummaryNoValue;
+  double identity = kNoValue;
   std::vector<io::JsonObject> failed;
   std::vector<double> several;
   for (const span::BalancePoint& p : a.balance.points) {

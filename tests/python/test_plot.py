@@ -8,6 +8,7 @@ import io
 import json
 import math
 import os
+import pathlib
 import re
 import shutil
 import struct
@@ -138,12 +139,6 @@ def test_not_utf8(tmp_path):
 
 # ---------------------------------------------------------------- in-process checks of the figures
 
-def plot_module():
-    """stockbridge.plot in this process (the package's compiled part is not needed)."""
-    import stockbridge.plot as module
-    return module
-
-
 def rewrite_csv(source, target, change):
     """A copy of a CSV file with change(header, rows) applied to its rows (lists of cells)."""
     with open(source, newline="") as handle:
@@ -199,7 +194,7 @@ def test_all_points_failed_is_bad_input(more):
     result = plot("impedance", "all_failed.csv", "-o", "all_failed.png", cwd=more)
     assert_bad(result, more, "all_failed.png", "all_failed.csv", "no converged point to plot")
     for extra in (["--power"], ["--re-im"], ["--linear"]):  # in this process: quicker
-        assert plot_module().main(["impedance", str(more / "all_failed.csv"), *extra,
+        assert stockbridge.plot.main(["impedance", str(more / "all_failed.csv"), *extra,
                                    "-o", str(more / "all_failed.png")]) == 2
         assert not (more / "all_failed.png").exists()
     # a file of one point that failed (the case a reviewer saw end in "Data has no positive values")
@@ -225,8 +220,8 @@ def test_some_failed_points_plot_the_converged_ones(more, failed):
     assert result.returncode == 0, result.stderr
     assert png_size(more / "some_failed.png") == (800, 600)
     for extra in ([], ["--re-im", "--linear"]):  # in this process: quicker
-        assert plot_module().main(["impedance", str(more / name), *extra, "-o", str(more / "some_failed.png")]) == 0
-    figure = plot_module().impedance_figure([plot_module().Sweep(str(more / name))])
+        assert stockbridge.plot.main(["impedance", str(more / name), *extra, "-o", str(more / "some_failed.png")]) == 0
+    figure = stockbridge.plot.impedance_figure([stockbridge.plot.Sweep(str(more / name))])
     top, bottom = figure.axes
     assert sum(len(line.get_xdata()) for line in top.get_lines()) == 6 - len(failed)
     crosses = [line for line in bottom.get_lines() if line.get_marker() == "x"]
@@ -258,7 +253,7 @@ def test_measured_file_with_z_only(more):
     result = plot("impedance", "measured.csv", "--power", "-o", "measured.png", cwd=more)
     assert result.returncode == 0, result.stderr
     assert png_size(more / "measured.png") == (800, 600)
-    sweep = plot_module().Sweep(str(more / "measured.csv"))
+    sweep = stockbridge.plot.Sweep(str(more / "measured.csv"))
     assert all(sweep.converged) and len(sweep.re) > 3
 
 
@@ -274,7 +269,7 @@ def test_every_measured_form_identify_impedance_reads(more):
     assert result.returncode == 0, result.stderr
     assert result.stderr == ""  # typical values: no warning
     assert png_size(more / "sheet.png") == (800, 600)
-    sheet = plot_module().Sweep(str(more / "sheet.csv"))
+    sheet = stockbridge.plot.Sweep(str(more / "sheet.csv"))
     assert [label for label, _ in sheet.runs] == ["V = 0.2 m/s", "V = 0.05 m/s"]
     for i, row in enumerate(rows):
         assert sheet.re[i] == pytest.approx(float(row["re_z_n_s_m"]), rel=1e-9, abs=1e-9)
@@ -306,7 +301,7 @@ def test_a_measured_sheet_in_wrong_units_is_drawn_with_the_librarys_warnings(mor
 
 def test_abs_phase_and_power_agree_with_the_program(files):
     """|Z|, phase and Re Z V^2 / 2 computed from Re and Im Z against the program's own columns."""
-    sweep = plot_module().Sweep(str(files / "z.csv"))
+    sweep = stockbridge.plot.Sweep(str(files / "z.csv"))
     with open(files / "z.csv") as handle:
         rows = list(csv.DictReader(handle))
     checked = 0
@@ -324,7 +319,7 @@ def test_overlay_of_several_files(more):
                   "-o", "overlay.png", cwd=more)
     assert result.returncode == 0, result.stderr
     assert png_size(more / "overlay.png") == (800, 600)
-    module = plot_module()
+    module = stockbridge.plot
     sweeps = [module.Sweep(str(more / "z.csv"), "computed"), module.Sweep(str(more / "measured.csv"), "measured")]
     figure = module.impedance_figure(sweeps, power=True)
     assert len(figure.axes) == 3
@@ -340,7 +335,7 @@ def test_overlay_of_several_files(more):
 
 
 def test_closed_appends_the_first_sample():
-    assert plot_module().closed([1.0, 2.0, 3.0], [4.0, 5.0, 6.0]) == ([1.0, 2.0, 3.0, 1.0], [4.0, 5.0, 6.0, 4.0])
+    assert stockbridge.plot.closed([1.0, 2.0, 3.0], [4.0, 5.0, 6.0]) == ([1.0, 2.0, 3.0, 1.0], [4.0, 5.0, 6.0, 4.0])
 
 
 def line_points(figure):
@@ -350,8 +345,8 @@ def line_points(figure):
 
 @pytest.mark.parametrize("source,panels", [("t.csv", 4), ("t_named.csv", 4)])
 def test_response_loops_are_closed(more, source, panels):
-    rows = sum(1 for _ in open(more / source)) - 1
-    loops = line_points(plot_module().loop_figure(str(more / source)))
+    rows = len((more / source).read_text().splitlines()) - 1
+    loops = line_points(stockbridge.plot.loop_figure(str(more / source)))
     assert len(loops) == panels
     for points in loops:
         assert len(points) == rows + 1 and points[0] == points[-1]
@@ -359,15 +354,15 @@ def test_response_loops_are_closed(more, source, panels):
 
 
 def test_response_arms_found_by_suffix(more):
-    titles = [axis.get_title() for axis in plot_module().loop_figure(str(more / "t_named.csv")).axes]
+    titles = [axis.get_title() for axis in stockbridge.plot.loop_figure(str(more / "t_named.csv")).axes]
     assert titles == ["left: force over deflection", "left: clamp section", "right: force over deflection",
                       "right: clamp section"]
 
 
 @pytest.mark.parametrize("source", ["c.csv", "mk.csv"])
 def test_cycle_and_loop_files_are_not_closed(files, source):
-    rows = sum(1 for _ in open(files / source)) - 1
-    for points in line_points(plot_module().loop_figure(str(files / source))):
+    rows = len((files / source).read_text().splitlines()) - 1
+    for points in line_points(stockbridge.plot.loop_figure(str(files / source))):
         assert len(points) == rows and points[0] != points[-1]
 
 
@@ -375,7 +370,7 @@ def test_unconverged_response_plots_and_says_so(more):
     assert (more / "t_last.csv").exists()
     result = plot("loop", "t_last.csv", "-o", "t_last.png", cwd=more)
     assert result.returncode == 0, result.stderr
-    figure = plot_module().loop_figure(str(more / "t_last.csv"))
+    figure = stockbridge.plot.loop_figure(str(more / "t_last.csv"))
     assert "not converged" in figure._suptitle.get_text()
 
 
@@ -383,7 +378,7 @@ def test_unconverged_response_plots_and_says_so(more):
 def test_tick_labels_do_not_run_into_each_other(files, source):
     """At least 20 pixels between neighbouring x tick labels (the four panels in one row
     left 6 pixels between -0.0025 and 0.0000)."""
-    figure = plot_module().loop_figure(str(files / source))
+    figure = stockbridge.plot.loop_figure(str(files / source))
     figure.canvas.draw()
     renderer = figure.canvas.get_renderer()
     for axis in figure.axes:
@@ -412,7 +407,7 @@ def test_span_plot_writes_a_png(span_files):
 
 
 def test_span_plot_draws_damped_undamped_and_the_endurance_limit(span_files):
-    module = plot_module()
+    module = stockbridge.plot
     with open(span_files / "span.csv", newline="") as handle:
         rows = list(csv.DictReader(handle))
     figure = module.span_figure(str(span_files / "span.csv"))
@@ -440,7 +435,7 @@ def test_span_plot_marks_points_that_did_not_converge(span_files, tmp_path):
             rows[1][header.index(name)] = ""
         rows[1][header.index("converged")] = "0"
     rewrite_csv(span_files / "span.csv", tmp_path / "failed.csv", fail_second)
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.span_figure(str(tmp_path / "failed.csv"))
     assert "not converged" in [line.get_label() for line in figure.axes[1].get_lines()]
     assert len(figure.axes[1].get_lines()[1].get_xdata()) == 14
@@ -465,7 +460,7 @@ def test_span_bad_files_get_one_line_and_exit_two(tmp_path, contents, mention):
 
 def test_log_axes_label_values_below_one(span_files):
     """The damped amplitude falls below 1 mm: its log axis labels 0.1 as 0.1, never as 0."""
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.span_figure(str(span_files / "span.csv"))
     figure.canvas.draw()
     amplitude = figure.axes[0]
@@ -486,7 +481,8 @@ def design_files(tmp_path_factory):
     d = tmp_path_factory.mktemp("design")
     for name in ("sauter2003.toml", "aster570_400m.toml"):
         shutil.copy(os.path.join(SOURCE, "examples", name), d / name)
-    text = open(os.path.join(SOURCE, "examples", "design_aster570.toml")).read()
+    with open(os.path.join(SOURCE, "examples", "design_aster570.toml"), encoding="utf-8") as handle:
+        text = handle.read()
     for key, value in (("samples", 3), ("polish", 1), ("polish_evaluations", 4)):
         text = re.sub(rf"^{key} = \S+", f"{key} = {value}", text, flags=re.M)
     (d / "design.toml").write_text("points = 8\n" + text)
@@ -508,7 +504,7 @@ def marker_points(axis, label):
 
 
 def test_design_plot_draws_each_variable_and_marks_the_best(design_files):
-    module = plot_module()
+    module = stockbridge.plot
     with open(design_files / "designs.csv", newline="") as handle:
         rows = list(csv.DictReader(handle))
     variables = ["arm.left.mass", "arm.left.cable.length", "position"]
@@ -547,7 +543,7 @@ def test_design_plot_of_a_life_study_draws_infinite_lives_at_the_top(tmp_path):
                                        "sample,2,2.5,,,,,2.4,,,0,0\n")
     result = plot("design", "life.csv", "-o", "life.png", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.design_figure(str(tmp_path / "life.csv"))
     axis = figure.axes[0]
     assert axis.get_ylabel() == "shortest life (years)" and axis.get_yscale() == "log"
@@ -582,7 +578,7 @@ def test_impedance_fit_plot_overlays_measured_and_fitted_curves(tmp_path):
     result = plot("fit", "z_fit.csv", "-o", "fit.png", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     assert png_size(tmp_path / "fit.png") == (800, 600)
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.impedance_fit_figure(module.Table(str(tmp_path / "z_fit.csv")))
     labels = [line.get_label() for line in figure.axes[0].get_lines()]
     assert labels == ["measured, V = 0.05 m/s", "fitted model, V = 0.05 m/s", "measured, V = 0.2 m/s",
@@ -617,7 +613,7 @@ def test_line_plot_writes_a_png(tmp_path):
 def test_line_plot_draws_the_stresses_the_limit_and_the_dampers_per_span(tmp_path):
     from matplotlib.colors import to_rgba
     (tmp_path / "schedule.csv").write_text(SCHEDULE)
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.line_figure(str(tmp_path / "schedule.csv"))
     stress, dampers = figure.axes
     assert stress.get_ylabel() == "largest fymax stress (MPa)" and stress.get_yscale() == "log"
@@ -650,7 +646,7 @@ def test_line_plot_draws_the_stresses_the_limit_and_the_dampers_per_span(tmp_pat
 def test_line_plot_of_a_long_line_labels_some_spans(tmp_path):
     rows = "".join(f"T{k}-T{k + 1},300,2,7,40,8.73,0.8,20,safe,1\n" for k in range(1, 61))
     (tmp_path / "long.csv").write_text(SCHEDULE_HEADER + rows)
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.line_figure(str(tmp_path / "long.csv"))
     axis = figure.axes[1]
     labels = [label.get_text() for label in axis.get_xticklabels()]
@@ -718,7 +714,7 @@ def runs(span_files):
 
 
 def test_span_title_carries_the_verdict_and_the_largest_stress(runs, tmp_path):
-    module = plot_module()
+    module = stockbridge.plot
     rows = span_rows(runs / "damped.csv")
     stress, frequency = largest_stress(rows)
     limit = float(rows[0]["endurance_limit_mpa"])
@@ -757,7 +753,7 @@ def fail_span_row(header, row):
 
 
 def test_span_summary_adds_the_positions_and_the_life(runs, tmp_path):
-    module = plot_module()
+    module = stockbridge.plot
     summary = load_json(runs / "damped.json")
     assert summary["positions_m"] == [1] and summary["life_years"] > 0  # the premise: the span file has a climate
     figure = module.span_figure(str(runs / "damped.csv"), summaries=[str(runs / "damped.json")])
@@ -788,7 +784,7 @@ def test_span_plot_overlays_several_files(runs):
                   "--summary", "bare.json", "-o", "overlay.png", cwd=runs)
     assert result.returncode == 0 and result.stderr == "", result.stderr
     assert png_size(runs / "overlay.png") == (800, 839)
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.span_figure([str(runs / name) for name in ("damped.csv", "best.csv", "bare.csv")],
                                 labels=["1 m", "best", "none"])
     amplitude, stress, strain = figure.axes
@@ -821,7 +817,7 @@ def test_span_overlay_of_different_limits_draws_each(runs, tmp_path):
         for row in rows:
             row[header.index("endurance_limit_mpa")] = "30"
     rewrite_csv(runs / "damped.csv", tmp_path / "lax.csv", limit)
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.span_figure([str(runs / "damped.csv"), str(tmp_path / "lax.csv")])
     limits = [line for line in figure.axes[1].get_lines() if "endurance limit" in line.get_label()]
     assert [line.get_label() for line in limits] == ["damped: endurance limit 8.73 MPa", "lax: endurance limit 30 MPa"]
@@ -831,7 +827,7 @@ def test_span_overlay_of_different_limits_draws_each(runs, tmp_path):
 
 
 def test_span_wind_speed_axis_maps_the_frequencies_to_the_csvs_wind_speeds(runs):
-    module = plot_module()
+    module = stockbridge.plot
     rows = span_rows(runs / "damped.csv")
     figure = module.span_figure(str(runs / "damped.csv"))
     figure.canvas.draw()
@@ -851,7 +847,7 @@ def test_span_wind_speed_axis_maps_the_frequencies_to_the_csvs_wind_speeds(runs)
 
 def test_span_without_a_wind_speed_column_has_no_top_axis(tmp_path):
     (tmp_path / "s.csv").write_text(SPAN_HEADER + "10,0.01,0.02,5,9,1,8.7\n20,0.01,0.02,6,9,1,8.7\n")
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.span_figure(str(tmp_path / "s.csv"))
     assert figure.axes[0].child_axes == []
     assert unwrapped(figure.axes[0].get_title()) == f"{tmp_path / 's.csv'}: safe, max 6 MPa at 20 Hz (limit 8.7 MPa)"
@@ -883,14 +879,14 @@ def test_span_bad_summaries_get_one_line_and_exit_two(runs, args, contents, ment
     ("length_m", "m"), ("stress_mpa", "MPa"), ("frequency_hz", "Hz"), ("force_n", "N"), ("ei_n_m2", "N m²"),
     ("life_years", "years"), ("curvature_per_m", "1/m"), ("speed_m_s", "m/s"), ("something", None)])
 def test_units_of_design_variables(name, unit):
-    assert plot_module().unit_of(name) == unit
+    assert stockbridge.plot.unit_of(name) == unit
 
 
 UNIT = re.compile(r"\((-|[^()]*[A-Za-z%°²][^()]*)\)")
 
 
 def test_every_axis_of_every_plot_has_its_unit(files, runs, design_files, tmp_path):
-    module = plot_module()
+    module = stockbridge.plot
     (tmp_path / "schedule.csv").write_text(SCHEDULE)
     figures = {"impedance": module.impedance_figure([module.Sweep(str(files / "z.csv"))], power=True),
                "impedance re im": module.impedance_figure([module.Sweep(str(files / "z.csv"))], re_im=True),
@@ -913,7 +909,7 @@ def test_every_axis_of_every_plot_has_its_unit(files, runs, design_files, tmp_pa
 
 
 def test_design_title_carries_the_best_candidates_verdict(design_files):
-    module = plot_module()
+    module = stockbridge.plot
     rows = span_rows(design_files / "designs.csv")
     feasible = [r for r in rows if r["feasible"] == "1"]
     best = min(feasible, key=lambda r: float(r["objective"]))
@@ -933,7 +929,7 @@ def test_design_title_of_a_life_study(tmp_path):
     (tmp_path / "life.csv").write_text(DESIGN_HEADER + "base,0,1.5,40,0.9,8,12,2.4,0.2,40,1,1\n"
                                        "sample,0,0.7,3000,1.2,11,20,2.4,0.1,3000,1,1\n"
                                        "sample,2,2.5,,,,,2.4,,,0,0\n")
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.design_figure(str(tmp_path / "life.csv"))
     assert unwrapped(figure._suptitle.get_text()) == (f"{tmp_path / 'life.csv'}: best sample 0, unsafe: shortest life 3,000 years, "
                                            "max 11 MPa at 20 Hz, 1.2 x the endurance limit; mass 2.4 kg\n"
@@ -947,7 +943,7 @@ def test_line_title_names_the_unsafe_spans_and_the_shortest_life(tmp_path):
     lives = ["", "120", "35.5", "2.25", "", "inf"]
     (tmp_path / "lives.csv").write_text("\n".join(f"{line},{life}" if k else f"{line},life_years"
                                                   for k, (line, life) in enumerate(zip(lines, lives))) + "\n")
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.line_figure(str(tmp_path / "lives.csv"))
     assert figure.axes[0].get_title().split("\n")[1] == "unsafe: T3-T4; unknown: T4-T5; shortest life 2.2 years (T3-T4)"
     assert notes(figure) == [module.LIVES_NOTE]
@@ -1021,7 +1017,7 @@ def results(runs):
 
 
 def test_a_span_result_draws_what_its_csv_and_summary_draw(runs, results):
-    module = plot_module()
+    module = stockbridge.plot
     for name in ("damped", "sheet"):
         result = results["span" if name == "damped" else name]
         from_result = module.span(result)
@@ -1035,7 +1031,7 @@ def test_a_span_result_draws_what_its_csv_and_summary_draw(runs, results):
 
 
 def test_an_impedance_result_draws_what_its_csv_draws(files, results):
-    module = plot_module()
+    module = stockbridge.plot
     for options in ({}, {"power": True}, {"re_im": True, "linear": True}):
         from_result = module.impedance(results["impedance"], **options)
         from_csv = module.impedance_figure([module.Sweep(str(files / "z.csv"))], **options)
@@ -1072,7 +1068,7 @@ def schedule_result(text):
 
 def test_a_line_result_draws_what_its_schedule_csv_draws(tmp_path):
     from matplotlib.colors import to_rgba
-    module = plot_module()
+    module = stockbridge.plot
     (tmp_path / "schedule.csv").write_text(SCHEDULE)
     from_csv = module.line_figure(str(tmp_path / "schedule.csv"))
     result = schedule_result(SCHEDULE)
@@ -1100,7 +1096,7 @@ def test_an_uncertain_span_in_a_schedule_csv(tmp_path):
     (tmp_path / "schedule.csv").write_text(SCHEDULE.replace("T2-T3,420,1,7.9,40.9,8.73,0.905,9.5,safe",
                                                             "T2-T3,420,1,7.9,40.9,8.73,0.905,9.5,uncertain"))
     assert plot("line", "schedule.csv", "-o", "schedule.png", cwd=tmp_path).returncode == 0
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.line_figure(str(tmp_path / "schedule.csv"))
     assert "unsafe: T3-T4; uncertain: T2-T3; unknown: T4-T5" in figure.axes[0].get_title()
     module.plt.close(figure)
@@ -1117,7 +1113,7 @@ def all_finite(values):
 def test_the_sheets_band_is_drawn_where_the_run_has_one(runs, results):
     """From a result and from its CSV: the band between stress_fymax_low_mpa and
     stress_fymax_high_mpa where they are given, nothing where they are NaN (empty)."""
-    module = plot_module()
+    module = stockbridge.plot
     sheet = results["sheet"]
     assert all_finite(sheet["stress_fymax_high_mpa"]) and not all_finite(
         results["span"]["stress_fymax_high_mpa"])  # the premise: a band with the sheet only
@@ -1141,7 +1137,7 @@ def test_an_uncertain_verdict_is_the_titles(runs, results):
     """The summary's verdict, uncertain (a measured sheet's band reaching the limit), is
     the title's with how high the band reaches; from a summary file too; a verdict the
     plot does not know is shown as it is."""
-    module = plot_module()
+    module = stockbridge.plot
     sheet = dict(results["sheet"], summary=dict(results["sheet"]["summary"], verdict="uncertain", criterion="stress"))
     top = max(sheet["stress_fymax_high_mpa"])
     figure = module.span(sheet, labels="vendor sheet")
@@ -1162,7 +1158,7 @@ def test_an_uncertain_verdict_is_the_titles(runs, results):
 
 
 def test_a_figure_of_a_result_is_saved_where_asked(results, tmp_path):
-    module = plot_module()
+    module = stockbridge.plot
     figure = module.span(results["span"], tmp_path / "span.png")
     assert png_size(tmp_path / "span.png") == (800, 839) and figure.axes[0].get_title().startswith("span: ")
     figure = module.impedance(results["impedance"], str(tmp_path / "z.svg"))
@@ -1180,7 +1176,7 @@ def test_a_figure_of_a_result_is_saved_where_asked(results, tmp_path):
     (lambda m, r: m.span([r["span"], r["span"]], labels=["one"]), "1 labels for 2 results"),
     (lambda m, r: m.span(dict(r["span"], converged=r["span"]["converged"] & False)), "span: no converged point")])
 def test_a_result_the_figure_cannot_use_raises_one_line(results, call, mention):
-    module = plot_module()
+    module = stockbridge.plot
     with pytest.raises(module.PlotError) as error:
         call(module, results)
     assert mention in str(error.value) and "\n" not in str(error.value)
@@ -1198,7 +1194,7 @@ def test_log_frequency_axes_are_labelled_across_the_band(band):
     """Five or more labelled frequencies inside any band (a 15-30 Hz band had 20 and 30
     only), in plain numbers, at least 8 pixels apart."""
     import numpy
-    module = plot_module()
+    module = stockbridge.plot
     figure, axis = module.plt.subplots(figsize=module.FIGURE_SIZE)
     f = numpy.geomspace(*band, 30)
     axis.plot(f, f)
@@ -1215,7 +1211,7 @@ def test_log_frequency_axes_are_labelled_across_the_band(band):
 def test_every_log_frequency_axis_is_labelled_across_the_band(files, span_files, tmp_path):
     """The span, impedance and fit figures' frequency axes: five or more labels over
     their bands (the span CSV's 5.96-41.7 Hz, the impedance's 5-50 Hz)."""
-    module = plot_module()
+    module = stockbridge.plot
     figures = [module.span_figure(str(span_files / "span.csv")),
                module.impedance_figure([module.Sweep(str(files / "z.csv"))], power=True)]
     for figure in figures:
@@ -1228,8 +1224,8 @@ def test_every_log_frequency_axis_is_labelled_across_the_band(files, span_files,
 
 def test_span_profile_plot_marks_the_attachments(tmp_path):
     example = os.path.join(SOURCE, "examples", "aster570_400m.toml")
-    text = open(example).read().replace('file = "sauter2003.toml"',
-                                        f'file = "{os.path.join(SOURCE, "examples", "sauter2003.toml")}"')
+    text = pathlib.Path(example).read_text().replace('file = "sauter2003.toml"',
+                                                     f'file = "{os.path.join(SOURCE, "examples", "sauter2003.toml")}"')
     (tmp_path / "spheres.toml").write_text(text + '\n[[mass]]\nname = "sphere"\nmass = 10.0\npositions = [100, 300]\n')
     run_cli("span", "spheres.toml", "--frequencies", "15,30", "-o", "s.csv", "--profile", "along.csv", cwd=tmp_path)
     result = plot("span-profile", "along.csv", "-o", "along.png", cwd=tmp_path)

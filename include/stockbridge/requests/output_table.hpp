@@ -25,6 +25,11 @@
 
 namespace stockbridge::requests {
 
+/// A value with nothing to show: an empty cell (CSV), null (JSON), NaN (Python).
+inline constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+/// Pa in a MPa: the outputs give stresses in MPa.
+inline constexpr double kPascalPerMegapascal = 1e6;
+
 /// What a column holds: a number (NaN where not trusted: an empty cell, null), a
 /// count, a flag (1 or 0, NaN where not trusted; Python: bool, false there), or a label (text).
 enum class ColumnKind { number, count, flag, label };
