@@ -182,7 +182,7 @@ Candidate polished_candidate(const Line& line, std::size_t index, std::size_t ty
   }
   Candidate c{type, std::move(arrangement), std::nullopt};
   span::SpanAnalysis a = analyse_with(line, index, type, c.arrangement, cache, settled);
-  if (a.balance.points.size() < a.frequencies.size()) return c;  // left early: cannot be chosen
+  if (a.stopped_early()) return c;  // cannot be chosen
   c.objective = span::position_objective(a.balance, rules.positions.objective);
   c.safe = safe_by(verdict_of(a.balance.summary, rules, false), rules);
   c.analysis = std::move(a);
@@ -266,6 +266,18 @@ double type_cost(const DamperType& type, TypeChoice choice) {
     case TypeChoice::lowest_stress: return 0.0;
   }
   return 0.0;
+}
+
+/// Which of two damper types' candidates of one count the schedule takes: of two
+/// safe ones the cheaper by rules.choose (a damper's mass or price), else as
+/// judged_better (safe first, then the objective).
+bool type_preferred(const Candidate& a, const Candidate& b, const Line& line) {
+  if (a.safe && b.safe) {
+    const double cost_a = type_cost(line.types()[a.type], line.rules().choose);
+    const double cost_b = type_cost(line.types()[b.type], line.rules().choose);
+    if (cost_a != cost_b) return cost_a < cost_b;
+  }
+  return judged_better(a, b);
 }
 
 void fill_undamped(ScheduleRow& row, const LineSpan& s, const span::BalanceSummary& u, const ScheduleRules& rules) {
@@ -369,16 +381,7 @@ SpanSchedule schedule_span(const Line& line, std::size_t index, TableCache& cach
       Candidate c = search_candidate(line, index, t, per_end, previous[t], prove_unsafe, cache, stop);
       out.row.balances += c.balances;
       previous[t] = c.arrangement.positions;
-      const auto better = [&](const Candidate& a, const Candidate& b) {
-        if (a.safe != b.safe) return a.safe;
-        if (a.safe) {
-          const double cost_a = type_cost(line.types()[a.type], rules.choose);
-          const double cost_b = type_cost(line.types()[b.type], rules.choose);
-          if (cost_a != cost_b) return cost_a < cost_b;
-        }
-        return a.objective < b.objective;
-      };
-      if (!best || better(c, *best)) best = std::move(c);
+      if (!best || type_preferred(c, *best, line)) best = std::move(c);
     }
     chosen = std::move(best);
   }

@@ -39,10 +39,10 @@ std::vector<SpanDamperSlot> span_column_slots(const span::Span& span) {
   const auto& dampers = span.dampers();
   for (std::size_t k = 0; k < dampers.size(); ++k) {
     const span::SpanDamper& d = dampers[k];
-    for (const double x : d.along) slots.push_back({k, x, "at_" + span_place_name(x)});
-    if (d.in_span()) continue;
-    slots.push_back({k, d.position, "end1"});
-    if (d.both_ends) slots.push_back({k, span.length() - d.position, "end2"});
+    const std::vector<double> places = d.positions_from_end1(span.length());
+    for (std::size_t i = 0; i < places.size(); ++i) {
+      slots.push_back({k, places[i], d.in_span() ? "at_" + span_place_name(places[i]) : fmt::format("end{}", i + 1)});
+    }
   }
   return slots;
 }

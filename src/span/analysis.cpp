@@ -131,7 +131,7 @@ SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, con
     out.span = span.with_dampers(std::move(placed));
   }
   out.balance = run_balance(out.span, *made, options.balance, nullptr, options.stop_after);
-  if (out.balance.points.size() < out.frequencies.size()) return out;  // stopped early
+  if (out.stopped_early()) return out;
   add_sheet_band(out, *made, options.balance);
   add_edge_warning(out);
   return out;

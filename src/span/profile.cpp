@@ -32,12 +32,7 @@ std::vector<std::complex<double>> chain_impedances(const Span& span, const EndLa
 std::vector<ProfileAttachment> attachments_of(const Span& span) {
   std::vector<ProfileAttachment> out;
   for (const SpanDamper& d : span.dampers()) {
-    if (d.in_span()) {
-      for (const double x : d.along) out.push_back({x, d.name, false});
-      continue;
-    }
-    out.push_back({d.position, d.name, false});
-    if (d.both_ends) out.push_back({span.length() - d.position, d.name, false});
+    for (const double x : d.positions_from_end1(span.length())) out.push_back({x, d.name, false});
   }
   for (const SpanMass& m : span.masses()) {
     for (const double x : m.positions) out.push_back({x, m.name, true});

@@ -43,6 +43,10 @@ struct SpanAnalysis {
   /// know (a sheet too coarse for the span, velocities outside a sheet).
   double sheet_error_estimate = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::string> warnings;
+
+  /// Whether the balance ended before the band's top (AnalysisOptions::stop_after):
+  /// its points are then the lowest frequencies', and it has no sheet band or warnings.
+  bool stopped_early() const { return balance.points.size() < frequencies.size(); }
 };
 
 /// The relative sheet error above which a warning says the sheet is too coarse.
