@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <Eigen/LU>
@@ -20,6 +21,14 @@ constexpr double kTableSlopeStep = 0.05;
 /// Newton steps on dh/du before the hybrid method: the Jacobian is exact but for the
 /// secant dZ/du, and each frequency starts close to its solution.
 constexpr int kPolishNewtonSteps = 6;
+/// A trial this close (in log v) to a damper's last direct solve at the frequency
+/// continues from that solve rather than from the frequency's first ...
+constexpr double kNearTrial = 1e-3;
+/// ... where the polish's tolerance is at least this: two starts of one damper's
+/// harmonic balance agree to its own tolerance (Z within about 1e-8 at the default
+/// 1e-7), so a tighter polish needs the one start that makes Z a function of v to
+/// the last bit.
+constexpr double kNearTrialTolerance = 1e-7;
 
 }  // namespace
 
@@ -99,8 +108,12 @@ damper::ImpedancePoint Polish::solve_directly(const FrequencyBalance& balance, c
   if (!trackers_[unknown.damper]) return from_sheet(balance, unknown, excitation);
   damper::DamperTracker& tracker = *trackers_[unknown.damper];
   std::optional<damper::DamperTracker::Checkpoint>& anchor = anchors_[unknown.damper];
-  if (anchor) tracker.restore(*anchor);
+  const double log_v = std::log(excitation.velocity_amplitude());
+  double& last = last_direct_[unknown.damper];
+  const bool near = options_.polish_tolerance >= kNearTrialTolerance && std::abs(log_v - last) <= kNearTrial;
+  if (anchor && !near) tracker.restore(*anchor);
   damper::ImpedancePoint direct = tracker.solve(excitation);
+  last = direct.converged() ? log_v : std::numeric_limits<double>::quiet_NaN();
   if (!direct.converged() && !anchor) {
     // Where the path from the last frequency fails (the arm's stick resonance passed
     // between them, say), from a cold start.
@@ -216,6 +229,7 @@ void Polish::update_slopes(const Trial& trial) {
 
 Polish::Search Polish::search(FrequencyBalance& balance, const Eigen::VectorXd& start) {
   anchors_.assign(trackers_.size(), std::nullopt);
+  last_direct_.assign(trackers_.size(), std::numeric_limits<double>::quiet_NaN());
   last_solved_.reset();
   Search out;
   const numerics::Residual residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& h) {

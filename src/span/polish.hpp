@@ -21,7 +21,11 @@
 // Along the band, each damper is followed by harmonic balance solved from its last
 // solution (a DamperTracker; every trial of one frequency from that frequency's
 // first solution, so that Z is a function of v even where two steady states of the
-// damper coexist; cold where the path from the last frequency fails), and each
+// damper coexist, but a trial within 1e-3 in log v of the damper's last solve at
+// the frequency, which continues from that one, the same steady state a step away:
+// Newton's last steps then cost a damper about one harmonic balance iteration (not
+// under a polish tolerance below 1e-7, the damper solve's own scatter); cold where
+// the path from the last frequency fails), and each
 // frequency starts from the line through the last two frequencies' solutions in
 // (log f, log v): the state reached by continuation from the band's low end. Where
 // several self-consistent states exist, that is the one reported; the sign of
@@ -117,6 +121,7 @@ class Polish {
   const BalanceOptions& options_;
   std::vector<std::optional<damper::DamperTracker>> trackers_;  ///< one per damper of the span; none for a measured sheet
   std::vector<std::optional<damper::DamperTracker::Checkpoint>> anchors_;  ///< per damper: this frequency's first solution
+  std::vector<double> last_direct_;  ///< per damper: log v of its last direct solve at this frequency (NaN: none)
   std::vector<Unknown> unknowns_;
   std::vector<std::complex<double>> slopes_;  ///< dZ/du per unknown, the last secant
   std::optional<Trial> last_solved_;          ///< this frequency's last trial, for the secants
