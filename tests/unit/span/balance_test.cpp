@@ -138,6 +138,30 @@ TEST(SpanBalance, InterpolatedColumnsArePolishedToTheDirectSolution) {
   for (const BalancePoint& p : b.points) expect_the_direct_solution(span, p);
 }
 
+// Newton's last trials of the polish continue from the damper's last solve at the
+// frequency (within 1e-3 in log v) rather than from the frequency's first: the same
+// self-consistent states as with every trial from the first (a polish tolerance
+// below 1e-7 keeps that), to the polish's tolerance, with two dampers per end.
+TEST(SpanBalance, ThePolishsNearTrialsFindTheStatesEveryFirstStartFinds) {
+  const Span span = aster_span({{sauter_damper(), 1.0, true, "a", nullptr, std::nullopt},
+                                {sauter_damper(), 2.2, true, "b", nullptr, std::nullopt}});
+  const std::vector<double> f = damper::log_spaced(6.0, 30.0, stockbridge::testing::scaled(24, 8));
+  BalanceOptions near = fast_options(), first = fast_options();
+  first.polish_tolerance = 5e-8;  // below 1e-7: every trial from the frequency's first solution
+  const SpanTables tables(span, f, near.table);
+  const SpanBalance a = run_balance(span, tables, near), b = run_balance(span, tables, first);
+  ASSERT_EQ(a.summary.converged, static_cast<int>(f.size()));
+  ASSERT_EQ(b.summary.converged, static_cast<int>(f.size()));
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    SCOPED_TRACE(f[i]);
+    expect_relative(a.points[i].amplitude, b.points[i].amplitude, 1e-5);
+    expect_relative(a.points[i].stress_fymax, b.points[i].stress_fymax, 1e-5);
+    for (std::size_t k = 0; k < a.points[i].dampers.size(); ++k) {
+      expect_relative(a.points[i].dampers[k].clamp_velocity, b.points[i].dampers[k].clamp_velocity, 1e-5);
+    }
+  }
+}
+
 /// A candidate of examples/design_aster570.toml on the span: the example damper with
 /// both arms' mass and cable length set (the inertia keeping the arm's radius of
 /// gyration, as the study does), both span ends' dampers at `position`.
