@@ -145,7 +145,7 @@ TEST(SpanBalance, InterpolatedColumnsArePolishedToTheDirectSolution) {
 TEST(SpanBalance, ThePolishsNearTrialsFindTheStatesEveryFirstStartFinds) {
   const Span span = aster_span({{sauter_damper(), 1.0, true, "a", nullptr, std::nullopt},
                                 {sauter_damper(), 2.2, true, "b", nullptr, std::nullopt}});
-  const std::vector<double> f = damper::log_spaced(6.0, 30.0, stockbridge::testing::scaled(24, 8));
+  const std::vector<double> f = damper::log_spaced(6.0, 30.0, stockbridge::testing::scaled(24, 4));
   BalanceOptions near = fast_options(), first = fast_options();
   first.polish_tolerance = 5e-8;  // below 1e-7: every trial from the frequency's first solution
   const SpanTables tables(span, f, near.table);
