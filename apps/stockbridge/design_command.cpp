@@ -140,7 +140,7 @@ void print_design_report(const design::DesignStudy& study, const design::DesignR
     text += study.objective() == design::Objective::life
                 ? fmt::format("shortest life {} years", design_value(e.shortest_life_years))
                 : fmt::format("largest stress {} of the endurance limit ({} MPa at {} Hz)", design_value(e.max_stress_ratio),
-                              design_value(e.max_stress / 1e6), design_value(e.frequency_at_max_hz));
+                              design_value(requests::megapascal_of(e.max_stress)), design_value(e.frequency_at_max_hz));
     text += fmt::format(", {} kg, messenger curvature {} 1/m", design_value(e.total_mass),
                         design_value(e.messenger_curvature_max));
     if (!e.feasible()) text += " (infeasible: " + e.infeasibility + ")";
@@ -167,11 +167,13 @@ void print_design_report(const design::DesignStudy& study, const design::DesignR
   for (std::size_t k = 0; k < built.spans.size(); ++k) {
     const design::SpanFigures& f = built.spans[k];
     const auto position = study.position_on(k, built.x);
-    fmt::print("  span {}: {:.3g} MPa, {:.3g} of its endurance limit{}{}{}\n", study.spans()[k].name, f.max_stress / 1e6,
-               f.max_stress_ratio, position ? fmt::format(", dampers from {:.3g} m", *position) : std::string(),
+    fmt::print("  span {}: {:.3g} MPa, {:.3g} of its endurance limit{}{}{}\n", study.spans()[k].name,
+               requests::megapascal_of(f.max_stress), f.max_stress_ratio,
+               position ? fmt::format(", dampers from {:.3g} m", *position) : std::string(),
                k == built.span_at_max ? " (governs)" : "",
-               f.worse_than_undamped() ? fmt::format(": WORSE than undamped ({:.3g} MPa)", f.undamped_max_stress / 1e6)
-                                       : std::string());
+               f.worse_than_undamped()
+                   ? fmt::format(": WORSE than undamped ({:.3g} MPa)", requests::megapascal_of(f.undamped_max_stress))
+                   : std::string());
   }
   for (std::size_t j = 0; j < result.polishes.size(); ++j) {
     const SolverSummary& p = result.polishes[j];

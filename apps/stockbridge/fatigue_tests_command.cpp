@@ -73,7 +73,7 @@ int run_fatigue_tests_command(const FatigueTestsOptions& options, Invocation& in
              100.0 * r.below_sbl_fraction());
   for (std::size_t i : r.below_sbl) {
     fmt::print("  {}: {:.4g} cycles at {:.4g} MPa (the line's: {:.4g})\n", r.tests[i].test, r.tests[i].cycles,
-               r.points[i].stress / 1e6, r.points[i].sbl_cycles);
+               requests::megapascal_of(r.points[i].stress), r.points[i].sbl_cycles);
   }
   if (options.curve) fmt::print("design curve written to {}\n", *options.curve);
   return kSuccess;

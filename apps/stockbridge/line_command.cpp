@@ -145,7 +145,7 @@ void print_line_report(const io::LineFile& file, const requests::LineSchedule& s
   }
   if (governing) {
     fmt::print("governing span: {} ({}), {:.3g} MPa at {}, {:.3g} % of the endurance limit\n", governing->id,
-               line_arrangement(*governing), governing->max_stress / 1e6, governing->governing_place,
+               line_arrangement(*governing), requests::megapascal_of(governing->max_stress), governing->governing_place,
                100.0 * governing->stress_ratio());
   }
   int shown = 0;

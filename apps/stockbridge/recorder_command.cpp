@@ -48,7 +48,7 @@ void print_recorder_figures(const char* what, const measurements::DamageFigures&
   fmt::print("{}: damage {:.4g} over {:.4g} days, {:.4g} per year, life {}; largest Yb {:.3g} mm, stress {:.3g} MPa; "
              "{:.4g} cycles, {:.3g} % above the endurance limit\n",
              what, f.damage, f.days, f.damage_per_year, recorder_years(f.life_years), 1e3 * f.max_yb,
-             f.max_stress / 1e6, f.cycles, 100.0 * f.fraction_above_endurance);
+             requests::megapascal_of(f.max_stress), f.cycles, 100.0 * f.fraction_above_endurance);
 }
 
 void print_recorder_report(const measurements::RecorderResult& r) {

@@ -80,7 +80,7 @@ requests::CheckedSpanRequest span_request_of(const SpanOptions& options) {
   return requests::check_span_request(request);
 }
 
-std::string span_megapascal(double pascal) { return fmt::format("{:.3g} MPa", pascal / 1e6); }
+std::string span_megapascal(double pascal) { return fmt::format("{:.3g} MPa", requests::megapascal_of(pascal)); }
 
 std::string span_years(const span::LifeEstimate& life) {
   return std::isfinite(life.life_years) ? fmt::format("{:.3g} years", life.life_years) : "unlimited (no damage)";

@@ -43,7 +43,7 @@ io::JsonObject design_figures(const design::DesignStudy& study, const design::Ev
   io::JsonObject o;
   o.add("objective", reported_objective(study.objective(), e))
       .add("max_stress_ratio", e.max_stress_ratio)
-      .add("max_stress_mpa", e.max_stress / 1e6)
+      .add("max_stress_mpa", megapascal_of(e.max_stress))
       .add("frequency_at_max_hz", e.frequency_at_max_hz)
       .add("total_mass_kg", e.total_mass)
       .add("messenger_curvature_max_per_m", e.messenger_curvature_max)
@@ -64,8 +64,8 @@ io::JsonObject design_figures(const design::DesignStudy& study, const design::Ev
       spans.push_back(io::JsonObject()
                           .add("span", name)
                           .add("stress_ratio", f.max_stress_ratio)
-                          .add("max_stress_mpa", f.max_stress / 1e6)
-                          .add("undamped_max_stress_mpa", f.undamped_max_stress / 1e6)
+                          .add("max_stress_mpa", megapascal_of(f.max_stress))
+                          .add("undamped_max_stress_mpa", megapascal_of(f.undamped_max_stress))
                           .add("life_years", f.life_years)
                           .add("governing_place", f.governing_place)
                           .add("worse_than_undamped", f.worse_than_undamped()));
@@ -160,7 +160,7 @@ Table<design::StudyEvaluation> design_table(const design::DesignStudy& study) {
           design_figure("max_stress_ratio", "", "largest fymax stress / endurance limit over the spans and bands",
                         [](const E& e) { return e.max_stress_ratio; }),
           design_figure("max_stress_mpa", "MPa", "that largest stress",
-                        [](const E& e) { return e.max_stress / 1e6; }),
+                        [](const E& e) { return megapascal_of(e.max_stress); }),
           design_figure("frequency_at_max_hz", "Hz", "where the ratio is largest",
                         [](const E& e) { return e.frequency_at_max_hz; }),
           {"total_mass_kg", "kg", "clamp and arms", ColumnKind::number,
@@ -177,9 +177,11 @@ Table<design::StudyEvaluation> design_table(const design::DesignStudy& study) {
           {"<span>_stress_ratio", "", "each span's largest fymax stress / its endurance limit", ColumnKind::number,
            [](const S& s, std::size_t k) { return span_figure(s.evaluation, k, &F::max_stress_ratio); }, {}},
           {"<span>_max_stress_mpa", "MPa", "each span's largest fymax stress", ColumnKind::number,
-           [](const S& s, std::size_t k) { return span_figure(s.evaluation, k, &F::max_stress) / 1e6; }, {}},
+           [](const S& s, std::size_t k) { return megapascal_of(span_figure(s.evaluation, k, &F::max_stress)); }, {}},
           {"<span>_undamped_max_stress_mpa", "MPa", "the same span's without dampers", ColumnKind::number,
-           [](const S& s, std::size_t k) { return span_figure(s.evaluation, k, &F::undamped_max_stress) / 1e6; }, {}},
+           [](const S& s, std::size_t k) {
+             return megapascal_of(span_figure(s.evaluation, k, &F::undamped_max_stress));
+           }, {}},
           {"<span>_life_years", "years", "each span's life (with its climate)", ColumnKind::number,
            [](const S& s, std::size_t k) { return span_figure(s.evaluation, k, &F::life_years); }, {}},
           {"<span>_worse_than_undamped", "", "1 where the candidate raises the span's largest stress above its undamped one",

@@ -67,7 +67,7 @@ Table<FatigueTestRow> fatigue_tests_table() {
       {"failed", "", "1: the conductor broke; 0: a runout (censored in the fit)", K::flag,
        [](const R& r, std::size_t) { return r.test->failed ? 1.0 : 0.0; }, {}},
       {"stress_ps_mpa", "MPa", "the Poffenberger-Swart stress K(T) Yb, zero-to-peak", K::number,
-       [](const R& r, std::size_t) { return r.point->stress / kPascalPerMegapascal; }, {}},
+       [](const R& r, std::size_t) { return megapascal_of(r.point->stress); }, {}},
       {"microstrain_pp", "microstrain", "the outer wires' peak-to-peak bending strain 2 sigma / E_a", K::number,
        [](const R& r, std::size_t) { return r.point->microstrain_pp; }, {}},
       {"sbl_cycles", "", "the CIGRE Safe Border Line's cycles at that stress, for the conductor's aluminium layers",

@@ -23,7 +23,7 @@ io::JsonObject recorder_figures_json(const measurements::DamageFigures& f) {
       .add("damage_per_year", f.damage_per_year)
       .add("life_years", f.life_years)
       .add("max_yb_pp_mm", 1e3 * f.max_yb)
-      .add("max_stress_mpa", f.max_stress / 1e6)
+      .add("max_stress_mpa", megapascal_of(f.max_stress))
       .add("fraction_above_endurance", f.fraction_above_endurance)
       .add("cycles", f.cycles)
       .add("days", f.days);
@@ -98,7 +98,7 @@ Table<RecorderBinResult> recorder_bins_table() {
       recorder_column("cycles", "", "cycles counted over the record",
                       [](const RecorderBinResult& b) { return b.bin.cycles; }),
       recorder_column("stress_ps_mpa", "MPa", "the Poffenberger-Swart stress K Yb at the upper edge (zero-to-peak)",
-                      [](const RecorderBinResult& b) { return b.stress / 1e6; }),
+                      [](const RecorderBinResult& b) { return megapascal_of(b.stress); }),
       recorder_column("microstrain_pp", "microstrain", "that stress's peak-to-peak bending strain, 2 sigma / E_a",
                       [](const RecorderBinResult& b) { return b.microstrain_pp; }),
       recorder_column("cycles_to_failure", "", "N at that stress on the span's S-N curve (empty: infinite)",

@@ -214,8 +214,6 @@ SpanQuantity span_per_mass(std::string name, std::string unit, std::string meani
       });
 }
 
-double span_megapascal_of(double pascal) { return pascal / kPascalPerMegapascal; }
-
 std::shared_ptr<const SpanTableContext> span_table_context(const span::Span& span) {
   auto context = std::make_shared<SpanTableContext>();
   context->diameter = span.conductor().diameter;
@@ -236,7 +234,6 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
   using P = span::BalancePoint;
   using D = span::DamperAtBalance;
   const std::shared_ptr<const SpanTableContext> c = span_table_context(span);
-  const auto mpa = span_megapascal_of;
   std::vector<SpanQuantity> q{
       span_given("frequency_hz", "Hz", "f", [](const P& p) { return p.frequency_hz; }),
       span_given("wind_speed_m_s", "m/s", "the wind speed that sheds vortices at f, U = f D / St",
@@ -258,27 +255,27 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
                     return c->dampers && !p.dampers.empty() ? p.dampers.front().clamp_velocity : kNoValue;
                   }),
       span_solved("stress_fymax_mpa", "MPa", "fymax stress at the span clamp",
-                  [mpa](const P& p) { return mpa(p.stress_fymax); }),
+                  [](const P& p) { return megapascal_of(p.stress_fymax); }),
       span_solved("stress_ps_mpa", "MPa", "Poffenberger-Swart stress at the span clamp",
-                  [mpa](const P& p) { return mpa(p.stress_poffenberger_swart); }),
+                  [](const P& p) { return megapascal_of(p.stress_poffenberger_swart); }),
       span_solved("damper_clamp_stress_mpa", "MPa", "the largest stress at a damper clamp (empty without dampers)",
-                  [c, mpa](const P& p) { return c->dampers ? mpa(p.damper_clamp_stress) : kNoValue; }),
+                  [c](const P& p) { return c->dampers ? megapascal_of(p.damper_clamp_stress) : kNoValue; }),
       span_solved("undamped_amplitude_m", "m", "Y of the same span without dampers",
                   [](const P& p) { return p.undamped_amplitude; }),
       span_solved("undamped_stress_fymax_mpa", "MPa", "its fymax stress",
-                  [mpa](const P& p) { return mpa(p.undamped_stress_fymax); }),
+                  [](const P& p) { return megapascal_of(p.undamped_stress_fymax); }),
       {"converged", "", "1, or 0 where the balance did not converge", ColumnKind::flag,
        [](const P& p, std::size_t) { return p.converged() ? 1.0 : 0.0; }, {}},
       span_given("endurance_limit_mpa", "MPa",
                  "the endurance limit the verdict uses (the same in every row; the plot reads it)",
-                 [c, mpa](const P&) { return mpa(c->endurance_limit); }),
+                 [c](const P&) { return megapascal_of(c->endurance_limit); }),
       span_solved("energy_identity_error", "",
                   "|P_d - sum Re Z w^2 |Y_j|^2 / 2| relative to the power the incoming waves bring to the ends, "
                   "sum Z0 w^2 |B|^2 / 2 (the identity checked at every point, to 1e-8; P_d is a difference of the "
                   "waves' powers, so this is the scale of its round-off)",
                   [](const P& p) { return p.identity_error; }),
       span_solved("undamped_stress_ps_mpa", "MPa", "the undamped span's Poffenberger-Swart stress (its life's)",
-                  [mpa](const P& p) { return mpa(p.undamped_stress_poffenberger_swart); }),
+                  [](const P& p) { return megapascal_of(p.undamped_stress_poffenberger_swart); }),
       {"several_states", "",
        "1 where the dampers' clamp velocities passed a fold since the frequency before: several self-consistent "
        "states near here ([several dampers per end](#several-dampers-per-end))",
@@ -301,9 +298,9 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
                   "with a damper known by its measured sheet: the band its interpolation leaves, the fymax stress times "
                   "(1 - the sheets' error estimate, the largest change leaving out every other curve makes; empty "
                   "without a sheet)",
-                  [mpa](const P& p) { return mpa(p.stress_fymax_low); }),
+                  [](const P& p) { return megapascal_of(p.stress_fymax_low); }),
       span_solved("stress_fymax_high_mpa", "MPa", "the stress times (1 + the estimate)",
-                  [mpa](const P& p) { return mpa(p.stress_fymax_high); }),
+                  [](const P& p) { return megapascal_of(p.stress_fymax_high); }),
       span_given("endurance_limit_pp_microstrain", "microstrain", "the endurance limit as a peak-to-peak strain",
                  [c](const P&) { return span::bending_strain_pp_microstrain(c->conductor, c->endurance_limit); }),
       span_per_damper("<damper>_end<k>_velocity_m_s", "m/s",
@@ -316,16 +313,16 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
       span_per_damper("<damper>_end<k>_power_w", "W", "the power it takes, Re Z w^2 |Y_j|^2 / 2", c,
                       [](const D& d) { return d.power; }),
       span_per_damper("<damper>_end<k>_clamp_stress_mpa", "MPa", "the conductor's stress at its clamp", c,
-                      [](const D& d) { return d.clamp_stress / kPascalPerMegapascal; }),
+                      [](const D& d) { return megapascal_of(d.clamp_stress); }),
       span_per_damper("<damper>_end<k>_bending_strain_pp_microstrain", "microstrain",
                       "the outer wires' peak-to-peak bending strain at its clamp", c,
                       [c](const D& d) { return span::bending_strain_pp_microstrain(c->conductor, d.clamp_stress); }),
   };
   std::vector<SpanQuantity> attachments{
       span_solved("stress_fymax_end2_mpa", "MPa", "fymax stress at the span clamp of end 2",
-                  [mpa](const P& p) { return mpa(p.stress_fymax_end2); }),
+                  [](const P& p) { return megapascal_of(p.stress_fymax_end2); }),
       span_solved("stress_ps_end2_mpa", "MPa", "Poffenberger-Swart stress at the span clamp of end 2",
-                  [mpa](const P& p) { return mpa(p.stress_poffenberger_swart_end2); }),
+                  [](const P& p) { return megapascal_of(p.stress_poffenberger_swart_end2); }),
       span_solved("bending_amplitude_end2_pp_m", "m", "Yb at the span clamp of end 2",
                   [](const P& p) { return p.bending_amplitude_end2; }),
       span_solved("max_subspan_amplitude_m", "m",
@@ -337,14 +334,14 @@ Table<span::BalancePoint> span_table(const span::Span& span) {
       span_solved("max_subspan_to_m", "m", "where it ends", [](const P& p) { return p.max_subspan_to; }),
       span_solved("governing_stress_mpa", "MPa",
                   "the largest stress the criterion judges over both span clamps and the masses' clamps",
-                  [mpa, span_copy = std::make_shared<span::Span>(span)](const P& p) {
-                    return mpa(span::governing_place(*span_copy, p).stress);
+                  [span_copy = std::make_shared<span::Span>(span)](const P& p) {
+                    return megapascal_of(span::governing_place(*span_copy, p).stress);
                   }),
       span_per_mass("<mass>_amplitude_m", "m", "per mass and position: the conductor's amplitude |Y| there", c,
                     [](const span::MassAtBalance& m) { return m.displacement; }),
       span_per_mass("<mass>_clamp_stress_mpa", "MPa",
                     "the conductor's stress at its clamp, the point force w^2 M |Y| times its stress_factor", c,
-                    [](const span::MassAtBalance& m) { return m.clamp_stress / kPascalPerMegapascal; }),
+                    [](const span::MassAtBalance& m) { return megapascal_of(m.clamp_stress); }),
   };
   q.insert(q.end(), std::make_move_iterator(attachments.begin()), std::make_move_iterator(attachments.end()));
   std::vector<std::string> members;

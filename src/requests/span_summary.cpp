@@ -92,7 +92,7 @@ io::JsonObject span_inputs(const span::Span& span) {
   io::JsonObject fatigue;
   fatigue.add("criterion", span::fatigue_criterion_name(span.fatigue().criterion))
       .add("criterion_description", span.criterion_description())
-      .add("endurance_limit_mpa", span.endurance_limit() / kPascalPerMegapascal)
+      .add("endurance_limit_mpa", megapascal_of(span.endurance_limit()))
       .add("yb_distance_m", span.fatigue().yb_distance);
   std::vector<io::JsonObject> dampers;
   for (const span::SpanDamper& d : span.dampers()) {
@@ -143,25 +143,25 @@ io::JsonObject span_inputs(const span::Span& span) {
 io::JsonObject span_summary(const SpanResult& result) {
   const span::SpanAnalysis& a = result.analysis;
   const span::BalanceSummary& s = a.balance.summary;
-  const auto mpa = [](double pascal) { return pascal / kPascalPerMegapascal; };
   const bool dampers = !a.span.dampers().empty();
   io::JsonObject json;
   json.add("points", s.points)
       .add("converged", s.converged)
       .add("damper_model", span::damper_model_name(result.damper_model))
       .add("dampers", static_cast<int>(a.span.dampers().size()))
-      .add("endurance_limit_mpa", mpa(s.endurance_limit))
+      .add("endurance_limit_mpa", megapascal_of(s.endurance_limit))
       .add("criterion", span::fatigue_criterion_name(a.span.fatigue().criterion))
       .add("verdict", span::verdict_name(s.verdict))
-      .add("max_judged_stress_mpa", s.converged > 0 ? mpa(s.max_judged_stress) : kNoValue)
-      .add("max_judged_stress_high_mpa", s.converged > 0 ? mpa(s.max_judged_stress_high) : kNoValue)
+      .add("max_judged_stress_mpa", s.converged > 0 ? megapascal_of(s.max_judged_stress) : kNoValue)
+      .add("max_judged_stress_high_mpa", s.converged > 0 ? megapascal_of(s.max_judged_stress_high) : kNoValue)
       .add("governing_place", s.max_judged_stress_place)
       .add("governing_frequency_hz", s.converged > 0 ? s.max_judged_stress_frequency_hz : kNoValue)
-      .add("undamped_max_judged_stress_mpa", mpa(s.undamped_max_judged_stress))
-      .add("max_stress_fymax_mpa", s.converged > 0 ? mpa(s.max_stress_fymax) : kNoValue)
+      .add("undamped_max_judged_stress_mpa", megapascal_of(s.undamped_max_judged_stress))
+      .add("max_stress_fymax_mpa", s.converged > 0 ? megapascal_of(s.max_stress_fymax) : kNoValue)
       .add("max_stress_frequency_hz", s.converged > 0 ? s.max_stress_frequency_hz : kNoValue)
-      .add("max_damper_clamp_stress_mpa", dampers && s.converged > 0 ? mpa(s.max_damper_clamp_stress) : kNoValue)
-      .add("undamped_max_stress_fymax_mpa", mpa(s.undamped_max_stress_fymax))
+      .add("max_damper_clamp_stress_mpa",
+           dampers && s.converged > 0 ? megapascal_of(s.max_damper_clamp_stress) : kNoValue)
+      .add("undamped_max_stress_fymax_mpa", megapascal_of(s.undamped_max_stress_fymax))
       .add("undamped_max_stress_frequency_hz", s.undamped_max_stress_frequency_hz)
       .add("undamped_verdict", span::verdict_name(s.undamped_verdict))
       .add("position_m", dampers ? a.span.dampers().front().position : kNoValue)

@@ -29,6 +29,8 @@ namespace stockbridge::requests {
 inline constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 /// Pa in a MPa: the outputs give stresses in MPa.
 inline constexpr double kPascalPerMegapascal = 1e6;
+/// A stress as the outputs give it: MPa from Pa.
+inline constexpr double megapascal_of(double pascal) { return pascal / kPascalPerMegapascal; }
 
 /// What a column holds: a number (NaN where not trusted: an empty cell, null), a
 /// count, a flag (1 or 0, NaN where not trusted; Python: bool, false there), or a label (text).
