@@ -203,7 +203,7 @@ TEST(StrandBounds, MaximumIsNeverBelowMinimumForPossibleGeometry) {
 }
 
 TEST(StrandFile, ReadsTheShippedExample) {
-  const Strand strand = io::read_strand_file(STOCKBRIDGE_SOURCE_DIR "/examples/strand_19wire.toml");
+  const Strand strand = io::read_strand_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/strand_19wire.toml");
   EXPECT_EQ(strand.youngs_modulus, 210e9);
   EXPECT_EQ(strand.core_radius, 0.001);
   ASSERT_EQ(strand.layers.size(), 2u);
@@ -212,7 +212,7 @@ TEST(StrandFile, ReadsTheShippedExample) {
   EXPECT_EQ(strand.layers[1].pitch_radius, 0.004);
   EXPECT_EQ(strand.layers[0].lay_length, 0.060);
   EXPECT_EQ(strand.layers[1].lay_length, 0.100);
-  EXPECT_THROW(io::read_strand_file(STOCKBRIDGE_SOURCE_DIR "/examples/no-such-strand.toml"), InputError);
+  EXPECT_THROW(io::read_strand_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/no-such-strand.toml"), InputError);
 }
 
 }  // namespace
