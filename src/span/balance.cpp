@@ -368,21 +368,24 @@ BalancePoint balance_at(const Span& span, const SpanTables& tables, std::size_t 
 
 UndampedFigures::UndampedFigures(const Span& span, const SpanTables& tables, const BalanceOptions& options) {
   const UndampedSpan undamped(span, tables, options);
-  points_.resize(tables.frequencies().size());
-  for (std::size_t i = 0; i < points_.size(); ++i) {
-    points_[i].frequency_hz = tables.frequencies()[i];
-    undamped.fill(i, points_[i]);
+  figures_.reserve(tables.frequencies().size());
+  for (std::size_t i = 0; i < tables.frequencies().size(); ++i) {
+    BalancePoint u;
+    u.frequency_hz = tables.frequencies()[i];
+    undamped.fill(i, u);
+    figures_.push_back({u.undamped_amplitude, u.undamped_stress_fymax, u.undamped_bending_amplitude,
+                        u.undamped_stress_poffenberger_swart, u.undamped_judged_stress, u.undamped_life_stress});
   }
 }
 
 void UndampedFigures::fill(std::size_t i, BalancePoint& p) const {
-  const BalancePoint& u = points_.at(i);
-  p.undamped_amplitude = u.undamped_amplitude;
-  p.undamped_stress_fymax = u.undamped_stress_fymax;
-  p.undamped_bending_amplitude = u.undamped_bending_amplitude;
-  p.undamped_stress_poffenberger_swart = u.undamped_stress_poffenberger_swart;
-  p.undamped_judged_stress = u.undamped_judged_stress;
-  p.undamped_life_stress = u.undamped_life_stress;
+  const Figures& u = figures_.at(i);
+  p.undamped_amplitude = u.amplitude;
+  p.undamped_stress_fymax = u.stress_fymax;
+  p.undamped_bending_amplitude = u.bending_amplitude;
+  p.undamped_stress_poffenberger_swart = u.stress_poffenberger_swart;
+  p.undamped_judged_stress = u.judged_stress;
+  p.undamped_life_stress = u.life_stress;
 }
 
 BalancePoint balance_on_tables(const Span& span, const SpanTables& tables, std::size_t i, const BalanceOptions& options,
@@ -402,6 +405,7 @@ SpanBalance run_balance(const Span& span, const SpanTables& tables, const Balanc
   if (options.polish && !span.dampers().empty()) polish.emplace(span, options);
   std::optional<UndampedFigures> own;
   if (!undamped) undamped = &own.emplace(span, tables, options);
+  out.points.reserve(tables.frequencies().size());
   for (std::size_t i = 0; i < tables.frequencies().size(); ++i) {
     out.points.push_back(balance_at(span, tables, i, polish ? &*polish : nullptr, options, *undamped));
     if (stop_after && stop_after(out.points.back())) break;

@@ -290,6 +290,7 @@ double Polish::accept(FrequencyBalance& balance, const Trial& solution, bool con
   const int sign = det > 0.0 ? 1 : det < 0.0 ? -1 : 0;
   passed_fold_ = continued && sign != 0 && history_.back().jacobian_sign != 0 && sign != history_.back().jacobian_sign;
   history_.push_back({std::log(balance.wave().angular_frequency), solution.u, sign});
+  if (history_.size() > 2) history_.erase(history_.begin());  // the next frequency needs the last two
   return solution.amplitude;
 }
 

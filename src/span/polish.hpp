@@ -125,7 +125,7 @@ class Polish {
   std::vector<Unknown> unknowns_;
   std::vector<std::complex<double>> slopes_;  ///< dZ/du per unknown, the last secant
   std::optional<Trial> last_solved_;          ///< this frequency's last trial, for the secants
-  std::vector<Solution> history_;             ///< the frequencies polished since forget()
+  std::vector<Solution> history_;             ///< the last two frequencies polished since forget()
   bool passed_fold_ = false;
 };
 

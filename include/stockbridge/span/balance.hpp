@@ -277,7 +277,12 @@ class UndampedFigures {
   void fill(std::size_t i, BalancePoint& p) const;
 
  private:
-  std::vector<BalancePoint> points_;
+  /// A BalancePoint's undamped_* fields: what is kept per frequency (not a whole
+  /// point, ten times its size, held for every frequency of the band).
+  struct Figures {
+    double amplitude, stress_fymax, bending_amplitude, stress_poffenberger_swart, judged_stress, life_stress;
+  };
+  std::vector<Figures> figures_;
 };
 
 /// Point i of run_balance on the tables alone (options.polish is not used): each
