@@ -242,9 +242,42 @@ int run_span_command(const SpanOptions& options, Invocation& invocation) {
   }
   const auto start = std::chrono::steady_clock::now();
   ProgressReport progress(invocation, "span: impedance tables", options.quiet);
-  const requests::SpanResult result = requests::run_span(file.span, file.balance, request, std::ref(progress));
+  // The rows go to the CSV as the points are balanced (none held, but for the HTML
+  // report, which draws them all), and what the summary and the notes need of them
+  // is tallied on the way; the file appears at the end, whole, or not at all. From
+  // the first row on, Ctrl-C stops the balance at the next point and removes it.
+  std::optional<requests::Table<span::BalancePoint>> table;
+  std::optional<requests::CsvFile<span::BalancePoint>> csv;
+  std::optional<InterruptRequest> interrupt;
+  requests::SpanPointTally tally;
+  std::function<void(const span::Span&, span::BalancePoint&&)> take_point;
+  if (!options.report) {
+    take_point = [&](const span::Span& balanced, span::BalancePoint&& p) {
+      if (!csv) {
+        interrupt.emplace();
+        csv.emplace(options.output, table.emplace(requests::span_table(balanced)));
+      }
+      if (InterruptRequest::requested()) throw Interrupted("the span was stopped");
+      csv->add(p);
+      tally.add(balanced, p);
+    };
+  }
+  std::optional<requests::SpanResult> balanced;
+  try {
+    balanced.emplace(requests::run_span(file.span, file.balance, request, std::ref(progress), std::move(take_point)));
+  } catch (const Interrupted&) {
+    fmt::print(stderr, "span: interrupted; nothing written\n");
+    return kInterrupted;
+  }
+  if (interrupt && InterruptRequest::requested()) {  // after the last point
+    fmt::print(stderr, "span: interrupted; nothing written\n");
+    return kInterrupted;
+  }
+  interrupt.reset();
+  const requests::SpanResult& result = *balanced;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const span::SpanAnalysis& a = result.analysis;
+  if (options.report) tally = requests::SpanPointTally::of(result);
   print_warnings(invocation, a.warnings);
   bool interrupted = false;
   const std::vector<requests::TimeCheck> checks =
@@ -257,9 +290,14 @@ int run_span_command(const SpanOptions& options, Invocation& invocation) {
   const std::string report =
       options.report ? report::span_report(result, invocation.report_context(), checks) : std::string();
   const std::string profile =
-      options.profile ? requests::span_profile_table().values(requests::span_profile_rows(requests::governing_profile(result))).csv()
-                      : std::string();
-  requests::write_csv_file(options.output, requests::span_table(a.span), a.balance.points);
+      options.profile
+          ? requests::span_profile_table().values(requests::span_profile_rows(requests::governing_profile(a.span, tally))).csv()
+          : std::string();
+  if (csv) {
+    csv->commit();
+  } else {
+    requests::write_csv_file(options.output, requests::span_table(a.span), a.balance.points);
+  }
   if (options.report) io::write_file_atomically(*options.report, report);
   if (options.profile) io::write_file_atomically(*options.profile, profile);
   if (options.check_time_output) {
@@ -268,7 +306,7 @@ int run_span_command(const SpanOptions& options, Invocation& invocation) {
 
   const span::BalanceSummary& summary = a.balance.summary;
   if (options.json) {
-    io::JsonObject json = requests::span_summary(result).add("seconds", seconds);
+    io::JsonObject json = requests::span_summary(result, tally).add("seconds", seconds);
     if (options.check_time) json.add("check_time", requests::time_check_rows(checks, poffenberger_swart));
     fmt::print("{}\n", json.str());
   } else if (!options.quiet) {
@@ -278,9 +316,7 @@ int run_span_command(const SpanOptions& options, Invocation& invocation) {
   if (!options.quiet) {
     fmt::print(stderr, "span: {} points in {:.2f} s, {} converged\n", summary.points, seconds, summary.converged);
   }
-  for (const span::BalancePoint& p : a.balance.points) {
-    if (p.several_states) fmt::print(stderr, "  note: f = {:.4g} Hz: {}\n", p.frequency_hz, p.note);
-  }
+  for (const auto& [frequency, note] : tally.several_states) fmt::print(stderr, "  note: f = {:.4g} Hz: {}\n", frequency, note);
   const int failed = summary.points - summary.converged;
   const bool checks_compared =
       std::all_of(checks.begin(), checks.end(), [](const requests::TimeCheck& c) { return c.compared(); });
@@ -288,10 +324,9 @@ int run_span_command(const SpanOptions& options, Invocation& invocation) {
   fmt::print(stderr, "span: {} points did not converge (converged = 0, numbers left empty in {}):\n", failed,
              options.output);
   int shown = 0;
-  for (const span::BalancePoint& p : a.balance.points) {
-    if (p.converged()) continue;
+  for (const auto& [frequency, why] : tally.failed) {
     if (++shown > 10) break;
-    fmt::print(stderr, "  f = {:.4g} Hz: {}\n", p.frequency_hz, brief_report(p.summary));
+    fmt::print(stderr, "  f = {:.4g} Hz: {}\n", frequency, brief_report(why));
   }
   if (failed > 10) fmt::print(stderr, "  ... and {} more\n", failed - 10);
   return kNotConverged;

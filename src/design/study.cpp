@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -207,13 +208,22 @@ span::Span DesignStudy::span_with(std::size_t k, const damper::Damper& damper, s
 
 namespace {
 
-/// The first point of a balance that did not converge.
-const span::BalancePoint* first_failure(const span::SpanBalance& b) {
-  for (const span::BalancePoint& p : b.points) {
-    if (!p.converged()) return &p;
+/// What a candidate needs of a span's points, taken as they are balanced (none held):
+/// the first that did not converge, and the largest messenger curvature.
+struct PointFigures {
+  std::optional<span::BalancePoint> first_failure;
+  double messenger_curvature = 0.0;
+
+  void take(span::BalancePoint&& p) {
+    if (!p.converged()) {
+      if (!first_failure) first_failure = std::move(p);
+      return;
+    }
+    for (const span::DamperAtBalance& d : p.dampers) {
+      messenger_curvature = std::max(messenger_curvature, d.messenger_curvature_max);
+    }
   }
-  return nullptr;
-}
+};
 
 /// The constraint a converged candidate breaks, if any.
 std::string broken_constraint(const DesignConstraints& c, const Evaluation& e) {
@@ -257,6 +267,8 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
     }
     span::AnalysisOptions options;
     options.balance = design_span.balance;
+    PointFigures figures;
+    options.take_point = [&figures](const span::Span&, span::BalancePoint&& p) { figures.take(std::move(p)); };
     const span::TableSource tables = [&](const span::Span& with, const std::vector<double>& f,
                                          const span::ImpedanceTableOptions& table) {
       const auto make = [&] { return std::make_shared<const span::SpanTables>(with, f, table); };
@@ -267,7 +279,7 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
     };
     const span::SpanAnalysis a = span::analyse_span(*s, span::band_frequencies(*s, study.points()), options, {}, tables);
     const span::BalanceSummary& b = a.balance.summary;
-    if (const span::BalancePoint* p = first_failure(a.balance)) {
+    if (const std::optional<span::BalancePoint>& p = figures.first_failure) {
       e.termination = p->summary.termination;
       e.failure = fmt::format("span {}: {} of {} points did not converge, first at {:.4g} Hz: {}", design_span.name,
                               b.points - b.converged, b.points, p->frequency_hz, brief_report(p->summary));
@@ -284,9 +296,7 @@ Evaluation evaluate(const DesignStudy& study, const std::vector<double>& x, Tabl
       e.span_at_max = k;
       e.place_at_max = b.max_judged_stress_place;
     }
-    for (const span::BalancePoint& p : a.balance.points) {
-      for (const span::DamperAtBalance& d : p.dampers) curvature = std::max(curvature, d.messenger_curvature_max);
-    }
+    curvature = std::max(curvature, figures.messenger_curvature);
     if (b.life) life = std::min(life, b.life->life_years);
   }
   e.termination = Termination::converged;

@@ -135,10 +135,12 @@ span::Span span_as_asked(const span::Span& file_span, const SpanRequest& request
 }  // namespace
 
 SpanResult run_span(const span::Span& file_span, const span::BalanceOptions& file, const CheckedSpanRequest& checked,
-                    const damper::SweepProgress& progress) {
+                    const damper::SweepProgress& progress,
+                    std::function<void(const span::Span&, span::BalancePoint&&)> take_point) {
   check_against_span(checked, file_span);
   const SpanRequest& request = checked.request();
-  const span::AnalysisOptions options = analysis_options(file, checked);
+  span::AnalysisOptions options = analysis_options(file, checked);
+  options.take_point = std::move(take_point);
   const span::Span span = span_as_asked(file_span, request);
   std::vector<double> frequencies =
       request.frequencies.empty() ? span::band_frequencies(span, request.points) : request.frequencies;
@@ -402,13 +404,31 @@ Table<SpanProfileRow> span_profile_table() {
   });
 }
 
-span::SpanProfile governing_profile(const SpanResult& result) {
-  const span::SpanAnalysis& a = result.analysis;
-  try {
-    return span::span_profile(a.span, span::governing_point(a.span, a.balance));
-  } catch (const InvalidParameter&) {
+void SpanPointTally::add(const span::Span& span, const span::BalancePoint& p) {
+  if (!p.converged()) {
+    failed.emplace_back(p.frequency_hz, p.summary);
+    return;
+  }
+  max_identity_error = std::isnan(max_identity_error) ? p.identity_error : std::max(max_identity_error, p.identity_error);
+  if (p.several_states) several_states.emplace_back(p.frequency_hz, p.note);
+  if (!governing || span::judged_stress(span, p) > span::judged_stress(span, *governing)) governing = p;
+}
+
+SpanPointTally SpanPointTally::of(const SpanResult& result) {
+  SpanPointTally tally;
+  for (const span::BalancePoint& p : result.analysis.balance.points) tally.add(result.analysis.span, p);
+  return tally;
+}
+
+span::SpanProfile governing_profile(const span::Span& span, const SpanPointTally& tally) {
+  if (!tally.governing) {
     throw InvalidParameter("profile", ": no point of the balance converged: no governing frequency to show");
   }
+  return span::span_profile(span, *tally.governing);
+}
+
+span::SpanProfile governing_profile(const SpanResult& result) {
+  return governing_profile(result.analysis.span, SpanPointTally::of(result));
 }
 
 }  // namespace stockbridge::requests

@@ -140,7 +140,9 @@ io::JsonObject span_inputs(const span::Span& span) {
 
 }  // namespace
 
-io::JsonObject span_summary(const SpanResult& result) {
+io::JsonObject span_summary(const SpanResult& result) { return span_summary(result, SpanPointTally::of(result)); }
+
+io::JsonObject span_summary(const SpanResult& result, const SpanPointTally& tally) {
   const span::SpanAnalysis& a = result.analysis;
   const span::BalanceSummary& s = a.balance.summary;
   const bool dampers = !a.span.dampers().empty();
@@ -178,24 +180,19 @@ io::JsonObject span_summary(const SpanResult& result) {
     add_life("", s.life, s.life_missing_points);
     add_life("undamped_", s.undamped_life, s.undamped_life_missing_points);
   }
-  double identity = kNoValue;
   std::vector<io::JsonObject> failed;
-  std::vector<double> several;
-  for (const span::BalancePoint& p : a.balance.points) {
-    if (p.converged()) {
-      identity = std::isnan(identity) ? p.identity_error : std::max(identity, p.identity_error);
-      if (p.several_states) several.push_back(p.frequency_hz);
-      continue;
-    }
+  for (const auto& [frequency, why] : tally.failed) {
     failed.push_back(io::JsonObject()
-                         .add("frequency_hz", p.frequency_hz)
-                         .add("termination", termination_name(p.summary.termination))
-                         .add("reason", brief_report(p.summary)));
+                         .add("frequency_hz", frequency)
+                         .add("termination", termination_name(why.termination))
+                         .add("reason", brief_report(why)));
   }
+  std::vector<double> several;
+  for (const auto& [frequency, note] : tally.several_states) several.push_back(frequency);
   json.add("impedance_nodes", s.impedance_nodes)
       .add("failed_impedance_nodes", s.failed_impedance_nodes)
       .add("direct_solves", s.direct_solves)
-      .add("max_energy_identity_error", identity)
+      .add("max_energy_identity_error", tally.max_identity_error)
       .add("several_states_hz", several)
       .add("failed", failed)
       .add("sheet_error_estimate", a.sheet_error_estimate)

@@ -130,10 +130,18 @@ SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, con
     for (std::size_t j = 0; j < placed.size(); ++j) placed[j].position = out.position->positions[j];
     out.span = span.with_dampers(std::move(placed));
   }
-  out.balance = run_balance(out.span, *made, options.balance, nullptr, options.stop_after);
-  if (out.stopped_early()) return out;
-  add_sheet_band(out, *made, options.balance);
-  add_edge_warning(out);
+  const bool hold = !options.take_point || !measured_names(out.span).empty();  // a sheet's band needs every point
+  std::function<void(BalancePoint&&)> take;
+  if (!hold) take = [&](BalancePoint&& p) { options.take_point(out.span, std::move(p)); };
+  out.balance = run_balance(out.span, *made, options.balance, nullptr, options.stop_after, take);
+  if (!out.stopped_early()) {
+    add_sheet_band(out, *made, options.balance);
+    add_edge_warning(out);
+  }
+  if (hold && options.take_point) {
+    for (BalancePoint& p : out.balance.points) options.take_point(out.span, std::move(p));
+    out.balance.points.clear();
+  }
   return out;
 }
 

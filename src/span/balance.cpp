@@ -394,7 +394,8 @@ BalancePoint balance_on_tables(const Span& span, const SpanTables& tables, std::
 }
 
 SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
-                        const UndampedFigures* undamped, const std::function<bool(const BalancePoint&)>& stop_after) {
+                        const UndampedFigures* undamped, const std::function<bool(const BalancePoint&)>& stop_after,
+                        const std::function<void(BalancePoint&&)>& take_point) {
   options.validate();
   if (tables.tables().size() != span.dampers().size()) {
     throw std::invalid_argument(
@@ -405,12 +406,20 @@ SpanBalance run_balance(const Span& span, const SpanTables& tables, const Balanc
   if (options.polish && !span.dampers().empty()) polish.emplace(span, options);
   std::optional<UndampedFigures> own;
   if (!undamped) undamped = &own.emplace(span, tables, options);
-  out.points.reserve(tables.frequencies().size());
+  if (!take_point) out.points.reserve(tables.frequencies().size());
+  SummaryBuilder summary(span);
   for (std::size_t i = 0; i < tables.frequencies().size(); ++i) {
-    out.points.push_back(balance_at(span, tables, i, polish ? &*polish : nullptr, options, *undamped));
-    if (stop_after && stop_after(out.points.back())) break;
+    BalancePoint p = balance_at(span, tables, i, polish ? &*polish : nullptr, options, *undamped);
+    const bool stop = stop_after && stop_after(p);
+    summary.add(p);
+    if (take_point) {
+      take_point(std::move(p));
+    } else {
+      out.points.push_back(std::move(p));
+    }
+    if (stop) break;
   }
-  out.summary = summarise(span, out.points);
+  out.summary = summary.result();
   out.summary.impedance_nodes = tables.nodes();
   out.summary.failed_impedance_nodes = tables.failed_nodes();
   if (polish) out.summary.direct_solves = polish->direct_solves();

@@ -48,28 +48,22 @@ double judged_stress_high(const Span& span, const BalancePoint& point) {
   return judged_stress(span, point) * point.stress_fymax_high / point.stress_fymax;
 }
 
+void SummaryBuilder::Largest::add(double frequency, double s) {
+  if (!std::isfinite(s)) return;
+  ++known;
+  if (s > stress) stress = s, frequency_hz = frequency;
+}
+
+/// Safe only when every point is known and within the limit; unsafe as soon as one
+/// known point exceeds it; uncertain where every point is known within it but a
+/// band's top (`high`, NaN: none) reaches above.
+Verdict SummaryBuilder::Largest::verdict(int points, double limit, double high) const {
+  if (stress > limit) return Verdict::unsafe;
+  if (known != points) return Verdict::unknown;
+  return high > limit ? Verdict::uncertain : Verdict::safe;
+}
+
 namespace {
-
-/// The largest of a stress over the points where it is known, and what it means.
-struct Largest {
-  double stress = 0.0;
-  double frequency_hz = 0.0;
-  int known = 0;  ///< points with the stress
-
-  void add(double frequency, double s) {
-    if (!std::isfinite(s)) return;
-    ++known;
-    if (s > stress) stress = s, frequency_hz = frequency;
-  }
-  /// Safe only when every point is known and within the limit; unsafe as soon as one
-  /// known point exceeds it; uncertain where every point is known within it but a
-  /// band's top (`high`, NaN: none) reaches above.
-  Verdict verdict(int points, double limit, double high = std::numeric_limits<double>::quiet_NaN()) const {
-    if (stress > limit) return Verdict::unsafe;
-    if (known != points) return Verdict::unknown;
-    return high > limit ? Verdict::uncertain : Verdict::safe;
-  }
-};
 
 /// Miner's life from one stress per frequency, none where a stress is missing.
 std::optional<LifeEstimate> life_of(const Span& span, const std::vector<double>& frequencies,
@@ -82,58 +76,67 @@ std::optional<LifeEstimate> life_of(const Span& span, const std::vector<double>&
 
 }  // namespace
 
-BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& points) {
-  BalanceSummary s;
-  s.points = static_cast<int>(points.size());
-  s.endurance_limit = span.endurance_limit();
-  Largest damped, undamped, judged, undamped_judged;
-  double high = std::numeric_limits<double>::quiet_NaN();
+SummaryBuilder::SummaryBuilder(const Span& span)
+    : span_(span), high_(std::numeric_limits<double>::quiet_NaN()) {
+  s_.endurance_limit = span.endurance_limit();
+}
+
+void SummaryBuilder::add(const BalancePoint& p) {
+  ++s_.points;
   // The S-N curves (the Safe Border Line, a fitted table) are stated for the Poffenberger-Swart
   // stress: the lives use it.
-  std::vector<double> frequencies, stresses, undamped_stresses;
-  for (const BalancePoint& p : points) {
-    frequencies.push_back(p.frequency_hz);
-    const double stress = p.converged() ? life_stress(p) : std::numeric_limits<double>::quiet_NaN();
-    stresses.push_back(stress);
-    undamped_stresses.push_back(p.undamped_life_stress);
-    undamped.add(p.frequency_hz, p.undamped_stress_fymax);
-    undamped_judged.add(p.frequency_hz, p.undamped_judged_stress);
-    if (std::isfinite(p.undamped_bending_amplitude)) {
-      s.undamped_max_bending_amplitude = std::max(s.undamped_max_bending_amplitude, p.undamped_bending_amplitude);
-      s.undamped_max_stress_poffenberger_swart =
-          std::max(s.undamped_max_stress_poffenberger_swart, p.undamped_stress_poffenberger_swart);
-    }
-    if (!p.converged()) continue;
-    ++s.converged;
-    damped.add(p.frequency_hz, p.stress_fymax);
-    const GoverningPlace governing = governing_place(span, p);
-    if (governing.stress > judged.stress) s.max_judged_stress_place = governing.place;
-    judged.add(p.frequency_hz, governing.stress);
-    // A point without a band (no vibration: stress 0) leaves the largest top as it is.
-    if (const double top = judged_stress_high(span, p); std::isfinite(top) && !(top <= high)) high = top;
-    s.max_bending_amplitude = std::max(s.max_bending_amplitude, p.bending_amplitude);
-    s.max_stress_poffenberger_swart = std::max(s.max_stress_poffenberger_swart, p.stress_poffenberger_swart);
-    s.max_damper_clamp_stress = std::max(s.max_damper_clamp_stress, p.damper_clamp_stress);
-    if (p.several_states) ++s.several_states;
+  if (span_.fatigue().life) {
+    frequencies_.push_back(p.frequency_hz);
+    stresses_.push_back(p.converged() ? life_stress(p) : std::numeric_limits<double>::quiet_NaN());
+    undamped_stresses_.push_back(p.undamped_life_stress);
   }
-  s.max_stress_fymax = damped.stress;
-  s.max_stress_frequency_hz = damped.frequency_hz;
-  s.max_judged_stress = judged.stress;
-  s.max_judged_stress_frequency_hz = judged.frequency_hz;
-  s.max_judged_stress_high = high;
-  s.verdict = judged.verdict(s.points, s.endurance_limit, high);
-  s.undamped_points = undamped.known;
-  s.undamped_max_stress_fymax = undamped.stress;
-  s.undamped_max_stress_frequency_hz = undamped.frequency_hz;
-  s.undamped_max_judged_stress = undamped_judged.stress;
-  s.undamped_verdict = undamped_judged.verdict(s.points, s.endurance_limit);
-  if (span.fatigue().life) {
-    s.life = life_of(span, frequencies, stresses);
-    s.undamped_life = life_of(span, frequencies, undamped_stresses);
+  undamped_.add(p.frequency_hz, p.undamped_stress_fymax);
+  undamped_judged_.add(p.frequency_hz, p.undamped_judged_stress);
+  if (std::isfinite(p.undamped_bending_amplitude)) {
+    s_.undamped_max_bending_amplitude = std::max(s_.undamped_max_bending_amplitude, p.undamped_bending_amplitude);
+    s_.undamped_max_stress_poffenberger_swart =
+        std::max(s_.undamped_max_stress_poffenberger_swart, p.undamped_stress_poffenberger_swart);
+  }
+  if (!p.converged()) return;
+  ++s_.converged;
+  damped_.add(p.frequency_hz, p.stress_fymax);
+  const GoverningPlace governing = governing_place(span_, p);
+  if (governing.stress > judged_.stress) s_.max_judged_stress_place = governing.place;
+  judged_.add(p.frequency_hz, governing.stress);
+  // A point without a band (no vibration: stress 0) leaves the largest top as it is.
+  if (const double top = judged_stress_high(span_, p); std::isfinite(top) && !(top <= high_)) high_ = top;
+  s_.max_bending_amplitude = std::max(s_.max_bending_amplitude, p.bending_amplitude);
+  s_.max_stress_poffenberger_swart = std::max(s_.max_stress_poffenberger_swart, p.stress_poffenberger_swart);
+  s_.max_damper_clamp_stress = std::max(s_.max_damper_clamp_stress, p.damper_clamp_stress);
+  if (p.several_states) ++s_.several_states;
+}
+
+BalanceSummary SummaryBuilder::result() const {
+  BalanceSummary s = s_;
+  s.max_stress_fymax = damped_.stress;
+  s.max_stress_frequency_hz = damped_.frequency_hz;
+  s.max_judged_stress = judged_.stress;
+  s.max_judged_stress_frequency_hz = judged_.frequency_hz;
+  s.max_judged_stress_high = high_;
+  s.verdict = judged_.verdict(s.points, s.endurance_limit, high_);
+  s.undamped_points = undamped_.known;
+  s.undamped_max_stress_fymax = undamped_.stress;
+  s.undamped_max_stress_frequency_hz = undamped_.frequency_hz;
+  s.undamped_max_judged_stress = undamped_judged_.stress;
+  s.undamped_verdict = undamped_judged_.verdict(s.points, s.endurance_limit, std::numeric_limits<double>::quiet_NaN());
+  if (span_.fatigue().life) {
+    s.life = life_of(span_, frequencies_, stresses_);
+    s.undamped_life = life_of(span_, frequencies_, undamped_stresses_);
     s.life_missing_points = s.points - s.converged;
     s.undamped_life_missing_points = s.points - s.undamped_points;
   }
   return s;
+}
+
+BalanceSummary summarise(const Span& span, const std::vector<BalancePoint>& points) {
+  SummaryBuilder builder(span);
+  for (const BalancePoint& p : points) builder.add(p);
+  return builder.result();
 }
 
 }  // namespace stockbridge::span

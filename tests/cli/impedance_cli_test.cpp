@@ -32,34 +32,16 @@ TEST(ImpedanceCli, SweepOfTheShippedExample) {
   EXPECT_NE(lines[1].find(",1,"), std::string::npos);  // converged
 }
 
-/// The hidden temporary file a streamed output is written to beside `output`, or
-/// an empty path while there is none.
-std::filesystem::path temporary_beside(const std::filesystem::path& dir, const std::string& output) {
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().filename().string().starts_with("." + output + ".tmp-")) return entry.path();
-  }
-  return {};
-}
-
 // The rows are written as they are final: a long sweep's temporary file grows while
 // it runs. Ctrl-C then ends it with status 130, the temporary file removed and no
 // output file: nothing partial is left.
 TEST(ImpedanceCli, RowsAreStreamedAndCtrlCLeavesNothing) {
   const auto dir = scratch_directory("impedance-streamed");
-  std::filesystem::path seen;
-  const int status = run_cli_stopped_when(
-      "impedance '" + kDamperExample + "' --velocity 0.1 --points 1000000 -o z.csv --quiet", dir,
-      [&] {
-        const std::filesystem::path temporary = temporary_beside(dir, "z.csv");
-        std::error_code ec;
-        if (temporary.empty() || std::filesystem::file_size(temporary, ec) < 4096 || ec) return false;
-        seen = temporary;
-        return true;
-      },
-      SIGINT);
-  ASSERT_FALSE(seen.empty()) << "no rows in a temporary file within five minutes";
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130) << read_text(dir / "run.err");
+  const StreamedStop stop = run_cli_stopped_streaming(
+      "impedance '" + kDamperExample + "' --velocity 0.1 --points 1000000 -o z.csv --quiet", dir, "z.csv", SIGINT);
+  ASSERT_TRUE(stop.seen) << "no rows in a temporary file within five minutes";
+  ASSERT_TRUE(WIFEXITED(stop.status));
+  EXPECT_EQ(WEXITSTATUS(stop.status), 130) << read_text(dir / "run.err");
   EXPECT_NE(read_text(dir / "run.err").find("impedance: interrupted; nothing written"), std::string::npos)
       << read_text(dir / "run.err");
   EXPECT_FALSE(std::filesystem::exists(dir / "z.csv"));

@@ -9,6 +9,7 @@
 // weak model, two frequencies instead of three) and check the same things.
 
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <algorithm>
 #include <filesystem>
@@ -85,6 +86,44 @@ TEST(SpanCli, RunsTheExampleAndWritesTheCsv) {
   EXPECT_NE(r.out.find("life: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("lives are comparative: they rest on the assumed wind climate"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("span: " + std::to_string(points) + " points in "), std::string::npos) << r.err;
+}
+
+// Without --report the rows go to the CSV as the points are balanced and the summary,
+// the profile and the notes are tallied on the way (nothing held); with it the points
+// are held for the report's curves. Both write the same CSV, profile and summary.
+TEST(SpanCli, RowsStreamedAreTheRowsARunThatHoldsThemWrites) {
+  const auto dir = scratch_directory("span-streamed-held");
+  const std::string points = std::to_string(scaled(16, 4));
+  const CliResult streamed =
+      run_cli("span '" + kSpanExample + "' --points " + points + " --json -o a.csv --profile pa.csv", dir);
+  const CliResult held =
+      run_cli("span '" + kSpanExample + "' --points " + points + " --json -o b.csv --profile pb.csv --report r.html", dir);
+  ASSERT_EQ(streamed.exit_code, 0) << streamed.err;
+  ASSERT_EQ(held.exit_code, 0) << held.err;
+  EXPECT_EQ(read_text(dir / "a.csv"), read_text(dir / "b.csv"));
+  EXPECT_EQ(read_text(dir / "pa.csv"), read_text(dir / "pb.csv"));
+  const auto without_seconds = [](const std::string& json) {
+    const std::size_t at = json.find("\"seconds\"");
+    return at == std::string::npos ? json : json.substr(0, at) + json.substr(json.find_first_of(",}", at));
+  };
+  EXPECT_EQ(without_seconds(streamed.out), without_seconds(held.out));
+  EXPECT_TRUE(std::filesystem::exists(dir / "r.html"));
+}
+
+// The span's rows are written as they are final: a long band's temporary file grows
+// while it runs. Ctrl-C then ends it with status 130, the temporary file removed and
+// no output file.
+TEST(SpanCli, RowsAreStreamedAndCtrlCLeavesNothing) {
+  const auto dir = scratch_directory("span-streamed");
+  const StreamedStop stop =
+      run_cli_stopped_streaming("span '" + kSpanExample + "' --points 100000 -o s.csv --quiet", dir, "s.csv", SIGINT);
+  ASSERT_TRUE(stop.seen) << "no rows in a temporary file within five minutes";
+  ASSERT_TRUE(WIFEXITED(stop.status));
+  EXPECT_EQ(WEXITSTATUS(stop.status), 130) << read_text(dir / "run.err");
+  EXPECT_NE(read_text(dir / "run.err").find("span: interrupted; nothing written"), std::string::npos)
+      << read_text(dir / "run.err");
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.csv"));
+  EXPECT_TRUE(temporary_beside(dir, "s.csv").empty());
 }
 
 TEST(SpanCli, JsonSummaryHasEveryKey) {

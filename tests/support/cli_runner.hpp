@@ -125,6 +125,36 @@ inline int run_cli_stopped_when(const std::string& arguments, const std::filesys
   return status;
 }
 
+/// The hidden temporary file a streamed output is written to beside `output`
+/// (io::AtomicFileWriter's), or an empty path while there is none.
+inline std::filesystem::path temporary_beside(const std::filesystem::path& dir, const std::string& output) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().filename().string().starts_with("." + output + ".tmp-")) return entry.path();
+  }
+  return {};
+}
+
+/// run_cli_stopped_when the temporary file of the streamed `output` holds some rows
+/// (4 KiB): the wait status, and whether that file was seen before the signal.
+struct StreamedStop {
+  int status = 0;
+  bool seen = false;
+};
+inline StreamedStop run_cli_stopped_streaming(const std::string& arguments, const std::filesystem::path& directory,
+                                              const std::string& output, int signal) {
+  StreamedStop out;
+  out.status = run_cli_stopped_when(
+      arguments, directory,
+      [&] {
+        const std::filesystem::path temporary = temporary_beside(directory, output);
+        std::error_code ec;
+        out.seen = !temporary.empty() && std::filesystem::file_size(temporary, ec) >= 4096 && !ec;
+        return out.seen;
+      },
+      signal);
+  return out;
+}
+
 /// run_cli_stopped_when `journal` holds `records` records.
 inline int run_cli_stopped(const std::string& arguments, const std::filesystem::path& directory,
                            const std::filesystem::path& journal, int records, int signal) {

@@ -106,6 +106,32 @@ TEST(MeasuredSheet, FiveVelocitiesSayTheSheetIsTooCoarse) {
   EXPECT_NE(run.sheet.warnings.front().find("is too coarse for this span"), std::string::npos) << run.sheet.warnings.front();
 }
 
+// Points taken as they come (AnalysisOptions::take_point) with a measured sheet: the
+// band is the worst over every point, so the analysis holds them until it is set and
+// then hands them on, each with its band, as the held analysis has them.
+TEST(MeasuredSheet, PointsTakenAsTheyComeCarryTheSheetsBand) {
+  const Span model = example_span();
+  const Span sheet = measured(model, sheet_of(*model.dampers()[0].damper, damper::log_spaced(0.01, 1.0, 5)));
+  const std::vector<double> f = band_frequencies(model, 10);
+  const SpanAnalysis held = analyse_span(sheet, f, {});
+  std::vector<BalancePoint> taken;
+  AnalysisOptions options;
+  options.take_point = [&taken](const Span&, BalancePoint&& p) { taken.push_back(std::move(p)); };
+  const SpanAnalysis streamed = analyse_span(sheet, f, options);
+  EXPECT_TRUE(streamed.balance.points.empty());
+  EXPECT_EQ(streamed.sheet_error_estimate, held.sheet_error_estimate);
+  EXPECT_EQ(streamed.balance.summary.max_judged_stress_high, held.balance.summary.max_judged_stress_high);
+  EXPECT_EQ(streamed.balance.summary.verdict, held.balance.summary.verdict);
+  ASSERT_EQ(taken.size(), held.balance.points.size());
+  int banded = 0;
+  for (std::size_t i = 0; i < taken.size(); ++i) {
+    EXPECT_EQ(taken[i].stress_fymax, held.balance.points[i].stress_fymax) << f[i];
+    EXPECT_EQ(taken[i].stress_fymax_high, held.balance.points[i].stress_fymax_high) << f[i];
+    if (std::isfinite(taken[i].stress_fymax_high) && taken[i].stress_fymax_high > taken[i].stress_fymax) ++banded;
+  }
+  EXPECT_GT(banded, 0);
+}
+
 // Sheets of a known damper at 7 and 4 velocities (0.01 to 1 m/s): the band of the
 // sheet's own estimate covers the model's stress at every frequency of the band, so
 // that a verdict from the band's top (uncertain) is never too lenient; the printed

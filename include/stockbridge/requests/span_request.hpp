@@ -6,6 +6,7 @@
 // end shows (CSV columns, Python arrays) with the numbers of a point that did not
 // converge masked (NaN), and the summary (the --json keys).
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -81,9 +82,29 @@ struct SpanResult {
 /// Checks the request against the span (check_against_span) and runs the analysis
 /// (span::analyse_span) at the request's frequencies, with the span file's balance
 /// options (`file`) and the request's changes; `progress` counts the tables' nodes.
-/// Non-convergence is in the points, never an exception.
+/// Non-convergence is in the points, never an exception. `take_point`: each point
+/// handed on as it is final instead of held (span::AnalysisOptions::take_point; the
+/// result's points are then none).
 SpanResult run_span(const span::Span& span, const span::BalanceOptions& file, const CheckedSpanRequest& request,
-                    const damper::SweepProgress& progress = {});
+                    const damper::SweepProgress& progress = {},
+                    std::function<void(const span::Span&, span::BalancePoint&&)> take_point = {});
+
+/// What the summary, the profile and the program's notes need of a span's points
+/// beyond the balance's summary, gathered point by point (so that the points need
+/// not be held): the largest energy identity error, the points with several steady
+/// states and those that did not converge, and the governing point (the first of
+/// the largest judged stress).
+struct SpanPointTally {
+  double max_identity_error = kNoValue;        ///< over the converged points
+  std::vector<std::pair<double, std::string>> several_states;  ///< frequency, Hz, and the point's note
+  std::vector<std::pair<double, SolverSummary>> failed;        ///< frequency, Hz, and why
+  std::optional<span::BalancePoint> governing;
+
+  /// `span`: the span as balanced.
+  void add(const span::Span& span, const span::BalancePoint& p);
+  /// The tally of a result's points.
+  static SpanPointTally of(const SpanResult& result);
+};
 
 /// How the per-damper columns name each damper: the span's names (the damper files'
 /// stems) where every one is unique and made of letters, digits and '_', else
@@ -121,6 +142,8 @@ Table<SpanProfileRow> span_profile_table();
 /// The profile at the balance's governing frequency (the largest judged stress);
 /// InvalidParameter naming "profile" when no point converged.
 span::SpanProfile governing_profile(const SpanResult& result);
+/// The same from a tally of its points (`span`: the span as balanced).
+span::SpanProfile governing_profile(const span::Span& span, const SpanPointTally& tally);
 
 /// The summary, as `stockbridge span --json` prints it and Python returns it:
 /// points, converged, damper_model, dampers, endurance_limit_mpa, verdict (safe,
@@ -133,5 +156,7 @@ span::SpanProfile governing_profile(const SpanResult& result);
 /// impedance_nodes, failed_impedance_nodes, direct_solves, max_energy_identity_error,
 /// several_states_hz, failed.
 io::JsonObject span_summary(const SpanResult& result);
+/// The same where the points were handed on as they came (`tally`: of all of them).
+io::JsonObject span_summary(const SpanResult& result, const SpanPointTally& tally);
 
 }  // namespace stockbridge::requests

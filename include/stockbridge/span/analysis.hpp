@@ -26,6 +26,13 @@ struct AnalysisOptions {
   /// Ends the balance after the first point it holds for (run_balance's stop_after):
   /// the analysis is then of the frequencies balanced so far, without the sheets' band.
   std::function<bool(const BalancePoint&)> stop_after;
+  /// Takes each point as it is final, with the span as balanced (its dampers where
+  /// the search put them), instead of the analysis holding it (a caller that needs
+  /// each point once, a row or a running figure, in the band's order): the
+  /// balance's points are then none, its summary and warnings the same. With
+  /// measured dampers the points are held until the sheets' band is set on them
+  /// (it is the worst over all of them), then handed on.
+  std::function<void(const Span&, BalancePoint&&)> take_point;
 
   /// Throws InvalidParameter naming the field ("table.velocities", "position_min", "spacing_min").
   void validate() const;
@@ -46,7 +53,7 @@ struct SpanAnalysis {
 
   /// Whether the balance ended before the band's top (AnalysisOptions::stop_after):
   /// its points are then the lowest frequencies', and it has no sheet band or warnings.
-  bool stopped_early() const { return balance.points.size() < frequencies.size(); }
+  bool stopped_early() const { return static_cast<std::size_t>(balance.summary.points) < frequencies.size(); }
 };
 
 /// The relative sheet error above which a warning says the sheet is too coarse.

@@ -11,7 +11,10 @@
 
 #include "aster570.hpp"
 #include "span/balance_summary.hpp"
+#include "stockbridge/io/span_file.hpp"
+#include "stockbridge/span/analysis.hpp"
 #include "stockbridge/span/balance.hpp"
+#include "support/test_scale.hpp"
 
 namespace stockbridge::span {
 namespace {
@@ -150,6 +153,48 @@ TEST(BalanceSummary, RefreshingASummaryKeepsItsCountersAndTakesTheBand) {
   EXPECT_EQ(balance.summary.impedance_nodes, 42);
   EXPECT_EQ(balance.summary.failed_impedance_nodes, 1);
   EXPECT_EQ(balance.summary.direct_solves, 7);
+}
+
+// A caller that takes the points as they are balanced (AnalysisOptions::take_point, as
+// the design's candidates do) gets the held analysis' points, in the band's order,
+// and the same summary, life included, while the analysis holds none: the example
+// span (its climate gives a life) on a band of its own.
+TEST(SummaryBuilder, PointsTakenAsTheyComeAreTheHeldOnesAndSoIsTheSummary) {
+  const io::SpanFile file = io::load_span_file(std::string(STOCKBRIDGE_SOURCE_DIR) + "/examples/aster570_400m.toml");
+  const std::vector<double> f = band_frequencies(file.span, stockbridge::testing::scaled(12, 4));
+  AnalysisOptions options;
+  options.balance = file.balance;
+  const SpanAnalysis held = analyse_span(file.span, f, options);
+  std::vector<BalancePoint> taken;
+  options.take_point = [&taken](const Span&, BalancePoint&& p) { taken.push_back(std::move(p)); };
+  const SpanAnalysis streamed = analyse_span(file.span, f, options);
+  EXPECT_TRUE(streamed.balance.points.empty());
+  EXPECT_FALSE(streamed.stopped_early());
+  ASSERT_EQ(taken.size(), held.balance.points.size());
+  for (std::size_t i = 0; i < taken.size(); ++i) {
+    const BalancePoint &a = held.balance.points[i], &b = taken[i];
+    EXPECT_EQ(b.frequency_hz, a.frequency_hz);
+    EXPECT_EQ(b.amplitude, a.amplitude);
+    EXPECT_EQ(b.stress_fymax, a.stress_fymax);
+    EXPECT_EQ(b.undamped_stress_fymax, a.undamped_stress_fymax);
+    ASSERT_EQ(b.dampers.size(), a.dampers.size());
+    for (std::size_t d = 0; d < a.dampers.size(); ++d) EXPECT_EQ(b.dampers[d].clamp_velocity, a.dampers[d].clamp_velocity);
+  }
+  const BalanceSummary &h = held.balance.summary, &s = streamed.balance.summary;
+  EXPECT_EQ(s.points, h.points);
+  EXPECT_EQ(s.converged, h.converged);
+  EXPECT_EQ(s.max_judged_stress, h.max_judged_stress);
+  EXPECT_EQ(s.max_judged_stress_frequency_hz, h.max_judged_stress_frequency_hz);
+  EXPECT_EQ(s.max_judged_stress_place, h.max_judged_stress_place);
+  EXPECT_EQ(s.undamped_max_judged_stress, h.undamped_max_judged_stress);
+  EXPECT_EQ(s.verdict, h.verdict);
+  ASSERT_TRUE(h.life.has_value());
+  ASSERT_TRUE(s.life.has_value());
+  EXPECT_EQ(s.life->life_years, h.life->life_years);
+  EXPECT_EQ(s.undamped_life->life_years, h.undamped_life->life_years);
+  EXPECT_EQ(streamed.warnings, held.warnings);
+  // The summary of the points taken, made again from them, is the streamed one.
+  EXPECT_EQ(summarise(streamed.span, taken).max_judged_stress, s.max_judged_stress);
 }
 
 }  // namespace
