@@ -265,11 +265,8 @@ int run_span_command(const SpanOptions& options, Invocation& invocation) {
   std::optional<requests::SpanResult> balanced;
   try {
     balanced.emplace(requests::run_span(file.span, file.balance, request, std::ref(progress), std::move(take_point)));
+    if (interrupt && InterruptRequest::requested()) throw Interrupted("the span was stopped");  // after the last point
   } catch (const Interrupted&) {
-    fmt::print(stderr, "span: interrupted; nothing written\n");
-    return kInterrupted;
-  }
-  if (interrupt && InterruptRequest::requested()) {  // after the last point
     fmt::print(stderr, "span: interrupted; nothing written\n");
     return kInterrupted;
   }
