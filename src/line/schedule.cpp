@@ -4,9 +4,11 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include <fmt/format.h>
 
+#include "race.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/span/tension_figures.hpp"
 
@@ -91,20 +93,28 @@ std::size_t type_index(const Line& line, const std::string& name) {
 std::size_t damper_count(const Arrangement& a) { return a.positions.size() + (a.sphere_distance ? 1 : 0); }
 
 /// The span's balance with an arrangement (its analysis as `stockbridge span` makes
-/// it), `stop_after` as AnalysisOptions's.
-span::SpanAnalysis analyse_with(const Line& line, std::size_t index, std::size_t type, const Arrangement& arrangement,
-                                TableCache& cache, std::function<bool(const span::BalancePoint&)> stop_after = {}) {
+/// it), to be advanced a frequency at a time.
+std::unique_ptr<span::SpanAnalysisRun> analysis_run(const Line& line, std::size_t index, std::size_t type,
+                                                    const Arrangement& arrangement, TableCache& cache) {
   const LineSpan& s = line.spans()[index];
   span::AnalysisOptions options;
   options.balance = s.balance;
-  options.stop_after = std::move(stop_after);
   const std::vector<double> f = span::band_frequencies(s.span, line.rules().points);
-  if (arrangement.positions.empty()) return span::analyse_span(s.span, f, options);
+  if (arrangement.positions.empty()) return std::make_unique<span::SpanAnalysisRun>(s.span, f, options);
   const span::TableSource tables = [&](const span::Span&, const std::vector<double>& frequencies,
                                        const span::ImpedanceTableOptions& table) {
     return type_tables(line, type, damper_count(arrangement), frequencies, table, cache);
   };
-  return span::analyse_span(with_arrangement(s.span, line.types()[type], arrangement), f, options, {}, tables);
+  return std::make_unique<span::SpanAnalysisRun>(with_arrangement(s.span, line.types()[type], arrangement), f, options,
+                                                 damper::SweepProgress{}, tables);
+}
+
+/// The span's balance with an arrangement, every frequency.
+span::SpanAnalysis analyse_with(const Line& line, std::size_t index, std::size_t type, const Arrangement& arrangement,
+                                TableCache& cache) {
+  const std::unique_ptr<span::SpanAnalysisRun> run = analysis_run(line, index, type, arrangement, cache);
+  while (!run->done()) run->next();
+  return run->finish();
 }
 
 /// The distances the dampers beside the masses are tried at: sphere_distance_min, the
@@ -132,7 +142,7 @@ std::vector<double> sphere_distances(const ScheduleRules& rules) {
 struct Candidate {
   std::size_t type = 0;
   Arrangement arrangement;
-  /// The polished balance; none where it was left early (polished_candidate: proven
+  /// The polished balance; none where it was left early (polished_best: proven
   /// unsafe, or unable to beat its rival).
   std::optional<span::SpanAnalysis> analysis;
   int balances = 0;
@@ -158,39 +168,58 @@ std::optional<double> stress_to_beat(const Candidate* rival, const ScheduleRules
   return s.max_judged_stress;
 }
 
-/// The polished balance of an arrangement, judged by the rules. It is balanced
-/// frequency by frequency from the lowest, and left where a converged point shows
-/// that it cannot be chosen (no analysis, not safe, the objective infinite):
+/// The polished balances of `arrangements`, the best kept (safe first, then the
+/// objective; the earlier where they tie), judged by the rules. They are raced
+/// frequency by frequency from the lowest (race.hpp), and each is left where a
+/// converged point shows that it cannot be chosen (no analysis, not safe, the
+/// objective infinite):
 /// * with `prove_unsafe`, a judged stress above the endurance limit: that point is in
 ///   the band's balance whatever the other frequencies give, so the arrangement is
 ///   unsafe (not under a life target: a life is the whole band's);
-/// * a judged stress at or above `rival`'s largest (stress_to_beat): its objective
-///   cannot then be below the rival's, nor can it be safe where the rival is not.
-Candidate polished_candidate(const Line& line, std::size_t index, std::size_t type, Arrangement arrangement,
-                             bool prove_unsafe, const Candidate* rival, TableCache& cache) {
+/// * a judged stress at or above the largest of an arrangement balanced to the end,
+///   or of `rival` (stress_to_beat): its objective cannot then be below that one's,
+///   nor can it be safe where that one is not.
+/// What is kept is what polishing every arrangement to the end would keep.
+Candidate polished_best(const Line& line, std::size_t index, std::size_t type, std::vector<Arrangement> arrangements,
+                        bool prove_unsafe, const Candidate* rival, TableCache& cache) {
   const ScheduleRules& rules = line.rules();
   const span::Span& plain = line.spans()[index].span;
-  const bool limit_decides = prove_unsafe && !rules.life_target;
-  const std::optional<double> rival_stress = stress_to_beat(rival, rules);
-  std::function<bool(const span::BalancePoint&)> settled;
-  if (limit_decides || rival_stress) {
-    settled = [&](const span::BalancePoint& p) {
-      if (!p.converged()) return false;
-      const double stress = span::judged_stress(plain, p);
-      return (limit_decides && stress > plain.endurance_limit()) || (rival_stress && stress >= *rival_stress);
-    };
+  std::vector<Candidate> candidates;
+  std::vector<std::unique_ptr<span::SpanAnalysisRun>> runs;
+  std::vector<RaceRunner> runners;
+  for (Arrangement& a : arrangements) {
+    candidates.push_back({type, std::move(a), std::nullopt});
+    runs.push_back(analysis_run(line, index, type, candidates.back().arrangement, cache));
   }
-  Candidate c{type, std::move(arrangement), std::nullopt};
-  span::SpanAnalysis a = analyse_with(line, index, type, c.arrangement, cache, settled);
-  if (a.stopped_early()) return c;  // cannot be chosen
-  c.objective = span::position_objective(a.balance, rules.positions.objective);
-  c.safe = safe_by(verdict_of(a.balance.summary, rules, false), rules);
-  c.analysis = std::move(a);
-  return c;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    span::SpanAnalysisRun& run = *runs[k];
+    const auto next = [&run, &plain]() -> std::optional<double> {
+      const span::BalancePoint& p = run.next();
+      if (!p.converged()) return std::nullopt;
+      return span::judged_stress(plain, p);
+    };
+    const auto finish = [&, k] {
+      Candidate& c = candidates[k];
+      c.analysis = run.finish();
+      c.objective = span::position_objective(c.analysis->balance, rules.positions.objective);
+      c.safe = safe_by(verdict_of(c.analysis->balance.summary, rules, false), rules);
+      return stress_to_beat(&c, rules);
+    };
+    runners.push_back({[&run] { return run.done(); }, next, finish});
+  }
+  const std::optional<double> limit =
+      prove_unsafe && !rules.life_target ? std::optional<double>(plain.endurance_limit()) : std::nullopt;
+  race(runners, stress_to_beat(rival, rules), limit);
+  // A runner left early has no analysis: it cannot be chosen.
+  Candidate best = std::move(candidates.front());
+  for (std::size_t k = 1; k < candidates.size(); ++k) {
+    if (judged_better(candidates[k], best)) best = std::move(candidates[k]);
+  }
+  return best;
 }
 
 /// The end dampers searched on the tables with the rest of `arrangement` in place,
-/// rounded, and the polished balance there (polished_candidate, `prove_unsafe` and
+/// rounded, and the polished balance there (polished_best, `prove_unsafe` and
 /// `rival` as there).
 Candidate searched_candidate(const Line& line, std::size_t index, std::size_t type, Arrangement arrangement,
                              bool prove_unsafe, const Candidate* rival, TableCache& cache,
@@ -207,18 +236,17 @@ Candidate searched_candidate(const Line& line, std::size_t index, std::size_t ty
     const auto ends = positions.begin() + static_cast<std::ptrdiff_t>(arrangement.positions.size());
     return rounded_positions({positions.begin(), ends}, rules);
   };
-  Arrangement best = arrangement;
-  best.positions = end_positions(found.positions);
-  Candidate c = polished_candidate(line, index, type, best, prove_unsafe, rival, cache);
   // The other local searches' bests polished too: the tables' error can rank two
-  // basins otherwise than their polished balances do. The better kept (safe first).
+  // basins otherwise than their polished balances do.
+  std::vector<Arrangement> polished{arrangement};
+  polished.front().positions = end_positions(found.positions);
   for (const std::vector<double>& other : found.runners_up) {
     Arrangement next = arrangement;
     next.positions = end_positions(other);
-    if (next.positions == c.arrangement.positions) continue;
-    Candidate d = polished_candidate(line, index, type, std::move(next), prove_unsafe, c.analysis ? &c : rival, cache);
-    if (judged_better(d, c)) c = std::move(d);
+    const auto same = [&](const Arrangement& a) { return a.positions == next.positions; };
+    if (std::none_of(polished.begin(), polished.end(), same)) polished.push_back(std::move(next));
   }
+  Candidate c = polished_best(line, index, type, std::move(polished), prove_unsafe, rival, cache);
   c.balances = found.balances;
   return c;
 }
@@ -227,7 +255,7 @@ Candidate searched_candidate(const Line& line, std::size_t index, std::size_t ty
 /// one of one damper fewer: searched and polished (searched_candidate). Where the span
 /// gets dampers beside its masses, once for each of their distances: the best (safe
 /// before not, then by the objective; the smaller distance where they tie), the
-/// searches' balances added up. `prove_unsafe`: as polished_candidate.
+/// searches' balances added up. `prove_unsafe`: as polished_best.
 Candidate search_candidate(const Line& line, std::size_t index, std::size_t type, int per_end,
                            const std::vector<double>& previous, bool prove_unsafe, TableCache& cache,
                            const std::function<bool()>& stop) {

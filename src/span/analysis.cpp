@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "balance_run.hpp"
 #include "balance_summary.hpp"
 #include "stockbridge/core/error.hpp"
 
@@ -113,36 +114,56 @@ void add_edge_warning(SpanAnalysis& out) {
 
 }  // namespace
 
-SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, const AnalysisOptions& options,
-                          const damper::SweepProgress& progress, const TableSource& tables) {
+SpanAnalysisRun::SpanAnalysisRun(const Span& span, std::vector<double> frequencies, const AnalysisOptions& options,
+                                 const damper::SweepProgress& progress, const TableSource& tables)
+    : options_(options), out_{span, std::nullopt, {}, {}, std::numeric_limits<double>::quiet_NaN(), {}} {
   options.validate();
   if (options.positions && span.dampers().empty()) {
     throw InvalidParameter("damper", ": the span has no damper to place");
   }
   const ImpedanceTableOptions table =
       options.positions ? options.balance.table.for_position_search() : options.balance.table;
-  const std::shared_ptr<const SpanTables> made =
-      tables ? tables(span, frequencies, table) : std::make_shared<const SpanTables>(span, frequencies, table, progress);
-  SpanAnalysis out{span, std::nullopt, {}, made->frequencies(), std::numeric_limits<double>::quiet_NaN(), {}};
+  tables_ = tables ? tables(span, frequencies, table) : std::make_shared<const SpanTables>(span, frequencies, table, progress);
+  out_.frequencies = tables_->frequencies();
   if (options.positions) {
-    out.position = optimise_positions(span, *made, options.balance, *options.positions);
+    out_.position = optimise_positions(span, *tables_, options.balance, *options.positions);
     std::vector<SpanDamper> placed = span.dampers();
-    for (std::size_t j = 0; j < placed.size(); ++j) placed[j].position = out.position->positions[j];
-    out.span = span.with_dampers(std::move(placed));
+    for (std::size_t j = 0; j < placed.size(); ++j) placed[j].position = out_.position->positions[j];
+    out_.span = span.with_dampers(std::move(placed));
   }
-  const bool hold = !options.take_point || !measured_names(out.span).empty();  // a sheet's band needs every point
+  hold_ = !options.take_point || !measured_names(out_.span).empty();  // a sheet's band needs every point
   std::function<void(BalancePoint&&)> take;
-  if (!hold) take = [&](BalancePoint&& p) { options.take_point(out.span, std::move(p)); };
-  out.balance = run_balance(out.span, *made, options.balance, nullptr, options.stop_after, take);
-  if (!out.stopped_early()) {
-    add_sheet_band(out, *made, options.balance);
-    add_edge_warning(out);
+  if (!hold_) take = [this](BalancePoint&& p) { options_.take_point(out_.span, std::move(p)); };
+  run_ = std::make_unique<BalanceRun>(out_.span, *tables_, options_.balance, nullptr, std::move(take));
+}
+
+SpanAnalysisRun::~SpanAnalysisRun() = default;
+
+bool SpanAnalysisRun::done() const { return run_->done(); }
+
+const BalancePoint& SpanAnalysisRun::next() { return run_->next(); }
+
+SpanAnalysis SpanAnalysisRun::finish() {
+  out_.balance = run_->finish();
+  if (!out_.stopped_early()) {
+    add_sheet_band(out_, *tables_, options_.balance);
+    add_edge_warning(out_);
   }
-  if (hold && options.take_point) {
-    for (BalancePoint& p : out.balance.points) options.take_point(out.span, std::move(p));
-    out.balance.points.clear();
+  if (hold_ && options_.take_point) {
+    for (BalancePoint& p : out_.balance.points) options_.take_point(out_.span, std::move(p));
+    out_.balance.points.clear();
   }
-  return out;
+  return std::move(out_);
+}
+
+SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, const AnalysisOptions& options,
+                          const damper::SweepProgress& progress, const TableSource& tables) {
+  SpanAnalysisRun run(span, std::move(frequencies), options, progress, tables);
+  while (!run.done()) {
+    const BalancePoint& p = run.next();
+    if (options.stop_after && options.stop_after(p)) break;
+  }
+  return run.finish();
 }
 
 }  // namespace stockbridge::span

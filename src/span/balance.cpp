@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "balance_run.hpp"
 #include "balance_summary.hpp"
 #include "frequency_balance.hpp"
 #include "polish.hpp"
@@ -393,37 +394,54 @@ BalancePoint balance_on_tables(const Span& span, const SpanTables& tables, std::
   return balance_at(span, tables, i, nullptr, options, undamped);
 }
 
-SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
-                        const UndampedFigures* undamped, const std::function<bool(const BalancePoint&)>& stop_after,
-                        const std::function<void(BalancePoint&&)>& take_point) {
+BalanceRun::BalanceRun(const Span& span, const SpanTables& tables, const BalanceOptions& options,
+                       const UndampedFigures* undamped, std::function<void(BalancePoint&&)> take_point)
+    : span_(span), tables_(tables), options_(options), take_point_(std::move(take_point)), summary_(span) {
   options.validate();
   if (tables.tables().size() != span.dampers().size()) {
     throw std::invalid_argument(
         fmt::format("run_balance: {} impedance tables for {} dampers", tables.tables().size(), span.dampers().size()));
   }
-  SpanBalance out;
-  std::optional<Polish> polish;
-  if (options.polish && !span.dampers().empty()) polish.emplace(span, options);
-  std::optional<UndampedFigures> own;
-  if (!undamped) undamped = &own.emplace(span, tables, options);
-  if (!take_point) out.points.reserve(tables.frequencies().size());
-  SummaryBuilder summary(span);
-  for (std::size_t i = 0; i < tables.frequencies().size(); ++i) {
-    BalancePoint p = balance_at(span, tables, i, polish ? &*polish : nullptr, options, *undamped);
-    const bool stop = stop_after && stop_after(p);
-    summary.add(p);
-    if (take_point) {
-      take_point(std::move(p));
-    } else {
-      out.points.push_back(std::move(p));
-    }
-    if (stop) break;
+  if (options.polish && !span.dampers().empty()) polish_.emplace(span, options);
+  undamped_ = undamped ? undamped : &own_undamped_.emplace(span, tables, options);
+  if (!take_point_) out_.points.reserve(tables.frequencies().size());
+}
+
+const BalancePoint& BalanceRun::next() {
+  settle_last();
+  last_ = balance_at(span_, tables_, next_++, polish_ ? &*polish_ : nullptr, options_, *undamped_);
+  return *last_;
+}
+
+void BalanceRun::settle_last() {
+  if (!last_) return;
+  summary_.add(*last_);
+  if (take_point_) {
+    take_point_(std::move(*last_));
+  } else {
+    out_.points.push_back(std::move(*last_));
   }
-  out.summary = summary.result();
-  out.summary.impedance_nodes = tables.nodes();
-  out.summary.failed_impedance_nodes = tables.failed_nodes();
-  if (polish) out.summary.direct_solves = polish->direct_solves();
-  return out;
+  last_.reset();
+}
+
+SpanBalance BalanceRun::finish() {
+  settle_last();
+  out_.summary = summary_.result();
+  out_.summary.impedance_nodes = tables_.nodes();
+  out_.summary.failed_impedance_nodes = tables_.failed_nodes();
+  if (polish_) out_.summary.direct_solves = polish_->direct_solves();
+  return std::move(out_);
+}
+
+SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
+                        const UndampedFigures* undamped, const std::function<bool(const BalancePoint&)>& stop_after,
+                        const std::function<void(BalancePoint&&)>& take_point) {
+  BalanceRun run(span, tables, options, undamped, take_point);
+  while (!run.done()) {
+    const BalancePoint& p = run.next();
+    if (stop_after && stop_after(p)) break;
+  }
+  return run.finish();
 }
 
 }  // namespace stockbridge::span

@@ -78,4 +78,39 @@ using TableSource = std::function<std::shared_ptr<const SpanTables>(const Span& 
 SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, const AnalysisOptions& options,
                           const damper::SweepProgress& progress = {}, const TableSource& tables = {});
 
+class BalanceRun;
+
+/// analyse_span one frequency at a time, for a caller that compares several spans'
+/// balances as they go (a line's schedule races its arrangements): the tables made
+/// and the position searched on construction, then next() balances the next
+/// frequency, from the lowest, and finish() is analyse_span's answer for the
+/// frequencies balanced so far (stopped early where not done()). options.stop_after
+/// is not used: the caller stops. Neither copied nor moved.
+class SpanAnalysisRun {
+ public:
+  /// analyse_span's arguments, exceptions and work before the balance.
+  SpanAnalysisRun(const Span& span, std::vector<double> frequencies, const AnalysisOptions& options,
+                  const damper::SweepProgress& progress = {}, const TableSource& tables = {});
+  SpanAnalysisRun(const SpanAnalysisRun&) = delete;
+  SpanAnalysisRun& operator=(const SpanAnalysisRun&) = delete;
+  ~SpanAnalysisRun();
+
+  /// Every frequency balanced.
+  bool done() const;
+  /// The next frequency's point, final once next() or finish() is called again.
+  /// Precondition: !done().
+  const BalancePoint& next();
+  /// The span as balanced (with the dampers where the search put them).
+  const Span& span() const { return out_.span; }
+  /// The analysis: once, at the end.
+  SpanAnalysis finish();
+
+ private:
+  AnalysisOptions options_;
+  std::shared_ptr<const SpanTables> tables_;
+  SpanAnalysis out_;
+  bool hold_ = true;  ///< the points held for the sheets' band before take_point has them
+  std::unique_ptr<BalanceRun> run_;
+};
+
 }  // namespace stockbridge::span
