@@ -105,6 +105,7 @@ ImpedanceTable::ImpedanceTable(const damper::Damper& damper, std::vector<double>
     }
     columns_.push_back(make_column(log_v, z));
   }
+  place_frequencies();
 }
 
 ImpedanceTable::ImpedanceTable(const ImpedanceSheet& sheet, std::vector<double> frequencies)
@@ -118,6 +119,21 @@ ImpedanceTable::ImpedanceTable(const ImpedanceSheet& sheet, std::vector<double> 
     }
     solved_.push_back(i);
     columns_.push_back(make_column(log_v, z));
+  }
+  place_frequencies();
+}
+
+void ImpedanceTable::place_frequencies() {
+  places_.reserve(frequencies_.size());
+  for (std::size_t i = 0; i < frequencies_.size(); ++i) {
+    const auto k = static_cast<std::size_t>(std::lower_bound(solved_.begin(), solved_.end(), i) - solved_.begin());
+    if (solved_[k] == i) {
+      places_.push_back({k, true, 0.0});
+      continue;
+    }
+    const double t = std::log(frequencies_[i] / frequencies_[solved_[k - 1]]) /
+                     std::log(frequencies_[solved_[k]] / frequencies_[solved_[k - 1]]);
+    places_.push_back({k, false, t});
   }
 }
 
@@ -156,20 +172,19 @@ std::optional<std::complex<double>> ImpedanceTable::at(std::size_t i, double vel
 
 std::optional<TableImpedance> ImpedanceTable::at_with_slope(std::size_t i, double velocity) const {
   if (i >= frequencies_.size()) throw std::out_of_range("ImpedanceTable::at: no such frequency");
-  const std::size_t k = static_cast<std::size_t>(std::lower_bound(solved_.begin(), solved_.end(), i) - solved_.begin());
-  if (solved_[k] == i) return column_at(k, velocity);
-  const auto lo = column_at(k - 1, velocity), hi = column_at(k, velocity);
+  const Place& place = places_[i];
+  const double u = std::log(velocity);
+  if (place.solved) return column_at(place.column, u);
+  const auto lo = column_at(place.column - 1, u), hi = column_at(place.column, u);
   if (!lo || !hi) return std::nullopt;
-  const double t = std::log(frequencies_[i] / frequencies_[solved_[k - 1]]) /
-                   std::log(frequencies_[solved_[k]] / frequencies_[solved_[k - 1]]);
+  const double t = place.t;
   return TableImpedance{(1.0 - t) * lo->z + t * hi->z, (1.0 - t) * lo->slope + t * hi->slope};
 }
 
-std::optional<TableImpedance> ImpedanceTable::column_at(std::size_t column, double velocity) const {
+std::optional<TableImpedance> ImpedanceTable::column_at(std::size_t column, double u) const {
   const Column& c = columns_[column];
   const std::size_t n = c.log_v.size();
   if (n < 2) return std::nullopt;
-  const double u = std::log(velocity);
   if (u <= c.log_v.front()) return TableImpedance{c.z.front(), 0.0};
   if (u >= c.log_v.back()) return TableImpedance{c.z.back(), 0.0};
   const std::size_t k = static_cast<std::size_t>(std::upper_bound(c.log_v.begin(), c.log_v.end(), u) - c.log_v.begin()) - 1;

@@ -85,12 +85,22 @@ class ImpedanceTable {
   };
   static Column make_column(const std::vector<double>& log_v, const std::vector<std::optional<std::complex<double>>>& z);
 
-  std::optional<TableImpedance> column_at(std::size_t column, double velocity) const;
+  /// Where each frequency lies among the columns: its own, or between `column - 1`
+  /// and `column` at `t` in log f.
+  struct Place {
+    std::size_t column;
+    bool solved;
+    double t;
+  };
+  void place_frequencies();
+  /// Z and its slope in a column at u = ln v.
+  std::optional<TableImpedance> column_at(std::size_t column, double u) const;
 
   std::vector<double> frequencies_;
   std::vector<double> velocities_;
   std::vector<std::size_t> solved_;  ///< the frequencies (indices) solved, increasing: columns_[k] is solved_[k]'s
   std::vector<Column> columns_;
+  std::vector<Place> places_;  ///< one per frequency
   int failed_ = 0;
 };
 
