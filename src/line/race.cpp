@@ -7,25 +7,24 @@ namespace stockbridge::line {
 
 namespace {
 
-/// A stress that drops a runner reaching it: a finished runner's bound, or the rival's.
+/// A stress that drops a runner reaching it: a finished runner's bound.
 struct Bound {
   double stress;
-  std::size_t rank;  ///< in the order of preference: 0 the rival, runner k's k + 1
+  std::size_t runner;  ///< whose
 };
 
 enum class RunnerState { running, finished, dropped };
 
 }  // namespace
 
-std::vector<bool> race(std::vector<RaceRunner>& runners, std::optional<double> rival, std::optional<double> limit) {
+std::vector<bool> race(std::vector<RaceRunner>& runners, std::optional<double> limit) {
   const std::size_t n = runners.size();
   std::vector<RunnerState> state(n, RunnerState::running);
   std::vector<double> largest(n, -std::numeric_limits<double>::infinity());
   std::vector<Bound> bounds;
-  if (rival) bounds.push_back({*rival, 0});
   const auto beaten = [&](std::size_t j) {
     for (const Bound& b : bounds) {
-      if (largest[j] > b.stress || (largest[j] == b.stress && b.rank < j + 1)) return true;
+      if (largest[j] > b.stress || (largest[j] == b.stress && b.runner < j)) return true;
     }
     return false;
   };
@@ -49,7 +48,7 @@ std::vector<bool> race(std::vector<RaceRunner>& runners, std::optional<double> r
     if (!r.done()) continue;
     state[*k] = RunnerState::finished;
     if (const std::optional<double> b = r.finish()) {
-      bounds.push_back({*b, *k + 1});
+      bounds.push_back({*b, *k});
       for (std::size_t j = 0; j < n; ++j) {
         if (state[j] == RunnerState::running && beaten(j)) state[j] = RunnerState::dropped;
       }

@@ -27,7 +27,7 @@ struct RaceRunner {
 /// cannot be chosen:
 /// * a stress above `limit` (proven unsafe);
 /// * its largest stress at or above a finished runner's bound (above it, for a runner
-///   earlier in the order), or at or above `rival` (an arrangement kept before).
+///   earlier in the order).
 /// Returns which runners finished (the others were dropped).
 ///
 /// What the schedule keeps of them is the one it would keep of every runner balanced
@@ -35,6 +35,6 @@ struct RaceRunner {
 /// beaten the runner that dropped it. And no runner balances a frequency more than it
 /// would if the winner were balanced first and the others then left where they reach
 /// its largest: a runner is advanced only while its largest is below every other's.
-std::vector<bool> race(std::vector<RaceRunner>& runners, std::optional<double> rival, std::optional<double> limit);
+std::vector<bool> race(std::vector<RaceRunner>& runners, std::optional<double> limit);
 
 }  // namespace stockbridge::line

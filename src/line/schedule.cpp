@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <iterator>
 #include <memory>
 
 #include <fmt/format.h>
@@ -143,7 +144,7 @@ struct Candidate {
   std::size_t type = 0;
   Arrangement arrangement;
   /// The polished balance; none where it was left early (polished_best: proven
-  /// unsafe, or unable to beat its rival).
+  /// unsafe, or unable to beat another).
   std::optional<span::SpanAnalysis> analysis;
   int balances = 0;
   double objective = std::numeric_limits<double>::infinity();  ///< of the polished balance
@@ -176,12 +177,12 @@ std::optional<double> stress_to_beat(const Candidate* rival, const ScheduleRules
 /// * with `prove_unsafe`, a judged stress above the endurance limit: that point is in
 ///   the band's balance whatever the other frequencies give, so the arrangement is
 ///   unsafe (not under a life target: a life is the whole band's);
-/// * a judged stress at or above the largest of an arrangement balanced to the end,
-///   or of `rival` (stress_to_beat): its objective cannot then be below that one's,
-///   nor can it be safe where that one is not.
+/// * a judged stress at or above the largest of an arrangement balanced to the end
+///   (stress_to_beat): its objective cannot then be below that one's, nor can it be
+///   safe where that one is not.
 /// What is kept is what polishing every arrangement to the end would keep.
 Candidate polished_best(const Line& line, std::size_t index, std::size_t type, std::vector<Arrangement> arrangements,
-                        bool prove_unsafe, const Candidate* rival, TableCache& cache) {
+                        bool prove_unsafe, TableCache& cache) {
   const ScheduleRules& rules = line.rules();
   const span::Span& plain = line.spans()[index].span;
   std::vector<Candidate> candidates;
@@ -209,7 +210,7 @@ Candidate polished_best(const Line& line, std::size_t index, std::size_t type, s
   }
   const std::optional<double> limit =
       prove_unsafe && !rules.life_target ? std::optional<double>(plain.endurance_limit()) : std::nullopt;
-  race(runners, stress_to_beat(rival, rules), limit);
+  race(runners, limit);
   // A runner left early has no analysis: it cannot be chosen.
   Candidate best = std::move(candidates.front());
   for (std::size_t k = 1; k < candidates.size(); ++k) {
@@ -218,12 +219,18 @@ Candidate polished_best(const Line& line, std::size_t index, std::size_t type, s
   return best;
 }
 
-/// The end dampers searched on the tables with the rest of `arrangement` in place,
-/// rounded, and the polished balance there (polished_best, `prove_unsafe` and
-/// `rival` as there).
-Candidate searched_candidate(const Line& line, std::size_t index, std::size_t type, Arrangement arrangement,
-                             bool prove_unsafe, const Candidate* rival, TableCache& cache,
-                             const std::function<bool()>& stop) {
+/// What a position search hands the polish: the best arrangement of each local search,
+/// rounded (the tables' best first), and the search's balances.
+struct Searched {
+  std::vector<Arrangement> arrangements;
+  int balances = 0;
+};
+
+/// The end dampers searched on the tables with the rest of `arrangement` in place.
+/// The other local searches' bests are polished too: the tables' error can rank two
+/// basins otherwise than their polished balances do.
+Searched searched_arrangements(const Line& line, std::size_t index, std::size_t type, const Arrangement& arrangement,
+                               TableCache& cache, const std::function<bool()>& stop) {
   const LineSpan& s = line.spans()[index];
   const ScheduleRules& rules = line.rules();
   const std::vector<double> f = span::band_frequencies(s.span, rules.search_points);
@@ -236,26 +243,23 @@ Candidate searched_candidate(const Line& line, std::size_t index, std::size_t ty
     const auto ends = positions.begin() + static_cast<std::ptrdiff_t>(arrangement.positions.size());
     return rounded_positions({positions.begin(), ends}, rules);
   };
-  // The other local searches' bests polished too: the tables' error can rank two
-  // basins otherwise than their polished balances do.
-  std::vector<Arrangement> polished{arrangement};
-  polished.front().positions = end_positions(found.positions);
+  Searched out{{arrangement}, found.balances};
+  out.arrangements.front().positions = end_positions(found.positions);
   for (const std::vector<double>& other : found.runners_up) {
     Arrangement next = arrangement;
     next.positions = end_positions(other);
     const auto same = [&](const Arrangement& a) { return a.positions == next.positions; };
-    if (std::none_of(polished.begin(), polished.end(), same)) polished.push_back(std::move(next));
+    if (std::none_of(out.arrangements.begin(), out.arrangements.end(), same)) out.arrangements.push_back(std::move(next));
   }
-  Candidate c = polished_best(line, index, type, std::move(polished), prove_unsafe, rival, cache);
-  c.balances = found.balances;
-  return c;
+  return out;
 }
 
 /// `per_end` dampers of one type at the ends, from the usual arrangement or from the
-/// one of one damper fewer: searched and polished (searched_candidate). Where the span
-/// gets dampers beside its masses, once for each of their distances: the best (safe
-/// before not, then by the objective; the smaller distance where they tie), the
-/// searches' balances added up. `prove_unsafe`: as polished_best.
+/// one of one damper fewer: searched (searched_arrangements), and the local searches'
+/// bests polished (polished_best). Where the span gets dampers beside its masses, the
+/// search once for each of their distances, and all their arrangements polished
+/// together: the best (safe before not, then by the objective; the smaller distance
+/// where they tie), the searches' balances added up. `prove_unsafe`: as polished_best.
 Candidate search_candidate(const Line& line, std::size_t index, std::size_t type, int per_end,
                            const std::vector<double>& previous, bool prove_unsafe, TableCache& cache,
                            const std::function<bool()>& stop) {
@@ -265,21 +269,25 @@ Candidate search_candidate(const Line& line, std::size_t index, std::size_t type
   const Arrangement start{previous.empty() ? span::usual_positions(s.span, f_max, per_end, 0.5, rules.positions)
                                            : extended(previous, rules),
                           std::nullopt};
-  if (!gets_sphere_dampers(s.span, rules)) {
-    return searched_candidate(line, index, type, start, prove_unsafe, nullptr, cache, stop);
-  }
-  std::optional<Candidate> best;
+  std::vector<Arrangement> polished;
   int balances = 0;
-  for (const double d : sphere_distances(rules)) {
-    Arrangement beside = start;
-    beside.sphere_distance = d;
-    const Candidate* rival = best ? &*best : nullptr;
-    Candidate c = searched_candidate(line, index, type, std::move(beside), prove_unsafe, rival, cache, stop);
-    balances += c.balances;
-    if (!best || judged_better(c, *best)) best = std::move(c);
+  const auto search_from = [&](const Arrangement& from) {
+    Searched found = searched_arrangements(line, index, type, from, cache, stop);
+    balances += found.balances;
+    std::move(found.arrangements.begin(), found.arrangements.end(), std::back_inserter(polished));
+  };
+  if (!gets_sphere_dampers(s.span, rules)) {
+    search_from(start);
+  } else {
+    for (const double d : sphere_distances(rules)) {
+      Arrangement beside = start;
+      beside.sphere_distance = d;
+      search_from(beside);
+    }
   }
-  best->balances = balances;
-  return std::move(*best);
+  Candidate best = polished_best(line, index, type, std::move(polished), prove_unsafe, cache);
+  best.balances = balances;
+  return best;
 }
 
 std::string megapascal(double pascal) { return fmt::format("{:.3g} MPa", pascal / 1e6); }

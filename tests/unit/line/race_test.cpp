@@ -1,8 +1,8 @@
 // The race of a line's polished arrangements (line/race.cpp) on made-up stress
 // sequences: the runner it keeps is the one balancing every runner to the end keeps,
 // no runner balances more frequencies than with the winner known beforehand, and a
-// point above the limit, the rival's stress or a finished runner's largest drops a
-// runner, a tie going to the runner earlier in the order.
+// point above the limit or a finished runner's largest drops a runner, a tie going to
+// the runner earlier in the order.
 
 #include <algorithm>
 #include <cstddef>
@@ -80,7 +80,7 @@ TEST(Race, KeepsWhatBalancingEveryRunnerToTheEndKeepsAndBalancesNoMoreThanKnowin
       }
     }
     std::vector<RaceRunner> runners = runners_of(sequences);
-    const std::vector<bool> finished = race(runners, std::nullopt, std::nullopt);
+    const std::vector<bool> finished = race(runners, std::nullopt);
     const std::size_t kept = kept_of_all(sequences);
     ASSERT_TRUE(finished[kept]) << "trial " << trial;
     for (std::size_t k = 0; k < sequences.size(); ++k) {
@@ -96,20 +96,10 @@ TEST(Race, KeepsWhatBalancingEveryRunnerToTheEndKeepsAndBalancesNoMoreThanKnowin
 TEST(Race, APointAboveTheLimitDropsItsRunnerThere) {
   std::vector<Sequence> sequences{{{1.0, 9.0, 2.0, 2.0}}, {{3.0, 3.0, 3.0, 3.0}}};
   std::vector<RaceRunner> runners = runners_of(sequences);
-  const std::vector<bool> finished = race(runners, std::nullopt, 8.0);
+  const std::vector<bool> finished = race(runners, 8.0);
   EXPECT_FALSE(finished[0]);
   EXPECT_EQ(sequences[0].balanced, 2u);
   EXPECT_TRUE(finished[1]);
-}
-
-TEST(Race, TheRivalsStressReachedDropsEveryRunner) {
-  std::vector<Sequence> sequences{{{1.0, 5.0, 1.0}}, {{2.0, 6.0, 1.0}}};
-  std::vector<RaceRunner> runners = runners_of(sequences);
-  const std::vector<bool> finished = race(runners, 5.0, std::nullopt);  // 5 ties the rival: it was kept before
-  EXPECT_FALSE(finished[0]);
-  EXPECT_FALSE(finished[1]);
-  EXPECT_EQ(sequences[0].balanced, 2u);
-  EXPECT_EQ(sequences[1].balanced, 2u);
 }
 
 TEST(Race, ATieGoesToTheRunnerEarlierInTheOrder) {
@@ -117,13 +107,13 @@ TEST(Race, ATieGoesToTheRunnerEarlierInTheOrder) {
   // the earlier one then reaches its largest exactly, and is kept on.
   std::vector<Sequence> sequences{{{4.0, 4.0, 4.0}}, {{1.0, 1.0, 4.0}}};
   std::vector<RaceRunner> runners = runners_of(sequences);
-  const std::vector<bool> finished = race(runners, std::nullopt, std::nullopt);
+  const std::vector<bool> finished = race(runners, std::nullopt);
   EXPECT_TRUE(finished[0]);
   EXPECT_TRUE(finished[1]);
   // And the other way round: the earlier finished, the later tying it is dropped.
   std::vector<Sequence> reversed{{{1.0, 1.0, 4.0}}, {{4.0, 4.0, 4.0}}};
   std::vector<RaceRunner> again = runners_of(reversed);
-  const std::vector<bool> ended = race(again, std::nullopt, std::nullopt);
+  const std::vector<bool> ended = race(again, std::nullopt);
   EXPECT_TRUE(ended[0]);
   EXPECT_FALSE(ended[1]);
   EXPECT_EQ(reversed[1].balanced, 1u);
