@@ -34,7 +34,8 @@ struct RaceRunner {
 /// to the end: a dropped runner's largest stress can only grow, so it could not have
 /// beaten the runner that dropped it. And no runner balances a frequency more than it
 /// would if the winner were balanced first and the others then left where they reach
-/// its largest: a runner is advanced only while its largest is below every other's.
+/// its largest: a runner is advanced only while its largest is the lowest, so never
+/// once it is above the winner's.
 std::vector<bool> race(std::vector<RaceRunner>& runners, std::optional<double> limit);
 
 }  // namespace stockbridge::line
