@@ -5,6 +5,7 @@
 // the runner earlier in the order.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <random>
