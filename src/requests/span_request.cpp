@@ -411,7 +411,7 @@ void SpanPointTally::add(const span::Span& span, const span::BalancePoint& p) {
   }
   max_identity_error = std::isnan(max_identity_error) ? p.identity_error : std::max(max_identity_error, p.identity_error);
   if (p.several_states) several_states.emplace_back(p.frequency_hz, p.note);
-  if (!governing || span::judged_stress(span, p) > span::judged_stress(span, *governing)) governing = p;
+  if (span::governs_instead(span, p, governing ? &*governing : nullptr)) governing = p;
 }
 
 SpanPointTally SpanPointTally::of(const SpanResult& result) {

@@ -90,10 +90,14 @@ SpanProfile span_profile(const Span& span, const BalancePoint& point, int points
   return out;
 }
 
+bool governs_instead(const Span& span, const BalancePoint& p, const BalancePoint* best) {
+  return p.converged() && (!best || judged_stress(span, p) > judged_stress(span, *best));
+}
+
 const BalancePoint& governing_point(const Span& span, const SpanBalance& balance) {
   const BalancePoint* best = nullptr;
   for (const BalancePoint& p : balance.points) {
-    if (p.converged() && (!best || judged_stress(span, p) > judged_stress(span, *best))) best = &p;
+    if (governs_instead(span, p, best)) best = &p;
   }
   if (!best) throw InvalidParameter("frequency", ": no point of the balance converged: no governing frequency");
   return *best;

@@ -37,5 +37,9 @@ SpanProfile span_profile(const Span& span, const BalancePoint& point, int points
 /// The converged point of the largest judged stress (the governing frequency);
 /// InvalidParameter naming "frequency" when no point converged.
 const BalancePoint& governing_point(const Span& span, const SpanBalance& balance);
+/// Whether `p`, the next point in the band's order, governs instead of `best` (none:
+/// no point yet): converged, with a judged stress above best's (the first of the
+/// largest governs). governing_point's rule, for a caller that does not hold the points.
+bool governs_instead(const Span& span, const BalancePoint& p, const BalancePoint* best);
 
 }  // namespace stockbridge::span
