@@ -139,15 +139,15 @@ void ImpedanceTable::place_frequencies() {
 
 std::optional<Interval> ImpedanceTable::velocity_range(std::size_t i) const {
   if (i >= frequencies_.size()) throw std::out_of_range("ImpedanceTable::velocity_range: no such frequency");
-  const std::size_t k = static_cast<std::size_t>(std::lower_bound(solved_.begin(), solved_.end(), i) - solved_.begin());
+  const Place& place = places_[i];
   const auto range_of = [this](std::size_t column) -> std::optional<Interval> {
     const Column& c = columns_[column];
     if (c.log_v.size() < 2) return std::nullopt;
     return Interval{std::exp(c.log_v.front()), std::exp(c.log_v.back())};
   };
-  const std::optional<Interval> hi = range_of(k);
-  if (solved_[k] == i || !hi) return hi;
-  const std::optional<Interval> lo = range_of(k - 1);
+  const std::optional<Interval> hi = range_of(place.column);
+  if (place.solved || !hi) return hi;
+  const std::optional<Interval> lo = range_of(place.column - 1);
   if (!lo) return std::nullopt;
   return Interval{std::max(lo->lo, hi->lo), std::min(lo->hi, hi->hi)};
 }
