@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
+#include <vector>
 #include <string>
 
 #include <Eigen/LU>
@@ -122,11 +124,22 @@ struct CountedResidual {
   int evaluations = 0;
   bool failed = false;
   bool within_noise = false;  ///< a bracket closed with |h| within the residual's scatter
+  std::vector<std::pair<Eigen::VectorXd, Eigen::VectorXd>> known{};  ///< every point evaluated, with its r
 
-  /// r at x; false (failed) where it cannot be evaluated.
+  /// r at x; false (failed) where it cannot be evaluated. A point evaluated before is
+  /// not evaluated again (the hybrid method evaluates its start, the Newton phase's
+  /// best point, and its first step may be the Newton step already taken): its r is
+  /// known.
   bool operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+    for (const auto& [known_x, known_r] : known) {
+      if (known_x == x) {
+        r = known_r;
+        return true;
+      }
+    }
     ++evaluations;
     if (!x.allFinite() || !residual(x, r) || !r.allFinite()) return !(failed = true);
+    known.emplace_back(x, r);
     const double size = r.cwiseAbs().maxCoeff();
     if (!(size >= best.summary.residual)) {
       best.x = x;

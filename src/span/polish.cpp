@@ -248,6 +248,7 @@ Polish::Search Polish::search(FrequencyBalance& balance, const Eigen::VectorXd& 
   const numerics::ResidualJacobian jacobian_at = [&](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
     const Trial* trial = out.trial_at(x);
     if (!trial) return false;
+    hold(balance, *trial);  // the balance's slope with this trial's impedances, not the last trial's
     jac = jacobian(balance, *trial);
     return true;
   };
@@ -282,10 +283,14 @@ std::string Polish::failure_where(const Search& search) const {
   return where;
 }
 
-double Polish::accept(FrequencyBalance& balance, const Trial& solution, bool continued) {
+void Polish::hold(FrequencyBalance& balance, const Trial& trial) const {
   for (std::size_t k = 0; k < unknowns_.size(); ++k) {
-    for (const auto& [e, j] : unknowns_[k].slots) balance.fix(e, j, solution.direct[k]);
+    for (const auto& [e, j] : unknowns_[k].slots) balance.fix(e, j, trial.direct[k]);
   }
+}
+
+double Polish::accept(FrequencyBalance& balance, const Trial& solution, bool continued) {
+  hold(balance, solution);
   const double det = jacobian(balance, solution).partialPivLu().determinant();
   const int sign = det > 0.0 ? 1 : det < 0.0 ? -1 : 0;
   passed_fold_ = continued && sign != 0 && history_.back().jacobian_sign != 0 && sign != history_.back().jacobian_sign;

@@ -99,6 +99,8 @@ class Polish {
   Search search(FrequencyBalance& balance, const Eigen::VectorXd& start);
   /// Where and by how much a search that did not converge failed.
   std::string failure_where(const Search& search) const;
+  /// Fixes the trial's directly solved impedances in the balance.
+  void hold(FrequencyBalance& balance, const Trial& trial) const;
   /// Fixes the solution's impedances in the balance and hands it on along the band;
   /// its amplitude.
   double accept(FrequencyBalance& balance, const Trial& solution, bool continued);

@@ -3,6 +3,7 @@
 // of |h| off the root (the span polish's hard case), and where h jumps (no root).
 
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -97,17 +98,28 @@ TEST(NonlinearSystem, NewtonStepsFirstTakeFewerResidualsAndHandOverWhereTheyStal
 
   // The Jacobian's sign flipped: the first Newton step moves away and the residual
   // grows, so the hybrid method (which gets the same wrong Jacobian but keeps its
-  // trust region and updates it) finishes the solve.
+  // trust region and updates it) finishes the solve, from the Newton phase's best
+  // point, whose residual it is handed rather than evaluating it again (the polish's
+  // residual solves every damper).
+  std::vector<Eigen::VectorXd> evaluated;
+  const Residual recorded = [&](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    evaluated.push_back(x);
+    return r(x, f);
+  };
   const ResidualJacobian flipped = [&](const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
     exact(x, jac);
     jac = -jac;
     return true;
   };
   evaluations = 0;
-  const NonlinearSystemResult recovered = solve_fixed_point(r, flipped, start, options);
+  const NonlinearSystemResult recovered = solve_fixed_point(recorded, flipped, start, options);
   ASSERT_EQ(recovered.summary.termination, Termination::converged) << brief_report(recovered.summary);
   EXPECT_NEAR(recovered.x[0], hybrid.x[0], 1e-9);
   EXPECT_GT(recovered.summary.evaluations, 2);  // the Newton phase's two, then the hybrid method's
+  EXPECT_EQ(recovered.summary.evaluations, static_cast<int>(evaluated.size()));
+  for (std::size_t a = 0; a < evaluated.size(); ++a) {
+    for (std::size_t b = 0; b < a; ++b) EXPECT_NE(evaluated[a], evaluated[b]) << "evaluations " << b << " and " << a;
+  }
 }
 
 // Where the residual is nearly flat at the start, the Newton step is enormous (here
