@@ -3,9 +3,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
-#include <string>
 
 #include <Eigen/LU>
 #include <boost/math/tools/toms748_solve.hpp>
