@@ -159,10 +159,7 @@ SpanAnalysis SpanAnalysisRun::finish() {
 SpanAnalysis analyse_span(const Span& span, std::vector<double> frequencies, const AnalysisOptions& options,
                           const damper::SweepProgress& progress, const TableSource& tables) {
   SpanAnalysisRun run(span, std::move(frequencies), options, progress, tables);
-  while (!run.done()) {
-    const BalancePoint& p = run.next();
-    if (options.stop_after && options.stop_after(p)) break;
-  }
+  while (!run.done()) run.next();
   return run.finish();
 }
 

@@ -434,13 +434,9 @@ SpanBalance BalanceRun::finish() {
 }
 
 SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
-                        const UndampedFigures* undamped, const std::function<bool(const BalancePoint&)>& stop_after,
-                        const std::function<void(BalancePoint&&)>& take_point) {
-  BalanceRun run(span, tables, options, undamped, take_point);
-  while (!run.done()) {
-    const BalancePoint& p = run.next();
-    if (stop_after && stop_after(p)) break;
-  }
+                        const UndampedFigures* undamped) {
+  BalanceRun run(span, tables, options, undamped);
+  while (!run.done()) run.next();
   return run.finish();
 }
 

@@ -23,9 +23,6 @@ struct AnalysisOptions {
   /// ImpedanceTableOptions::for_position_search (the search compares arrangements on
   /// the tables alone).
   std::optional<PositionRules> positions;
-  /// Ends the balance after the first point it holds for (run_balance's stop_after):
-  /// the analysis is then of the frequencies balanced so far, without the sheets' band.
-  std::function<bool(const BalancePoint&)> stop_after;
   /// Takes each point as it is final, with the span as balanced (its dampers where
   /// the search put them), instead of the analysis holding it (a caller that needs
   /// each point once, a row or a running figure, in the band's order): the
@@ -51,7 +48,7 @@ struct SpanAnalysis {
   double sheet_error_estimate = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::string> warnings;
 
-  /// Whether the balance ended before the band's top (AnalysisOptions::stop_after):
+  /// Whether the balance ended before the band's top (a SpanAnalysisRun finished early):
   /// its points are then the lowest frequencies', and it has no sheet band or warnings.
   bool stopped_early() const { return static_cast<std::size_t>(balance.summary.points) < frequencies.size(); }
 };
@@ -84,8 +81,8 @@ class BalanceRun;
 /// balances as they go (a line's schedule races its arrangements): the tables made
 /// and the position searched on construction, then next() balances the next
 /// frequency, from the lowest, and finish() is analyse_span's answer for the
-/// frequencies balanced so far (stopped early where not done()). options.stop_after
-/// is not used: the caller stops. Neither copied nor moved.
+/// frequencies balanced so far (stopped early where not done()). Neither copied nor
+/// moved.
 class SpanAnalysisRun {
  public:
   /// analyse_span's arguments, exceptions and work before the balance.

@@ -296,14 +296,8 @@ BalancePoint balance_on_tables(const Span& span, const SpanTables& tables, std::
 /// The balance at every frequency of the tables (made for this span's dampers, or
 /// for dampers alike: only the dampers' positions may differ; none without dampers).
 /// `undamped`: the span's, made with the same tables and options (none: worked out
-/// here). `stop_after`: the balance ends after the first point it holds for (the
-/// points and summary then are of the frequencies balanced so far, from the lowest).
-/// `take_point`: each point handed on as it is final (after stop_after saw it)
-/// instead of held: the balance's points are then none, its summary the same.
-/// std::invalid_argument when the tables are not one per damper.
+/// here). std::invalid_argument when the tables are not one per damper.
 SpanBalance run_balance(const Span& span, const SpanTables& tables, const BalanceOptions& options,
-                        const UndampedFigures* undamped = nullptr,
-                        const std::function<bool(const BalancePoint&)>& stop_after = {},
-                        const std::function<void(BalancePoint&&)>& take_point = {});
+                        const UndampedFigures* undamped = nullptr);
 
 }  // namespace stockbridge::span

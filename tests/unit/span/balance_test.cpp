@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "aster570.hpp"
+#include "span/balance_run.hpp"
 #include "stockbridge/core/error.hpp"
 #include "stockbridge/span/balance.hpp"
 #include "stockbridge/span/fatigue.hpp"
@@ -268,9 +269,10 @@ TEST(SpanBalance, OneDamperPerEndIsAsBeforeTheSystemSolve) {
   }
 }
 
-// stop_after ends the balance after the first point it holds for: the points kept
-// are the whole balance's first ones, bit for bit (each frequency continues from the
-// ones before it, as in the whole balance), and the summary is of them alone.
+// A balance run a frequency at a time and finished after a point (the line's race
+// leaves an arrangement so): the points kept are the whole balance's first ones, bit
+// for bit (each frequency continues from the ones before it, as in the whole
+// balance), and the summary is of them alone.
 TEST(SpanBalance, StoppedAfterAPointItIsTheWholeBalancesFirstPoints) {
   const Span span = aster_span({{sauter_damper(), 1.0, true, "sauter", nullptr, std::nullopt}});
   const std::vector<double> f = damper::log_spaced(6.0, 40.0, 8);
@@ -282,10 +284,14 @@ TEST(SpanBalance, StoppedAfterAPointItIsTheWholeBalancesFirstPoints) {
   while (!(whole.points[first].stress_fymax > threshold)) ++first;
   ASSERT_LT(first + 1, f.size()) << "the threshold must stop the balance before its end";
   int asked = 0;
-  const SpanBalance stopped = run_balance(span, tables, fast_options(), nullptr, [&](const BalancePoint& p) {
+  const BalanceOptions options = fast_options();
+  BalanceRun run(span, tables, options);
+  while (!run.done()) {
+    const BalancePoint& p = run.next();
     ++asked;
-    return p.converged() && p.stress_fymax > threshold;
-  });
+    if (p.converged() && p.stress_fymax > threshold) break;
+  }
+  const SpanBalance stopped = run.finish();
   ASSERT_EQ(stopped.points.size(), first + 1);
   EXPECT_EQ(asked, static_cast<int>(first + 1));
   double largest = 0.0;
